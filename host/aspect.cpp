@@ -1,0 +1,39 @@
+#include "aspect.h"
+
+#include <charconv>
+#include <cmath>
+#include <optional>
+
+#include "errors.h"
+
+namespace rtvk {
+namespace {
+
+// The whole of `s` as a finite number > 0, or nothing.
+std::optional<double> positive_number(std::string_view s) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v) || v <= 0)
+    return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+double parse_aspect(const std::string& text, const std::string& flag) {
+  const auto colon = text.find(':');
+  std::optional<double> ratio;
+  if (colon == std::string::npos) {
+    ratio = positive_number(text);
+  } else {
+    const auto w = positive_number(std::string_view(text).substr(0, colon));
+    const auto h = positive_number(std::string_view(text).substr(colon + 1));
+    if (w && h) ratio = *w / *h;
+  }
+  if (!ratio || !std::isfinite(*ratio) || *ratio <= 0)
+    throw usage_error(flag + ": invalid aspect ratio '" + text +
+                      "' (expected W:H with both > 0, such as 16:9, or a decimal > 0)");
+  return *ratio;
+}
+
+}  // namespace rtvk

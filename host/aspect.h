@@ -1,0 +1,10 @@
+#pragma once
+#include <string>
+
+namespace rtvk {
+
+// Parses an aspect ratio written as "W:H" (16:9) or as a decimal (1.5). Both parts must be
+// finite and > 0. Throws usage_error naming the flag and the text.
+double parse_aspect(const std::string& text, const std::string& flag = "--aspect");
+
+}  // namespace rtvk

@@ -1,0 +1,13 @@
+#pragma once
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace rtvk {
+
+// Each subcommand registers its options on `app` and returns the function that runs it once
+// parsing succeeded; that function returns the exit status or throws.
+using command_action = std::function<int()>;
+
+command_action add_render_command(CLI::App& app);
+
+}  // namespace rtvk

@@ -1,0 +1,13 @@
+#pragma once
+#include <stdexcept>
+
+namespace rtvk {
+
+// Bad input from the user (a flag, a value, a file they named): the CLI exits 2.
+// Every other exception is a failure while running: the CLI exits 1.
+class usage_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace rtvk

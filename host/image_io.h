@@ -1,0 +1,37 @@
+#pragma once
+#include <filesystem>
+#include <string>
+
+#include "image.h"
+
+namespace rtvk {
+
+enum class file_format { ppm, png };
+enum class ppm_encoding { ascii_p3, binary_p6 };
+
+// The format for an output path, from its extension (.ppm or .png, any case).
+// Throws usage_error naming the flag and the path for anything else.
+file_format format_for_path(const std::filesystem::path& path, const std::string& flag);
+
+// Checks, before any work is done, that `path` can be written: known extension, existing folder.
+// Throws usage_error naming the flag and the value.
+void check_output_path(const std::filesystem::path& path, const std::string& flag);
+
+std::string encode_ppm(const image_rgb8& img, ppm_encoding enc);
+std::string encode_png(const image_rgb8& img);
+
+// Encodes by the path's extension and writes atomically (never a partial file at `path`).
+void write_image(const image_rgb8& img, const std::filesystem::path& path,
+                 ppm_encoding enc = ppm_encoding::ascii_p3);
+
+// Thrown when a file cannot be read or is not a valid image.
+class image_read_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Reads PNG or PPM (P3 or P6, any maxval up to 255), told apart by content, not name.
+image_rgb8 read_image(const std::filesystem::path& path);
+image_rgb8 decode_ppm(const std::string& bytes, const std::string& name);
+
+}  // namespace rtvk

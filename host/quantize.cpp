@@ -1,0 +1,19 @@
+#include "quantize.h"
+
+namespace rtvk {
+
+image_rgb8 quantize(const framebuffer& fb) {
+  image_rgb8 img{fb.width(), fb.height(), {}};
+  img.rgb.reserve(img.size_bytes());
+  for (int y = 0; y < fb.height(); ++y) {
+    for (int x = 0; x < fb.width(); ++x) {
+      const color& c = fb.at(x, y);
+      img.rgb.push_back(to_byte(c.r));
+      img.rgb.push_back(to_byte(c.g));
+      img.rgb.push_back(to_byte(c.b));
+    }
+  }
+  return img;
+}
+
+}  // namespace rtvk

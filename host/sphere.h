@@ -1,0 +1,17 @@
+#pragma once
+#include "hittable.h"
+
+namespace rtvk {
+
+class sphere final : public hittable {
+ public:
+  sphere() = default;
+  sphere(const point3& center, double radius) : center(center), radius(radius) {}
+
+  bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
+
+  point3 center{};      // scene units
+  double radius = 0.0;  // scene units, > 0
+};
+
+}  // namespace rtvk
