@@ -3,9 +3,13 @@
 #include <exception>
 #include <iostream>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "commands.h"
 #include "errors.h"
+#include "image_io.h"
 #include "version.h"
 
 namespace rtvk {
@@ -16,7 +20,11 @@ int run_cli(int argc, char** argv) {
   app.set_version_flag("--version", std::string("rtvk ") + version_string);
   app.require_subcommand(1);
 
-  const command_action render = add_render_command(app);
+  const std::vector<std::pair<std::string, command_action>> commands = {
+      {"render", add_render_command(app)},
+      {"compare", add_compare_command(app)},
+      {"devices", add_devices_command(app)},
+  };
 
   try {
     app.parse(argc, argv);
@@ -28,9 +36,13 @@ int run_cli(int argc, char** argv) {
   }
 
   try {
-    if (app.got_subcommand("render")) return render();
+    for (const auto& [name, action] : commands)
+      if (app.got_subcommand(name)) return action();
     return 2;
   } catch (const usage_error& e) {
+    std::cerr << "rtvk: " << e.what() << '\n';
+    return 2;
+  } catch (const image_read_error& e) {
     std::cerr << "rtvk: " << e.what() << '\n';
     return 2;
   } catch (const std::invalid_argument& e) {

@@ -9,5 +9,7 @@ namespace rtvk {
 using command_action = std::function<int()>;
 
 command_action add_render_command(CLI::App& app);
+command_action add_compare_command(CLI::App& app);
+command_action add_devices_command(CLI::App& app);
 
 }  // namespace rtvk

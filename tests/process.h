@@ -27,8 +27,23 @@ inline std::string slurp(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// The current environment with `overrides` ("NAME=value") replacing or adding variables.
+inline std::vector<std::string> environment_with(const std::vector<std::string>& overrides) {
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e) {
+    const std::string entry(*e);
+    bool replaced = false;
+    for (const auto& o : overrides)
+      replaced |= entry.compare(0, o.find('=') + 1, o, 0, o.find('=') + 1) == 0;
+    if (!replaced) env.push_back(entry);
+  }
+  env.insert(env.end(), overrides.begin(), overrides.end());
+  return env;
+}
+
 // Runs the rtvk executable with args, stdin from /dev/null, and waits for it.
-inline process_result run_rtvk(const std::vector<std::string>& args) {
+inline process_result run_rtvk(const std::vector<std::string>& args,
+                               const std::vector<std::string>& env_overrides = {}) {
   temp_dir io;
   const std::string out = (io.path() / "out").string(), err = (io.path() / "err").string();
   posix_spawn_file_actions_t fa;
@@ -41,8 +56,12 @@ inline process_result run_rtvk(const std::vector<std::string>& args) {
   std::vector<char*> argv;
   for (auto& s : storage) argv.push_back(s.data());
   argv.push_back(nullptr);
+  std::vector<std::string> env = environment_with(env_overrides);
+  std::vector<char*> envp;
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawn(&pid, RTVK_EXE, &fa, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid, RTVK_EXE, &fa, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&fa);
   if (rc != 0) throw std::runtime_error("posix_spawn failed");
   int wstatus = 0;

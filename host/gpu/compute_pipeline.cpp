@@ -1,0 +1,100 @@
+#include "compute_pipeline.h"
+
+#include "vk_error.h"
+
+namespace rtvk::gpu {
+
+compute_pipeline::compute_pipeline(const gpu_context& ctx, std::span<const std::uint32_t> spirv,
+                                   const std::vector<buffer_binding>& bindings,
+                                   std::uint32_t push_constant_bytes,
+                                   std::span<const std::uint32_t> spec_constants) {
+  const VkDevice dev = ctx.vk();
+
+  std::vector<VkDescriptorSetLayoutBinding> layout_bindings;
+  for (const auto& b : bindings)
+    layout_bindings.push_back({b.binding, b.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+  VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  set_info.bindingCount = std::uint32_t(layout_bindings.size());
+  set_info.pBindings = layout_bindings.data();
+  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+  vk_check(vkCreateDescriptorSetLayout(dev, &set_info, nullptr, &set_layout),
+           "vkCreateDescriptorSetLayout");
+  set_layout_ = unique_set_layout(dev, set_layout);
+
+  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, push_constant_bytes};
+  VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layout_info.setLayoutCount = 1;
+  layout_info.pSetLayouts = &set_layout;
+  layout_info.pushConstantRangeCount = push_constant_bytes ? 1 : 0;
+  layout_info.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  vk_check(vkCreatePipelineLayout(dev, &layout_info, nullptr, &layout), "vkCreatePipelineLayout");
+  layout_ = unique_pipeline_layout(dev, layout);
+
+  VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  module_info.codeSize = spirv.size_bytes();
+  module_info.pCode = spirv.data();
+  VkShaderModule raw_module = VK_NULL_HANDLE;
+  vk_check(vkCreateShaderModule(dev, &module_info, nullptr, &raw_module), "vkCreateShaderModule");
+  const unique_shader_module module(dev, raw_module);  // needed only until the pipeline exists
+
+  std::vector<VkSpecializationMapEntry> entries;
+  for (std::uint32_t i = 0; i < spec_constants.size(); ++i)
+    entries.push_back({i, std::uint32_t(i * sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+  const VkSpecializationInfo spec{std::uint32_t(entries.size()), entries.data(),
+                                  spec_constants.size_bytes(), spec_constants.data()};
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = raw_module;
+  info.stage.pName = "main";
+  info.stage.pSpecializationInfo = entries.empty() ? nullptr : &spec;
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  vk_check(vkCreateComputePipelines(dev, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+           "vkCreateComputePipelines");
+  pipeline_ = unique_pipeline(dev, pipeline);
+
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (const auto& b : bindings) sizes.push_back({b.type, 1});
+  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool_info.maxSets = 1;
+  pool_info.poolSizeCount = std::uint32_t(sizes.size());
+  pool_info.pPoolSizes = sizes.data();
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  vk_check(vkCreateDescriptorPool(dev, &pool_info, nullptr, &pool), "vkCreateDescriptorPool");
+  pool_ = unique_descriptor_pool(dev, pool);
+
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = pool;
+  alloc.descriptorSetCount = 1;
+  alloc.pSetLayouts = &set_layout;
+  vk_check(vkAllocateDescriptorSets(dev, &alloc, &set_), "vkAllocateDescriptorSets");
+
+  std::vector<VkDescriptorBufferInfo> infos;
+  infos.reserve(bindings.size());  // the writes below point into it
+  std::vector<VkWriteDescriptorSet> writes;
+  for (const auto& b : bindings) {
+    infos.push_back({b.buffer, 0, VK_WHOLE_SIZE});
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set_;
+    w.dstBinding = b.binding;
+    w.descriptorCount = 1;
+    w.descriptorType = b.type;
+    w.pBufferInfo = &infos.back();
+    writes.push_back(w);
+  }
+  vkUpdateDescriptorSets(dev, std::uint32_t(writes.size()), writes.data(), 0, nullptr);
+}
+
+void compute_pipeline::bind(VkCommandBuffer cb) const {
+  vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+  vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &set_, 0,
+                          nullptr);
+}
+
+void compute_pipeline::push(VkCommandBuffer cb, const void* data, std::uint32_t bytes) const {
+  vkCmdPushConstants(cb, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, bytes, data);
+}
+
+}  // namespace rtvk::gpu

@@ -1,0 +1,59 @@
+#pragma once
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "instance.h"
+#include "physical_device.h"
+#include "vk_handle.h"
+
+namespace rtvk::gpu {
+
+struct gpu_options {
+  std::string device;     // --device: index, name substring, or empty for the default pick
+  bool validate = false;  // enable VK_LAYER_KHRONOS_validation
+  std::chrono::milliseconds fence_timeout{120'000};  // longest wait for one submission
+};
+
+// One chosen device with its queue, command pool and fence: everything a render submits with.
+class gpu_context {
+ public:
+  explicit gpu_context(const gpu_options& options);
+  ~gpu_context();
+  gpu_context(const gpu_context&) = delete;
+  gpu_context& operator=(const gpu_context&) = delete;
+
+  const device_info& device() const { return devices_[chosen_]; }
+  const std::vector<device_info>& devices() const { return devices_; }
+  std::size_t chosen() const { return chosen_; }
+  VkDevice vk() const { return device_.get(); }
+  std::uint32_t validation_messages() const { return instance_.validation_messages(); }
+  bool validating() const { return instance_.validating(); }
+
+  // A memory type allowed by type_bits with all `required` flags, preferring one that also has
+  // `preferred`. Throws when there is none.
+  std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
+                            VkMemoryPropertyFlags preferred = 0) const;
+  bool memory_type_has(std::uint32_t type, VkMemoryPropertyFlags flags) const;
+
+  // Records one command buffer, submits it and waits for the fence. A wait longer than the
+  // timeout, or a lost device, throws vk_error naming the device; the context is then unusable.
+  void submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
+
+ private:
+  gpu_options options_;                        // as given
+  vulkan_instance instance_;                   // destroyed last
+  std::vector<device_info> devices_;           // every device the instance sees
+  std::size_t chosen_ = 0;                     // index into devices_
+  VkPhysicalDeviceMemoryProperties memory_{};  // of the chosen device
+  unique_device device_;                       // logical device
+  VkQueue queue_ = VK_NULL_HANDLE;             // first queue of the compute family
+  unique_command_pool pool_;                   // command buffers for submit_and_wait
+  unique_fence fence_;                         // signalled by each submission
+  bool lost_ = false;                          // a wait timed out or the device was lost
+};
+
+}  // namespace rtvk::gpu

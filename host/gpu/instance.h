@@ -1,0 +1,32 @@
+#pragma once
+#include <atomic>
+#include <cstdint>
+
+#include "vk_handle.h"
+
+namespace rtvk::gpu {
+
+// The Vulkan instance, with VK_LAYER_KHRONOS_validation and a debug messenger when asked.
+// Validation warnings and errors go to stderr as "validation: ..." and are counted, so tests
+// can fail on any of them.
+class vulkan_instance {
+ public:
+  // Throws no_device_error when there is no Vulkan loader or no Vulkan 1.1 implementation.
+  explicit vulkan_instance(bool validate);
+  vulkan_instance(const vulkan_instance&) = delete;
+  vulkan_instance& operator=(const vulkan_instance&) = delete;
+
+  VkInstance get() const { return instance_.get(); }
+  bool validating() const { return validating_; }
+  // Validation-layer messages of WARNING or ERROR severity so far.
+  std::uint32_t validation_messages() const { return messages_.load(); }
+
+ private:
+  // Destroyed in reverse order: messenger, instance; the counter outlives both.
+  bool validating_ = false;                 // the layer and messenger are enabled
+  std::atomic<std::uint32_t> messages_{0};  // warnings and errors reported by the layer
+  unique_instance instance_;                // the instance itself
+  unique_messenger messenger_;              // routes layer messages to stderr
+};
+
+}  // namespace rtvk::gpu

@@ -1,0 +1,174 @@
+#include "physical_device.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstring>
+
+#include "errors.h"
+#include "vk_error.h"
+
+namespace rtvk::gpu {
+namespace {
+
+bool has_device_extension(VkPhysicalDevice dev, const char* name) {
+  std::uint32_t n = 0;
+  vk_check(vkEnumerateDeviceExtensionProperties(dev, nullptr, &n, nullptr),
+           "vkEnumerateDeviceExtensionProperties");
+  std::vector<VkExtensionProperties> exts(n);
+  vk_check(vkEnumerateDeviceExtensionProperties(dev, nullptr, &n, exts.data()),
+           "vkEnumerateDeviceExtensionProperties");
+  return std::any_of(exts.begin(), exts.end(),
+                     [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
+  VkPhysicalDeviceProperties props{};
+  vkGetPhysicalDeviceProperties(dev, &props);
+  device_info d;
+  d.index = index;
+  d.handle = dev;
+  d.name = props.deviceName;
+  d.type = props.deviceType;
+  d.vendor_id = props.vendorID;
+  d.driver_version = props.driverVersion;
+  d.api_version = props.apiVersion;
+  d.limits = props.limits;
+
+  if (props.apiVersion >= VK_API_VERSION_1_2 ||
+      has_device_extension(dev, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME)) {
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    props2.pNext = &driver;
+    vkGetPhysicalDeviceProperties2(dev, &props2);
+    d.driver_name = driver.driverName;
+    d.driver_info = driver.driverInfo;
+  }
+
+  std::uint32_t n = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(dev, &n, nullptr);
+  std::vector<VkQueueFamilyProperties> families(n);
+  vkGetPhysicalDeviceQueueFamilyProperties(dev, &n, families.data());
+  const auto compute = std::find_if(families.begin(), families.end(), [](const auto& f) {
+    return (f.queueFlags & VK_QUEUE_COMPUTE_BIT) && f.queueCount > 0;
+  });
+  if (props.apiVersion < VK_API_VERSION_1_1)
+    d.unusable_reason = "supports only Vulkan " + version_string(props.apiVersion);
+  else if (compute == families.end())
+    d.unusable_reason = "has no compute queue";
+  else
+    d.compute_queue_family = std::uint32_t(compute - families.begin());
+  return d;
+}
+
+int type_rank(VkPhysicalDeviceType t) {
+  switch (t) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return 3;
+    default:
+      return 4;
+  }
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+}  // namespace
+
+std::vector<device_info> list_devices(VkInstance instance) {
+  std::uint32_t n = 0;
+  vk_check(vkEnumeratePhysicalDevices(instance, &n, nullptr), "vkEnumeratePhysicalDevices");
+  std::vector<VkPhysicalDevice> handles(n);
+  vk_check(vkEnumeratePhysicalDevices(instance, &n, handles.data()), "vkEnumeratePhysicalDevices");
+  std::vector<device_info> devices;
+  for (std::uint32_t i = 0; i < n; ++i) devices.push_back(describe(handles[i], i));
+  return devices;
+}
+
+std::string type_name(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return "discrete";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return "integrated";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "virtual";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "cpu";
+    default:
+      return "other";
+  }
+}
+
+std::string version_string(std::uint32_t v) {
+  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) +
+         "." + std::to_string(VK_API_VERSION_PATCH(v));
+}
+
+std::string driver_version_string(const device_info& d) {
+  const std::uint32_t v = d.driver_version;
+  if (d.vendor_id == 0x10DE)  // NVIDIA: 10.8.8.6 bits
+    return std::to_string(v >> 22) + "." + std::to_string((v >> 14) & 0xff) + "." +
+           std::to_string((v >> 6) & 0xff) + "." + std::to_string(v & 0x3f);
+  return version_string(v);
+}
+
+std::size_t default_device(const std::vector<device_info>& devices) {
+  std::size_t best = devices.size();
+  for (std::size_t i = 0; i < devices.size(); ++i) {
+    if (!devices[i].unusable_reason.empty()) continue;
+    if (best == devices.size() || type_rank(devices[i].type) < type_rank(devices[best].type))
+      best = i;
+  }
+  if (best == devices.size())
+    throw no_device_error(devices.empty() ? "no Vulkan device found"
+                                          : "no usable Vulkan device (need 1.1 with compute)");
+  return best;
+}
+
+std::size_t select_device(const std::vector<device_info>& devices, const std::string& selector) {
+  if (selector.empty()) return default_device(devices);
+  std::size_t found = devices.size();
+  unsigned index = 0;
+  const auto [end, ec] = std::from_chars(selector.data(), selector.data() + selector.size(), index);
+  if (ec == std::errc() && end == selector.data() + selector.size()) {
+    if (index < devices.size()) found = index;
+  } else {
+    for (std::size_t i = 0; i < devices.size() && found == devices.size(); ++i)
+      if (lower(devices[i].name).find(lower(selector)) != std::string::npos) found = i;
+  }
+  std::string listing;
+  for (const auto& d : devices)
+    listing += (listing.empty() ? "" : "; ") + std::to_string(d.index) + ": " + d.name;
+  if (devices.empty()) listing = "none";
+  if (found == devices.size())
+    throw usage_error("--device: '" + selector + "' matches no Vulkan device (devices: " + listing +
+                      ")");
+  if (!devices[found].unusable_reason.empty())
+    throw usage_error("--device: '" + selector + "' is " + devices[found].name + ", which " +
+                      devices[found].unusable_reason);
+  return found;
+}
+
+std::string describe_devices(const std::vector<device_info>& devices, std::size_t chosen) {
+  std::string out;
+  for (const auto& d : devices) {
+    out += (d.index == chosen ? "* " : "  ") + std::to_string(d.index) + ": " + d.name + " [" +
+           type_name(d.type) + "] driver " +
+           (d.driver_name.empty() ? std::string("?") : d.driver_name) + " " +
+           driver_version_string(d) + (d.driver_info.empty() ? "" : " (" + d.driver_info + ")") +
+           ", Vulkan " + version_string(d.api_version) +
+           (d.unusable_reason.empty() ? "" : " -- unusable: " + d.unusable_reason) + "\n";
+  }
+  return out;
+}
+
+}  // namespace rtvk::gpu

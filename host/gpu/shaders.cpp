@@ -1,0 +1,18 @@
+#include "shaders.h"
+
+// The generated headers declare uint32_t arrays without including <cstdint> themselves.
+#include <cstdint>
+
+#include "probe_spv.h"
+#include "render_spv.h"
+
+namespace rtvk::gpu {
+
+std::span<const std::uint32_t> render_shader() {
+  return render_spv;
+}
+std::span<const std::uint32_t> probe_shader() {
+  return probe_spv;
+}
+
+}  // namespace rtvk::gpu

@@ -1,0 +1,11 @@
+#pragma once
+#include <cstdint>
+#include <span>
+
+namespace rtvk::gpu {
+
+// SPIR-V compiled from shaders/ at build time and embedded in the binary.
+std::span<const std::uint32_t> render_shader();  // render.comp
+std::span<const std::uint32_t> probe_shader();   // probe.comp
+
+}  // namespace rtvk::gpu

@@ -1,0 +1,42 @@
+// Mirrors host/sphere.cpp and host/hittable_list.cpp. Expects `spheres` (gpu_sphere[]) and
+// `pc.sphere_count` to be declared by the including shader.
+#ifndef RTVK_SPHERE_GLSL
+#define RTVK_SPHERE_GLSL
+#include "ray.glsl"
+
+bool hit_sphere(gpu_sphere s, ray r, float t_min, float t_max, inout hit_record rec) {
+  vec3 oc = r.origin - s.center;
+  float a = dot(r.direction, r.direction);
+  float half_b = dot(oc, r.direction);
+  float c = dot(oc, oc) - s.radius * s.radius;
+  float discriminant = half_b * half_b - a * c;
+  if (discriminant < 0.0) return false;
+  float sqrtd = sqrt(discriminant);
+
+  float root = (-half_b - sqrtd) / a;
+  if (root < t_min || t_max < root) {
+    root = (-half_b + sqrtd) / a;
+    if (root < t_min || t_max < root) return false;
+  }
+  rec.t = root;
+  rec.p = ray_at(r, root);
+  set_face_normal(rec, r, divide(rec.p - s.center, s.radius));
+  return true;
+}
+
+// The closest hit over every sphere, as hittable_list::hit.
+bool hit_world(ray r, float t_min, float t_max, inout hit_record rec) {
+  bool hit_anything = false;
+  float closest_so_far = t_max;
+  for (uint i = 0u; i < pc.sphere_count; ++i) {
+    hit_record temp;
+    if (hit_sphere(spheres[i], r, t_min, closest_so_far, temp)) {
+      hit_anything = true;
+      closest_so_far = temp.t;
+      rec = temp;
+    }
+  }
+  return hit_anything;
+}
+
+#endif

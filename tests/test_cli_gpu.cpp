@@ -1,0 +1,139 @@
+// The real executable on the GPU: render, compare, devices, and the no-device paths.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "gpu_fixture.h"
+#include "image_io.h"
+#include "process.h"
+
+namespace rtvk {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_rtvk;
+
+// The GPU flags for the device under test.
+std::vector<std::string> gpu_args(std::vector<std::string> args) {
+  if (!test::test_device().empty()) args.insert(args.end(), {"--device", test::test_device()});
+  return args;
+}
+
+class CliGpu : public test::GpuTest {};
+
+TEST_F(CliGpu, ValidatedGpuRenderEqualsTheCpuReference) {
+  test::temp_dir dir;
+  const auto gpu_ppm = (dir.path() / "gpu.ppm").string(),
+             cpu_ppm = (dir.path() / "cpu.ppm").string();
+  const auto g = run_rtvk(
+      gpu_args({"render", "--scene", "seed", "--backend", "gpu", "--validate", "-o", gpu_ppm}));
+  ASSERT_EQ(g.status, 0) << g.err;
+  EXPECT_EQ(g.err.find("validation:"), std::string::npos) << g.err;
+  EXPECT_NE(g.err.find("on gpu"), std::string::npos) << g.err;
+  ASSERT_EQ(run_rtvk({"render", "--backend", "cpu", "-o", cpu_ppm}).status, 0);
+
+  const auto same = run_rtvk({"compare", gpu_ppm, cpu_ppm});
+  EXPECT_EQ(same.status, 0) << same.out;
+  EXPECT_NE(same.out.find("alike"), std::string::npos) << same.out;
+
+  // An upside-down copy of the reference must be reported as different.
+  image_rgb8 flipped = read_image(cpu_ppm);
+  const image_rgb8 original = flipped;
+  for (int y = 0; y < flipped.height; ++y)
+    std::copy_n(original.pixel(0, original.height - 1 - y), original.width * 3,
+                flipped.rgb.begin() + std::ptrdiff_t(y) * original.width * 3);
+  const auto flipped_png = (dir.path() / "flipped.png").string();
+  write_image(flipped, flipped_png);
+  const auto diff_png = (dir.path() / "diff.png").string();
+  const auto differ = run_rtvk({"compare", gpu_ppm, flipped_png, "--diff", diff_png});
+  EXPECT_EQ(differ.status, 1) << differ.out;
+  EXPECT_NE(differ.out.find("different"), std::string::npos) << differ.out;
+  EXPECT_TRUE(fs::exists(diff_png));
+}
+
+TEST_F(CliGpu, BackendBothChecksGpuAgainstCpu) {
+  test::temp_dir dir;
+  const auto out = (dir.path() / "both.png").string();
+  const auto r = run_rtvk(gpu_args({"render", "--backend", "both", "--width", "160", "-o", out}));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("gpu vs cpu: alike"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(out));
+}
+
+TEST_F(CliGpu, ValidateByEnvironmentVariable) {
+  test::temp_dir dir;
+  const auto r =
+      run_rtvk(gpu_args({"render", "--backend", "gpu", "-o", (dir.path() / "a.png").string()}),
+               {"RTVK_VALIDATE=1"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
+}
+
+TEST_F(CliGpu, DevicesListsAndMarksThePick) {
+  const auto r = run_rtvk({"devices"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("* 0: "), std::string::npos) << r.out;
+  if (test::test_device().empty()) {
+    EXPECT_NE(r.out.find("llvmpipe"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("[cpu]"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Vulkan 1."), std::string::npos) << r.out;
+  }
+}
+
+TEST_F(CliGpu, DeviceSelectorsThatMatchNothingAreUsageErrors) {
+  test::temp_dir dir;
+  const auto out = dir.path() / "x.png";
+  for (const char* sel : {"99", "no-such-gpu"}) {
+    const auto r = run_rtvk({"render", "--backend", "gpu", "--device", sel, "-o", out.string()});
+    EXPECT_EQ(r.status, 2) << sel << ": " << r.err;
+    EXPECT_NE(r.err.find(std::string("--device: '") + sel), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("0: "), std::string::npos) << "lists the devices: " << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  // By name, case-insensitively.
+  if (test::test_device().empty()) {
+    const auto r =
+        run_rtvk({"render", "--backend", "gpu", "--device", "LLVMPIPE", "-o", out.string()});
+    EXPECT_EQ(r.status, 0) << r.err;
+  }
+}
+
+TEST(CliNoDevice, GpuBackendExplainsHowToGetADevice) {
+  test::temp_dir dir;
+  const auto out = dir.path() / "x.png";
+  const std::vector<std::string> no_driver{"VK_DRIVER_FILES=/nonexistent/icd.json",
+                                           "VK_ICD_FILENAMES=/nonexistent/icd.json"};
+  const auto gpu = run_rtvk({"render", "--backend", "gpu", "-o", out.string()}, no_driver);
+  EXPECT_EQ(gpu.status, 1) << gpu.err;
+  EXPECT_NE(gpu.err.find("mesa-vulkan-drivers"), std::string::npos) << gpu.err;
+  EXPECT_NE(gpu.err.find("--backend cpu"), std::string::npos) << gpu.err;
+  EXPECT_FALSE(fs::exists(out));
+
+  const auto fallback = run_rtvk({"render", "--backend", "auto", "-o", out.string()}, no_driver);
+  EXPECT_EQ(fallback.status, 0) << fallback.err;
+  EXPECT_NE(fallback.err.find("rendering on the CPU"), std::string::npos) << fallback.err;
+  EXPECT_TRUE(fs::exists(out));
+}
+
+TEST(CliCompare, TroubleAndSizeMismatch) {
+  test::temp_dir dir;
+  const auto a = (dir.path() / "a.ppm").string(), b = (dir.path() / "b.ppm").string();
+  ASSERT_EQ(run_rtvk({"render", "-q", "--width", "40", "-o", a}).status, 0);
+  ASSERT_EQ(run_rtvk({"render", "-q", "--width", "41", "-o", b}).status, 0);
+  EXPECT_EQ(run_rtvk({"compare", a, b}).status, 1);  // different sizes
+  EXPECT_EQ(run_rtvk({"compare", a, a}).status, 0);
+  EXPECT_EQ(run_rtvk({"compare", a, (dir.path() / "missing.ppm").string()}).status, 2);
+  const auto truncated = (dir.path() / "t.ppm").string();
+  std::ofstream(truncated) << "P6\n40 22\n255\nabc";
+  const auto t = run_rtvk({"compare", a, truncated});
+  EXPECT_EQ(t.status, 2);
+  EXPECT_NE(t.err.find("truncated"), std::string::npos) << t.err;
+  const auto fake_png = (dir.path() / "f.png").string();
+  std::ofstream(fake_png) << "not a png";
+  EXPECT_EQ(run_rtvk({"compare", a, fake_png}).status, 2);
+  EXPECT_EQ(run_rtvk({"compare", a, a, "--tolerance", "300"}).status, 2);
+}
+
+}  // namespace
+}  // namespace rtvk
