@@ -35,8 +35,10 @@ int run_compare(const compare_options& o) {
     std::printf("PSNR      %.2f dB\n", d.psnr_db);
   std::printf("over tol  %lld pixels (%.4f%%) differ by more than %d levels\n",
               static_cast<long long>(d.pixels_over), 100 * d.share_over, o.rule.tolerance);
-  std::printf("verdict   %s (at most %.4f%% of pixels may exceed the tolerance)\n",
+  std::printf("verdict   %s (at most %.4f%% of pixels may exceed the tolerance",
               alike ? "alike" : "different", 100 * o.rule.max_share);
+  if (o.rule.min_psnr_db > 0) std::printf("; PSNR at least %.1f dB", o.rule.min_psnr_db);
+  std::printf(")\n");
   if (!o.diff.empty()) write_image(difference_heatmap(a, b), o.diff);
   return alike ? 0 : 1;
 }
@@ -57,6 +59,10 @@ command_action add_compare_command(CLI::App& app) {
   cmd->add_option("--max-share", opts->rule.max_share,
                   "Largest fraction of pixels (0 to 1) allowed beyond the tolerance")
       ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--min-psnr", opts->rule.min_psnr_db,
+                  "Smallest PSNR, in dB, that still counts as alike (0: not checked)")
+      ->check(CLI::Range(0.0, 1000.0))
       ->capture_default_str();
   return [opts] { return run_compare(*opts); };
 }

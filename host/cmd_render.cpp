@@ -1,46 +1,97 @@
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 
-#include "aspect.h"
 #include "camera.h"
 #include "commands.h"
 #include "errors.h"
+#include "format.h"
 #include "gpu/context.h"
 #include "gpu/render_gpu.h"
 #include "gpu/vk_error.h"
 #include "image_compare.h"
 #include "image_io.h"
+#include "parse_values.h"
+#include "progress.h"
 #include "quantize.h"
 #include "render_cpu.h"
 #include "scene.h"
+#include "scene_file.h"
 
 namespace rtvk {
 namespace {
 
+// Flags that override the scene's settings; each is applied only when given.
+struct overrides {
+  CLI::Option* width = nullptr;
+  CLI::Option* aspect = nullptr;
+  CLI::Option* spp = nullptr;
+  CLI::Option* depth = nullptr;
+  CLI::Option* seed = nullptr;
+  CLI::Option* lookfrom = nullptr;
+  CLI::Option* lookat = nullptr;
+  CLI::Option* vup = nullptr;
+  CLI::Option* vfov = nullptr;
+  CLI::Option* aperture = nullptr;
+  CLI::Option* focus_dist = nullptr;
+};
+
 struct render_options {
-  std::string scene = "seed";     // built-in scene name
+  std::string scene = "seed";     // built-in scene name or .json file
   std::string backend = "cpu";    // cpu, gpu, auto or both
-  int width = 400;                // image width, pixels
-  std::string aspect = "16:9";    // width:height or a decimal
   std::string output;             // image path; .png or .ppm
   std::string ppm_format = "P3";  // P3 (ASCII, as the lesson) or P6 (binary)
   std::string device;             // GPU selector: index or name substring
   bool validate = false;          // Vulkan validation layer on
-  bool quiet = false;             // no summary line
+  bool quiet = false;             // no summary line, no progress bar
+  int width = 0;                  // overrides, valid where the option was given
+  std::string aspect;
+  int spp = 0;
+  int depth = 0;
+  long long seed = 0;
+  std::string lookfrom, lookat, vup;
+  double vfov = 0, aperture = 0, focus_dist = 0;
+  overrides given;
 };
 
-camera make_camera(const render_options& o) {
-  const double aspect = parse_aspect(o.aspect);
+bool given(const CLI::Option* o) { return o && o->count() > 0; }
+
+double checked(double v, bool ok, const std::string& flag, const std::string& expected) {
+  if (!ok || !std::isfinite(v))
+    throw usage_error(flag + ": " + format_number(v) + " is not " + expected);
+  return v;
+}
+
+// The scene's settings with the command line's overrides applied, checked.
+void apply_overrides(const render_options& o, scene& s) {
+  const overrides& g = o.given;
+  render_settings& r = s.render;
+  if (given(g.width)) r.width = o.width;
+  if (given(g.aspect)) r.aspect = parse_aspect(o.aspect);
+  if (given(g.spp)) r.spp = o.spp;
+  if (given(g.depth)) r.max_depth = o.depth;
+  if (given(g.seed)) r.seed = std::uint32_t(o.seed);
+  camera_pose& c = s.camera;
+  if (given(g.lookfrom)) c.lookfrom = parse_vec3(o.lookfrom, "--lookfrom");
+  if (given(g.lookat)) c.lookat = parse_vec3(o.lookat, "--lookat");
+  if (given(g.vup)) c.vup = parse_vec3(o.vup, "--vup");
+  if (given(g.vfov)) c.vfov = checked(o.vfov, o.vfov > 0 && o.vfov < 180, "--vfov", "in (0, 180) degrees");
+  if (given(g.aperture)) c.aperture = checked(o.aperture, o.aperture >= 0, "--aperture", ">= 0");
+  if (given(g.focus_dist))
+    c.focus_dist = checked(o.focus_dist, o.focus_dist > 0, "--focus-dist", "> 0");
+}
+
+camera make_camera(const render_options& o, const scene& s) {
   try {
-    return camera(aspect, o.width);
+    return camera(s.camera, s.render.aspect, s.render.width);
   } catch (const std::invalid_argument& e) {
-    throw usage_error("--aspect " + o.aspect + " with --width " + std::to_string(o.width) + ": " +
-                      e.what());
+    const std::string aspect = given(o.given.aspect) ? o.aspect : format_number(s.render.aspect);
+    throw usage_error("--width " + std::to_string(s.render.width) + " / --aspect " + aspect +
+                      " / camera of " + o.scene + ": " + e.what());
   }
 }
 
@@ -55,21 +106,27 @@ struct rendered {
   double seconds = 0;   // rendering only, not set-up or file output
 };
 
-rendered draw_cpu(const camera& cam, const scene& s) {
+rendered draw_cpu(const render_options& o, const camera& cam, const scene& s) {
+  progress_bar bar("rendering on the CPU", cam.image_height(), !o.quiet);
   const auto start = std::chrono::steady_clock::now();
-  const framebuffer fb = render_cpu(cam, make_world(s));
-  return {quantize(fb), "cpu", seconds_since(start)};
+  const framebuffer fb = render_cpu(cam, s, s.render, [&](int rows) { bar.update(rows); });
+  bar.finish();
+  return {quantize(fb, s.render.gamma), "cpu", seconds_since(start)};
 }
 
-rendered draw_gpu(gpu::gpu_context& ctx, const camera& cam, const scene& s) {
+rendered draw_gpu(const render_options& o, gpu::gpu_context& ctx, const camera& cam,
+                  const scene& s) {
+  progress_bar bar("rendering on the GPU", s.render.spp, !o.quiet);
   const auto start = std::chrono::steady_clock::now();
-  const framebuffer fb = gpu::render_gpu(ctx, cam, s);
+  const framebuffer fb =
+      gpu::render_gpu(ctx, cam, s, s.render, [&](int samples) { bar.update(samples); });
+  bar.finish();
   const double seconds = seconds_since(start);
   if (ctx.validation_messages() > 0)
     throw std::runtime_error("the Vulkan validation layer reported " +
                              std::to_string(ctx.validation_messages()) +
                              " problem(s) (above); no image written");
-  return {quantize(fb), "gpu (" + ctx.device().name + ")", seconds};
+  return {quantize(fb, s.render.gamma), "gpu (" + ctx.device().name + ")", seconds};
 }
 
 gpu::gpu_options gpu_options_from(const render_options& o) {
@@ -82,40 +139,51 @@ gpu::gpu_options gpu_options_from(const render_options& o) {
 
 void summarize(const render_options& o, const scene& s, const rendered& r) {
   if (o.quiet) return;
-  std::fprintf(stderr, "rtvk: %s %dx%d on %s in %.3f s -> %s\n", s.name.c_str(), r.image.width,
-               r.image.height, r.backend.c_str(), r.seconds, o.output.c_str());
+  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, on %s in %.3f s -> %s\n", s.name.c_str(),
+               r.image.width, r.image.height, s.render.spp, r.backend.c_str(), r.seconds,
+               o.output.c_str());
+}
+
+// Deterministic scenes (one sample, no jitter, no lens, normal shading) must agree to a level;
+// Monte Carlo ones to the noise rule.
+agreement agreement_for(const scene& s, const camera& cam) {
+  bool deterministic = s.render.spp == 1 && !s.render.jitter && cam.lens_radius() == 0;
+  for (const auto& m : s.materials) deterministic &= m.m.type == material_type::normal;
+  return deterministic ? agreement{} : monte_carlo_agreement;
 }
 
 // --backend both: the GPU image is written; the exit status says whether the CPU agrees.
 int render_both(const render_options& o, const camera& cam, const scene& s, ppm_encoding enc) {
   gpu::gpu_context ctx(gpu_options_from(o));
-  const rendered gpu_image = draw_gpu(ctx, cam, s);
-  const rendered cpu_image = draw_cpu(cam, s);
-  const agreement rule;
+  const rendered gpu_image = draw_gpu(o, ctx, cam, s);
+  const rendered cpu_image = draw_cpu(o, cam, s);
+  const agreement rule = agreement_for(s, cam);
   const image_difference d = compare_images(gpu_image.image, cpu_image.image, rule.tolerance);
   write_image(gpu_image.image, o.output, enc);
   summarize(o, s, gpu_image);
   const bool ok = agrees(d, rule);
   std::fprintf(stderr,
-               "rtvk: gpu vs cpu: %s -- max %d levels, mean %.4f, %.4f%% of pixels over %d "
-               "(allowed %.2f%%)\n",
-               ok ? "alike" : "DIFFERENT", d.max_abs, d.mean_abs, 100 * d.share_over,
-               rule.tolerance, 100 * rule.max_share);
+               "rtvk: gpu vs cpu (%.3f s): %s -- PSNR %.1f dB, max %d levels, mean %.4f, %.4f%% "
+               "of pixels over %d (allowed %.2f%%)\n",
+               cpu_image.seconds, ok ? "alike" : "DIFFERENT", d.psnr_db, d.max_abs, d.mean_abs,
+               100 * d.share_over, rule.tolerance, 100 * rule.max_share);
   return ok ? 0 : 1;
 }
 
-int run_render(const render_options& o) {
+int run_render(render_options o) {
   check_output_path(o.output, "--output");
   if (!o.device.empty() && o.backend == "cpu")
     throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");
-  const scene s = builtin_scene(o.scene);
-  const camera cam = make_camera(o);
+  scene s = load_scene(o.scene);
+  check_scene(s);
+  apply_overrides(o, s);
+  const camera cam = make_camera(o, s);
   const ppm_encoding enc = o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3;
 
   if (o.backend == "both") return render_both(o, cam, s, enc);
   std::optional<rendered> result;
   if (o.backend == "cpu") {
-    result = draw_cpu(cam, s);
+    result = draw_cpu(o, cam, s);
   } else {
     std::unique_ptr<gpu::gpu_context> ctx;
     try {
@@ -124,7 +192,7 @@ int run_render(const render_options& o) {
       if (o.backend != "auto") throw;
       std::fprintf(stderr, "rtvk: note: no Vulkan device (%s); rendering on the CPU\n", e.what());
     }
-    result = ctx ? draw_gpu(*ctx, cam, s) : draw_cpu(cam, s);
+    result = ctx ? draw_gpu(o, *ctx, cam, s) : draw_cpu(o, cam, s);
   }
   write_image(result->image, o.output, enc);
   summarize(o, s, *result);
@@ -134,29 +202,48 @@ int run_render(const render_options& o) {
 }  // namespace
 
 command_action add_render_command(CLI::App& app) {
-  auto opts = std::make_shared<render_options>();
+  auto o = std::make_shared<render_options>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
-  cmd->add_option("--scene", opts->scene, "Built-in scene name")->capture_default_str();
-  cmd->add_option("--backend", opts->backend,
+  cmd->add_option("--scene", o->scene,
+                  "Built-in scene (seed, materials, book-final) or a .json scene file")
+      ->capture_default_str();
+  cmd->add_option("--backend", o->backend,
                   "cpu (reference), gpu (Vulkan), auto (gpu if a device exists, else cpu), "
                   "both (gpu, checked against cpu)")
       ->check(CLI::IsMember({"cpu", "gpu", "auto", "both"}))
       ->capture_default_str();
-  cmd->add_option("--width", opts->width, "Image width in pixels")
-      ->check(CLI::Range(1, max_image_side))
-      ->capture_default_str();
-  cmd->add_option("--aspect", opts->aspect, "Aspect ratio, W:H or a decimal")
-      ->capture_default_str();
-  cmd->add_option("-o,--output", opts->output, "Output image (.png or .ppm)")->required();
-  cmd->add_option("--ppm-format", opts->ppm_format, "PPM flavour: P3 (ASCII) or P6 (binary)")
+  cmd->add_option("-o,--output", o->output, "Output image (.png or .ppm)")->required();
+  cmd->add_option("--ppm-format", o->ppm_format, "PPM flavour: P3 (ASCII) or P6 (binary)")
       ->transform(CLI::IsMember({"P3", "P6"}, CLI::ignore_case))
       ->capture_default_str();
-  cmd->add_option("--device", opts->device,
+  cmd->add_option("--device", o->device,
                   "Vulkan device: an index or part of its name (see rtvk devices)");
-  cmd->add_flag("--validate", opts->validate,
+  cmd->add_flag("--validate", o->validate,
                 "Enable VK_LAYER_KHRONOS_validation (also RTVK_VALIDATE=1)");
-  cmd->add_flag("-q,--quiet", opts->quiet, "Print nothing on success");
-  return [opts] { return run_render(*opts); };
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary line and no progress bar");
+
+  overrides& g = o->given;
+  const std::string scene_group = "Scene overrides (default: the scene's own settings)";
+  g.width = cmd->add_option("--width", o->width, "Image width in pixels")
+                ->check(CLI::Range(1, max_image_side))
+                ->group(scene_group);
+  g.aspect = cmd->add_option("--aspect", o->aspect, "Aspect ratio, W:H or a decimal")->group(scene_group);
+  g.spp = cmd->add_option("--spp", o->spp, "Samples per pixel")
+              ->check(CLI::Range(1, max_spp))
+              ->group(scene_group);
+  g.depth = cmd->add_option("--depth", o->depth, "Most bounces per path")
+                ->check(CLI::Range(1, max_depth_limit))
+                ->group(scene_group);
+  g.seed = cmd->add_option("--seed", o->seed, "Random seed (same seed, same image)")
+               ->check(CLI::Range(0ll, 0xffffffffll))
+               ->group(scene_group);
+  g.lookfrom = cmd->add_option("--lookfrom", o->lookfrom, "Camera position x,y,z")->group(scene_group);
+  g.lookat = cmd->add_option("--lookat", o->lookat, "Point looked at x,y,z")->group(scene_group);
+  g.vup = cmd->add_option("--vup", o->vup, "Up direction x,y,z")->group(scene_group);
+  g.vfov = cmd->add_option("--vfov", o->vfov, "Vertical field of view, degrees")->group(scene_group);
+  g.aperture = cmd->add_option("--aperture", o->aperture, "Lens diameter (0: pinhole)")->group(scene_group);
+  g.focus_dist = cmd->add_option("--focus-dist", o->focus_dist, "Distance in focus")->group(scene_group);
+  return [o] { return run_render(*o); };
 }
 
 }  // namespace rtvk

@@ -11,5 +11,6 @@ using command_action = std::function<int()>;
 command_action add_render_command(CLI::App& app);
 command_action add_compare_command(CLI::App& app);
 command_action add_devices_command(CLI::App& app);
+command_action add_scene_command(CLI::App& app);
 
 }  // namespace rtvk

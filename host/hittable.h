@@ -8,6 +8,7 @@ struct hit_record {
   vec3 normal{};            // unit surface normal, facing against the ray
   double t = 0.0;           // ray parameter of the hit
   bool front_face = false;  // true when the ray arrived from outside the surface
+  int material = 0;         // index into the scene's materials
 
   // Stores the normal so that it always opposes the incoming ray.
   void set_face_normal(const ray& r, const vec3& outward_normal) {

@@ -43,7 +43,7 @@ image_difference compare_images(const image_rgb8& a, const image_rgb8& b, int to
 }
 
 bool agrees(const image_difference& d, const agreement& rule) {
-  return d.share_over <= rule.max_share;
+  return d.share_over <= rule.max_share && d.psnr_db >= rule.min_psnr_db;
 }
 
 image_rgb8 difference_heatmap(const image_rgb8& a, const image_rgb8& b) {

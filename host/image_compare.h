@@ -17,12 +17,18 @@ struct image_difference {
 };
 
 // When two renders count as the same picture: at most `max_share` of the pixels may have a
-// channel more than `tolerance` levels off. The defaults are the CPU/GPU agreement rule: float
-// rounding moves a channel by one level, and may flip a few silhouette pixels.
+// channel more than `tolerance` levels off, and the PSNR is at least `min_psnr_db`. The defaults
+// are the CPU/GPU rule for deterministic scenes (the lesson's): float rounding moves a channel by
+// one level and may flip a few silhouette pixels.
 struct agreement {
   int tolerance = 1;         // levels
   double max_share = 0.001;  // fraction of pixels, 0.1 %
+  double min_psnr_db = 0;    // 0: not checked
 };
+
+// The CPU/GPU rule for Monte Carlo renders: both draw the same random numbers, but a path that
+// float rounding sends another way changes a pixel's noise, not the picture.
+inline constexpr agreement monte_carlo_agreement{2, 0.01, 40};
 
 // Requires equal sizes (the caller checks).
 image_difference compare_images(const image_rgb8& a, const image_rgb8& b, int tolerance);

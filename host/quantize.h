@@ -14,6 +14,7 @@ inline std::uint8_t to_byte(double c) {
   return static_cast<std::uint8_t>(255.999 * c);
 }
 
-image_rgb8 quantize(const framebuffer& fb);
+// Encodes with the given gamma (1: none, as the lesson; 2: the book's square root), then to_byte.
+image_rgb8 quantize(const framebuffer& fb, double gamma = 1);
 
 }  // namespace rtvk

@@ -1,17 +1,24 @@
 #pragma once
+#include <functional>
+
 #include "camera.h"
 #include "framebuffer.h"
-#include "hittable.h"
+#include "render_settings.h"
+#include "scene.h"
 
 namespace rtvk {
 
-// Normalized coordinate of pixel i along a side of n pixels: i / (n - 1), as the lesson does,
+// Normalized coordinate of position x along a side of n pixels: x / (n - 1), as the lesson does,
 // and the side's center when n == 1 (where the lesson would divide by zero).
-inline double pixel_coordinate(int i, int n) {
-  return n > 1 ? double(i) / (n - 1) : 0.5;
-}
+inline double pixel_coordinate(double x, int n) { return n > 1 ? x / (n - 1) : 0.5; }
 
-// The lesson's main loop: one ray per pixel, rows from the top.
-framebuffer render_cpu(const camera& cam, const hittable& world);
+// Called with the number of rows finished so far; may be empty.
+using progress_callback = std::function<void(int rows_done)>;
+
+// The lesson's main loop generalized to the book's: rows from the top, `spp` samples per pixel
+// (jittered when asked), lens samples for depth of field. The framebuffer holds the mean linear
+// color; gamma is applied when quantizing.
+framebuffer render_cpu(const camera& cam, const scene& s, const render_settings& rs,
+                       const progress_callback& progress = {});
 
 }  // namespace rtvk

@@ -1,15 +1,109 @@
 #include "scene.h"
 
+#include <cmath>
 #include <memory>
 
 #include "errors.h"
+#include "format.h"
+#include "random.h"
 
 namespace rtvk {
 namespace {
 
-// The lesson's world: one sphere in front of the camera resting on a huge "ground" sphere.
+// The lesson's world: one sphere in front of the camera resting on a huge "ground" sphere,
+// colored by normals at one sample per pixel, as the lesson draws it.
 scene seed_scene() {
-  return scene{"seed", {sphere(point3(0, 0, -1), 0.5), sphere(point3(0, -100.5, -1), 100)}};
+  scene s;
+  s.name = "seed";
+  s.materials = {{"normal", material{}}};
+  s.spheres = {sphere(point3(0, 0, -1), 0.5, 0), sphere(point3(0, -100.5, -1), 100, 0)};
+  return s;
+}
+
+material lambertian(color albedo) { return {material_type::lambertian, albedo, 0, 1.5}; }
+material metal(color albedo, double fuzz) { return {material_type::metal, albedo, fuzz, 1.5}; }
+material dielectric(double ir) { return {material_type::dielectric, color(1), 0, ir}; }
+
+render_settings book_render(int width, double aspect, int spp) {
+  render_settings r;
+  r.width = width;
+  r.aspect = aspect;
+  r.spp = spp;
+  r.max_depth = 50;
+  r.gamma = 2;
+  r.jitter = true;
+  return r;
+}
+
+// The book's materials chapter: ground, a diffuse center, hollow glass on the left (an inner
+// sphere of index 1/1.5 makes the bubble, rather than the first edition's negative radius), and
+// polished metal on the right, seen through the defocus-blur chapter's camera.
+scene materials_scene() {
+  scene s;
+  s.name = "materials";
+  s.camera.lookfrom = point3(3, 3, 2);
+  s.camera.lookat = point3(0, 0, -1);
+  s.camera.vfov = 20;
+  s.camera.aperture = 2.0;
+  s.camera.focus_dist = glm::length(s.camera.lookfrom - s.camera.lookat);
+  s.render = book_render(400, 16.0 / 9.0, 100);
+  s.materials = {{"ground", lambertian(color(0.8, 0.8, 0.0))},
+                 {"center", lambertian(color(0.1, 0.2, 0.5))},
+                 {"glass", dielectric(1.5)},
+                 {"bubble", dielectric(1.0 / 1.5)},
+                 {"gold", metal(color(0.8, 0.6, 0.2), 0.0)}};
+  s.spheres = {sphere(point3(0, -100.5, -1), 100, 0), sphere(point3(0, 0, -1), 0.5, 1),
+               sphere(point3(-1, 0, -1), 0.5, 2), sphere(point3(-1, 0, -1), 0.4, 3),
+               sphere(point3(1, 0, -1), 0.5, 4)};
+  return s;
+}
+
+// The book's cover: a grid of small random spheres around three large ones. The random numbers
+// come from the counter-based generator with a fixed seed, so the scene is the same every run
+// and on every machine.
+scene book_final_scene() {
+  scene s;
+  s.name = "book-final";
+  s.camera.lookfrom = point3(13, 2, 3);
+  s.camera.lookat = point3(0, 0, 0);
+  s.camera.vfov = 20;
+  s.camera.aperture = 0.1;
+  s.camera.focus_dist = 10;
+  s.render = book_render(1200, 3.0 / 2.0, 500);
+
+  std::uint32_t counter = 0;
+  auto rnd = [&counter] { return double(random_float(0x5eed, counter++, 0, 0, 0)); };
+  auto add = [&s](const std::string& name, material m) {
+    s.materials.push_back({name, m});
+    return int(s.materials.size() - 1);
+  };
+
+  s.spheres.push_back(sphere(point3(0, -1000, 0), 1000, add("ground", lambertian(color(0.5)))));
+  for (int a = -11; a < 11; ++a) {
+    for (int b = -11; b < 11; ++b) {
+      const double choose_mat = rnd();
+      const double cx = a + 0.9 * rnd();
+      const point3 center(cx, 0.2, b + 0.9 * rnd());
+      if (glm::length(center - point3(4, 0.2, 0)) <= 0.9) continue;
+      const std::string name = "small_" + std::to_string(a + 11) + "_" + std::to_string(b + 11);
+      material m;
+      if (choose_mat < 0.8) {
+        const color c1(rnd(), rnd(), rnd());
+        const color c2(rnd(), rnd(), rnd());
+        m = lambertian(c1 * c2);
+      } else if (choose_mat < 0.95) {
+        const color albedo(0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd());
+        m = metal(albedo, 0.5 * rnd());
+      } else {
+        m = dielectric(1.5);
+      }
+      s.spheres.push_back(sphere(center, 0.2, add(name, m)));
+    }
+  }
+  s.spheres.push_back(sphere(point3(0, 1, 0), 1.0, add("big_glass", dielectric(1.5))));
+  s.spheres.push_back(sphere(point3(-4, 1, 0), 1.0, add("big_diffuse", lambertian(color(0.4, 0.2, 0.1)))));
+  s.spheres.push_back(sphere(point3(4, 1, 0), 1.0, add("big_metal", metal(color(0.7, 0.6, 0.5), 0.0))));
+  return s;
 }
 
 }  // namespace
@@ -20,16 +114,35 @@ hittable_list make_world(const scene& s) {
   return world;
 }
 
-std::vector<std::string> builtin_scene_names() {
-  return {"seed"};
+std::vector<material> scene_materials(const scene& s) {
+  std::vector<material> out;
+  out.reserve(s.materials.size());
+  for (const auto& nm : s.materials) out.push_back(nm.m);
+  return out;
 }
+
+void check_scene(const scene& s) {
+  for (std::size_t i = 0; i < s.spheres.size(); ++i) {
+    const sphere& sp = s.spheres[i];
+    const std::string where = s.name + ": sphere " + std::to_string(i);
+    if (!(sp.radius > 0) || !std::isfinite(sp.radius))
+      throw usage_error(where + ": radius must be finite and > 0, got " + format_number(sp.radius));
+    if (sp.material < 0 || std::size_t(sp.material) >= s.materials.size())
+      throw usage_error(where + ": material index " + std::to_string(sp.material) +
+                        " does not exist");
+  }
+}
+
+std::vector<std::string> builtin_scene_names() { return {"seed", "materials", "book-final"}; }
 
 scene builtin_scene(std::string_view name) {
   if (name == "seed") return seed_scene();
+  if (name == "materials") return materials_scene();
+  if (name == "book-final") return book_final_scene();
   std::string choices;
   for (const auto& n : builtin_scene_names()) choices += (choices.empty() ? "" : ", ") + n;
   throw usage_error("--scene: unknown scene '" + std::string(name) + "' (built-in: " + choices +
-                    ")");
+                    "; or a .json scene file)");
 }
 
 }  // namespace rtvk

@@ -10,11 +10,30 @@ color sky_color(const vec3& d) {
   return (1.0 - t) * color(1.0, 1.0, 1.0) + t * color(0.5, 0.7, 1.0);
 }
 
+// Iterative rather than the book's recursion, so it reads line for line like the shader.
+color ray_color(const ray& r_in, const hittable& world, std::span<const material> materials,
+                int max_depth, const random_stream& rnd) {
+  const double infinity = std::numeric_limits<double>::infinity();
+  ray r = r_in;
+  color throughput(1.0, 1.0, 1.0);
+  for (int depth = 0; depth < max_depth; ++depth) {
+    hit_record rec;
+    if (!world.hit(r, t_min, infinity, rec)) return throughput * sky_color(r.direction());
+    const material& m = materials[std::size_t(rec.material)];
+    if (m.type == material_type::normal) return throughput * (0.5 * (rec.normal + color(1, 1, 1)));
+    color attenuation;
+    ray scattered;
+    if (!scatter(m, r, rec, rnd.at_bounce(std::uint32_t(depth + 1)), attenuation, scattered))
+      return color(0, 0, 0);
+    throughput *= attenuation;
+    r = scattered;
+  }
+  return color(0, 0, 0);  // out of bounces: no light gathered
+}
+
 color ray_color(const ray& r, const hittable& world) {
-  hit_record rec;
-  if (world.hit(r, 0, std::numeric_limits<double>::infinity(), rec))
-    return 0.5 * (rec.normal + color(1, 1, 1));
-  return sky_color(r.direction());
+  const material normal_shading{};
+  return ray_color(r, world, std::span(&normal_shading, 1), 1, random_stream{});
 }
 
 }  // namespace rtvk

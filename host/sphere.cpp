@@ -24,6 +24,7 @@ bool sphere::hit(const ray& r, double t_min, double t_max, hit_record& rec) cons
   rec.t = root;
   rec.p = r.at(rec.t);
   rec.set_face_normal(r, divide(rec.p - center, radius));
+  rec.material = material;
   return true;
 }
 

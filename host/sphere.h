@@ -6,12 +6,14 @@ namespace rtvk {
 class sphere final : public hittable {
  public:
   sphere() = default;
-  sphere(const point3& center, double radius) : center(center), radius(radius) {}
+  sphere(const point3& center, double radius, int material = 0)
+      : center(center), radius(radius), material(material) {}
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
 
   point3 center{};      // scene units
   double radius = 0.0;  // scene units, > 0
+  int material = 0;     // index into the scene's materials
 };
 
 }  // namespace rtvk

@@ -1,13 +1,17 @@
-// Mirrors host/camera.h: the ray through normalized image coordinates (u, v).
+// Mirrors host/camera.h: the ray through normalized image coordinates (s, t), leaving the lens at
+// `lens`, a point of the unit disk.
 #ifndef RTVK_CAMERA_GLSL
 #define RTVK_CAMERA_GLSL
 #include "ray.glsl"
 
-ray get_ray(camera_ubo cam, float u, float v) {
-  return ray(cam.origin, cam.lower_left + u * cam.horizontal + v * cam.vertical - cam.origin);
+ray get_ray(camera_ubo cam, float s, float t, vec2 lens) {
+  vec2 rd = cam.lens_radius * lens;
+  vec3 offset = cam.lens_u * rd.x + cam.lens_v * rd.y;
+  return ray(cam.origin + offset,
+             cam.lower_left + s * cam.horizontal + t * cam.vertical - cam.origin - offset);
 }
 
 // Mirrors pixel_coordinate in host/render_cpu.h.
-float pixel_coordinate(uint i, uint n) { return n > 1u ? float(i) / float(n - 1u) : 0.5; }
+float pixel_coordinate(float x, uint n) { return n > 1u ? x / float(n - 1u) : 0.5; }
 
 #endif

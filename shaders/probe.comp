@@ -1,6 +1,6 @@
 #version 450
 // Test probe: echoes the camera uniform buffer and the rays get_ray makes for the host's (u, v)
-// points, so tests can hold the GPU's view of the camera against the CPU camera.
+// and lens points, so tests can hold the GPU's view of the camera against the CPU camera.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 
@@ -13,9 +13,10 @@ layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block { probe
 
 void main() {
   probe.echo = cam;
-  probe.ray_origin = vec4(get_ray(cam, 0.0, 0.0).origin, 1.0);
   for (int k = 0; k < RTVK_PROBE_POINTS; ++k) {
-    vec2 uv = probe.uv[k].xy;
-    probe.direction[k] = vec4(get_ray(cam, uv.x, uv.y).direction, 0.0);
+    vec4 uv = probe.uv[k];
+    ray r = get_ray(cam, uv.x, uv.y, uv.zw);
+    probe.direction[k] = vec4(r.direction, 0.0);
+    probe.ray_origin[k] = vec4(r.origin, 1.0);
   }
 }

@@ -14,6 +14,7 @@ struct hit_record {
   vec3 normal;      // unit normal facing against the ray
   float t;          // ray parameter of the hit
   bool front_face;  // the ray arrived from outside
+  uint material;    // index into the materials buffer
 };
 
 // The lesson divides as (1/t) * v; the shader does the same to stay close to the reference.

@@ -1,5 +1,6 @@
 #version 450
-// One invocation per pixel: the lesson's main loop body on the GPU.
+// One invocation per pixel draws one sample (pc.sample_index) and adds it to the pixel's sum;
+// the host dispatches once per sample, so no invocation comes near lavapipe's loop cap.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 
@@ -10,10 +11,15 @@ layout(std140, set = 0, binding = RTVK_BINDING_CAMERA) uniform camera_block { ca
 layout(std430, set = 0, binding = RTVK_BINDING_SPHERES) readonly buffer sphere_block {
   gpu_sphere spheres[];
 };
-layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) writeonly buffer image_block { float rgb[]; };
+layout(std430, set = 0, binding = RTVK_BINDING_MATERIALS) readonly buffer material_block {
+  gpu_material materials[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) buffer image_block { float rgb[]; };
+layout(std430, set = 0, binding = RTVK_BINDING_STATUS) buffer status_block { render_status status; };
 layout(push_constant) uniform push_block { render_push pc; };
 
 #include "camera.glsl"
+#include "random.glsl"
 #include "shading.glsl"
 
 void main() {
@@ -21,12 +27,22 @@ void main() {
   if (pixel.x >= cam.image_width || pixel.y >= cam.image_height) return;
 
   uint j = cam.image_height - 1u - pixel.y;  // the lesson counts rows from the bottom
-  float u = pixel_coordinate(pixel.x, cam.image_width);
-  float v = pixel_coordinate(j, cam.image_height);
-  vec3 c = ray_color(get_ray(cam, u, v));
+  random_stream s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, pc.sample_index, 0u);
+  float u = pixel_coordinate(pc.jitter != 0u ? float(pixel.x) + rnd(s, dim_jitter_u) : float(pixel.x),
+                             cam.image_width);
+  float v = pixel_coordinate(pc.jitter != 0u ? float(j) + rnd(s, dim_jitter_v) : float(j),
+                             cam.image_height);
+  vec2 lens = cam.lens_radius > 0.0 ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b))
+                                    : vec2(0.0);
+  uint iterations = 0u;
+  vec3 c = ray_color(get_ray(cam, u, v, lens), s, iterations);
+  if (iterations > pc.loop_budget) {
+    atomicAdd(status.overrun_pixels, 1u);  // the host fails the render rather than show this
+    return;
+  }
 
   uint base = 3u * (pixel.y * cam.image_width + pixel.x);
-  rgb[base + 0u] = c.r;
-  rgb[base + 1u] = c.g;
-  rgb[base + 2u] = c.b;
+  rgb[base + 0u] += c.r;
+  rgb[base + 1u] += c.g;
+  rgb[base + 2u] += c.b;
 }

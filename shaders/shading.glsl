@@ -1,9 +1,11 @@
 // Mirrors host/shading.cpp.
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
+#include "material.glsl"
 #include "sphere.glsl"
 
 const float max_float = 3.402823466e+38;  // stands in for the host's infinity as t_max
+const float t_min = 0.001;                // ignore self-hits ("shadow acne")
 
 vec3 sky_color(vec3 d) {
   vec3 unit_direction = unit_vector(d);
@@ -11,10 +13,24 @@ vec3 sky_color(vec3 d) {
   return (1.0 - t) * vec3(1.0, 1.0, 1.0) + t * vec3(0.5, 0.7, 1.0);
 }
 
-vec3 ray_color(ray r) {
-  hit_record rec;
-  if (hit_world(r, 0.0, max_float, rec)) return 0.5 * (rec.normal + vec3(1.0, 1.0, 1.0));
-  return sky_color(r.direction);
+vec3 ray_color(ray r, random_stream s, inout uint iterations) {
+  vec3 throughput = vec3(1.0, 1.0, 1.0);
+  for (uint depth = 0u; depth < pc.max_depth; ++depth) {
+    if (++iterations > pc.loop_budget) return vec3(0.0);
+    hit_record rec;
+    if (!hit_world(r, t_min, max_float, rec, iterations)) {
+      if (iterations > pc.loop_budget) return vec3(0.0);
+      return throughput * sky_color(r.direction);
+    }
+    gpu_material m = materials[rec.material];
+    if (m.type == RTVK_MATERIAL_NORMAL) return throughput * (0.5 * (rec.normal + vec3(1.0, 1.0, 1.0)));
+    vec3 attenuation;
+    ray scattered;
+    if (!scatter(m, r, rec, at_bounce(s, depth + 1u), attenuation, scattered)) return vec3(0.0);
+    throughput *= attenuation;
+    r = scattered;
+  }
+  return vec3(0.0);
 }
 
 #endif

@@ -1,6 +1,6 @@
 // Every struct that crosses from the host to the GPU, written once and included by both the C++
-// host and the GLSL shaders. In C++ each offset is static_asserted against the std140/std430 rules,
-// so host and shader cannot drift apart silently.
+// host and the GLSL shaders. In C++ each offset is static_asserted against the std140/std430
+// rules, so host and shader cannot drift apart silently.
 #ifndef RTVK_SHARED_TYPES_H
 #define RTVK_SHARED_TYPES_H
 
@@ -16,12 +16,20 @@ using uint = std::uint32_t;
 #endif
 
 // Descriptor bindings, set 0.
-#define RTVK_BINDING_CAMERA 0   // uniform buffer: camera_ubo
-#define RTVK_BINDING_SPHERES 1  // storage buffer: gpu_sphere[]
-#define RTVK_BINDING_IMAGE 2    // storage buffer: float RGB per pixel, row 0 at the top
-#define RTVK_BINDING_PROBE 3    // storage buffer: probe_io (probe.comp only)
+#define RTVK_BINDING_CAMERA 0     // uniform buffer: camera_ubo
+#define RTVK_BINDING_SPHERES 1    // storage buffer: gpu_sphere[]
+#define RTVK_BINDING_IMAGE 2      // storage buffer: float RGB sums per pixel, row 0 at the top
+#define RTVK_BINDING_MATERIALS 3  // storage buffer: gpu_material[]
+#define RTVK_BINDING_STATUS 4     // storage buffer: render_status
+#define RTVK_BINDING_PROBE 5      // storage buffer: probe_io or rng_probe_entry[] (probes only)
 
 #define RTVK_PROBE_POINTS 5  // (u, v) pairs probe.comp turns into rays
+
+// Material types, as rtvk::material_type.
+#define RTVK_MATERIAL_NORMAL 0
+#define RTVK_MATERIAL_LAMBERTIAN 1
+#define RTVK_MATERIAL_METAL 2
+#define RTVK_MATERIAL_DIELECTRIC 3
 
 // std140. Each vec3 takes a 16-byte slot; the scalar after it packs into the slot's last 4 bytes.
 struct camera_ubo {
@@ -30,31 +38,73 @@ struct camera_ubo {
   vec3 horizontal;    // full viewport width as a vector, scene units
   uint image_height;  // pixels
   vec3 vertical;      // full viewport height as a vector, scene units
-  uint pad0;          // unused: keeps lower_left in its own slot
+  float lens_radius;  // aperture / 2, scene units
   vec3 lower_left;    // lower-left corner of the viewport, scene units
-  uint pad1;          // unused: rounds the struct to 64 bytes
+  uint pad0;          // unused
+  vec3 lens_u;        // unit vector to the camera's right
+  uint pad1;          // unused
+  vec3 lens_v;        // unit vector to the camera's up
+  uint pad2;          // unused
 };
 
-// std430 array element: 16 bytes.
+// std430 array element: 32 bytes.
 struct gpu_sphere {
-  vec3 center;   // scene units
-  float radius;  // scene units, > 0
+  vec3 center;    // scene units
+  float radius;   // scene units, > 0
+  uint material;  // index into the materials buffer
+  uint pad0;      // unused
+  uint pad1;      // unused
+  uint pad2;      // unused
 };
 
-// Push constants: what changes from one dispatch to the next.
+// std430 array element: 32 bytes.
+struct gpu_material {
+  vec3 albedo;  // fraction of light kept per channel
+  uint type;    // RTVK_MATERIAL_*
+  float fuzz;   // metal: blur radius
+  float ir;     // dielectric: index of refraction
+  uint pad0;    // unused
+  uint pad1;    // unused
+};
+
+// Push constants: what changes from one dispatch (one sample of every pixel) to the next.
 struct render_push {
   uint sphere_count;  // spheres in the storage buffer
+  uint sample_index;  // which sample of each pixel this dispatch draws
+  uint seed;          // the render's random seed
+  uint max_depth;     // most scatter events per path
+  uint loop_budget;   // most loop iterations one invocation may run (lavapipe stops at 65,535)
+  uint jitter;        // 1: random positions inside the pixel
   uint pad0;          // unused
   uint pad1;          // unused
-  uint pad2;          // unused
+};
+
+// std430: written by the shader when something went wrong.
+struct render_status {
+  uint overrun_pixels;  // invocations that hit loop_budget (their sample was not added)
+  uint pad0;            // unused
+  uint pad1;            // unused
+  uint pad2;            // unused
 };
 
 // std430, read and written by probe.comp: the host fills uv, the shader fills the rest.
 struct probe_io {
-  vec4 uv[RTVK_PROBE_POINTS];         // xy: normalized image coordinates to probe
+  vec4 uv[RTVK_PROBE_POINTS];         // xy: normalized image coordinates; zw: lens sample
   vec4 direction[RTVK_PROBE_POINTS];  // xyz: get_ray(uv).direction
-  vec4 ray_origin;                    // xyz: get_ray(0, 0).origin
+  vec4 ray_origin[RTVK_PROBE_POINTS]; // xyz: get_ray(uv).origin
   camera_ubo echo;                    // the uniform buffer exactly as the shader read it
+};
+
+// std430 array element for rng_probe.comp: the host fills the counters, the shader the results.
+struct rng_probe_entry {
+  uint pixel;    // counter: pixel index
+  uint sample_index;  // counter: sample index
+  uint bounce;   // counter: bounce
+  uint dim;      // counter: dimension
+  uint bits;     // random_bits(seed 0x5eed, ...)
+  float value;   // random_float(seed 0x5eed, ...)
+  uint pad0;     // unused
+  uint pad1;     // unused
 };
 
 #ifdef __cplusplus
@@ -63,19 +113,35 @@ static_assert(offsetof(camera_ubo, image_width) == 12);
 static_assert(offsetof(camera_ubo, horizontal) == 16);
 static_assert(offsetof(camera_ubo, image_height) == 28);
 static_assert(offsetof(camera_ubo, vertical) == 32);
-static_assert(offsetof(camera_ubo, pad0) == 44);
+static_assert(offsetof(camera_ubo, lens_radius) == 44);
 static_assert(offsetof(camera_ubo, lower_left) == 48);
-static_assert(offsetof(camera_ubo, pad1) == 60);
-static_assert(sizeof(camera_ubo) == 64);
+static_assert(offsetof(camera_ubo, pad0) == 60);
+static_assert(offsetof(camera_ubo, lens_u) == 64);
+static_assert(offsetof(camera_ubo, pad1) == 76);
+static_assert(offsetof(camera_ubo, lens_v) == 80);
+static_assert(offsetof(camera_ubo, pad2) == 92);
+static_assert(sizeof(camera_ubo) == 96);
 static_assert(offsetof(gpu_sphere, center) == 0);
 static_assert(offsetof(gpu_sphere, radius) == 12);
-static_assert(sizeof(gpu_sphere) == 16);
-static_assert(sizeof(render_push) == 16 && sizeof(render_push) <= 128);
-static_assert(offsetof(probe_io, uv) == 0);
+static_assert(offsetof(gpu_sphere, material) == 16);
+static_assert(sizeof(gpu_sphere) == 32);
+static_assert(offsetof(gpu_material, albedo) == 0);
+static_assert(offsetof(gpu_material, type) == 12);
+static_assert(offsetof(gpu_material, fuzz) == 16);
+static_assert(offsetof(gpu_material, ir) == 20);
+static_assert(sizeof(gpu_material) == 32);
+static_assert(offsetof(render_push, sample_index) == 4);
+static_assert(offsetof(render_push, loop_budget) == 16);
+static_assert(offsetof(render_push, jitter) == 20);
+static_assert(sizeof(render_push) == 32 && sizeof(render_push) <= 128);
+static_assert(sizeof(render_status) == 16);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
 static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);
-static_assert(offsetof(probe_io, echo) == 32 * RTVK_PROBE_POINTS + 16);
-static_assert(sizeof(probe_io) == 32 * RTVK_PROBE_POINTS + 16 + 64);
+static_assert(offsetof(probe_io, echo) == 48 * RTVK_PROBE_POINTS);
+static_assert(sizeof(probe_io) == 48 * RTVK_PROBE_POINTS + 96);
+static_assert(offsetof(rng_probe_entry, bits) == 16);
+static_assert(offsetof(rng_probe_entry, value) == 20);
+static_assert(sizeof(rng_probe_entry) == 32);
 }  // namespace rtvk::gpu
 #endif
 

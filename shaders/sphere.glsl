@@ -1,5 +1,5 @@
 // Mirrors host/sphere.cpp and host/hittable_list.cpp. Expects `spheres` (gpu_sphere[]) and
-// `pc.sphere_count` to be declared by the including shader.
+// `pc` (render_push) declared by the including shader.
 #ifndef RTVK_SPHERE_GLSL
 #define RTVK_SPHERE_GLSL
 #include "ray.glsl"
@@ -21,14 +21,17 @@ bool hit_sphere(gpu_sphere s, ray r, float t_min, float t_max, inout hit_record 
   rec.t = root;
   rec.p = ray_at(r, root);
   set_face_normal(rec, r, divide(rec.p - s.center, s.radius));
+  rec.material = s.material;
   return true;
 }
 
-// The closest hit over every sphere, as hittable_list::hit.
-bool hit_world(ray r, float t_min, float t_max, inout hit_record rec) {
+// The closest hit over every sphere, as hittable_list::hit. Each iteration counts against the
+// loop budget; over budget, the search stops and `iterations` tells the caller.
+bool hit_world(ray r, float t_min, float t_max, inout hit_record rec, inout uint iterations) {
   bool hit_anything = false;
   float closest_so_far = t_max;
   for (uint i = 0u; i < pc.sphere_count; ++i) {
+    if (++iterations > pc.loop_budget) return false;
     hit_record temp;
     if (hit_sphere(spheres[i], r, t_min, closest_so_far, temp)) {
       hit_anything = true;

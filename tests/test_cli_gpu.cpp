@@ -57,7 +57,7 @@ TEST_F(CliGpu, BackendBothChecksGpuAgainstCpu) {
   const auto out = (dir.path() / "both.png").string();
   const auto r = run_rtvk(gpu_args({"render", "--backend", "both", "--width", "160", "-o", out}));
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.err.find("gpu vs cpu: alike"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("): alike"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::exists(out));
 }
 

@@ -4,14 +4,13 @@
 #include "image_compare.h"
 #include "quantize.h"
 #include "render_cpu.h"
+#include "render_helpers.h"
 #include "scene.h"
 
 namespace rtvk {
 namespace {
 
-image_rgb8 seed(int width) {
-  return quantize(render_cpu(camera(16.0 / 9.0, width), make_world(builtin_scene("seed"))));
-}
+image_rgb8 seed(int width) { return test::seed_image(16.0 / 9.0, width); }
 
 image_rgb8 upside_down(const image_rgb8& img) {
   image_rgb8 out = img;

@@ -8,6 +8,7 @@
 #include "image_compare.h"
 #include "quantize.h"
 #include "render_cpu.h"
+#include "render_helpers.h"
 
 namespace rtvk {
 namespace {
@@ -25,8 +26,8 @@ TEST_F(GpuImage, SeedMatchesTheCpuReference) {
     SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
     const camera cam(aspect_for(w, h), w);
     ASSERT_EQ(cam.image_height(), h);
-    const image_rgb8 cpu = quantize(render_cpu(cam, make_world(s)));
-    const image_rgb8 gpu_img = quantize(gpu::render_gpu(gpu(), cam, s));
+    const image_rgb8 cpu = test::cpu_image(s, cam);
+    const image_rgb8 gpu_img = test::gpu_image(gpu(), s, cam);
     ASSERT_EQ(gpu_img.width, w);
     ASSERT_EQ(gpu_img.height, h);
     const image_difference d = compare_images(gpu_img, cpu, 1);
@@ -36,10 +37,11 @@ TEST_F(GpuImage, SeedMatchesTheCpuReference) {
 }
 
 TEST_F(GpuImage, EmptySceneIsAllSky) {
-  const scene empty{"empty", {}};
+  scene empty = builtin_scene("seed");
+  empty.spheres.clear();
   const camera cam(2.0, 50);
-  const image_rgb8 cpu = quantize(render_cpu(cam, make_world(empty)));
-  const image_rgb8 gpu_img = quantize(gpu::render_gpu(gpu(), cam, empty));
+  const image_rgb8 cpu = test::cpu_image(empty, cam);
+  const image_rgb8 gpu_img = test::gpu_image(gpu(), empty, cam);
   EXPECT_LE(compare_images(gpu_img, cpu, 1).max_abs, 1);
 }
 
@@ -47,11 +49,11 @@ TEST_F(GpuImage, SceneChangesReachTheGpu) {
   // A moved sphere must move in the GPU image too: guards against stale or ignored buffers.
   scene s = builtin_scene("seed");
   const camera cam(2.0, 80);
-  const image_rgb8 before = quantize(gpu::render_gpu(gpu(), cam, s));
+  const image_rgb8 before = test::gpu_image(gpu(), s, cam);
   s.spheres[0].center.x += 0.5;
-  const image_rgb8 after = quantize(gpu::render_gpu(gpu(), cam, s));
+  const image_rgb8 after = test::gpu_image(gpu(), s, cam);
   EXPECT_GT(compare_images(before, after, 1).pixels_over, 100);
-  EXPECT_LE(compare_images(after, quantize(render_cpu(cam, make_world(s))), 1).share_over, 0.001);
+  EXPECT_LE(compare_images(after, test::cpu_image(s, cam), 1).share_over, 0.001);
 }
 
 }  // namespace

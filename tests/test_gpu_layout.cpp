@@ -19,10 +19,19 @@ void expect_near_vec(const glm::vec3& gpu, const vec3& cpu, const char* what) {
 }
 
 TEST_F(GpuLayout, UniformBufferArrivesIntactAndGetRayMatchesTheCpu) {
-  const std::array<glm::vec2, RTVK_PROBE_POINTS> uv = {
-      glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1), glm::vec2(1, 1), glm::vec2(0.5f, 0.5f)};
-  for (auto [aspect, width] : {std::tuple{16.0 / 9.0, 400}, {2.0, 7}, {0.37, 333}}) {
-    const camera cam(aspect, width);
+  // (u, v, lens x, lens y): the corners and the center, then two lens samples.
+  const std::array<glm::vec4, RTVK_PROBE_POINTS> uv = {
+      glm::vec4(0, 0, 0, 0), glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(1, 1, 0.6f, -0.3f),
+      glm::vec4(0.5f, 0.5f, -0.25f, 0.5f)};
+  camera_pose posed;
+  posed.lookfrom = point3(13, 2, 3);
+  posed.lookat = point3(0, 0, 0);
+  posed.vfov = 20;
+  posed.aperture = 0.1;
+  posed.focus_dist = 10;
+  for (auto [pose, aspect, width] : {std::tuple{camera_pose{}, 16.0 / 9.0, 400},
+                                     {camera_pose{}, 2.0, 7}, {posed, 0.37, 333}}) {
+    const camera cam(pose, aspect, width);
     const gpu::probe_io io = gpu::run_probe(gpu(), cam, uv);
 
     // Byte for byte what the host wrote: every std140 offset agrees with the C++ struct.
@@ -30,14 +39,20 @@ TEST_F(GpuLayout, UniformBufferArrivesIntactAndGetRayMatchesTheCpu) {
     EXPECT_EQ(io.echo.image_width, std::uint32_t(cam.image_width()));
     EXPECT_EQ(io.echo.image_height, std::uint32_t(cam.image_height()));
     EXPECT_EQ(io.echo.lower_left, sent.lower_left);
+    EXPECT_EQ(io.echo.lens_radius, sent.lens_radius);
+    EXPECT_EQ(io.echo.lens_u, sent.lens_u);
+    EXPECT_EQ(io.echo.lens_v, sent.lens_v);
+    // Every byte but the padding, which the shader need not preserve.
     EXPECT_EQ(std::memcmp(&io.echo, &sent, offsetof(gpu::camera_ubo, pad0)), 0);
     EXPECT_EQ(std::memcmp(&io.echo.lower_left, &sent.lower_left, sizeof(gpu::vec3)), 0);
+    EXPECT_EQ(std::memcmp(&io.echo.lens_u, &sent.lens_u, sizeof(gpu::vec3)), 0);
+    EXPECT_EQ(std::memcmp(&io.echo.lens_v, &sent.lens_v, sizeof(gpu::vec3)), 0);
 
-    expect_near_vec(glm::vec3(io.ray_origin), cam.get_ray(0, 0).origin(), "origin");
     for (int k = 0; k < RTVK_PROBE_POINTS; ++k) {
       SCOPED_TRACE("probe point " + std::to_string(k) + ", width " + std::to_string(width));
-      expect_near_vec(glm::vec3(io.direction[k]), cam.get_ray(uv[k].x, uv[k].y).direction(),
-                      "direction");
+      const ray r = cam.get_ray(uv[k].x, uv[k].y, glm::dvec2(uv[k].z, uv[k].w));
+      expect_near_vec(glm::vec3(io.ray_origin[k]), r.origin(), "origin");
+      expect_near_vec(glm::vec3(io.direction[k]), r.direction(), "direction");
     }
   }
 }

@@ -10,14 +10,13 @@
 #include "quantize.h"
 #include "render_cpu.h"
 #include "scene.h"
+#include "render_helpers.h"
 #include "temp_dir.h"
 
 namespace rtvk {
 namespace {
 
-image_rgb8 render_seed(double aspect, int width) {
-  return quantize(render_cpu(camera(aspect, width), make_world(builtin_scene("seed"))));
-}
+image_rgb8 render_seed(double aspect, int width) { return test::seed_image(aspect, width); }
 
 // Nearest hit of the ray from the origin along d with a sphere, by the full quadratic
 // (not rtvk's half-b form): t^2 |d|^2 - 2t d.c + |c|^2 - r^2 = 0.
@@ -81,7 +80,8 @@ TEST(SeedImage, IsTheLessonsImageByteForByte) {
 }
 
 TEST(SeedImage, OnePixelImageHasNoNaN) {
-  const framebuffer fb = render_cpu(camera(1.0, 1), make_world(builtin_scene("seed")));
+  const scene seed = builtin_scene("seed");
+  const framebuffer fb = render_cpu(camera(1.0, 1), seed, seed.render);
   ASSERT_EQ(fb.width(), 1);
   ASSERT_EQ(fb.height(), 1);
   const color c = fb.at(0, 0);

@@ -8,6 +8,9 @@ camera_ubo to_ubo(const camera& cam) {
   u.horizontal = vec3(cam.horizontal());
   u.vertical = vec3(cam.vertical());
   u.lower_left = vec3(cam.lower_left());
+  u.lens_u = vec3(cam.lens_u());
+  u.lens_v = vec3(cam.lens_v());
+  u.lens_radius = float(cam.lens_radius());
   u.image_width = uint(cam.image_width());
   u.image_height = uint(cam.image_height());
   return u;
@@ -16,7 +19,16 @@ camera_ubo to_ubo(const camera& cam) {
 std::vector<gpu_sphere> to_gpu_spheres(const scene& s) {
   std::vector<gpu_sphere> out;
   out.reserve(s.spheres.size());
-  for (const sphere& sp : s.spheres) out.push_back({vec3(sp.center), float(sp.radius)});
+  for (const sphere& sp : s.spheres)
+    out.push_back({vec3(sp.center), float(sp.radius), uint(sp.material), 0, 0, 0});
+  return out;
+}
+
+std::vector<gpu_material> to_gpu_materials(const scene& s) {
+  std::vector<gpu_material> out;
+  out.reserve(s.materials.size());
+  for (const auto& [name, m] : s.materials)
+    out.push_back({vec3(m.albedo), uint(m.type), float(m.fuzz), float(m.ir), 0, 0});
   return out;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 #include <array>
-
-#include <glm/vec2.hpp>
+#include <cstdint>
+#include <glm/vec4.hpp>
+#include <vector>
 
 #include "camera.h"
 #include "context.h"
@@ -9,9 +10,12 @@
 
 namespace rtvk::gpu {
 
-// Runs probe.comp: the GPU reports the camera uniform buffer it received and the ray directions
-// get_ray gives for `uv`, so tests can check the GPU's camera against the CPU's.
+// Runs probe.comp: the GPU reports the camera uniform buffer it received and the rays get_ray
+// gives for each (u, v, lens_x, lens_y), so tests can check the GPU's camera against the CPU's.
 probe_io run_probe(gpu_context& ctx, const camera& cam,
-                   const std::array<glm::vec2, RTVK_PROBE_POINTS>& uv);
+                   const std::array<glm::vec4, RTVK_PROBE_POINTS>& uv_lens);
+
+// Runs rng_probe.comp: fills `bits` and `value` of each entry on the GPU (seed 0x5eed).
+std::vector<rng_probe_entry> run_rng_probe(gpu_context& ctx, std::vector<rng_probe_entry> entries);
 
 }  // namespace rtvk::gpu

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 
 #include "buffer.h"
 #include "compute_pipeline.h"
@@ -28,67 +29,137 @@ void barrier(VkCommandBuffer cb, VkPipelineStageFlags src_stage, VkAccessFlags s
   vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 1, &b, 0, nullptr, 0, nullptr);
 }
 
+constexpr VkPipelineStageFlags compute_stage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+constexpr VkPipelineStageFlags transfer_stage = VK_PIPELINE_STAGE_TRANSFER_BIT;
+constexpr VkAccessFlags shader_rw = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+
+// A storage buffer filled from host data through a staging copy recorded into `cb`.
+template <typename T>
+struct device_array {
+  device_array(const gpu_context& ctx, std::vector<T> data)
+      : count(data.size()),
+        bytes((data.empty() ? 1 : data.size()) * sizeof(T)),
+        staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, memory_use::upload),
+        buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+               memory_use::device_local) {
+    if (data.empty()) data.resize(1);  // a buffer cannot be empty; `count` says 0
+    staging.write(data.data(), bytes);
+  }
+  void record_upload(VkCommandBuffer cb) const {
+    const VkBufferCopy copy{0, 0, bytes};
+    vkCmdCopyBuffer(cb, staging.get(), buffer.get(), 1, &copy);
+  }
+  std::size_t count;     // elements the scene has
+  VkDeviceSize bytes;    // buffer size
+  gpu_buffer staging;    // host copy
+  gpu_buffer buffer;     // what the shader reads
+};
+
 }  // namespace
 
-framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s) {
+std::uint32_t default_loop_budget(const device_info& d) {
+  const bool llvmpipe = d.driver_name == "llvmpipe" || d.name.rfind("llvmpipe", 0) == 0;
+  return llvmpipe ? 60'000u : 0xffffffffu;
+}
+
+framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
+                       const render_settings& rs, const sample_progress& progress,
+                       std::uint32_t loop_budget) {
   const std::uint32_t width = std::uint32_t(cam.image_width());
   const std::uint32_t height = std::uint32_t(cam.image_height());
   const VkDeviceSize image_bytes = VkDeviceSize(width) * height * 3 * sizeof(float);
-  const auto& limits = ctx.device().limits;
-  if (image_bytes > limits.maxStorageBufferRange)
+  const device_info& dev = ctx.device();
+  if (image_bytes > dev.limits.maxStorageBufferRange)
     throw std::runtime_error(std::to_string(width) + "x" + std::to_string(height) + " needs a " +
                              format_number(double(image_bytes) / (1 << 20)) +
-                             " MiB storage buffer; " + ctx.device().name + " allows " +
-                             format_number(double(limits.maxStorageBufferRange) / (1 << 20)) +
+                             " MiB storage buffer; " + dev.name + " allows " +
+                             format_number(double(dev.limits.maxStorageBufferRange) / (1 << 20)) +
                              " MiB");
 
   const camera_ubo ubo = to_ubo(cam);
-  std::vector<gpu_sphere> spheres = to_gpu_spheres(s);
-  const render_push push{std::uint32_t(spheres.size()), 0, 0, 0};
-  if (spheres.empty()) spheres.push_back({});  // a buffer cannot be empty; sphere_count says 0
-  const VkDeviceSize sphere_bytes = spheres.size() * sizeof(gpu_sphere);
-
   gpu_buffer ubo_buf(ctx, sizeof ubo, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, memory_use::upload);
   ubo_buf.write(&ubo, sizeof ubo);
-  gpu_buffer staging(ctx, sphere_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, memory_use::upload);
-  staging.write(spheres.data(), sphere_bytes);
-  gpu_buffer sphere_buf(ctx, sphere_bytes,
-                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                        memory_use::device_local);
-  gpu_buffer image_buf(ctx, image_bytes,
-                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                       memory_use::device_local);
+  const device_array<gpu_sphere> spheres(ctx, to_gpu_spheres(s));
+  const device_array<gpu_material> materials(ctx, to_gpu_materials(s));
+  gpu_buffer image(ctx, image_bytes,
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                   memory_use::device_local);
+  gpu_buffer status(ctx, sizeof(render_status),
+                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                    memory_use::readback);
   gpu_buffer readback(ctx, image_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, memory_use::readback);
 
-  const auto wg = workgroup_size(limits);
+  const auto wg = workgroup_size(dev.limits);
   const compute_pipeline pipeline(
       ctx, render_shader(),
       {{RTVK_BINDING_CAMERA, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, ubo_buf.get()},
-       {RTVK_BINDING_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sphere_buf.get()},
-       {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, image_buf.get()}},
+       {RTVK_BINDING_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, spheres.buffer.get()},
+       {RTVK_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, materials.buffer.get()},
+       {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, image.get()},
+       {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, status.get()}},
       sizeof(render_push), wg);
 
-  ctx.submit_and_wait([&](VkCommandBuffer cb) {
-    const VkBufferCopy spheres_copy{0, 0, sphere_bytes};
-    vkCmdCopyBuffer(cb, staging.get(), sphere_buf.get(), 1, &spheres_copy);
-    barrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-    pipeline.bind(cb);
-    pipeline.push(cb, &push, sizeof push);
-    vkCmdDispatch(cb, (width + wg[0] - 1) / wg[0], (height + wg[1] - 1) / wg[1], 1);
-    barrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-    const VkBufferCopy image_copy{0, 0, image_bytes};
-    vkCmdCopyBuffer(cb, image_buf.get(), readback.get(), 1, &image_copy);
-    barrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-            VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
-  });
+  render_push push{};
+  push.sphere_count = std::uint32_t(spheres.count);
+  push.seed = rs.seed;
+  push.max_depth = std::uint32_t(rs.max_depth);
+  push.loop_budget = loop_budget ? loop_budget : default_loop_budget(dev);
+  push.jitter = rs.jitter ? 1u : 0u;
+
+  // Submissions grow from one sample until each takes about a quarter second: long enough to
+  // keep the device busy, short enough for progress, interruption and the fence timeout.
+  int done = 0, batch = 1;
+  while (done < rs.spp) {
+    const int count = std::min(batch, rs.spp - done);
+    const bool first = done == 0, last = done + count == rs.spp;
+    const auto start = std::chrono::steady_clock::now();
+    ctx.submit_and_wait([&](VkCommandBuffer cb) {
+      if (first) {
+        spheres.record_upload(cb);
+        materials.record_upload(cb);
+        vkCmdFillBuffer(cb, image.get(), 0, VK_WHOLE_SIZE, 0);
+        vkCmdFillBuffer(cb, status.get(), 0, VK_WHOLE_SIZE, 0);
+        barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
+      } else {  // the previous submission's samples are in the sums this one adds to
+        barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
+      }
+      pipeline.bind(cb);
+      for (int k = 0; k < count; ++k) {
+        if (k > 0) barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
+        push.sample_index = std::uint32_t(done + k);
+        pipeline.push(cb, &push, sizeof push);
+        vkCmdDispatch(cb, (width + wg[0] - 1) / wg[0], (height + wg[1] - 1) / wg[1], 1);
+      }
+      if (last) {
+        barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
+                VK_ACCESS_TRANSFER_READ_BIT);
+        const VkBufferCopy copy{0, 0, image_bytes};
+        vkCmdCopyBuffer(cb, image.get(), readback.get(), 1, &copy);
+        barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                VK_ACCESS_HOST_READ_BIT);
+      }
+      barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+              VK_ACCESS_HOST_READ_BIT);
+    });
+    const auto* st = static_cast<const render_status*>(status.read());
+    if (st->overrun_pixels > 0)
+      throw loop_budget_error(
+          std::to_string(st->overrun_pixels) + " pixel samples needed more than " +
+          std::to_string(push.loop_budget) + " loop iterations on " + dev.name +
+          " (lavapipe silently stops loops at 65,535, so rtvk stops first and writes no image): "
+          "lower --depth or use fewer spheres");
+    done += count;
+    if (progress) progress(done);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (seconds < 0.25) batch = std::min(batch * 2, 256);
+  }
 
   const float* rgb = static_cast<const float*>(readback.read());
   framebuffer fb{int(width), int(height)};
   for (std::uint32_t y = 0; y < height; ++y)
     for (std::uint32_t x = 0; x < width; ++x, rgb += 3)
-      fb.at(int(x), int(y)) = color(rgb[0], rgb[1], rgb[2]);
+      fb.at(int(x), int(y)) = divide(color(rgb[0], rgb[1], rgb[2]), rs.spp);
   return fb;
 }
 

@@ -1,13 +1,36 @@
 #pragma once
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+
 #include "camera.h"
 #include "context.h"
 #include "framebuffer.h"
+#include "render_settings.h"
 #include "scene.h"
 
 namespace rtvk::gpu {
 
-// The lesson's image on the GPU: one compute invocation per pixel, float precision. The result
-// comes back widened to the same framebuffer type the CPU renderer fills.
-framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s);
+// A dispatch ran out of its loop budget: some pixels' samples were not computed.
+class loop_budget_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Most loop iterations one invocation (one sample of one pixel) may run on this device.
+// lavapipe stops every loop silently after 65,535 iterations in total per invocation, so rtvk
+// stops first, at 60,000, and reports it; other devices have no such cap.
+std::uint32_t default_loop_budget(const device_info& d);
+
+// Called with the number of samples per pixel finished so far; may be empty.
+using sample_progress = std::function<void(int samples_done)>;
+
+// The scene on the GPU, with the same sampling and random numbers as render_cpu: one dispatch
+// per sample accumulates into a float buffer that stays on the device, several dispatches per
+// submission. `loop_budget` 0 means default_loop_budget. Throws loop_budget_error, naming the
+// device and the budget, when any invocation overran.
+framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
+                       const render_settings& rs, const sample_progress& progress = {},
+                       std::uint32_t loop_budget = 0);
 
 }  // namespace rtvk::gpu

@@ -1,4 +1,4 @@
-#include "aspect.h"
+#include "parse_values.h"
 
 #include <charconv>
 #include <cmath>
@@ -18,7 +18,28 @@ std::optional<double> positive_number(std::string_view s) {
   return v;
 }
 
+std::optional<double> finite_number(std::string_view s) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
 }  // namespace
+
+vec3 parse_vec3(const std::string& text, const std::string& flag) {
+  vec3 v;
+  std::string_view rest(text);
+  for (int k = 0; k < 3; ++k) {
+    const auto comma = rest.find(',');
+    const auto part = finite_number(rest.substr(0, comma));
+    if (!part || (k < 2) == (comma == std::string_view::npos))
+      throw usage_error(flag + ": invalid vector '" + text + "' (expected x,y,z: three finite numbers)");
+    v[k] = *part;
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+  }
+  return v;
+}
 
 double parse_aspect(const std::string& text, const std::string& flag) {
   const auto colon = text.find(':');

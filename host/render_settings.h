@@ -1,0 +1,20 @@
+#pragma once
+#include <cstdint>
+
+namespace rtvk {
+
+// How to render a scene: what a scene file's "render" object holds, and what the CLI overrides.
+struct render_settings {
+  int width = 400;             // image width, pixels
+  double aspect = 16.0 / 9.0;  // image width / height
+  int spp = 1;                 // samples per pixel
+  int max_depth = 50;          // most scatter events a path may take
+  std::uint32_t seed = 0;      // random number seed: same seed, same image
+  double gamma = 1;            // output encoding: 1 linear (the lesson), 2 the book's sqrt
+  bool jitter = false;         // random sample positions inside each pixel (antialiasing)
+};
+
+inline constexpr int max_spp = 1 << 20;      // samples per pixel
+inline constexpr int max_depth_limit = 10000;  // bounces
+
+}  // namespace rtvk

@@ -1,0 +1,282 @@
+#include "scene_file.h"
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "parse_values.h"
+#include "errors.h"
+#include "format.h"
+
+namespace rtvk {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// Walks a parsed document, checking each value against what the format expects. Every failure
+// names the file and the JSON path (RFC 6901) of the offending value.
+class scene_reader {
+ public:
+  explicit scene_reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw usage_error(file_ + ": " + (path.empty() ? "/" : path) + ": " + what);
+  }
+
+  void only_fields(const json& obj, const std::string& path,
+                   const std::set<std::string>& allowed) const {
+    if (!obj.is_object()) fail(path, "expected an object, got " + type_of(obj));
+    for (const auto& [key, value] : obj.items())
+      if (!allowed.count(key)) fail(path + "/" + key, "unknown field");
+  }
+
+  const json& required(const json& obj, const std::string& path, const std::string& key) const {
+    if (!obj.contains(key)) fail(path, "missing field \"" + key + "\"");
+    return obj[key];
+  }
+
+  double number(const json& j, const std::string& path) const {
+    if (!j.is_number()) fail(path, "expected a number, got " + type_of(j));
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) fail(path, "expected a finite number, got " + format_number(v));
+    return v;
+  }
+
+  double number_in(const json& j, const std::string& path, double lo, double hi) const {
+    const double v = number(j, path);
+    if (v < lo || v > hi)
+      fail(path, "expected a number in [" + format_number(lo) + ", " + format_number(hi) +
+                     "], got " + format_number(v));
+    return v;
+  }
+
+  long long integer(const json& j, const std::string& path, long long lo, long long hi) const {
+    if (!j.is_number_integer())
+      fail(path, "expected an integer, got " + (j.is_number() ? j.dump() : type_of(j)));
+    const long long v = j.is_number_unsigned() ? (long long)std::min<std::uint64_t>(j.get<std::uint64_t>(), 1ull << 62)
+                                               : j.get<long long>();
+    if (v < lo || v > hi)
+      fail(path, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                     "], got " + j.dump());
+    return v;
+  }
+
+  vec3 vector3(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 3)
+      fail(path, "expected an array of 3 numbers, got " + type_of(j));
+    return vec3(number(j[0], path + "/0"), number(j[1], path + "/1"), number(j[2], path + "/2"));
+  }
+
+  color albedo(const json& j, const std::string& path) const {
+    const vec3 c = vector3(j, path);
+    for (int k = 0; k < 3; ++k)
+      if (c[k] < 0 || c[k] > 1)
+        fail(path + "/" + std::to_string(k),
+             "expected an albedo in [0, 1], got " + format_number(c[k]));
+    return c;
+  }
+
+  static std::string type_of(const json& j) {
+    if (j.is_number()) return "a number";
+    return std::string(j.is_array() ? "an " : "a ") + j.type_name();
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;  // named in every message
+};
+
+camera_pose read_camera(const scene_reader& r, const json& j) {
+  const std::string p = "/camera";
+  r.only_fields(j, p, {"lookfrom", "lookat", "vup", "vfov", "aperture", "focus_dist"});
+  camera_pose c;
+  if (j.contains("lookfrom")) c.lookfrom = r.vector3(j["lookfrom"], p + "/lookfrom");
+  if (j.contains("lookat")) c.lookat = r.vector3(j["lookat"], p + "/lookat");
+  if (j.contains("vup")) c.vup = r.vector3(j["vup"], p + "/vup");
+  if (j.contains("vfov")) c.vfov = r.number(j["vfov"], p + "/vfov");
+  if (j.contains("aperture")) c.aperture = r.number(j["aperture"], p + "/aperture");
+  if (j.contains("focus_dist")) c.focus_dist = r.number(j["focus_dist"], p + "/focus_dist");
+  return c;
+}
+
+render_settings read_render(const scene_reader& r, const json& j) {
+  const std::string p = "/render";
+  r.only_fields(j, p, {"width", "aspect", "spp", "max_depth", "seed", "gamma", "jitter"});
+  render_settings s;
+  if (j.contains("width")) s.width = int(r.integer(j["width"], p + "/width", 1, max_image_side));
+  if (j.contains("aspect")) {
+    const json& a = j["aspect"];
+    if (a.is_string()) {
+      s.aspect = parse_aspect(a.get<std::string>(), r.file() + ": " + p + "/aspect");
+    } else {
+      s.aspect = r.number(a, p + "/aspect");
+      if (s.aspect <= 0) r.fail(p + "/aspect", "expected a number > 0, got " + a.dump());
+    }
+  }
+  if (j.contains("spp")) s.spp = int(r.integer(j["spp"], p + "/spp", 1, max_spp));
+  if (j.contains("max_depth"))
+    s.max_depth = int(r.integer(j["max_depth"], p + "/max_depth", 1, max_depth_limit));
+  if (j.contains("seed")) s.seed = std::uint32_t(r.integer(j["seed"], p + "/seed", 0, 0xffffffffll));
+  if (j.contains("gamma")) s.gamma = r.number_in(j["gamma"], p + "/gamma", 0.1, 10);
+  if (j.contains("jitter")) {
+    if (!j["jitter"].is_boolean()) r.fail(p + "/jitter", "expected true or false, got " + r.type_of(j["jitter"]));
+    s.jitter = j["jitter"].get<bool>();
+  }
+  return s;
+}
+
+material read_material(const scene_reader& r, const json& j, const std::string& p) {
+  if (!j.is_object()) r.fail(p, "expected an object, got " + r.type_of(j));
+  const json& type = r.required(j, p, "type");
+  if (!type.is_string()) r.fail(p + "/type", "expected a string, got " + r.type_of(type));
+  const std::string t = type.get<std::string>();
+  material m;
+  if (t == "normal") {
+    r.only_fields(j, p, {"type"});
+    m.type = material_type::normal;
+  } else if (t == "lambertian") {
+    r.only_fields(j, p, {"type", "albedo"});
+    m.type = material_type::lambertian;
+    m.albedo = r.albedo(r.required(j, p, "albedo"), p + "/albedo");
+  } else if (t == "metal") {
+    r.only_fields(j, p, {"type", "albedo", "fuzz"});
+    m.type = material_type::metal;
+    m.albedo = r.albedo(r.required(j, p, "albedo"), p + "/albedo");
+    if (j.contains("fuzz")) m.fuzz = r.number_in(j["fuzz"], p + "/fuzz", 0, 1);
+  } else if (t == "dielectric") {
+    r.only_fields(j, p, {"type", "ir"});
+    m.type = material_type::dielectric;
+    m.ir = r.number(r.required(j, p, "ir"), p + "/ir");
+    if (m.ir <= 0) r.fail(p + "/ir", "expected an index of refraction > 0, got " + format_number(m.ir));
+  } else {
+    r.fail(p + "/type", "unknown material type \"" + t +
+                            "\" (expected normal, lambertian, metal or dielectric)");
+  }
+  return m;
+}
+
+std::string escape_pointer(const std::string& key) {
+  std::string out;
+  for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+  return out;
+}
+
+scene read_scene(const scene_reader& r, const json& root, const std::string& name) {
+  r.only_fields(root, "", {"camera", "render", "materials", "spheres"});
+  scene s;
+  s.name = name;
+  if (root.contains("camera")) s.camera = read_camera(r, root["camera"]);
+  if (root.contains("render")) s.render = read_render(r, root["render"]);
+
+  std::map<std::string, int> index;
+  if (root.contains("materials")) {
+    const json& mats = root["materials"];
+    if (!mats.is_object()) r.fail("/materials", "expected an object of named materials, got " + r.type_of(mats));
+    for (const auto& [key, value] : mats.items()) {
+      index[key] = int(s.materials.size());
+      s.materials.push_back({key, read_material(r, value, "/materials/" + escape_pointer(key))});
+    }
+  }
+
+  const json& spheres = r.required(root, "", "spheres");
+  if (!spheres.is_array()) r.fail("/spheres", "expected an array, got " + r.type_of(spheres));
+  s.spheres.reserve(spheres.size());
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const std::string p = "/spheres/" + std::to_string(i);
+    const json& j = spheres[i];
+    r.only_fields(j, p, {"center", "radius", "material"});
+    sphere sp;
+    sp.center = r.vector3(r.required(j, p, "center"), p + "/center");
+    sp.radius = r.number(r.required(j, p, "radius"), p + "/radius");
+    if (sp.radius <= 0) r.fail(p + "/radius", "expected a radius > 0, got " + format_number(sp.radius));
+    const json& m = r.required(j, p, "material");
+    if (!m.is_string()) r.fail(p + "/material", "expected a material name, got " + r.type_of(m));
+    const auto found = index.find(m.get<std::string>());
+    if (found == index.end())
+      r.fail(p + "/material", "no material named \"" + m.get<std::string>() + "\" in /materials");
+    sp.material = found->second;
+    s.spheres.push_back(sp);
+  }
+
+  try {
+    camera(s.camera, s.render.aspect, s.render.width);
+  } catch (const std::invalid_argument& e) {
+    r.fail("/camera", e.what());
+  }
+  return s;
+}
+
+json vec_json(const vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+}  // namespace
+
+scene parse_scene_json(const std::string& text, const std::string& file_name) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // e.what() reads "[json.exception.parse_error.101] parse error at line L, column C: ..."
+    std::string what = e.what();
+    const auto start = what.find("] ");
+    if (start != std::string::npos) what = what.substr(start + 2);
+    throw usage_error(file_name + ": " + what);
+  }
+  return read_scene(scene_reader(file_name), root, file_name);
+}
+
+scene load_scene_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw usage_error(path.string() + ": is a folder, not a scene file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw usage_error(path.string() + ": cannot open scene file");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw usage_error(path.string() + ": read error");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw usage_error(path.string() + ": empty scene file");
+  return parse_scene_json(text, path.string());
+}
+
+std::string dump_scene_json(const scene& s) {
+  json root;
+  const camera_pose& c = s.camera;
+  root["camera"] = {{"lookfrom", vec_json(c.lookfrom)}, {"lookat", vec_json(c.lookat)},
+                    {"vup", vec_json(c.vup)},           {"vfov", c.vfov},
+                    {"aperture", c.aperture},           {"focus_dist", c.focus_dist}};
+  const render_settings& r = s.render;
+  root["render"] = {{"width", r.width}, {"aspect", r.aspect},     {"spp", r.spp},
+                    {"max_depth", r.max_depth}, {"seed", r.seed}, {"gamma", r.gamma},
+                    {"jitter", r.jitter}};
+  json mats = json::object();
+  for (const auto& [name, m] : s.materials) {
+    json j = {{"type", type_name(m.type)}};
+    if (m.type == material_type::lambertian || m.type == material_type::metal)
+      j["albedo"] = vec_json(m.albedo);
+    if (m.type == material_type::metal) j["fuzz"] = m.fuzz;
+    if (m.type == material_type::dielectric) j["ir"] = m.ir;
+    mats[name] = j;
+  }
+  root["materials"] = mats;
+  json spheres = json::array();
+  for (const sphere& sp : s.spheres)
+    spheres.push_back({{"center", vec_json(sp.center)},
+                       {"radius", sp.radius},
+                       {"material", s.materials[std::size_t(sp.material)].name}});
+  root["spheres"] = spheres;
+  return root.dump(2) + "\n";
+}
+
+bool names_scene_file(const std::string& value) {
+  return value.find('/') != std::string::npos ||
+         (value.size() > 5 && value.compare(value.size() - 5, 5, ".json") == 0);
+}
+
+scene load_scene(const std::string& value) {
+  return names_scene_file(value) ? load_scene_file(value) : builtin_scene(value);
+}
+
+}  // namespace rtvk

@@ -1,0 +1,24 @@
+#pragma once
+#include <filesystem>
+#include <string>
+
+#include "scene.h"
+
+namespace rtvk {
+
+// Reads a JSON scene file (docs/scene-format.md). Any problem -- unreadable file, invalid JSON,
+// a missing or unknown field, a wrong type, a non-finite number, a bad radius, an unknown
+// material -- throws usage_error naming the file and the line and column or the JSON path.
+scene load_scene_file(const std::filesystem::path& path);
+scene parse_scene_json(const std::string& text, const std::string& file_name);
+
+// The scene as JSON in the same format; reading it back gives the identical scene.
+std::string dump_scene_json(const scene& s);
+
+// --scene VALUE names a file (rather than a built-in) when it ends in .json or contains a '/'.
+bool names_scene_file(const std::string& value);
+
+// The built-in scene or the file that `value` names.
+scene load_scene(const std::string& value);
+
+}  // namespace rtvk

@@ -1,0 +1,30 @@
+#pragma once
+// Short ways for tests to render a scene with its own settings on either backend.
+#include "camera.h"
+#include "gpu/render_gpu.h"
+#include "quantize.h"
+#include "render_cpu.h"
+#include "scene.h"
+
+namespace rtvk::test {
+
+inline camera scene_camera(const scene& s) { return camera(s.camera, s.render.aspect, s.render.width); }
+
+inline image_rgb8 cpu_image(const scene& s, const camera& cam) {
+  return quantize(render_cpu(cam, s, s.render), s.render.gamma);
+}
+inline image_rgb8 cpu_image(const scene& s) { return cpu_image(s, scene_camera(s)); }
+
+inline image_rgb8 gpu_image(gpu::gpu_context& ctx, const scene& s, const camera& cam) {
+  return quantize(gpu::render_gpu(ctx, cam, s, s.render), s.render.gamma);
+}
+inline image_rgb8 gpu_image(gpu::gpu_context& ctx, const scene& s) {
+  return gpu_image(ctx, s, scene_camera(s));
+}
+
+// The lesson's image: the seed scene through the lesson's camera.
+inline image_rgb8 seed_image(double aspect, int width) {
+  return cpu_image(builtin_scene("seed"), camera(aspect, width));
+}
+
+}  // namespace rtvk::test
