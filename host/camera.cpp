@@ -26,7 +26,9 @@ int checked_height(double aspect_ratio, int image_width) {
   return std::max(1, static_cast<int>(height));
 }
 
-bool finite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 void check_pose(const camera_pose& p) {
   if (!finite(p.lookfrom) || !finite(p.lookat) || !finite(p.vup))

@@ -37,8 +37,7 @@ class camera {
   ray get_ray(double s, double t, glm::dvec2 lens = {0, 0}) const {
     const glm::dvec2 rd = lens_radius_ * lens;
     const vec3 offset = lens_u_ * rd.x + lens_v_ * rd.y;
-    return ray(origin_ + offset,
-               lower_left_ + s * horizontal_ + t * vertical_ - origin_ - offset);
+    return ray(origin_ + offset, lower_left_ + s * horizontal_ + t * vertical_ - origin_ - offset);
   }
 
   double aspect_ratio() const { return aspect_ratio_; }

@@ -58,7 +58,9 @@ struct render_options {
   overrides given;
 };
 
-bool given(const CLI::Option* o) { return o && o->count() > 0; }
+bool given(const CLI::Option* o) {
+  return o && o->count() > 0;
+}
 
 double checked(double v, bool ok, const std::string& flag, const std::string& expected) {
   if (!ok || !std::isfinite(v))
@@ -79,7 +81,8 @@ void apply_overrides(const render_options& o, scene& s) {
   if (given(g.lookfrom)) c.lookfrom = parse_vec3(o.lookfrom, "--lookfrom");
   if (given(g.lookat)) c.lookat = parse_vec3(o.lookat, "--lookat");
   if (given(g.vup)) c.vup = parse_vec3(o.vup, "--vup");
-  if (given(g.vfov)) c.vfov = checked(o.vfov, o.vfov > 0 && o.vfov < 180, "--vfov", "in (0, 180) degrees");
+  if (given(g.vfov))
+    c.vfov = checked(o.vfov, o.vfov > 0 && o.vfov < 180, "--vfov", "in (0, 180) degrees");
   if (given(g.aperture)) c.aperture = checked(o.aperture, o.aperture >= 0, "--aperture", ">= 0");
   if (given(g.focus_dist))
     c.focus_dist = checked(o.focus_dist, o.focus_dist > 0, "--focus-dist", "> 0");
@@ -227,7 +230,8 @@ command_action add_render_command(CLI::App& app) {
   g.width = cmd->add_option("--width", o->width, "Image width in pixels")
                 ->check(CLI::Range(1, max_image_side))
                 ->group(scene_group);
-  g.aspect = cmd->add_option("--aspect", o->aspect, "Aspect ratio, W:H or a decimal")->group(scene_group);
+  g.aspect =
+      cmd->add_option("--aspect", o->aspect, "Aspect ratio, W:H or a decimal")->group(scene_group);
   g.spp = cmd->add_option("--spp", o->spp, "Samples per pixel")
               ->check(CLI::Range(1, max_spp))
               ->group(scene_group);
@@ -237,12 +241,16 @@ command_action add_render_command(CLI::App& app) {
   g.seed = cmd->add_option("--seed", o->seed, "Random seed (same seed, same image)")
                ->check(CLI::Range(0ll, 0xffffffffll))
                ->group(scene_group);
-  g.lookfrom = cmd->add_option("--lookfrom", o->lookfrom, "Camera position x,y,z")->group(scene_group);
+  g.lookfrom =
+      cmd->add_option("--lookfrom", o->lookfrom, "Camera position x,y,z")->group(scene_group);
   g.lookat = cmd->add_option("--lookat", o->lookat, "Point looked at x,y,z")->group(scene_group);
   g.vup = cmd->add_option("--vup", o->vup, "Up direction x,y,z")->group(scene_group);
-  g.vfov = cmd->add_option("--vfov", o->vfov, "Vertical field of view, degrees")->group(scene_group);
-  g.aperture = cmd->add_option("--aperture", o->aperture, "Lens diameter (0: pinhole)")->group(scene_group);
-  g.focus_dist = cmd->add_option("--focus-dist", o->focus_dist, "Distance in focus")->group(scene_group);
+  g.vfov =
+      cmd->add_option("--vfov", o->vfov, "Vertical field of view, degrees")->group(scene_group);
+  g.aperture =
+      cmd->add_option("--aperture", o->aperture, "Lens diameter (0: pinhole)")->group(scene_group);
+  g.focus_dist =
+      cmd->add_option("--focus-dist", o->focus_dist, "Distance in focus")->group(scene_group);
   return [o] { return run_render(*o); };
 }
 

@@ -6,10 +6,14 @@ namespace rtvk {
 
 std::string type_name(material_type t) {
   switch (t) {
-    case material_type::normal: return "normal";
-    case material_type::lambertian: return "lambertian";
-    case material_type::metal: return "metal";
-    case material_type::dielectric: return "dielectric";
+    case material_type::normal:
+      return "normal";
+    case material_type::lambertian:
+      return "lambertian";
+    case material_type::metal:
+      return "metal";
+    case material_type::dielectric:
+      return "dielectric";
   }
   return "unknown";
 }
@@ -21,7 +25,7 @@ bool scatter_lambertian(const material& m, const hit_record& rec, const random_s
   const double s = 1e-8;
   if (std::abs(direction.x) < s && std::abs(direction.y) < s && std::abs(direction.z) < s)
     direction = rec.normal;
-  scattered = ray(rec.p, direction);
+  scattered = ray(rec.scatter_origin(direction), direction);
   attenuation = m.albedo;
   return true;
 }
@@ -29,9 +33,10 @@ bool scatter_lambertian(const material& m, const hit_record& rec, const random_s
 bool scatter_metal(const material& m, const ray& r_in, const hit_record& rec,
                    const random_stream& rnd, color& attenuation, ray& scattered) {
   const vec3 reflected = reflect_dir(unit_vector(r_in.direction()), rec.normal);
-  const vec3 fuzz = random_in_unit_sphere(rnd(dim_direction_a), rnd(dim_direction_b),
-                                          rnd(dim_fuzz_radius));
-  scattered = ray(rec.p, reflected + m.fuzz * fuzz);
+  const vec3 fuzz =
+      random_in_unit_sphere(rnd(dim_direction_a), rnd(dim_direction_b), rnd(dim_fuzz_radius));
+  const vec3 direction = reflected + m.fuzz * fuzz;
+  scattered = ray(rec.scatter_origin(direction), direction);
   attenuation = m.albedo;
   return glm::dot(scattered.direction(), rec.normal) > 0;
 }
@@ -48,18 +53,21 @@ bool scatter_dielectric(const material& m, const ray& r_in, const hit_record& re
       cannot_refract || schlick_reflectance(cos_theta, refraction_ratio) > rnd(dim_choice)
           ? reflect_dir(unit_direction, rec.normal)
           : refract_dir(unit_direction, rec.normal, refraction_ratio);
-  scattered = ray(rec.p, direction);
+  scattered = ray(rec.scatter_origin(direction), direction);
   return true;
 }
 
 bool scatter(const material& m, const ray& r_in, const hit_record& rec, const random_stream& rnd,
              color& attenuation, ray& scattered) {
   switch (m.type) {
-    case material_type::lambertian: return scatter_lambertian(m, rec, rnd, attenuation, scattered);
-    case material_type::metal: return scatter_metal(m, r_in, rec, rnd, attenuation, scattered);
+    case material_type::lambertian:
+      return scatter_lambertian(m, rec, rnd, attenuation, scattered);
+    case material_type::metal:
+      return scatter_metal(m, r_in, rec, rnd, attenuation, scattered);
     case material_type::dielectric:
       return scatter_dielectric(m, r_in, rec, rnd, attenuation, scattered);
-    case material_type::normal: break;
+    case material_type::normal:
+      break;
   }
   return false;
 }

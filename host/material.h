@@ -25,7 +25,9 @@ struct material {
 std::string type_name(material_type t);
 
 // Mirror reflection of v about the unit normal n.
-inline vec3 reflect_dir(const vec3& v, const vec3& n) { return v - 2 * glm::dot(v, n) * n; }
+inline vec3 reflect_dir(const vec3& v, const vec3& n) {
+  return v - 2 * glm::dot(v, n) * n;
+}
 
 // Snell's law for a unit direction uv entering a surface with unit normal n (facing against uv),
 // etai_over_etat = n1 / n2.

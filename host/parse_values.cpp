@@ -34,7 +34,8 @@ vec3 parse_vec3(const std::string& text, const std::string& flag) {
     const auto comma = rest.find(',');
     const auto part = finite_number(rest.substr(0, comma));
     if (!part || (k < 2) == (comma == std::string_view::npos))
-      throw usage_error(flag + ": invalid vector '" + text + "' (expected x,y,z: three finite numbers)");
+      throw usage_error(flag + ": invalid vector '" + text +
+                        "' (expected x,y,z: three finite numbers)");
     v[k] = *part;
     rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
   }

@@ -19,12 +19,12 @@ class progress_bar {
 
  private:
   using clock = std::chrono::steady_clock;
-  std::string what_;           // "rendering", ...
-  int total_;                  // units of work
-  bool enabled_;               // asked for and stderr is a terminal
-  bool drawn_ = false;         // something is on the line
-  clock::time_point start_;    // when the work began
-  clock::time_point last_{};   // last redraw
+  std::string what_;          // "rendering", ...
+  int total_;                 // units of work
+  bool enabled_;              // asked for and stderr is a terminal
+  bool drawn_ = false;        // something is on the line
+  clock::time_point start_;   // when the work began
+  clock::time_point last_{};  // last redraw
 };
 
 }  // namespace rtvk

@@ -24,9 +24,9 @@ constexpr std::uint32_t hash32(std::uint32_t x) {
 
 // Dimensions within one bounce; at most 16 (4 bits).
 enum random_dimension : std::uint32_t {
-  dim_jitter_u = 0,     // bounce 0: pixel jitter
+  dim_jitter_u = 0,  // bounce 0: pixel jitter
   dim_jitter_v = 1,
-  dim_lens_a = 2,       // bounce 0: lens sample
+  dim_lens_a = 2,  // bounce 0: lens sample
   dim_lens_b = 3,
   dim_direction_a = 0,  // bounce >= 1: scatter direction
   dim_direction_b = 1,
@@ -51,10 +51,10 @@ constexpr float random_float(std::uint32_t seed, std::uint32_t pixel, std::uint3
 
 // The random numbers of one pixel sample at one bounce.
 struct random_stream {
-  std::uint32_t seed = 0;    // the render's --seed
-  std::uint32_t pixel = 0;   // y * image width + x, y from the top of the full image
+  std::uint32_t seed = 0;          // the render's --seed
+  std::uint32_t pixel = 0;         // y * image width + x, y from the top of the full image
   std::uint32_t sample_index = 0;  // sample index within the pixel
-  std::uint32_t bounce = 0;  // 0 for the camera ray, k for the k-th scatter
+  std::uint32_t bounce = 0;        // 0 for the camera ray, k for the k-th scatter
 
   double operator()(std::uint32_t dim) const {
     return random_float(seed, pixel, sample_index, bounce, dim);

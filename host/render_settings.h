@@ -14,7 +14,7 @@ struct render_settings {
   bool jitter = false;         // random sample positions inside each pixel (antialiasing)
 };
 
-inline constexpr int max_spp = 1 << 20;      // samples per pixel
+inline constexpr int max_spp = 1 << 20;        // samples per pixel
 inline constexpr int max_depth_limit = 10000;  // bounces
 
 }  // namespace rtvk

@@ -20,9 +20,15 @@ scene seed_scene() {
   return s;
 }
 
-material lambertian(color albedo) { return {material_type::lambertian, albedo, 0, 1.5}; }
-material metal(color albedo, double fuzz) { return {material_type::metal, albedo, fuzz, 1.5}; }
-material dielectric(double ir) { return {material_type::dielectric, color(1), 0, ir}; }
+material lambertian(color albedo) {
+  return {material_type::lambertian, albedo, 0, 1.5};
+}
+material metal(color albedo, double fuzz) {
+  return {material_type::metal, albedo, fuzz, 1.5};
+}
+material dielectric(double ir) {
+  return {material_type::dielectric, color(1), 0, ir};
+}
 
 render_settings book_render(int width, double aspect, int spp) {
   render_settings r;
@@ -101,8 +107,10 @@ scene book_final_scene() {
     }
   }
   s.spheres.push_back(sphere(point3(0, 1, 0), 1.0, add("big_glass", dielectric(1.5))));
-  s.spheres.push_back(sphere(point3(-4, 1, 0), 1.0, add("big_diffuse", lambertian(color(0.4, 0.2, 0.1)))));
-  s.spheres.push_back(sphere(point3(4, 1, 0), 1.0, add("big_metal", metal(color(0.7, 0.6, 0.5), 0.0))));
+  s.spheres.push_back(
+      sphere(point3(-4, 1, 0), 1.0, add("big_diffuse", lambertian(color(0.4, 0.2, 0.1)))));
+  s.spheres.push_back(
+      sphere(point3(4, 1, 0), 1.0, add("big_metal", metal(color(0.7, 0.6, 0.5), 0.0))));
   return s;
 }
 
@@ -133,7 +141,9 @@ void check_scene(const scene& s) {
   }
 }
 
-std::vector<std::string> builtin_scene_names() { return {"seed", "materials", "book-final"}; }
+std::vector<std::string> builtin_scene_names() {
+  return {"seed", "materials", "book-final"};
+}
 
 scene builtin_scene(std::string_view name) {
   if (name == "seed") return seed_scene();

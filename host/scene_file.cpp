@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "parse_values.h"
 #include "errors.h"
 #include "format.h"
+#include "parse_values.h"
 
 namespace rtvk {
 namespace {
@@ -56,8 +56,9 @@ class scene_reader {
   long long integer(const json& j, const std::string& path, long long lo, long long hi) const {
     if (!j.is_number_integer())
       fail(path, "expected an integer, got " + (j.is_number() ? j.dump() : type_of(j)));
-    const long long v = j.is_number_unsigned() ? (long long)std::min<std::uint64_t>(j.get<std::uint64_t>(), 1ull << 62)
-                                               : j.get<long long>();
+    const long long v = j.is_number_unsigned()
+                            ? (long long)std::min<std::uint64_t>(j.get<std::uint64_t>(), 1ull << 62)
+                            : j.get<long long>();
     if (v < lo || v > hi)
       fail(path, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
                      "], got " + j.dump());
@@ -120,10 +121,12 @@ render_settings read_render(const scene_reader& r, const json& j) {
   if (j.contains("spp")) s.spp = int(r.integer(j["spp"], p + "/spp", 1, max_spp));
   if (j.contains("max_depth"))
     s.max_depth = int(r.integer(j["max_depth"], p + "/max_depth", 1, max_depth_limit));
-  if (j.contains("seed")) s.seed = std::uint32_t(r.integer(j["seed"], p + "/seed", 0, 0xffffffffll));
+  if (j.contains("seed"))
+    s.seed = std::uint32_t(r.integer(j["seed"], p + "/seed", 0, 0xffffffffll));
   if (j.contains("gamma")) s.gamma = r.number_in(j["gamma"], p + "/gamma", 0.1, 10);
   if (j.contains("jitter")) {
-    if (!j["jitter"].is_boolean()) r.fail(p + "/jitter", "expected true or false, got " + r.type_of(j["jitter"]));
+    if (!j["jitter"].is_boolean())
+      r.fail(p + "/jitter", "expected true or false, got " + r.type_of(j["jitter"]));
     s.jitter = j["jitter"].get<bool>();
   }
   return s;
@@ -151,7 +154,8 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
     r.only_fields(j, p, {"type", "ir"});
     m.type = material_type::dielectric;
     m.ir = r.number(r.required(j, p, "ir"), p + "/ir");
-    if (m.ir <= 0) r.fail(p + "/ir", "expected an index of refraction > 0, got " + format_number(m.ir));
+    if (m.ir <= 0)
+      r.fail(p + "/ir", "expected an index of refraction > 0, got " + format_number(m.ir));
   } else {
     r.fail(p + "/type", "unknown material type \"" + t +
                             "\" (expected normal, lambertian, metal or dielectric)");
@@ -175,7 +179,8 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
   std::map<std::string, int> index;
   if (root.contains("materials")) {
     const json& mats = root["materials"];
-    if (!mats.is_object()) r.fail("/materials", "expected an object of named materials, got " + r.type_of(mats));
+    if (!mats.is_object())
+      r.fail("/materials", "expected an object of named materials, got " + r.type_of(mats));
     for (const auto& [key, value] : mats.items()) {
       index[key] = int(s.materials.size());
       s.materials.push_back({key, read_material(r, value, "/materials/" + escape_pointer(key))});
@@ -192,7 +197,8 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
     sphere sp;
     sp.center = r.vector3(r.required(j, p, "center"), p + "/center");
     sp.radius = r.number(r.required(j, p, "radius"), p + "/radius");
-    if (sp.radius <= 0) r.fail(p + "/radius", "expected a radius > 0, got " + format_number(sp.radius));
+    if (sp.radius <= 0)
+      r.fail(p + "/radius", "expected a radius > 0, got " + format_number(sp.radius));
     const json& m = r.required(j, p, "material");
     if (!m.is_string()) r.fail(p + "/material", "expected a material name, got " + r.type_of(m));
     const auto found = index.find(m.get<std::string>());
@@ -210,7 +216,9 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
   return s;
 }
 
-json vec_json(const vec3& v) { return json::array({v.x, v.y, v.z}); }
+json vec_json(const vec3& v) {
+  return json::array({v.x, v.y, v.z});
+}
 
 }  // namespace
 
@@ -248,8 +256,8 @@ std::string dump_scene_json(const scene& s) {
                     {"vup", vec_json(c.vup)},           {"vfov", c.vfov},
                     {"aperture", c.aperture},           {"focus_dist", c.focus_dist}};
   const render_settings& r = s.render;
-  root["render"] = {{"width", r.width}, {"aspect", r.aspect},     {"spp", r.spp},
-                    {"max_depth", r.max_depth}, {"seed", r.seed}, {"gamma", r.gamma},
+  root["render"] = {{"width", r.width},         {"aspect", r.aspect}, {"spp", r.spp},
+                    {"max_depth", r.max_depth}, {"seed", r.seed},     {"gamma", r.gamma},
                     {"jitter", r.jitter}};
   json mats = json::object();
   for (const auto& [name, m] : s.materials) {

@@ -24,7 +24,7 @@ bool scatter_lambertian(gpu_material m, hit_record rec, random_stream s, out vec
   vec3 direction = rec.normal + random_unit_vector(rnd(s, dim_direction_a), rnd(s, dim_direction_b));
   const float e = 1e-8;
   if (abs(direction.x) < e && abs(direction.y) < e && abs(direction.z) < e) direction = rec.normal;
-  scattered = ray(rec.p, direction);
+  scattered = ray(scatter_origin(rec, direction), direction);
   attenuation = m.albedo;
   return true;
 }
@@ -34,7 +34,8 @@ bool scatter_metal(gpu_material m, ray r_in, hit_record rec, random_stream s,
   vec3 reflected = reflect_dir(unit_vector(r_in.direction), rec.normal);
   vec3 fuzz = random_in_unit_sphere(rnd(s, dim_direction_a), rnd(s, dim_direction_b),
                                     rnd(s, dim_fuzz_radius));
-  scattered = ray(rec.p, reflected + m.fuzz * fuzz);
+  vec3 direction = reflected + m.fuzz * fuzz;
+  scattered = ray(scatter_origin(rec, direction), direction);
   attenuation = m.albedo;
   return dot(scattered.direction, rec.normal) > 0.0;
 }
@@ -51,7 +52,7 @@ bool scatter_dielectric(gpu_material m, ray r_in, hit_record rec, random_stream 
       cannot_refract || schlick_reflectance(cos_theta, refraction_ratio) > rnd(s, dim_choice)
           ? reflect_dir(unit_direction, rec.normal)
           : refract_dir(unit_direction, rec.normal, refraction_ratio);
-  scattered = ray(rec.p, direction);
+  scattered = ray(scatter_origin(rec, direction), direction);
   return true;
 }
 

@@ -15,7 +15,13 @@ struct hit_record {
   float t;          // ray parameter of the hit
   bool front_face;  // the ray arrived from outside
   uint material;    // index into the materials buffer
+  float offset;     // how far a ray leaving p starts off the surface
 };
+
+// Mirrors hit_record::scatter_origin: lifted off the surface to the side the ray leaves to.
+vec3 scatter_origin(hit_record rec, vec3 direction) {
+  return rec.p + (dot(direction, rec.normal) >= 0.0 ? rec.offset : -rec.offset) * rec.normal;
+}
 
 // The lesson divides as (1/t) * v; the shader does the same to stay close to the reference.
 vec3 divide(vec3 v, float t) { return (1.0 / t) * v; }

@@ -8,8 +8,9 @@ bool hit_sphere(gpu_sphere s, ray r, float t_min, float t_max, inout hit_record 
   vec3 oc = r.origin - s.center;
   float a = dot(r.direction, r.direction);
   float half_b = dot(oc, r.direction);
-  float c = dot(oc, oc) - s.radius * s.radius;
-  float discriminant = half_b * half_b - a * c;
+  // As on the host: half_b^2 - a*c without the cancellation that ruins it in float.
+  vec3 l = oc - (half_b / a) * r.direction;
+  float discriminant = a * (s.radius * s.radius - dot(l, l));
   if (discriminant < 0.0) return false;
   float sqrtd = sqrt(discriminant);
 
@@ -22,6 +23,8 @@ bool hit_sphere(gpu_sphere s, ray r, float t_min, float t_max, inout hit_record 
   rec.p = ray_at(r, root);
   set_face_normal(rec, r, divide(rec.p - s.center, s.radius));
   rec.material = s.material;
+  float extent = max(max(abs(s.center.x), abs(s.center.y)), abs(s.center.z));
+  rec.offset = (extent + s.radius) * (1.0 / 1048576.0);  // 2^-20, as on the host
   return true;
 }
 

@@ -8,12 +8,16 @@
 
 namespace rtvk::test {
 
-inline camera scene_camera(const scene& s) { return camera(s.camera, s.render.aspect, s.render.width); }
+inline camera scene_camera(const scene& s) {
+  return camera(s.camera, s.render.aspect, s.render.width);
+}
 
 inline image_rgb8 cpu_image(const scene& s, const camera& cam) {
   return quantize(render_cpu(cam, s, s.render), s.render.gamma);
 }
-inline image_rgb8 cpu_image(const scene& s) { return cpu_image(s, scene_camera(s)); }
+inline image_rgb8 cpu_image(const scene& s) {
+  return cpu_image(s, scene_camera(s));
+}
 
 inline image_rgb8 gpu_image(gpu::gpu_context& ctx, const scene& s, const camera& cam) {
   return quantize(gpu::render_gpu(ctx, cam, s, s.render), s.render.gamma);

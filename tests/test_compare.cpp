@@ -10,7 +10,9 @@
 namespace rtvk {
 namespace {
 
-image_rgb8 seed(int width) { return test::seed_image(16.0 / 9.0, width); }
+image_rgb8 seed(int width) {
+  return test::seed_image(16.0 / 9.0, width);
+}
 
 image_rgb8 upside_down(const image_rgb8& img) {
   image_rgb8 out = img;

@@ -21,16 +21,16 @@ void expect_near_vec(const glm::vec3& gpu, const vec3& cpu, const char* what) {
 TEST_F(GpuLayout, UniformBufferArrivesIntactAndGetRayMatchesTheCpu) {
   // (u, v, lens x, lens y): the corners and the center, then two lens samples.
   const std::array<glm::vec4, RTVK_PROBE_POINTS> uv = {
-      glm::vec4(0, 0, 0, 0), glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(1, 1, 0.6f, -0.3f),
-      glm::vec4(0.5f, 0.5f, -0.25f, 0.5f)};
+      glm::vec4(0, 0, 0, 0), glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0),
+      glm::vec4(1, 1, 0.6f, -0.3f), glm::vec4(0.5f, 0.5f, -0.25f, 0.5f)};
   camera_pose posed;
   posed.lookfrom = point3(13, 2, 3);
   posed.lookat = point3(0, 0, 0);
   posed.vfov = 20;
   posed.aperture = 0.1;
   posed.focus_dist = 10;
-  for (auto [pose, aspect, width] : {std::tuple{camera_pose{}, 16.0 / 9.0, 400},
-                                     {camera_pose{}, 2.0, 7}, {posed, 0.37, 333}}) {
+  for (auto [pose, aspect, width] :
+       {std::tuple{camera_pose{}, 16.0 / 9.0, 400}, {camera_pose{}, 2.0, 7}, {posed, 0.37, 333}}) {
     const camera cam(pose, aspect, width);
     const gpu::probe_io io = gpu::run_probe(gpu(), cam, uv);
 

@@ -9,14 +9,16 @@
 #include "lesson_reference.h"
 #include "quantize.h"
 #include "render_cpu.h"
-#include "scene.h"
 #include "render_helpers.h"
+#include "scene.h"
 #include "temp_dir.h"
 
 namespace rtvk {
 namespace {
 
-image_rgb8 render_seed(double aspect, int width) { return test::seed_image(aspect, width); }
+image_rgb8 render_seed(double aspect, int width) {
+  return test::seed_image(aspect, width);
+}
 
 // Nearest hit of the ray from the origin along d with a sphere, by the full quadratic
 // (not rtvk's half-b form): t^2 |d|^2 - 2t d.c + |c|^2 - r^2 = 0.

@@ -49,10 +49,10 @@ struct device_array {
     const VkBufferCopy copy{0, 0, bytes};
     vkCmdCopyBuffer(cb, staging.get(), buffer.get(), 1, &copy);
   }
-  std::size_t count;     // elements the scene has
-  VkDeviceSize bytes;    // buffer size
-  gpu_buffer staging;    // host copy
-  gpu_buffer buffer;     // what the shader reads
+  std::size_t count;   // elements the scene has
+  VkDeviceSize bytes;  // buffer size
+  gpu_buffer staging;  // host copy
+  gpu_buffer buffer;   // what the shader reads
 };
 
 }  // namespace
@@ -70,11 +70,10 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
   const VkDeviceSize image_bytes = VkDeviceSize(width) * height * 3 * sizeof(float);
   const device_info& dev = ctx.device();
   if (image_bytes > dev.limits.maxStorageBufferRange)
-    throw std::runtime_error(std::to_string(width) + "x" + std::to_string(height) + " needs a " +
-                             format_number(double(image_bytes) / (1 << 20)) +
-                             " MiB storage buffer; " + dev.name + " allows " +
-                             format_number(double(dev.limits.maxStorageBufferRange) / (1 << 20)) +
-                             " MiB");
+    throw std::runtime_error(
+        std::to_string(width) + "x" + std::to_string(height) + " needs a " +
+        format_number(double(image_bytes) / (1 << 20)) + " MiB storage buffer; " + dev.name +
+        " allows " + format_number(double(dev.limits.maxStorageBufferRange) / (1 << 20)) + " MiB");
 
   const camera_ubo ubo = to_ubo(cam);
   gpu_buffer ubo_buf(ctx, sizeof ubo, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, memory_use::upload);
@@ -151,7 +150,8 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
           "lower --depth or use fewer spheres");
     done += count;
     if (progress) progress(done);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (seconds < 0.25) batch = std::min(batch * 2, 256);
   }
 

@@ -9,8 +9,14 @@
 
 namespace rtvk::gpu {
 
-std::span<const std::uint32_t> render_shader() { return render_spv; }
-std::span<const std::uint32_t> probe_shader() { return probe_spv; }
-std::span<const std::uint32_t> rng_probe_shader() { return rng_probe_spv; }
+std::span<const std::uint32_t> render_shader() {
+  return render_spv;
+}
+std::span<const std::uint32_t> probe_shader() {
+  return probe_spv;
+}
+std::span<const std::uint32_t> rng_probe_shader() {
+  return rng_probe_spv;
+}
 
 }  // namespace rtvk::gpu

@@ -5,8 +5,8 @@
 namespace rtvk::gpu {
 
 // SPIR-V compiled from shaders/ at build time and embedded in the binary.
-std::span<const std::uint32_t> render_shader();  // render.comp
-std::span<const std::uint32_t> probe_shader();   // probe.comp
+std::span<const std::uint32_t> render_shader();     // render.comp
+std::span<const std::uint32_t> probe_shader();      // probe.comp
 std::span<const std::uint32_t> rng_probe_shader();  // rng_probe.comp
 
 }  // namespace rtvk::gpu
