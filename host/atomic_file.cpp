@@ -21,11 +21,7 @@ class temp_file {
  public:
   explicit temp_file(const std::filesystem::path& target) {
     const auto dir = target.has_parent_path() ? target.parent_path() : ".";
-    // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on "." + std::string at -O3.
-    std::string name(1, '.');
-    name += target.filename().string();
-    name += ".tmp-XXXXXX";
-    path_ = (dir / name).string();
+    path_ = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
     fd_ = ::mkstemp(path_.data());
     if (fd_ < 0) fail("mkstemp", path_, errno);
   }

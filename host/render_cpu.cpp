@@ -24,7 +24,7 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
         const glm::dvec2 lens = cam.lens_radius() > 0
                                     ? random_in_unit_disk(rnd(dim_lens_a), rnd(dim_lens_b))
                                     : glm::dvec2(0, 0);
-        sum += ray_color(cam.get_ray(u, v, lens), world, materials, rs.max_depth, rnd);
+        sum += ray_color(cam.get_ray(u, v, lens), world, materials, s.sky, rs.max_depth, rnd);
       }
       fb.at(i, y) = divide(sum, rs.spp);
     }

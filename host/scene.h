@@ -11,6 +11,14 @@
 
 namespace rtvk {
 
+// The light that reaches a ray that hits nothing: a blend from the horizon color (looking
+// straight down) to the zenith color (straight up). The defaults are the lesson's sky; equal
+// colors make a uniform sky, as a white-furnace test wants.
+struct sky {
+  color horizon{1.0, 1.0, 1.0};  // linear RGB seen along -y, blending to...
+  color zenith{0.5, 0.7, 1.0};   // ...this along +y
+};
+
 struct named_material {
   std::string name;  // how spheres refer to it in scene files
   material m;        // its optics
@@ -22,6 +30,7 @@ struct scene {
   std::string name;                       // built-in name or the file it came from
   camera_pose camera;                     // where the camera stands; the lesson's by default
   render_settings render;                 // default image size, samples, depth, ...
+  rtvk::sky sky;                          // what rays that escape see
   std::vector<named_material> materials;  // spheres index into this
   std::vector<sphere> spheres;            // every object, in the order hits are tested
 };

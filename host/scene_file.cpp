@@ -80,6 +80,14 @@ class scene_reader {
     return c;
   }
 
+  color radiance(const json& j, const std::string& path) const {
+    const vec3 c = vector3(j, path);
+    for (int k = 0; k < 3; ++k)
+      if (c[k] < 0)
+        fail(path + "/" + std::to_string(k), "expected a color >= 0, got " + format_number(c[k]));
+    return c;
+  }
+
   static std::string type_of(const json& j) {
     if (j.is_number()) return "a number";
     return std::string(j.is_array() ? "an " : "a ") + j.type_name();
@@ -170,11 +178,17 @@ std::string escape_pointer(const std::string& key) {
 }
 
 scene read_scene(const scene_reader& r, const json& root, const std::string& name) {
-  r.only_fields(root, "", {"camera", "render", "materials", "spheres"});
+  r.only_fields(root, "", {"camera", "render", "sky", "materials", "spheres"});
   scene s;
   s.name = name;
   if (root.contains("camera")) s.camera = read_camera(r, root["camera"]);
   if (root.contains("render")) s.render = read_render(r, root["render"]);
+  if (root.contains("sky")) {
+    const json& j = root["sky"];
+    r.only_fields(j, "/sky", {"horizon", "zenith"});
+    if (j.contains("horizon")) s.sky.horizon = r.radiance(j["horizon"], "/sky/horizon");
+    if (j.contains("zenith")) s.sky.zenith = r.radiance(j["zenith"], "/sky/zenith");
+  }
 
   std::map<std::string, int> index;
   if (root.contains("materials")) {
@@ -220,14 +234,36 @@ json vec_json(const vec3& v) {
   return json::array({v.x, v.y, v.z});
 }
 
+// Pretty-prints with anything that fits on one line kept on one line: a sphere or a vector
+// reads as one line rather than ten.
+void write_json(const json& j, int indent, std::string& out) {
+  const std::string flat = j.dump();
+  if (flat.size() + std::size_t(indent) <= 100 || !j.is_structured()) {
+    out += flat;
+    return;
+  }
+  const std::string pad(std::size_t(indent) + 2, ' ');
+  const bool object = j.is_object();
+  out += object ? "{\n" : "[\n";
+  std::size_t i = 0;
+  for (auto it = j.begin(); it != j.end(); ++it, ++i) {
+    out += pad;
+    if (object) out += json(it.key()).dump() + ": ";
+    write_json(*it, indent + 2, out);
+    out += i + 1 < j.size() ? ",\n" : "\n";
+  }
+  out += std::string(std::size_t(indent), ' ') + (object ? "}" : "]");
+}
+
 }  // namespace
 
 scene parse_scene_json(const std::string& text, const std::string& file_name) {
   json root;
   try {
     root = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
     // e.what() reads "[json.exception.parse_error.101] parse error at line L, column C: ..."
+    // (numbers too large for a double, such as 1e999, come as out_of_range errors)
     std::string what = e.what();
     const auto start = what.find("] ");
     if (start != std::string::npos) what = what.substr(start + 2);
@@ -259,6 +295,7 @@ std::string dump_scene_json(const scene& s) {
   root["render"] = {{"width", r.width},         {"aspect", r.aspect}, {"spp", r.spp},
                     {"max_depth", r.max_depth}, {"seed", r.seed},     {"gamma", r.gamma},
                     {"jitter", r.jitter}};
+  root["sky"] = {{"horizon", vec_json(s.sky.horizon)}, {"zenith", vec_json(s.sky.zenith)}};
   json mats = json::object();
   for (const auto& [name, m] : s.materials) {
     json j = {{"type", type_name(m.type)}};
@@ -275,7 +312,9 @@ std::string dump_scene_json(const scene& s) {
                        {"radius", sp.radius},
                        {"material", s.materials[std::size_t(sp.material)].name}});
   root["spheres"] = spheres;
-  return root.dump(2) + "\n";
+  std::string out;
+  write_json(root, 0, out);
+  return out + "\n";
 }
 
 bool names_scene_file(const std::string& value) {

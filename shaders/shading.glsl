@@ -10,7 +10,7 @@ const float t_min = 0.001;                // ignore self-hits ("shadow acne")
 vec3 sky_color(vec3 d) {
   vec3 unit_direction = unit_vector(d);
   float t = 0.5 * (unit_direction.y + 1.0);
-  return (1.0 - t) * vec3(1.0, 1.0, 1.0) + t * vec3(0.5, 0.7, 1.0);
+  return (1.0 - t) * pc.sky_horizon + t * pc.sky_zenith;
 }
 
 vec3 ray_color(ray r, random_stream s, inout uint iterations) {

@@ -67,16 +67,17 @@ struct gpu_material {
   uint pad1;    // unused
 };
 
-// Push constants: what changes from one dispatch (one sample of every pixel) to the next.
+// Push constants (std430): the render's settings and what changes from one dispatch (one sample
+// of every pixel) to the next.
 struct render_push {
+  vec3 sky_horizon;   // linear RGB seen along -y
   uint sphere_count;  // spheres in the storage buffer
+  vec3 sky_zenith;    // linear RGB seen along +y
   uint sample_index;  // which sample of each pixel this dispatch draws
   uint seed;          // the render's random seed
   uint max_depth;     // most scatter events per path
   uint loop_budget;   // most loop iterations one invocation may run (lavapipe stops at 65,535)
   uint jitter;        // 1: random positions inside the pixel
-  uint pad0;          // unused
-  uint pad1;          // unused
 };
 
 // std430: written by the shader when something went wrong.
@@ -130,10 +131,15 @@ static_assert(offsetof(gpu_material, type) == 12);
 static_assert(offsetof(gpu_material, fuzz) == 16);
 static_assert(offsetof(gpu_material, ir) == 20);
 static_assert(sizeof(gpu_material) == 32);
-static_assert(offsetof(render_push, sample_index) == 4);
-static_assert(offsetof(render_push, loop_budget) == 16);
-static_assert(offsetof(render_push, jitter) == 20);
-static_assert(sizeof(render_push) == 32 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, sky_horizon) == 0);
+static_assert(offsetof(render_push, sphere_count) == 12);
+static_assert(offsetof(render_push, sky_zenith) == 16);
+static_assert(offsetof(render_push, sample_index) == 28);
+static_assert(offsetof(render_push, seed) == 32);
+static_assert(offsetof(render_push, max_depth) == 36);
+static_assert(offsetof(render_push, loop_budget) == 40);
+static_assert(offsetof(render_push, jitter) == 44);
+static_assert(sizeof(render_push) == 48 && sizeof(render_push) <= 128);
 static_assert(sizeof(render_status) == 16);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
 static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);

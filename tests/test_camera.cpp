@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "camera.h"
+#include "random.h"
 
 namespace rtvk {
 namespace {
@@ -72,6 +73,93 @@ TEST(Camera, InvalidArgumentsThrowNamingTheValue) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("got 0"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace rtvk
+
+namespace rtvk {
+namespace {
+
+TEST(PosedCamera, DefaultPoseIsExactlyTheLessonsCamera) {
+  const camera lesson(16.0 / 9.0, 400);
+  const camera posed(camera_pose{}, 16.0 / 9.0, 400);
+  EXPECT_EQ(posed.origin(), lesson.origin());
+  EXPECT_EQ(posed.horizontal(), lesson.horizontal());
+  EXPECT_EQ(posed.vertical(), lesson.vertical());
+  EXPECT_EQ(posed.lower_left(), lesson.lower_left());
+  EXPECT_EQ(lesson.lens_radius(), 0.0);
+  EXPECT_EQ(lesson.get_ray(0.3, 0.7).direction(), lesson.get_ray(0.3, 0.7, {0.5, 0.5}).direction());
+}
+
+TEST(PosedCamera, LookatIsAtTheImageCenter) {
+  camera_pose p;
+  p.lookfrom = point3(13, 2, 3);
+  p.lookat = point3(0, 0, 0);
+  p.vfov = 20;
+  p.focus_dist = 7;
+  const camera cam(p, 1.5, 300);
+  const vec3 d = unit_vector(cam.get_ray(0.5, 0.5).direction());
+  const vec3 want = unit_vector(p.lookat - p.lookfrom);
+  EXPECT_NEAR(glm::length(d - want), 0.0, 1e-12);
+  EXPECT_EQ(cam.origin(), p.lookfrom);
+  // The image's up is vup's component perpendicular to the view: +y here.
+  EXPECT_GT(glm::dot(cam.vertical(), vec3(0, 1, 0)), 0);
+}
+
+TEST(PosedCamera, VfovGivesTheViewport) {
+  for (double vfov : {20.0, 60.0, 90.0, 120.0}) {
+    camera_pose p;
+    p.vfov = vfov;
+    p.focus_dist = 2.5;
+    const camera cam(p, 2.0, 100);
+    const double h = 2 * std::tan(vfov * pi / 360) * 2.5;  // on the focus plane
+    EXPECT_NEAR(glm::length(cam.vertical()), h, 1e-12) << vfov;
+    EXPECT_NEAR(glm::length(cam.horizontal()), 2.0 * h, 1e-12) << vfov;
+    // The top and bottom rows see vfov degrees apart.
+    const vec3 top = cam.get_ray(0.5, 1).direction(), bottom = cam.get_ray(0.5, 0).direction();
+    const double seen = std::acos(glm::dot(unit_vector(top), unit_vector(bottom))) * 180 / pi;
+    EXPECT_NEAR(seen, vfov, 1e-9) << vfov;
+  }
+}
+
+TEST(PosedCamera, LensSamplesMeetOnTheFocusPlane) {
+  camera_pose p;
+  p.lookfrom = point3(3, 3, 2);
+  p.lookat = point3(0, 0, -1);
+  p.aperture = 2.0;
+  p.focus_dist = 4;
+  const camera cam(p, 16.0 / 9.0, 200);
+  EXPECT_DOUBLE_EQ(cam.lens_radius(), 1.0);
+  const ray pin = cam.get_ray(0.2, 0.6);
+  for (glm::dvec2 lens : {glm::dvec2(1, 0), glm::dvec2(0, -1), glm::dvec2(0.3, 0.4)}) {
+    const ray r = cam.get_ray(0.2, 0.6, lens);
+    // The origin moves across the lens...
+    EXPECT_NEAR(glm::length(r.origin() - pin.origin()), glm::length(lens), 1e-12);
+    // ...but every lens sample aims at the same point on the focus plane.
+    EXPECT_NEAR(glm::length(r.at(1) - pin.at(1)), 0.0, 1e-12);
+  }
+}
+
+TEST(PosedCamera, InvalidPosesThrow) {
+  camera_pose p;
+  for (double vfov : {0.0, 180.0, -5.0, std::nan("")}) {
+    p = {};
+    p.vfov = vfov;
+    EXPECT_THROW(camera(p, 1.0, 10), std::invalid_argument) << vfov;
+  }
+  p = {};
+  p.lookat = p.lookfrom;
+  EXPECT_THROW(camera(p, 1.0, 10), std::invalid_argument);
+  p = {};
+  p.vup = vec3(0, 0, 1);  // parallel to the view direction
+  EXPECT_THROW(camera(p, 1.0, 10), std::invalid_argument);
+  p = {};
+  p.aperture = -1;
+  EXPECT_THROW(camera(p, 1.0, 10), std::invalid_argument);
+  p = {};
+  p.focus_dist = 0;
+  EXPECT_THROW(camera(p, 1.0, 10), std::invalid_argument);
 }
 
 }  // namespace

@@ -100,6 +100,8 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
       sizeof(render_push), wg);
 
   render_push push{};
+  push.sky_horizon = vec3(s.sky.horizon);
+  push.sky_zenith = vec3(s.sky.zenith);
   push.sphere_count = std::uint32_t(spheres.count);
   push.seed = rs.seed;
   push.max_depth = std::uint32_t(rs.max_depth);

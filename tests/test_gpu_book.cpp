@@ -1,0 +1,85 @@
+// The book's features on the GPU: the same random numbers, the same pictures, and no silent
+// truncation by lavapipe's loop cap.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "gpu/probe.h"
+#include "gpu/render_gpu.h"
+#include "gpu_fixture.h"
+#include "image_compare.h"
+#include "random.h"
+#include "render_helpers.h"
+
+namespace rtvk {
+namespace {
+
+class GpuBook : public test::GpuTest {};
+
+TEST_F(GpuBook, RandomNumbersAreBitIdentical) {
+  std::vector<gpu::rng_probe_entry> entries;
+  for (std::uint32_t pixel : {0u, 1u, 399u, 89999u, 0xffffffffu})
+    for (std::uint32_t sample : {0u, 1u, 31u, 499u})
+      for (std::uint32_t bounce : {0u, 1u, 2u, 49u})
+        for (std::uint32_t dim = 0; dim < 4; ++dim)
+          entries.push_back({pixel, sample, bounce, dim, 0, 0, 0, 0});
+  const auto out = gpu::run_rng_probe(gpu(), entries);
+  ASSERT_EQ(out.size(), entries.size());
+  for (const auto& e : out) {
+    SCOPED_TRACE(std::to_string(e.pixel) + "/" + std::to_string(e.sample_index) + "/" +
+                 std::to_string(e.bounce) + "/" + std::to_string(e.dim));
+    ASSERT_EQ(e.bits, random_bits(0x5eed, e.pixel, e.sample_index, e.bounce, e.dim));
+    const float cpu = random_float(0x5eed, e.pixel, e.sample_index, e.bounce, e.dim);
+    ASSERT_EQ(std::memcmp(&e.value, &cpu, sizeof cpu), 0) << e.value << " vs " << cpu;
+  }
+}
+
+void expect_agreement(gpu::gpu_context& ctx, scene s, int width, int spp) {
+  s.render.width = width;
+  s.render.spp = spp;
+  const image_difference d =
+      compare_images(test::gpu_image(ctx, s), test::cpu_image(s), monte_carlo_agreement.tolerance);
+  EXPECT_GE(d.psnr_db, 40.0) << s.name;
+  EXPECT_LE(d.share_over, 0.01) << s.name << ": " << d.pixels_over << " pixels over 2 levels";
+}
+
+TEST_F(GpuBook, MaterialsSceneMatchesTheCpu) {
+  expect_agreement(gpu(), builtin_scene("materials"), 200, 32);
+}
+
+TEST_F(GpuBook, BookFinalMatchesTheCpu) {
+  expect_agreement(gpu(), builtin_scene("book-final"), 320, 8);
+}
+
+TEST_F(GpuBook, SeedImageIsStillTheReference) {
+  const scene s = builtin_scene("seed");
+  const image_difference d = compare_images(test::gpu_image(gpu(), s), test::cpu_image(s), 1);
+  EXPECT_LE(d.share_over, 0.001);
+}
+
+TEST_F(GpuBook, LoopBudgetOverrunFailsTheRenderInsteadOfTruncating) {
+  scene s = builtin_scene("materials");
+  s.render.width = 32;
+  s.render.spp = 2;
+  const camera cam = test::scene_camera(s);
+  // 5 spheres and up to 50 bounces: far more than 20 iterations for most pixels.
+  try {
+    gpu::render_gpu(gpu(), cam, s, s.render, {}, 20);
+    FAIL() << "no loop_budget_error";
+  } catch (const gpu::loop_budget_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("more than 20 loop iterations"), std::string::npos) << what;
+    EXPECT_NE(what.find(gpu().device().name), std::string::npos) << what;
+  }
+  // The same render within budget succeeds.
+  EXPECT_NO_THROW(gpu::render_gpu(gpu(), cam, s, s.render, {}, 100000));
+}
+
+TEST_F(GpuBook, DefaultBudgetStaysBelowLavapipesCap) {
+  if (gpu().device().driver_name == "llvmpipe") {
+    EXPECT_LT(gpu::default_loop_budget(gpu().device()), 65535u);
+  }
+}
+
+}  // namespace
+}  // namespace rtvk

@@ -1,0 +1,135 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "errors.h"
+#include "render_helpers.h"
+#include "scene_file.h"
+#include "temp_dir.h"
+
+namespace rtvk {
+namespace {
+
+TEST(SceneFile, BuiltinScenesRoundTripExactly) {
+  for (const std::string& name : builtin_scene_names()) {
+    const scene original = builtin_scene(name);
+    const std::string dumped = dump_scene_json(original);
+    const scene back = parse_scene_json(dumped, name + ".json");
+    EXPECT_EQ(dump_scene_json(back), dumped) << name;
+    ASSERT_EQ(back.spheres.size(), original.spheres.size());
+    for (std::size_t i = 0; i < back.spheres.size(); ++i) {
+      EXPECT_EQ(back.spheres[i].center, original.spheres[i].center);
+      EXPECT_EQ(back.spheres[i].radius, original.spheres[i].radius);
+    }
+    // The same picture, pixel for pixel, at a small size.
+    scene a = original, b = back;
+    for (scene* s : {&a, &b}) {
+      s->render.width = 48;
+      s->render.spp = std::min(s->render.spp, 2);
+    }
+    EXPECT_EQ(test::cpu_image(a).rgb, test::cpu_image(b).rgb) << name;
+  }
+}
+
+TEST(SceneFile, BookFinalIsTheSameSceneEveryRun) {
+  const scene a = builtin_scene("book-final"), b = builtin_scene("book-final");
+  EXPECT_EQ(dump_scene_json(a), dump_scene_json(b));
+  // The ground, the grid's surviving spheres, and the three big ones.
+  EXPECT_GT(a.spheres.size(), 400u);
+  EXPECT_LE(a.spheres.size(), 1u + 22 * 22 + 3);
+  EXPECT_EQ(a.spheres.front().radius, 1000);
+  EXPECT_EQ(a.spheres.back().center, point3(4, 1, 0));
+}
+
+std::string error_of(const std::string& json) {
+  try {
+    parse_scene_json(json, "bad.json");
+  } catch (const usage_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
+  const std::string m = R"("materials":{"m":{"type":"normal"}})";
+  const std::string ok_sphere = R"({"center":[0,0,-1],"radius":0.5,"material":"m"})";
+  const struct {
+    std::string json, expect;
+  } cases[] = {
+      {"{", "bad.json: parse error at line 1, column 2"},
+      {"{\n  \"spheres\": [,]\n}", "line 2"},
+      {"[]", "bad.json: /: expected an object"},
+      {"{" + m + "}", "/: missing field \"spheres\""},
+      {"{" + m + R"(,"spheres":{}})", "/spheres: expected an array"},
+      {"{" + m + R"(,"spheres":[{"center":[0,0,-1],"radius":-1,"material":"m"}]})",
+       "/spheres/0/radius: expected a radius > 0, got -1"},
+      {"{" + m + R"(,"spheres":[)" + ok_sphere +
+           R"(,{"center":[0,0,-1],"radius":0,"material":"m"}]})",
+       "/spheres/1/radius: expected a radius > 0, got 0"},
+      {"{" + m + R"(,"spheres":[{"center":[0,0],"radius":1,"material":"m"}]})",
+       "/spheres/0/center: expected an array of 3 numbers"},
+      {"{" + m + R"(,"spheres":[{"center":[0,"x",0],"radius":1,"material":"m"}]})",
+       "/spheres/0/center/1: expected a number, got a string"},
+      {"{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":"big","material":"m"}]})",
+       "/spheres/0/radius: expected a number, got a string"},
+      {"{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":1e999,"material":"m"}]})",
+       "number overflow"},
+      {"{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":1,"material":"gold"}]})",
+       "/spheres/0/material: no material named \"gold\""},
+      {"{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":1}]})",
+       "/spheres/0: missing field \"material\""},
+      {"{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":1,"material":"m","colour":1}]})",
+       "/spheres/0/colour: unknown field"},
+      {R"({"materials":{"m":{"type":"plastic"}},"spheres":[]})",
+       "/materials/m/type: unknown material type \"plastic\""},
+      {R"({"materials":{"m":{"type":"lambertian"}},"spheres":[]})",
+       "/materials/m: missing field \"albedo\""},
+      {R"({"materials":{"m":{"type":"lambertian","albedo":[2,0,0]}},"spheres":[]})",
+       "/materials/m/albedo/0: expected an albedo in [0, 1], got 2"},
+      {R"({"materials":{"m":{"type":"metal","albedo":[1,1,1],"fuzz":3}},"spheres":[]})",
+       "/materials/m/fuzz"},
+      {R"({"materials":{"m":{"type":"dielectric","ir":0}},"spheres":[]})", "/materials/m/ir"},
+      {R"({"render":{"width":0},"spheres":[]})",
+       "/render/width: expected an integer in [1, 65536]"},
+      {R"({"render":{"spp":2.5},"spheres":[]})", "/render/spp: expected an integer, got 2.5"},
+      {R"({"render":{"aspect":"16:0"},"spheres":[]})",
+       "/render/aspect: invalid aspect ratio '16:0'"},
+      {R"({"camera":{"vfov":200},"spheres":[]})", "/camera: vertical field of view"},
+      {R"({"camera":{"lookat":[0,0,0]},"spheres":[]})", "/camera: lookfrom and lookat"},
+      {R"({"sky":{"zenith":[0,-1,0]},"spheres":[]})", "/sky/zenith/1"},
+  };
+  for (const auto& c : cases) {
+    const std::string e = error_of(c.json);
+    EXPECT_NE(e.find(c.expect), std::string::npos) << c.json << "\n  gave: " << e;
+    EXPECT_EQ(e.rfind("bad.json: ", 0), 0u) << e;
+  }
+}
+
+TEST(SceneFile, MissingEmptyAndFolderFiles) {
+  test::temp_dir dir;
+  EXPECT_THROW(load_scene_file(dir.path() / "none.json"), usage_error);
+  EXPECT_THROW(load_scene_file(dir.path()), usage_error);
+  std::ofstream(dir.path() / "empty.json") << "  \n";
+  try {
+    load_scene_file(dir.path() / "empty.json");
+    FAIL();
+  } catch (const usage_error& e) {
+    EXPECT_NE(std::string(e.what()).find("empty scene file"), std::string::npos);
+  }
+}
+
+TEST(SceneFile, AHundredThousandSpheresLoadAndRender) {
+  std::string json = R"({"materials":{"m":{"type":"normal"}},"spheres":[)";
+  for (int i = 0; i < 100000; ++i)
+    json += (i ? "," : "") + std::string(R"({"center":[)") + std::to_string(i % 317 - 158) + ",0," +
+            std::to_string(-20 - i / 317) + R"(],"radius":0.4,"material":"m"})";
+  json += "]}";
+  const scene s = parse_scene_json(json, "big.json");
+  EXPECT_EQ(s.spheres.size(), 100000u);
+  scene small = s;
+  small.render.width = 8;
+  EXPECT_EQ(test::cpu_image(small).width, 8);
+}
+
+}  // namespace
+}  // namespace rtvk
