@@ -31,18 +31,6 @@ class scoped_command_buffer {
   VkCommandBuffer cb_ = VK_NULL_HANDLE;
 };
 
-bool device_has_extension(VkPhysicalDevice dev, const char* name) {
-  std::uint32_t n = 0;
-  vk_check(vkEnumerateDeviceExtensionProperties(dev, nullptr, &n, nullptr),
-           "vkEnumerateDeviceExtensionProperties");
-  std::vector<VkExtensionProperties> exts(n);
-  vk_check(vkEnumerateDeviceExtensionProperties(dev, nullptr, &n, exts.data()),
-           "vkEnumerateDeviceExtensionProperties");
-  for (const auto& e : exts)
-    if (std::strcmp(e.extensionName, name) == 0) return true;
-  return false;
-}
-
 }  // namespace
 
 gpu_context::gpu_context(const gpu_options& options)
@@ -59,7 +47,7 @@ gpu_context::gpu_context(const gpu_options& options)
   queue_info.pQueuePriorities = &priority;
   std::vector<const char*> extensions;
   // A portability implementation must have its subset extension enabled.
-  if (device_has_extension(d.handle, "VK_KHR_portability_subset"))
+  if (has_device_extension(d.handle, "VK_KHR_portability_subset"))
     extensions.push_back("VK_KHR_portability_subset");
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   info.queueCreateInfoCount = 1;

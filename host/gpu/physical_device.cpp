@@ -9,8 +9,6 @@
 #include "vk_error.h"
 
 namespace rtvk::gpu {
-namespace {
-
 bool has_device_extension(VkPhysicalDevice dev, const char* name) {
   std::uint32_t n = 0;
   vk_check(vkEnumerateDeviceExtensionProperties(dev, nullptr, &n, nullptr),
@@ -21,6 +19,8 @@ bool has_device_extension(VkPhysicalDevice dev, const char* name) {
   return std::any_of(exts.begin(), exts.end(),
                      [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
+
+namespace {
 
 device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
   VkPhysicalDeviceProperties props{};

@@ -26,6 +26,9 @@ struct device_info {
 
 std::vector<device_info> list_devices(VkInstance instance);
 
+// Whether the device offers the named extension.
+bool has_device_extension(VkPhysicalDevice dev, const char* name);
+
 std::string type_name(VkPhysicalDeviceType type);       // "discrete", "cpu", ...
 std::string version_string(std::uint32_t api_version);  // "1.3.230"
 std::string driver_version_string(const device_info& d);
