@@ -48,6 +48,8 @@ struct render_options {
   std::string device;             // GPU selector: index or name substring
   bool validate = false;          // Vulkan validation layer on
   bool quiet = false;             // no summary line, no progress bar
+  std::string accel = "bvh";      // bvh or none
+  int threads = 0;                // CPU threads; 0: one per core
   int width = 0;                  // overrides, valid where the option was given
   std::string aspect;
   int spp = 0;
@@ -109,10 +111,18 @@ struct rendered {
   double seconds = 0;   // rendering only, not set-up or file output
 };
 
+engine_options engine_from(const render_options& o) {
+  engine_options e;
+  e.use_bvh = o.accel == "bvh";
+  e.threads = o.threads;
+  return e;
+}
+
 rendered draw_cpu(const render_options& o, const camera& cam, const scene& s) {
   progress_bar bar("rendering on the CPU", cam.image_height(), !o.quiet);
   const auto start = std::chrono::steady_clock::now();
-  const framebuffer fb = render_cpu(cam, s, s.render, [&](int rows) { bar.update(rows); });
+  const framebuffer fb = render_cpu(
+      cam, s, s.render, [&](int rows) { bar.update(rows); }, engine_from(o));
   bar.finish();
   return {quantize(fb, s.render.gamma), "cpu", seconds_since(start)};
 }
@@ -121,8 +131,8 @@ rendered draw_gpu(const render_options& o, gpu::gpu_context& ctx, const camera& 
                   const scene& s) {
   progress_bar bar("rendering on the GPU", s.render.spp, !o.quiet);
   const auto start = std::chrono::steady_clock::now();
-  const framebuffer fb =
-      gpu::render_gpu(ctx, cam, s, s.render, [&](int samples) { bar.update(samples); });
+  const framebuffer fb = gpu::render_gpu(
+      ctx, cam, s, s.render, [&](int samples) { bar.update(samples); }, engine_from(o));
   bar.finish();
   const double seconds = seconds_since(start);
   if (ctx.validation_messages() > 0)
@@ -224,6 +234,12 @@ command_action add_render_command(CLI::App& app) {
   cmd->add_flag("--validate", o->validate,
                 "Enable VK_LAYER_KHRONOS_validation (also RTVK_VALIDATE=1)");
   cmd->add_flag("-q,--quiet", o->quiet, "No summary line and no progress bar");
+  cmd->add_option("--accel", o->accel, "bvh, or none to test every sphere (same image, slower)")
+      ->check(CLI::IsMember({"bvh", "none"}))
+      ->capture_default_str();
+  cmd->add_option("--threads", o->threads, "CPU threads (0: one per core)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
 
   overrides& g = o->given;
   const std::string scene_group = "Scene overrides (default: the scene's own settings)";

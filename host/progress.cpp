@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace rtvk {
 
@@ -10,13 +11,15 @@ progress_bar::progress_bar(std::string what, int total, bool enabled)
     : what_(std::move(what)),
       total_(total > 0 ? total : 1),
       enabled_(enabled && ::isatty(STDERR_FILENO)),
-      start_(clock::now()) {}
+      start_(clock::now()) {
+  if (const char* d = std::getenv("RTVK_PROGRESS_DELAY")) delay_ = std::atof(d);
+}
 
 void progress_bar::update(int done) {
   if (!enabled_) return;
   const auto now = clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  if (elapsed < 1.0 || now - last_ < std::chrono::milliseconds(100)) return;
+  if (elapsed < delay_ || now - last_ < std::chrono::milliseconds(100)) return;
   last_ = now;
   const double fraction = double(done) / total_;
   constexpr int width = 30;

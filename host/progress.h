@@ -5,8 +5,8 @@
 namespace rtvk {
 
 // A one-line progress bar on stderr: percent, elapsed and estimated time left. Drawn only when
-// enabled and stderr is a terminal, and only once the work has taken a second, so short renders
-// and logs stay clean.
+// enabled and stderr is a terminal, and only once the work has taken a second (or
+// RTVK_PROGRESS_DELAY seconds), so short renders and logs stay clean.
 class progress_bar {
  public:
   progress_bar(std::string what, int total, bool enabled);
@@ -25,6 +25,7 @@ class progress_bar {
   bool drawn_ = false;        // something is on the line
   clock::time_point start_;   // when the work began
   clock::time_point last_{};  // last redraw
+  double delay_ = 1.0;        // seconds before the first draw
 };
 
 }  // namespace rtvk

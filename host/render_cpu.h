@@ -19,8 +19,13 @@ using progress_callback = std::function<void(int rows_done)>;
 
 // The lesson's main loop generalized to the book's: rows from the top, `spp` samples per pixel
 // (jittered when asked), lens samples for depth of field. The framebuffer holds the mean linear
-// color; gamma is applied when quantizing.
+// color; gamma is applied when quantizing. Rows are shared out among `engine.threads` threads;
+// every pixel's random numbers depend only on the pixel, so the image does not depend on them.
 framebuffer render_cpu(const camera& cam, const scene& s, const render_settings& rs,
-                       const progress_callback& progress = {});
+                       const progress_callback& progress = {}, const engine_options& engine = {},
+                       render_stats* stats = nullptr);
+
+// The number of worker threads `threads` asks for (0: one per core).
+int worker_threads(int threads);
 
 }  // namespace rtvk

@@ -14,6 +14,19 @@ struct render_settings {
   bool jitter = false;         // random sample positions inside each pixel (antialiasing)
 };
 
+// How a backend does the work, as opposed to what it draws: none of this changes the image.
+struct engine_options {
+  bool use_bvh = true;                // false: test every sphere for every ray (--accel none)
+  int threads = 0;                    // CPU worker threads; 0: one per core
+  std::uint32_t gpu_loop_budget = 0;  // GPU: most loop iterations per invocation; 0: the device's
+  bool count_rays = false;            // fill render_stats::rays (costs a little on the GPU)
+};
+
+// What a render did, for `rtvk bench`.
+struct render_stats {
+  std::uint64_t rays = 0;  // rays traced: camera rays plus scattered rays
+};
+
 inline constexpr int max_spp = 1 << 20;        // samples per pixel
 inline constexpr int max_depth_limit = 10000;  // bounces
 

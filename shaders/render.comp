@@ -16,6 +16,13 @@ layout(std430, set = 0, binding = RTVK_BINDING_MATERIALS) readonly buffer materi
 };
 layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) buffer image_block { float rgb[]; };
 layout(std430, set = 0, binding = RTVK_BINDING_STATUS) buffer status_block { render_status status; };
+layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
+  bvh_node bvh_nodes[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_BVH_INDEX) readonly buffer bvh_index_block {
+  uint bvh_index[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_RAY_COUNT) buffer ray_count_block { uint ray_count[]; };
 layout(push_constant) uniform push_block { render_push pc; };
 
 #include "camera.glsl"
@@ -35,13 +42,16 @@ void main() {
   vec2 lens = cam.lens_radius > 0.0 ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b))
                                     : vec2(0.0);
   uint iterations = 0u;
-  vec3 c = ray_color(get_ray(cam, u, v, lens), s, iterations);
+  uint rays = 0u;
+  vec3 c = ray_color(get_ray(cam, u, v, lens), s, iterations, rays);
   if (iterations > pc.loop_budget) {
     atomicAdd(status.overrun_pixels, 1u);  // the host fails the render rather than show this
     return;
   }
 
-  uint base = 3u * (pixel.y * cam.image_width + pixel.x);
+  uint index = pixel.y * cam.image_width + pixel.x;
+  if (pc.count_rays != 0u) ray_count[index] += rays;
+  uint base = 3u * index;
   rgb[base + 0u] += c.r;
   rgb[base + 1u] += c.g;
   rgb[base + 2u] += c.b;

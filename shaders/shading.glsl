@@ -13,10 +13,11 @@ vec3 sky_color(vec3 d) {
   return (1.0 - t) * pc.sky_horizon + t * pc.sky_zenith;
 }
 
-vec3 ray_color(ray r, random_stream s, inout uint iterations) {
+vec3 ray_color(ray r, random_stream s, inout uint iterations, inout uint rays) {
   vec3 throughput = vec3(1.0, 1.0, 1.0);
   for (uint depth = 0u; depth < pc.max_depth; ++depth) {
     if (++iterations > pc.loop_budget) return vec3(0.0);
+    ++rays;
     hit_record rec;
     if (!hit_world(r, t_min, max_float, rec, iterations)) {
       if (iterations > pc.loop_budget) return vec3(0.0);

@@ -22,6 +22,11 @@ using uint = std::uint32_t;
 #define RTVK_BINDING_MATERIALS 3  // storage buffer: gpu_material[]
 #define RTVK_BINDING_STATUS 4     // storage buffer: render_status
 #define RTVK_BINDING_PROBE 5      // storage buffer: probe_io or rng_probe_entry[] (probes only)
+#define RTVK_BINDING_BVH_NODES 6  // storage buffer: bvh_node[]
+#define RTVK_BINDING_BVH_INDEX 7  // storage buffer: uint[], leaf slot -> sphere index
+#define RTVK_BINDING_RAY_COUNT 8  // storage buffer: uint[], rays traced per pixel
+
+#define RTVK_BVH_STACK 64  // traversal stack entries; the builder keeps the tree shallower
 
 #define RTVK_PROBE_POINTS 5  // (u, v) pairs probe.comp turns into rays
 
@@ -67,6 +72,16 @@ struct gpu_material {
   uint pad1;    // unused
 };
 
+// std430 array element: one node of the bounding volume hierarchy, 32 bytes. Nodes are stored
+// depth first: an interior node's left child follows it, `first` is its right child. A leaf's
+// spheres are bvh_index[first .. first + count).
+struct bvh_node {
+  vec3 bounds_min;  // box corner, scene units (rounded outward)
+  uint first;       // leaf: first slot in the index array; interior: right child's node index
+  vec3 bounds_max;  // box corner, scene units (rounded outward)
+  uint count;       // leaf: number of spheres (> 0); interior: 0
+};
+
 // Push constants (std430): the render's settings and what changes from one dispatch (one sample
 // of every pixel) to the next.
 struct render_push {
@@ -78,6 +93,10 @@ struct render_push {
   uint max_depth;     // most scatter events per path
   uint loop_budget;   // most loop iterations one invocation may run (lavapipe stops at 65,535)
   uint jitter;        // 1: random positions inside the pixel
+  uint use_bvh;       // 1: traverse the BVH; 0: test every sphere in order
+  uint count_rays;    // 1: add the rays each invocation traces to its pixel's counter
+  uint pad0;          // unused
+  uint pad1;          // unused
 };
 
 // std430: written by the shader when something went wrong.
@@ -139,7 +158,14 @@ static_assert(offsetof(render_push, seed) == 32);
 static_assert(offsetof(render_push, max_depth) == 36);
 static_assert(offsetof(render_push, loop_budget) == 40);
 static_assert(offsetof(render_push, jitter) == 44);
-static_assert(sizeof(render_push) == 48 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, use_bvh) == 48);
+static_assert(offsetof(render_push, count_rays) == 52);
+static_assert(sizeof(render_push) == 64 && sizeof(render_push) <= 128);
+static_assert(offsetof(bvh_node, bounds_min) == 0);
+static_assert(offsetof(bvh_node, first) == 12);
+static_assert(offsetof(bvh_node, bounds_max) == 16);
+static_assert(offsetof(bvh_node, count) == 28);
+static_assert(sizeof(bvh_node) == 32);
 static_assert(sizeof(render_status) == 16);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
 static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);

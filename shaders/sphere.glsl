@@ -28,9 +28,77 @@ bool hit_sphere(gpu_sphere s, ray r, float t_min, float t_max, inout hit_record 
   return true;
 }
 
-// The closest hit over every sphere, as hittable_list::hit. Each iteration counts against the
-// loop budget; over budget, the search stops and `iterations` tells the caller.
+// Mirrors safe_inverse in host/bvh.cpp: no zero components, so no 0 * infinity in the slab test.
+vec3 safe_inverse(vec3 d) {
+  vec3 c = vec3(abs(d.x) < 1e-20 ? (d.x < 0.0 ? -1e-20 : 1e-20) : d.x,
+                abs(d.y) < 1e-20 ? (d.y < 0.0 ? -1e-20 : 1e-20) : d.y,
+                abs(d.z) < 1e-20 ? (d.z < 0.0 ? -1e-20 : 1e-20) : d.z);
+  return 1.0 / c;
+}
+
+// Mirrors ray_box_entry in host/bvh.cpp: the entry distance, or -1 to cull.
+float ray_box_entry(vec3 o, vec3 inv_d, bvh_node n, float t_min, float t_max) {
+  vec3 t0 = (n.bounds_min - o) * inv_d;
+  vec3 t1 = (n.bounds_max - o) * inv_d;
+  vec3 near = min(t0, t1);
+  vec3 far = max(t0, t1);
+  float enter = max(max(near.x, near.y), max(near.z, t_min));
+  float leave = min(min(far.x, far.y), min(far.z, t_max));
+  return enter <= leave ? enter : -1.0;
+}
+
+// Mirrors bvh::hit: the same nodes, the same order, ties to the later sphere. Every node visit
+// and sphere test counts against the loop budget.
+bool hit_bvh(ray r, float t_min, float t_max, inout hit_record rec, inout uint iterations) {
+  if (pc.sphere_count == 0u) return false;
+  vec3 o = r.origin;
+  vec3 inv_d = safe_inverse(r.direction);
+  uint stack[RTVK_BVH_STACK];
+  int top = 0;
+  uint node = 0u;
+  float closest = t_max;
+  int best = -1;
+  while (true) {
+    if (++iterations > pc.loop_budget) return false;
+    bvh_node n = bvh_nodes[node];
+    if (n.count > 0u) {
+      for (uint k = n.first; k < n.first + n.count; ++k) {
+        if (++iterations > pc.loop_budget) return false;
+        uint i = bvh_index[k];
+        hit_record temp;
+        if (hit_sphere(spheres[i], r, t_min, closest, temp) && (temp.t < closest || int(i) > best)) {
+          closest = temp.t;
+          best = int(i);
+          rec = temp;
+        }
+      }
+    } else {
+      uint left = node + 1u;
+      uint right = n.first;
+      float t_left = ray_box_entry(o, inv_d, bvh_nodes[left], t_min, closest);
+      float t_right = ray_box_entry(o, inv_d, bvh_nodes[right], t_min, closest);
+      if (t_left >= 0.0 && t_right >= 0.0) {
+        bool left_first = t_left <= t_right;
+        stack[top++] = left_first ? right : left;
+        node = left_first ? left : right;
+        continue;
+      }
+      if (t_left >= 0.0 || t_right >= 0.0) {
+        node = t_left >= 0.0 ? left : right;
+        continue;
+      }
+    }
+    if (top == 0) break;
+    node = stack[--top];
+  }
+  return best >= 0;
+}
+
+// The closest hit over every sphere, as hittable_list::hit (or, with pc.use_bvh, as bvh::hit).
+// Each iteration counts against the loop budget; over budget, the search stops and `iterations`
+// tells the caller.
 bool hit_world(ray r, float t_min, float t_max, inout hit_record rec, inout uint iterations) {
+  if (pc.use_bvh != 0u) return hit_bvh(r, t_min, t_max, rec, iterations);
   bool hit_anything = false;
   float closest_so_far = t_max;
   for (uint i = 0u; i < pc.sphere_count; ++i) {

@@ -64,7 +64,8 @@ TEST_F(GpuBook, LoopBudgetOverrunFailsTheRenderInsteadOfTruncating) {
   const camera cam = test::scene_camera(s);
   // 5 spheres and up to 50 bounces: far more than 20 iterations for most pixels.
   try {
-    gpu::render_gpu(gpu(), cam, s, s.render, {}, 20);
+    gpu::render_gpu(gpu(), cam, s, s.render, {},
+                    engine_options{.use_bvh = false, .gpu_loop_budget = 20});
     FAIL() << "no loop_budget_error";
   } catch (const gpu::loop_budget_error& e) {
     const std::string what = e.what();
@@ -72,13 +73,74 @@ TEST_F(GpuBook, LoopBudgetOverrunFailsTheRenderInsteadOfTruncating) {
     EXPECT_NE(what.find(gpu().device().name), std::string::npos) << what;
   }
   // The same render within budget succeeds.
-  EXPECT_NO_THROW(gpu::render_gpu(gpu(), cam, s, s.render, {}, 100000));
+  EXPECT_NO_THROW(gpu::render_gpu(gpu(), cam, s, s.render, {},
+                                  engine_options{.use_bvh = false, .gpu_loop_budget = 100000}));
 }
 
 TEST_F(GpuBook, DefaultBudgetStaysBelowLavapipesCap) {
   if (gpu().device().driver_name == "llvmpipe") {
     EXPECT_LT(gpu::default_loop_budget(gpu().device()), 65535u);
   }
+}
+
+}  // namespace
+}  // namespace rtvk
+
+namespace rtvk {
+namespace {
+
+// The BVH and the thread count change how fast an image is made, never the image.
+TEST(Accel, BvhAndThreadsGiveTheIdenticalCpuImage) {
+  for (const char* name : {"seed", "materials", "book-final"}) {
+    scene s = builtin_scene(name);
+    s.render.width = 96;
+    s.render.spp = std::min(s.render.spp, 3);
+    const camera cam = test::scene_camera(s);
+    auto image = [&](engine_options e) { return quantize(render_cpu(cam, s, s.render, {}, e), 2); };
+    const image_rgb8 reference = image({.use_bvh = false, .threads = 1});
+    EXPECT_EQ(image({.use_bvh = true, .threads = 1}).rgb, reference.rgb) << name;
+    EXPECT_EQ(image({.use_bvh = true, .threads = 3}).rgb, reference.rgb) << name;
+    EXPECT_EQ(image({.use_bvh = false, .threads = 2}).rgb, reference.rgb) << name;
+  }
+}
+
+TEST(Accel, CoincidentSpheresBreakTiesLikeTheLinearScan) {
+  // Two spheres in exactly the same place with different materials: the later one must win,
+  // whatever order the BVH visits them in.
+  scene s = builtin_scene("seed");
+  s.materials.push_back({"red", {material_type::lambertian, color(1, 0, 0), 0, 1.5}});
+  for (int i = 0; i < 9; ++i) s.spheres.push_back(sphere(point3(0.3 * i - 1.2, 0.6, -2), 0.2, 0));
+  s.spheres.push_back(sphere(point3(0, 0, -1), 0.5, 1));  // covers the seed's ball exactly
+  s.render.width = 64;
+  const camera cam = test::scene_camera(s);
+  const image_rgb8 linear = quantize(render_cpu(cam, s, s.render, {}, {.use_bvh = false}));
+  EXPECT_EQ(quantize(render_cpu(cam, s, s.render, {}, {.use_bvh = true})).rgb, linear.rgb);
+}
+
+TEST_F(GpuBook, BvhGivesTheIdenticalGpuImage) {
+  for (const char* name : {"seed", "materials", "book-final"}) {
+    scene s = builtin_scene(name);
+    s.render.width = 96;
+    s.render.spp = std::min(s.render.spp, 3);
+    const camera cam = test::scene_camera(s);
+    auto image = [&](bool bvh) {
+      return quantize(gpu::render_gpu(gpu(), cam, s, s.render, {}, {.use_bvh = bvh}), 2);
+    };
+    EXPECT_EQ(image(true).rgb, image(false).rgb) << name;
+  }
+}
+
+TEST_F(GpuBook, RayCountsAgreeWithTheCpu) {
+  scene s = builtin_scene("book-final");
+  s.render.width = 64;
+  s.render.spp = 2;
+  const camera cam = test::scene_camera(s);
+  render_stats cpu, gpu_stats;
+  render_cpu(cam, s, s.render, {}, {.count_rays = true}, &cpu);
+  gpu::render_gpu(gpu(), cam, s, s.render, {}, {.count_rays = true}, &gpu_stats);
+  // At least one ray per sample; the same paths up to float divergence.
+  EXPECT_GE(cpu.rays, 64u * 42 * 2);
+  EXPECT_NEAR(double(gpu_stats.rays), double(cpu.rays), 0.01 * double(cpu.rays));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "buffer.h"
+#include "bvh.h"
 #include "compute_pipeline.h"
 #include "format.h"
 #include "packing.h"
@@ -64,7 +65,7 @@ std::uint32_t default_loop_budget(const device_info& d) {
 
 framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
                        const render_settings& rs, const sample_progress& progress,
-                       std::uint32_t loop_budget) {
+                       const engine_options& engine, render_stats* stats) {
   const std::uint32_t width = std::uint32_t(cam.image_width());
   const std::uint32_t height = std::uint32_t(cam.image_height());
   const VkDeviceSize image_bytes = VkDeviceSize(width) * height * 3 * sizeof(float);
@@ -80,6 +81,19 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
   ubo_buf.write(&ubo, sizeof ubo);
   const device_array<gpu_sphere> spheres(ctx, to_gpu_spheres(s));
   const device_array<gpu_material> materials(ctx, to_gpu_materials(s));
+  const bvh tree(engine.use_bvh ? s.spheres : std::vector<sphere>{});
+  const device_array<bvh_node> nodes(ctx, tree.nodes());
+  const device_array<std::uint32_t> bvh_index(ctx, tree.index());
+  // One 32-bit counter per pixel: it holds at most spp * max_depth rays.
+  const bool count_rays =
+      engine.count_rays && std::uint64_t(rs.spp) * std::uint64_t(rs.max_depth) < (1ull << 32);
+  const VkDeviceSize count_bytes =
+      count_rays ? VkDeviceSize(width) * height * sizeof(std::uint32_t) : 4;
+  gpu_buffer ray_counts(ctx, count_bytes,
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                            VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                        memory_use::device_local);
+  gpu_buffer ray_readback(ctx, count_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, memory_use::readback);
   gpu_buffer image(ctx, image_bytes,
                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -96,7 +110,10 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
        {RTVK_BINDING_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, spheres.buffer.get()},
        {RTVK_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, materials.buffer.get()},
        {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, image.get()},
-       {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, status.get()}},
+       {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, status.get()},
+       {RTVK_BINDING_BVH_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nodes.buffer.get()},
+       {RTVK_BINDING_BVH_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, bvh_index.buffer.get()},
+       {RTVK_BINDING_RAY_COUNT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ray_counts.get()}},
       sizeof(render_push), wg);
 
   render_push push{};
@@ -105,8 +122,10 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
   push.sphere_count = std::uint32_t(spheres.count);
   push.seed = rs.seed;
   push.max_depth = std::uint32_t(rs.max_depth);
-  push.loop_budget = loop_budget ? loop_budget : default_loop_budget(dev);
+  push.loop_budget = engine.gpu_loop_budget ? engine.gpu_loop_budget : default_loop_budget(dev);
   push.jitter = rs.jitter ? 1u : 0u;
+  push.use_bvh = engine.use_bvh ? 1u : 0u;
+  push.count_rays = count_rays ? 1u : 0u;
 
   // Submissions grow from one sample until each takes about a quarter second: long enough to
   // keep the device busy, short enough for progress, interruption and the fence timeout.
@@ -119,7 +138,10 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
       if (first) {
         spheres.record_upload(cb);
         materials.record_upload(cb);
+        nodes.record_upload(cb);
+        bvh_index.record_upload(cb);
         vkCmdFillBuffer(cb, image.get(), 0, VK_WHOLE_SIZE, 0);
+        vkCmdFillBuffer(cb, ray_counts.get(), 0, VK_WHOLE_SIZE, 0);
         vkCmdFillBuffer(cb, status.get(), 0, VK_WHOLE_SIZE, 0);
         barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
       } else {  // the previous submission's samples are in the sums this one adds to
@@ -137,6 +159,8 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
                 VK_ACCESS_TRANSFER_READ_BIT);
         const VkBufferCopy copy{0, 0, image_bytes};
         vkCmdCopyBuffer(cb, image.get(), readback.get(), 1, &copy);
+        const VkBufferCopy counts{0, 0, count_bytes};
+        vkCmdCopyBuffer(cb, ray_counts.get(), ray_readback.get(), 1, &counts);
         barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
                 VK_ACCESS_HOST_READ_BIT);
       }
@@ -157,6 +181,11 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
     if (seconds < 0.25) batch = std::min(batch * 2, 256);
   }
 
+  if (stats && count_rays) {
+    const auto* counts = static_cast<const std::uint32_t*>(ray_readback.read());
+    stats->rays = 0;
+    for (VkDeviceSize i = 0; i < VkDeviceSize(width) * height; ++i) stats->rays += counts[i];
+  }
   const float* rgb = static_cast<const float*>(readback.read());
   framebuffer fb{int(width), int(height)};
   for (std::uint32_t y = 0; y < height; ++y)

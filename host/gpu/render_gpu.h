@@ -27,10 +27,10 @@ using sample_progress = std::function<void(int samples_done)>;
 
 // The scene on the GPU, with the same sampling and random numbers as render_cpu: one dispatch
 // per sample accumulates into a float buffer that stays on the device, several dispatches per
-// submission. `loop_budget` 0 means default_loop_budget. Throws loop_budget_error, naming the
-// device and the budget, when any invocation overran.
+// submission, the BVH (or a linear scan) as engine.use_bvh says. Throws loop_budget_error,
+// naming the device and the budget, when any invocation overran.
 framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
                        const render_settings& rs, const sample_progress& progress = {},
-                       std::uint32_t loop_budget = 0);
+                       const engine_options& engine = {}, render_stats* stats = nullptr);
 
 }  // namespace rtvk::gpu

@@ -1,0 +1,229 @@
+#include "bvh.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace rtvk {
+namespace {
+
+struct box {
+  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
+  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
+  void grow(const box& b) {
+    lo = glm::min(lo, b.lo);
+    hi = glm::max(hi, b.hi);
+  }
+  void grow(const glm::dvec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  double area() const {
+    const glm::dvec3 e = hi - lo;
+    return e.x < 0 ? 0 : 2 * (e.x * e.y + e.y * e.z + e.z * e.x);
+  }
+};
+
+struct prim {
+  box bounds;            // the sphere's box
+  glm::dvec3 centroid;   // its center
+  std::uint32_t sphere;  // index into the scene's spheres
+};
+
+constexpr int bins = 16;
+constexpr double traversal_cost = 1.0;  // relative to one sphere test
+
+// Float corners that contain the double box, with a margin for the float slab test on the GPU.
+void store_bounds(const box& b, gpu::bvh_node& n) {
+  const glm::dvec3 extent = glm::abs(b.lo) + glm::abs(b.hi) + (b.hi - b.lo);
+  const double pad = 0x1p-18 * std::max({extent.x, extent.y, extent.z, 1e-30});
+  for (int k = 0; k < 3; ++k) {
+    n.bounds_min[k] = std::nextafter(float(b.lo[k] - pad), -INFINITY);
+    n.bounds_max[k] = std::nextafter(float(b.hi[k] + pad), INFINITY);
+  }
+}
+
+class builder {
+ public:
+  builder(std::vector<prim>& prims, std::vector<gpu::bvh_node>& nodes,
+          std::vector<std::uint32_t>& index)
+      : prims_(prims), nodes_(nodes), index_(index) {}
+
+  // Builds the subtree over prims_[begin, end) and returns the depth it reached.
+  int build(std::size_t begin, std::size_t end, int depth) {
+    const std::size_t at = nodes_.size();
+    nodes_.push_back({});
+    box bounds, centroids;
+    for (std::size_t i = begin; i < end; ++i) {
+      bounds.grow(prims_[i].bounds);
+      centroids.grow(prims_[i].centroid);
+    }
+    store_bounds(bounds, nodes_[at]);
+    const std::size_t count = end - begin;
+    std::size_t mid = count > std::size_t(bvh::max_leaf) && depth < bvh::max_depth
+                          ? split(begin, end, bounds, centroids)
+                          : begin;
+    if (mid == begin || mid == end) {
+      if (count > std::size_t(bvh::max_leaf) && depth < bvh::max_depth) {
+        mid = begin + count / 2;  // no useful split (e.g. equal centers): halve by order
+      } else {
+        make_leaf(at, begin, end);
+        return depth;
+      }
+    }
+    const int left = build(begin, mid, depth + 1);
+    nodes_[at].first = std::uint32_t(nodes_.size());
+    nodes_[at].count = 0;
+    const int right = build(mid, end, depth + 1);
+    return std::max(left, right);
+  }
+
+ private:
+  void make_leaf(std::size_t at, std::size_t begin, std::size_t end) {
+    nodes_[at].first = std::uint32_t(index_.size());
+    nodes_[at].count = std::uint32_t(end - begin);
+    for (std::size_t i = begin; i < end; ++i) index_.push_back(prims_[i].sphere);
+  }
+
+  // The binned SAH split over all three axes; returns the partition point, or `begin` when
+  // keeping a leaf is cheaper (only allowed for small counts, checked by the caller).
+  std::size_t split(std::size_t begin, std::size_t end, const box& bounds, const box& centroids) {
+    const std::size_t count = end - begin;
+    double best_cost = std::numeric_limits<double>::infinity();
+    int best_axis = -1, best_bin = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double lo = centroids.lo[axis], extent = centroids.hi[axis] - lo;
+      if (!(extent > 0)) continue;
+      std::array<box, bins> bin_box;
+      std::array<std::size_t, bins> bin_count{};
+      for (std::size_t i = begin; i < end; ++i) {
+        const int b = bin_of(prims_[i].centroid[axis], lo, extent);
+        bin_box[std::size_t(b)].grow(prims_[i].bounds);
+        ++bin_count[std::size_t(b)];
+      }
+      // Sweep from the right to know each suffix's area and count.
+      std::array<double, bins> right_area{};
+      std::array<std::size_t, bins> right_count{};
+      box acc;
+      std::size_t n = 0;
+      for (int b = bins - 1; b > 0; --b) {
+        acc.grow(bin_box[std::size_t(b)]);
+        n += bin_count[std::size_t(b)];
+        right_area[std::size_t(b)] = acc.area();
+        right_count[std::size_t(b)] = n;
+      }
+      box left;
+      std::size_t left_n = 0;
+      for (int b = 0; b < bins - 1; ++b) {
+        left.grow(bin_box[std::size_t(b)]);
+        left_n += bin_count[std::size_t(b)];
+        const std::size_t r = std::size_t(b) + 1;
+        if (left_n == 0 || right_count[r] == 0) continue;
+        const double cost = left.area() * double(left_n) + right_area[r] * double(right_count[r]);
+        if (cost < best_cost) {
+          best_cost = cost;
+          best_axis = axis;
+          best_bin = b;
+        }
+      }
+    }
+    if (best_axis < 0) return begin;
+    const double leaf_cost = double(count);
+    const double split_cost = traversal_cost + best_cost / bounds.area();
+    if (split_cost >= leaf_cost && count <= std::size_t(bvh::max_leaf)) return begin;
+    const double lo = centroids.lo[best_axis], extent = centroids.hi[best_axis] - lo;
+    const auto middle = std::partition(
+        prims_.begin() + std::ptrdiff_t(begin), prims_.begin() + std::ptrdiff_t(end),
+        [&](const prim& p) { return bin_of(p.centroid[best_axis], lo, extent) <= best_bin; });
+    return std::size_t(middle - prims_.begin());
+  }
+
+  static int bin_of(double c, double lo, double extent) {
+    return std::min(bins - 1, int(double(bins) * (c - lo) / extent));
+  }
+
+  std::vector<prim>& prims_;
+  std::vector<gpu::bvh_node>& nodes_;
+  std::vector<std::uint32_t>& index_;
+};
+
+}  // namespace
+
+glm::dvec3 safe_inverse(const glm::dvec3& d) {
+  glm::dvec3 inv;
+  for (int k = 0; k < 3; ++k) {
+    const double c = std::abs(d[k]) < 1e-20 ? std::copysign(1e-20, d[k]) : d[k];
+    inv[k] = 1.0 / c;
+  }
+  return inv;
+}
+
+double ray_box_entry(const glm::dvec3& o, const glm::dvec3& inv_d, const gpu::bvh_node& n,
+                     double t_min, double t_max) {
+  const glm::dvec3 t0 = (glm::dvec3(n.bounds_min) - o) * inv_d;
+  const glm::dvec3 t1 = (glm::dvec3(n.bounds_max) - o) * inv_d;
+  const glm::dvec3 near = glm::min(t0, t1), far = glm::max(t0, t1);
+  const double enter = std::max({near.x, near.y, near.z, t_min});
+  const double leave = std::min({far.x, far.y, far.z, t_max});
+  return enter <= leave ? enter : -1.0;
+}
+
+bvh::bvh(std::vector<sphere> spheres) : spheres_(std::move(spheres)) {
+  if (spheres_.empty()) return;
+  std::vector<prim> prims;
+  prims.reserve(spheres_.size());
+  for (std::size_t i = 0; i < spheres_.size(); ++i) {
+    const sphere& s = spheres_[i];
+    const glm::dvec3 r(std::abs(s.radius));
+    prims.push_back({box{s.center - r, s.center + r}, s.center, std::uint32_t(i)});
+  }
+  nodes_.reserve(2 * spheres_.size() / std::size_t(max_leaf) + 1);
+  index_.reserve(spheres_.size());
+  depth_ = builder(prims, nodes_, index_).build(0, prims.size(), 1);
+}
+
+bool bvh::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
+  if (nodes_.empty()) return false;
+  const glm::dvec3 o = r.origin(), inv_d = safe_inverse(r.direction());
+  std::uint32_t stack[RTVK_BVH_STACK];
+  int top = 0;
+  std::uint32_t node = 0;
+  double closest = t_max;
+  std::int64_t best = -1;  // sphere index of the hit so far
+  hit_record temp;
+  while (true) {
+    const gpu::bvh_node& n = nodes_[node];
+    if (n.count > 0) {
+      for (std::uint32_t k = n.first; k < n.first + n.count; ++k) {
+        const std::uint32_t i = index_[k];
+        // Ties go to the later sphere, as in a linear scan.
+        if (spheres_[i].hit(r, t_min, closest, temp) && (temp.t < closest || i > best)) {
+          closest = temp.t;
+          best = i;
+          rec = temp;
+        }
+      }
+    } else {
+      // Visit the nearer child first; remember the other if the ray enters it at all.
+      const std::uint32_t left = node + 1, right = n.first;
+      const double t_left = ray_box_entry(o, inv_d, nodes_[left], t_min, closest);
+      const double t_right = ray_box_entry(o, inv_d, nodes_[right], t_min, closest);
+      if (t_left >= 0 && t_right >= 0) {
+        const bool left_first = t_left <= t_right;
+        stack[top++] = left_first ? right : left;
+        node = left_first ? left : right;
+        continue;
+      }
+      if (t_left >= 0 || t_right >= 0) {
+        node = t_left >= 0 ? left : right;
+        continue;
+      }
+    }
+    if (top == 0) break;
+    node = stack[--top];
+  }
+  return best >= 0;
+}
+
+}  // namespace rtvk
