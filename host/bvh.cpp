@@ -150,25 +150,6 @@ class builder {
 
 }  // namespace
 
-glm::dvec3 safe_inverse(const glm::dvec3& d) {
-  glm::dvec3 inv;
-  for (int k = 0; k < 3; ++k) {
-    const double c = std::abs(d[k]) < 1e-20 ? std::copysign(1e-20, d[k]) : d[k];
-    inv[k] = 1.0 / c;
-  }
-  return inv;
-}
-
-double ray_box_entry(const glm::dvec3& o, const glm::dvec3& inv_d, const gpu::bvh_node& n,
-                     double t_min, double t_max) {
-  const glm::dvec3 t0 = (glm::dvec3(n.bounds_min) - o) * inv_d;
-  const glm::dvec3 t1 = (glm::dvec3(n.bounds_max) - o) * inv_d;
-  const glm::dvec3 near = glm::min(t0, t1), far = glm::max(t0, t1);
-  const double enter = std::max({near.x, near.y, near.z, t_min});
-  const double leave = std::min({far.x, far.y, far.z, t_max});
-  return enter <= leave ? enter : -1.0;
-}
-
 bvh::bvh(std::vector<sphere> spheres) : spheres_(std::move(spheres)) {
   if (spheres_.empty()) return;
   std::vector<prim> prims;
@@ -185,33 +166,38 @@ bvh::bvh(std::vector<sphere> spheres) : spheres_(std::move(spheres)) {
 
 bool bvh::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
   if (nodes_.empty()) return false;
-  const glm::dvec3 o = r.origin(), inv_d = safe_inverse(r.direction());
-  std::uint32_t stack[RTVK_BVH_STACK];
+  const glm::vec3 o(r.origin()), inv_d = safe_inverse(glm::vec3(r.direction()));
+  // Box tests run in float; widen the interval a little so no box holding a hit is culled.
+  auto widen_up = [](double t) { return float(t) * (1.0f + 0x1p-20f); };
+  const float box_min = float(t_min) * (1.0f - 0x1p-20f);
+  std::uint32_t stack_node[RTVK_BVH_STACK];
+  float stack_entry[RTVK_BVH_STACK];
   int top = 0;
   std::uint32_t node = 0;
   double closest = t_max;
   std::int64_t best = -1;  // sphere index of the hit so far
-  hit_record temp;
   while (true) {
     const gpu::bvh_node& n = nodes_[node];
     if (n.count > 0) {
       for (std::uint32_t k = n.first; k < n.first + n.count; ++k) {
         const std::uint32_t i = index_[k];
+        double t;
         // Ties go to the later sphere, as in a linear scan.
-        if (spheres_[i].hit(r, t_min, closest, temp) && (temp.t < closest || i > best)) {
-          closest = temp.t;
+        if (spheres_[i].hit_distance(r, t_min, closest, t) && (t < closest || i > best)) {
+          closest = t;
           best = i;
-          rec = temp;
         }
       }
     } else {
       // Visit the nearer child first; remember the other if the ray enters it at all.
+      const float box_max = widen_up(closest);
       const std::uint32_t left = node + 1, right = n.first;
-      const double t_left = ray_box_entry(o, inv_d, nodes_[left], t_min, closest);
-      const double t_right = ray_box_entry(o, inv_d, nodes_[right], t_min, closest);
+      const float t_left = ray_box_entry(o, inv_d, nodes_[left], box_min, box_max);
+      const float t_right = ray_box_entry(o, inv_d, nodes_[right], box_min, box_max);
       if (t_left >= 0 && t_right >= 0) {
         const bool left_first = t_left <= t_right;
-        stack[top++] = left_first ? right : left;
+        stack_node[top] = left_first ? right : left;
+        stack_entry[top++] = left_first ? t_right : t_left;
         node = left_first ? left : right;
         continue;
       }
@@ -220,10 +206,15 @@ bool bvh::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
         continue;
       }
     }
+    // The next remembered node the ray can still reach before the closest hit.
+    const float box_max = widen_up(closest);
+    while (top > 0 && stack_entry[top - 1] > box_max) --top;
     if (top == 0) break;
-    node = stack[--top];
+    node = stack_node[--top];
   }
-  return best >= 0;
+  if (best < 0) return false;
+  spheres_[std::size_t(best)].record_hit(r, closest, rec);
+  return true;
 }
 
 }  // namespace rtvk

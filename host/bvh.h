@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -25,7 +27,7 @@ class bvh final : public hittable {
   int depth() const { return depth_; }  // levels, root = 1
 
   // Most spheres in one leaf; the tree never exceeds this depth (the GPU's stack fits it).
-  static constexpr int max_leaf = 4;
+  static constexpr int max_leaf = 1;
   static constexpr int max_depth = RTVK_BVH_STACK - 2;
 
  private:
@@ -35,13 +37,30 @@ class bvh final : public hittable {
   int depth_ = 0;                     // levels in the tree
 };
 
-// The slab test both backends use: does the ray (origin o, inverse direction inv_d) enter the box
-// before t_max and leave it after t_min? Returns the entry distance, or a negative value to cull.
-double ray_box_entry(const glm::dvec3& o, const glm::dvec3& inv_d, const gpu::bvh_node& n,
-                     double t_min, double t_max);
-
 // 1 / d per component, with zero components replaced by a tiny signed value so that the slab
 // test never computes 0 * infinity.
-glm::dvec3 safe_inverse(const glm::dvec3& d);
+inline glm::vec3 safe_inverse(const glm::vec3& d) {
+  glm::vec3 inv;
+  for (int k = 0; k < 3; ++k) {
+    const float c = std::abs(d[k]) < 1e-20f ? std::copysign(1e-20f, d[k]) : d[k];
+    inv[k] = 1.0f / c;
+  }
+  return inv;
+}
+
+// The slab test both backends use, in float on both: does the ray (origin o, inverse direction
+// inv_d) enter the box before t_max and leave it after t_min? Returns the entry distance, or a
+// negative value to cull. Node boxes are padded for float rounding when they are built.
+inline float ray_box_entry(const glm::vec3& o, const glm::vec3& inv_d, const gpu::bvh_node& n,
+                           float t_min, float t_max) {
+  float enter = t_min, leave = t_max;
+  for (int k = 0; k < 3; ++k) {
+    const float t0 = (n.bounds_min[k] - o[k]) * inv_d[k];
+    const float t1 = (n.bounds_max[k] - o[k]) * inv_d[k];
+    enter = std::max(enter, std::min(t0, t1));
+    leave = std::min(leave, std::max(t0, t1));
+  }
+  return enter <= leave ? enter : -1.0f;
+}
 
 }  // namespace rtvk

@@ -15,30 +15,15 @@
 #include "gpu/vk_error.h"
 #include "image_compare.h"
 #include "image_io.h"
-#include "parse_values.h"
 #include "progress.h"
 #include "quantize.h"
 #include "render_cpu.h"
 #include "scene.h"
 #include "scene_file.h"
+#include "scene_flags.h"
 
 namespace rtvk {
 namespace {
-
-// Flags that override the scene's settings; each is applied only when given.
-struct overrides {
-  CLI::Option* width = nullptr;
-  CLI::Option* aspect = nullptr;
-  CLI::Option* spp = nullptr;
-  CLI::Option* depth = nullptr;
-  CLI::Option* seed = nullptr;
-  CLI::Option* lookfrom = nullptr;
-  CLI::Option* lookat = nullptr;
-  CLI::Option* vup = nullptr;
-  CLI::Option* vfov = nullptr;
-  CLI::Option* aperture = nullptr;
-  CLI::Option* focus_dist = nullptr;
-};
 
 struct render_options {
   std::string scene = "seed";     // built-in scene name or .json file
@@ -50,55 +35,8 @@ struct render_options {
   bool quiet = false;             // no summary line, no progress bar
   std::string accel = "bvh";      // bvh or none
   int threads = 0;                // CPU threads; 0: one per core
-  int width = 0;                  // overrides, valid where the option was given
-  std::string aspect;
-  int spp = 0;
-  int depth = 0;
-  long long seed = 0;
-  std::string lookfrom, lookat, vup;
-  double vfov = 0, aperture = 0, focus_dist = 0;
-  overrides given;
+  scene_flags flags;              // --width, --spp, --lookfrom, ...
 };
-
-bool given(const CLI::Option* o) {
-  return o && o->count() > 0;
-}
-
-double checked(double v, bool ok, const std::string& flag, const std::string& expected) {
-  if (!ok || !std::isfinite(v))
-    throw usage_error(flag + ": " + format_number(v) + " is not " + expected);
-  return v;
-}
-
-// The scene's settings with the command line's overrides applied, checked.
-void apply_overrides(const render_options& o, scene& s) {
-  const overrides& g = o.given;
-  render_settings& r = s.render;
-  if (given(g.width)) r.width = o.width;
-  if (given(g.aspect)) r.aspect = parse_aspect(o.aspect);
-  if (given(g.spp)) r.spp = o.spp;
-  if (given(g.depth)) r.max_depth = o.depth;
-  if (given(g.seed)) r.seed = std::uint32_t(o.seed);
-  camera_pose& c = s.camera;
-  if (given(g.lookfrom)) c.lookfrom = parse_vec3(o.lookfrom, "--lookfrom");
-  if (given(g.lookat)) c.lookat = parse_vec3(o.lookat, "--lookat");
-  if (given(g.vup)) c.vup = parse_vec3(o.vup, "--vup");
-  if (given(g.vfov))
-    c.vfov = checked(o.vfov, o.vfov > 0 && o.vfov < 180, "--vfov", "in (0, 180) degrees");
-  if (given(g.aperture)) c.aperture = checked(o.aperture, o.aperture >= 0, "--aperture", ">= 0");
-  if (given(g.focus_dist))
-    c.focus_dist = checked(o.focus_dist, o.focus_dist > 0, "--focus-dist", "> 0");
-}
-
-camera make_camera(const render_options& o, const scene& s) {
-  try {
-    return camera(s.camera, s.render.aspect, s.render.width);
-  } catch (const std::invalid_argument& e) {
-    const std::string aspect = given(o.given.aspect) ? o.aspect : format_number(s.render.aspect);
-    throw usage_error("--width " + std::to_string(s.render.width) + " / --aspect " + aspect +
-                      " / camera of " + o.scene + ": " + e.what());
-  }
-}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -189,8 +127,8 @@ int run_render(render_options o) {
     throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");
   scene s = load_scene(o.scene);
   check_scene(s);
-  apply_overrides(o, s);
-  const camera cam = make_camera(o, s);
+  o.flags.apply(s);
+  const camera cam = o.flags.make_camera(s, o.scene);
   const ppm_encoding enc = o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3;
 
   if (o.backend == "both") return render_both(o, cam, s, enc);
@@ -241,32 +179,7 @@ command_action add_render_command(CLI::App& app) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
 
-  overrides& g = o->given;
-  const std::string scene_group = "Scene overrides (default: the scene's own settings)";
-  g.width = cmd->add_option("--width", o->width, "Image width in pixels")
-                ->check(CLI::Range(1, max_image_side))
-                ->group(scene_group);
-  g.aspect =
-      cmd->add_option("--aspect", o->aspect, "Aspect ratio, W:H or a decimal")->group(scene_group);
-  g.spp = cmd->add_option("--spp", o->spp, "Samples per pixel")
-              ->check(CLI::Range(1, max_spp))
-              ->group(scene_group);
-  g.depth = cmd->add_option("--depth", o->depth, "Most bounces per path")
-                ->check(CLI::Range(1, max_depth_limit))
-                ->group(scene_group);
-  g.seed = cmd->add_option("--seed", o->seed, "Random seed (same seed, same image)")
-               ->check(CLI::Range(0ll, 0xffffffffll))
-               ->group(scene_group);
-  g.lookfrom =
-      cmd->add_option("--lookfrom", o->lookfrom, "Camera position x,y,z")->group(scene_group);
-  g.lookat = cmd->add_option("--lookat", o->lookat, "Point looked at x,y,z")->group(scene_group);
-  g.vup = cmd->add_option("--vup", o->vup, "Up direction x,y,z")->group(scene_group);
-  g.vfov =
-      cmd->add_option("--vfov", o->vfov, "Vertical field of view, degrees")->group(scene_group);
-  g.aperture =
-      cmd->add_option("--aperture", o->aperture, "Lens diameter (0: pinhole)")->group(scene_group);
-  g.focus_dist =
-      cmd->add_option("--focus-dist", o->focus_dist, "Distance in focus")->group(scene_group);
+  o->flags.add_to(*cmd);
   return [o] { return run_render(*o); };
 }
 

@@ -1,6 +1,7 @@
 #include "render_cpu.h"
 
 #include <atomic>
+#include <chrono>
 #include <memory>
 #include <thread>
 
@@ -44,7 +45,10 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
                        render_stats* stats) {
   const int width = cam.image_width();
   const int height = cam.image_height();
+  const auto build_start = std::chrono::steady_clock::now();
   const std::unique_ptr<hittable> world = make_accelerated_world(s, engine.use_bvh);
+  const double build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
   const std::vector<material> materials = scene_materials(s);
   framebuffer fb(width, height);
   std::atomic<int> next_row{0}, rows_done{0};
@@ -81,7 +85,10 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
   for (int t = 1; t < threads; ++t) helpers.emplace_back(render_rows, false);
   render_rows(true);
   for (auto& t : helpers) t.join();
-  if (stats) stats->rays = rays.load();
+  if (stats) {
+    stats->rays = rays.load();
+    stats->build_seconds = build_seconds;
+  }
   return fb;
 }
 

@@ -24,7 +24,8 @@ struct engine_options {
 
 // What a render did, for `rtvk bench`.
 struct render_stats {
-  std::uint64_t rays = 0;  // rays traced: camera rays plus scattered rays
+  std::uint64_t rays = 0;    // rays traced: camera rays plus scattered rays
+  double build_seconds = 0;  // of the render's time, building the BVH
 };
 
 inline constexpr int max_spp = 1 << 20;        // samples per pixel

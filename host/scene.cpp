@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <memory>
 
@@ -114,6 +116,41 @@ scene book_final_scene() {
   return s;
 }
 
+// N small spheres scattered over the book-final ground, for scaling runs. The area grows with N
+// (about one sphere per square unit, as in the book's grid), so what a ray sees stays alike and
+// only the BVH's depth grows. Materials come from a palette of 64 in the book's mix.
+scene spheres_scene(std::uint32_t n) {
+  scene s = book_final_scene();
+  s.name = "spheres:" + std::to_string(n);
+  s.render.spp = 10;
+  s.materials.resize(1);  // keep the ground
+  s.spheres.resize(1);
+  std::uint32_t counter = 0;
+  auto rnd = [&counter] { return double(random_float(0xba11, counter++, 0, 0, 0)); };
+  for (int k = 0; k < 64; ++k) {
+    const double choose = rnd();
+    material m;
+    if (choose < 0.8) {
+      const color c1(rnd(), rnd(), rnd()), c2(rnd(), rnd(), rnd());
+      m = lambertian(c1 * c2);
+    } else if (choose < 0.95) {
+      m = metal(color(0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd()), 0.5 * rnd());
+    } else {
+      m = dielectric(1.5);
+    }
+    s.materials.push_back({"palette_" + std::to_string(k), m});
+  }
+  const double side = std::max(22.0, std::sqrt(double(n)));
+  const double ground = 1000;  // radius of the book's ground sphere, centered at (0, -1000, 0)
+  s.spheres.reserve(n + 1);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const double x = side * (rnd() - 0.5), z = side * (rnd() - 0.5);
+    const double y = std::sqrt(ground * ground - x * x - z * z) - ground + 0.2;  // resting on it
+    s.spheres.push_back(sphere(point3(x, y, z), 0.2, 1 + int(hash32(i) % 64)));
+  }
+  return s;
+}
+
 }  // namespace
 
 hittable_list make_world(const scene& s) {
@@ -149,10 +186,20 @@ scene builtin_scene(std::string_view name) {
   if (name == "seed") return seed_scene();
   if (name == "materials") return materials_scene();
   if (name == "book-final") return book_final_scene();
+  if (name.rfind("spheres:", 0) == 0) {
+    const std::string_view count = name.substr(8);
+    std::uint32_t n = 0;
+    const auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
+    if (ec != std::errc() || end != count.data() + count.size() || n < 1 || n > max_scene_spheres)
+      throw usage_error("--scene: '" + std::string(name) +
+                        "': expected spheres:N with N from 1 to " +
+                        std::to_string(max_scene_spheres));
+    return spheres_scene(n);
+  }
   std::string choices;
   for (const auto& n : builtin_scene_names()) choices += (choices.empty() ? "" : ", ") + n;
   throw usage_error("--scene: unknown scene '" + std::string(name) + "' (built-in: " + choices +
-                    "; or a .json scene file)");
+                    ", spheres:N; or a .json scene file)");
 }
 
 }  // namespace rtvk

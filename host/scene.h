@@ -42,7 +42,11 @@ std::vector<material> scene_materials(const scene& s);
 // not finite and > 0, naming the sphere.
 void check_scene(const scene& s);
 
-// The built-in scene of that name; throws usage_error naming the choices when there is none.
+// The most spheres spheres:N builds.
+inline constexpr std::uint32_t max_scene_spheres = 4'000'000;
+
+// The built-in scene of that name (seed, materials, book-final, or spheres:N); throws usage_error
+// naming the choices when there is none.
 scene builtin_scene(std::string_view name);
 std::vector<std::string> builtin_scene_names();
 

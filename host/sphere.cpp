@@ -6,7 +6,7 @@
 namespace rtvk {
 
 // Solves |origin + t*dir - center|^2 = radius^2 with the half-b form of the quadratic.
-bool sphere::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
+bool sphere::hit_distance(const ray& r, double t_min, double t_max, double& t) const {
   const vec3 oc = r.origin() - center;
   const double a = glm::dot(r.direction(), r.direction());
   const double half_b = glm::dot(oc, r.direction());
@@ -24,14 +24,24 @@ bool sphere::hit(const ray& r, double t_min, double t_max, hit_record& rec) cons
     root = (-half_b + sqrtd) / a;
     if (root < t_min || t_max < root) return false;
   }
+  t = root;
+  return true;
+}
 
-  rec.t = root;
+void sphere::record_hit(const ray& r, double t, hit_record& rec) const {
+  rec.t = t;
   rec.p = r.at(rec.t);
   rec.set_face_normal(r, divide(rec.p - center, radius));
   rec.material = material;
   // About eight float ulps of the largest coordinate involved: covers the GPU's rounding.
   const double extent = std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)});
   rec.offset = (extent + radius) * 0x1p-20;
+}
+
+bool sphere::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
+  double t;
+  if (!hit_distance(r, t_min, t_max, t)) return false;
+  record_hit(r, t, rec);
   return true;
 }
 

@@ -55,7 +55,8 @@ TEST(CliBook, DumpedSceneRendersTheIdenticalImage) {
   ASSERT_EQ(run_rtvk(builtin).status, 0);
   ASSERT_EQ(run_rtvk(file).status, 0);
   EXPECT_EQ(test::slurp(a), test::slurp(b));
-  EXPECT_EQ(run_rtvk({"scene", "list"}).out, "seed\nmaterials\nbook-final\n");
+  EXPECT_EQ(run_rtvk({"scene", "list"}).out,
+            "seed\nmaterials\nbook-final\nspheres:N (N from 1 to 4000000)\n");
 }
 
 TEST(CliBook, BadSceneFileExits2WithFileAndPath) {

@@ -81,7 +81,11 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
   ubo_buf.write(&ubo, sizeof ubo);
   const device_array<gpu_sphere> spheres(ctx, to_gpu_spheres(s));
   const device_array<gpu_material> materials(ctx, to_gpu_materials(s));
+  const auto build_start = std::chrono::steady_clock::now();
   const bvh tree(engine.use_bvh ? s.spheres : std::vector<sphere>{});
+  if (stats)
+    stats->build_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
   const device_array<bvh_node> nodes(ctx, tree.nodes());
   const device_array<std::uint32_t> bvh_index(ctx, tree.index());
   // One 32-bit counter per pixel: it holds at most spp * max_depth rays.
