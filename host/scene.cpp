@@ -145,7 +145,8 @@ scene spheres_scene(std::uint32_t n) {
   s.spheres.reserve(n + 1);
   for (std::uint32_t i = 0; i < n; ++i) {
     const double x = side * (rnd() - 0.5), z = side * (rnd() - 0.5);
-    const double y = std::sqrt(ground * ground - x * x - z * z) - ground + 0.2;  // resting on it
+    // Resting on the ground: the center is radius + 0.2 from the ground's center.
+    const double y = std::sqrt((ground + 0.2) * (ground + 0.2) - x * x - z * z) - ground;
     s.spheres.push_back(sphere(point3(x, y, z), 0.2, 1 + int(hash32(i) % 64)));
   }
   return s;

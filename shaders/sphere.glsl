@@ -4,7 +4,9 @@
 #define RTVK_SPHERE_GLSL
 #include "ray.glsl"
 
-bool hit_sphere(gpu_sphere s, ray r, float t_min, float t_max, inout hit_record rec) {
+// Mirrors sphere::hit_distance: the nearest root in [t_min, t_max], if any.
+bool hit_distance(gpu_sphere s, ray r, float t_min, float t_max, out float t) {
+  t = 0.0;
   vec3 oc = r.origin - s.center;
   float a = dot(r.direction, r.direction);
   float half_b = dot(oc, r.direction);
@@ -19,13 +21,18 @@ bool hit_sphere(gpu_sphere s, ray r, float t_min, float t_max, inout hit_record 
     root = (-half_b + sqrtd) / a;
     if (root < t_min || t_max < root) return false;
   }
-  rec.t = root;
-  rec.p = ray_at(r, root);
+  t = root;
+  return true;
+}
+
+// Mirrors sphere::record_hit.
+void record_hit(gpu_sphere s, ray r, float t, inout hit_record rec) {
+  rec.t = t;
+  rec.p = ray_at(r, t);
   set_face_normal(rec, r, divide(rec.p - s.center, s.radius));
   rec.material = s.material;
   float extent = max(max(abs(s.center.x), abs(s.center.y)), abs(s.center.z));
   rec.offset = (extent + s.radius) * (1.0 / 1048576.0);  // 2^-20, as on the host
-  return true;
 }
 
 // Mirrors safe_inverse in host/bvh.cpp: no zero components, so no 0 * infinity in the slab test.
@@ -47,13 +54,15 @@ float ray_box_entry(vec3 o, vec3 inv_d, bvh_node n, float t_min, float t_max) {
   return enter <= leave ? enter : -1.0;
 }
 
-// Mirrors bvh::hit: the same nodes, the same order, ties to the later sphere. Every node visit
-// and sphere test counts against the loop budget.
+// Mirrors bvh::hit: the same nodes, the same order, ties to the later sphere, the record filled
+// once for the winner. Every node visit and sphere test counts against the loop budget.
 bool hit_bvh(ray r, float t_min, float t_max, inout hit_record rec, inout uint iterations) {
   if (pc.sphere_count == 0u) return false;
   vec3 o = r.origin;
   vec3 inv_d = safe_inverse(r.direction);
-  uint stack[RTVK_BVH_STACK];
+  float box_min = t_min * (1.0 - 1.0 / 1048576.0);
+  uint stack_node[RTVK_BVH_STACK];
+  float stack_entry[RTVK_BVH_STACK];
   int top = 0;
   uint node = 0u;
   float closest = t_max;
@@ -65,21 +74,23 @@ bool hit_bvh(ray r, float t_min, float t_max, inout hit_record rec, inout uint i
       for (uint k = n.first; k < n.first + n.count; ++k) {
         if (++iterations > pc.loop_budget) return false;
         uint i = bvh_index[k];
-        hit_record temp;
-        if (hit_sphere(spheres[i], r, t_min, closest, temp) && (temp.t < closest || int(i) > best)) {
-          closest = temp.t;
+        float t;
+        if (hit_distance(spheres[i], r, t_min, closest, t) && (t < closest || int(i) > best)) {
+          closest = t;
           best = int(i);
-          rec = temp;
         }
       }
     } else {
+      float box_max = closest * (1.0 + 1.0 / 1048576.0);
       uint left = node + 1u;
       uint right = n.first;
-      float t_left = ray_box_entry(o, inv_d, bvh_nodes[left], t_min, closest);
-      float t_right = ray_box_entry(o, inv_d, bvh_nodes[right], t_min, closest);
+      float t_left = ray_box_entry(o, inv_d, bvh_nodes[left], box_min, box_max);
+      float t_right = ray_box_entry(o, inv_d, bvh_nodes[right], box_min, box_max);
       if (t_left >= 0.0 && t_right >= 0.0) {
         bool left_first = t_left <= t_right;
-        stack[top++] = left_first ? right : left;
+        stack_node[top] = left_first ? right : left;
+        stack_entry[top] = left_first ? t_right : t_left;
+        ++top;
         node = left_first ? left : right;
         continue;
       }
@@ -88,10 +99,17 @@ bool hit_bvh(ray r, float t_min, float t_max, inout hit_record rec, inout uint i
         continue;
       }
     }
+    float box_max = closest * (1.0 + 1.0 / 1048576.0);
+    while (top > 0 && stack_entry[top - 1] > box_max) {
+      if (++iterations > pc.loop_budget) return false;
+      --top;
+    }
     if (top == 0) break;
-    node = stack[--top];
+    node = stack_node[--top];
   }
-  return best >= 0;
+  if (best < 0) return false;
+  record_hit(spheres[best], r, closest, rec);
+  return true;
 }
 
 // The closest hit over every sphere, as hittable_list::hit (or, with pc.use_bvh, as bvh::hit).
@@ -101,15 +119,17 @@ bool hit_world(ray r, float t_min, float t_max, inout hit_record rec, inout uint
   if (pc.use_bvh != 0u) return hit_bvh(r, t_min, t_max, rec, iterations);
   bool hit_anything = false;
   float closest_so_far = t_max;
+  uint closest_sphere = 0u;
   for (uint i = 0u; i < pc.sphere_count; ++i) {
     if (++iterations > pc.loop_budget) return false;
-    hit_record temp;
-    if (hit_sphere(spheres[i], r, t_min, closest_so_far, temp)) {
+    float t;
+    if (hit_distance(spheres[i], r, t_min, closest_so_far, t)) {
       hit_anything = true;
-      closest_so_far = temp.t;
-      rec = temp;
+      closest_so_far = t;
+      closest_sphere = i;
     }
   }
+  if (hit_anything) record_hit(spheres[closest_sphere], r, closest_so_far, rec);
   return hit_anything;
 }
 

@@ -115,3 +115,37 @@ TEST(CliBook, ProgressBarOnlyOnATerminal) {
 
 }  // namespace
 }  // namespace rtvk
+
+namespace rtvk {
+namespace {
+
+TEST(CliBench, ReportsRaysAndWritesJsonRecords) {
+  test::temp_dir dir;
+  const auto json = (dir.path() / "bench.json").string();
+  const auto r = run_rtvk({"bench", "--scene", "seed", "--backend", "cpu", "--width", "32",
+                           "--repeat", "2", "--threads", "1", "--json", json});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Mrays/s"), std::string::npos) << r.out;
+  const std::string text = test::slurp(json);
+  // The seed scene traces exactly one ray per pixel: 32 x 18.
+  EXPECT_NE(text.find("\"rays\": 576"), std::string::npos) << text;
+  for (const char* field : {"\"scene\": \"seed\"", "\"backend\": \"cpu\"", "\"device\"",
+                            "\"threads\": 1", "\"width\": 32", "\"height\": 18", "\"spp\": 1",
+                            "\"depth\": 50", "\"seconds\"", "\"mrays_per_s\""})
+    EXPECT_NE(text.find(field), std::string::npos) << field << "\n" << text;
+  // Two timed runs, two records.
+  std::size_t records = 0;
+  for (std::size_t at = 0; (at = text.find("\"scene\"", at)) != std::string::npos; ++at) ++records;
+  EXPECT_EQ(records, 2u);
+}
+
+TEST(CliBench, SpheresSceneNamesAreChecked) {
+  for (const char* bad : {"spheres:0", "spheres:abc", "spheres:", "spheres:99999999"}) {
+    const auto r = run_rtvk({"bench", "--scene", bad, "--backend", "cpu"});
+    EXPECT_EQ(r.status, 2) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find(bad), std::string::npos) << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace rtvk

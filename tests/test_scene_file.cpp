@@ -133,3 +133,22 @@ TEST(SceneFile, AHundredThousandSpheresLoadAndRender) {
 
 }  // namespace
 }  // namespace rtvk
+
+namespace rtvk {
+namespace {
+
+TEST(SpheresScene, HasNSpheresOnTheGroundEveryRun) {
+  const scene a = builtin_scene("spheres:1000"), b = builtin_scene("spheres:1000");
+  ASSERT_EQ(a.spheres.size(), 1001u);  // the ground and N small spheres
+  EXPECT_EQ(dump_scene_json(a), dump_scene_json(b));
+  for (std::size_t i = 1; i < a.spheres.size(); ++i) {
+    const sphere& s = a.spheres[i];
+    // Resting on the radius-1000 ground: 0.2 above its surface.
+    EXPECT_NEAR(glm::length(s.center - point3(0, -1000, 0)), 1000.2, 1e-9);
+    ASSERT_GE(s.material, 1);
+    ASSERT_LT(std::size_t(s.material), a.materials.size());
+  }
+}
+
+}  // namespace
+}  // namespace rtvk
