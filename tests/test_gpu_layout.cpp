@@ -75,3 +75,31 @@ TEST_F(GpuLayout, ValidationLayerFindingsAreCaughtAndCounted) {
 
 }  // namespace
 }  // namespace rtvk
+
+#include "gpu/buffer.h"
+
+namespace rtvk {
+namespace {
+
+TEST_F(GpuLayout, SynchronizationValidationCatchesAMissingBarrier) {
+  // A fill and then a copy out of the same buffer with no barrier between them: a read-after-write
+  // hazard that only synchronization validation sees. It must be reported, or the GPU tests'
+  // "validation-clean" says nothing about rtvk's barriers.
+  const auto before = gpu().validation_messages();
+  {
+    const VkBufferUsageFlags usage =
+        VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    gpu::gpu_buffer a(gpu(), 256, usage, gpu::memory_use::device_local);
+    gpu::gpu_buffer b(gpu(), 256, usage, gpu::memory_use::device_local);
+    gpu().submit_and_wait([&](VkCommandBuffer cb) {
+      vkCmdFillBuffer(cb, a.get(), 0, VK_WHOLE_SIZE, 7);
+      const VkBufferCopy copy{0, 0, 256};
+      vkCmdCopyBuffer(cb, a.get(), b.get(), 1, &copy);  // no barrier after the fill
+    });
+  }  // everything is released before the device goes
+  EXPECT_GT(gpu().validation_messages(), before);
+  ctx_.reset();  // this test's own finding must not fail it in TearDown
+}
+
+}  // namespace
+}  // namespace rtvk

@@ -90,12 +90,20 @@ vulkan_instance::vulkan_instance(bool validate) : validating_(validate) {
   messenger_info.pfnUserCallback = on_message;
   messenger_info.pUserData = &messages_;
 
+  // Synchronization validation too: a missing barrier is as much a bug as a bad parameter.
+  const VkValidationFeatureEnableEXT enables[] = {
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.pNext = &messenger_info;
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = enables;
+
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "rtvk";
   app.pEngineName = "rtvk";
   app.apiVersion = VK_API_VERSION_1_1;
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  info.pNext = validate ? &messenger_info : nullptr;  // also covers instance creation itself
+  info.pNext = validate ? &features : nullptr;  // the messenger also covers instance creation
   info.flags = flags;
   info.pApplicationInfo = &app;
   info.enabledLayerCount = std::uint32_t(layers.size());
