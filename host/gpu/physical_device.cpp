@@ -35,6 +35,13 @@ device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
   d.api_version = props.apiVersion;
   d.limits = props.limits;
 
+  VkPhysicalDeviceSubgroupProperties subgroup{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 with_subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  with_subgroup.pNext = &subgroup;
+  vkGetPhysicalDeviceProperties2(dev, &with_subgroup);
+  d.subgroup_size = std::max(1u, subgroup.subgroupSize);
+
   if (props.apiVersion >= VK_API_VERSION_1_2 ||
       has_device_extension(dev, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME)) {
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
@@ -165,7 +172,8 @@ std::string describe_devices(const std::vector<device_info>& devices, std::size_
            type_name(d.type) + "] driver " +
            (d.driver_name.empty() ? std::string("?") : d.driver_name) + " " +
            driver_version_string(d) + (d.driver_info.empty() ? "" : " (" + d.driver_info + ")") +
-           ", Vulkan " + version_string(d.api_version) +
+           ", Vulkan " + version_string(d.api_version) + ", subgroup " +
+           std::to_string(d.subgroup_size) +
            (d.unusable_reason.empty() ? "" : " -- unusable: " + d.unusable_reason) + "\n";
   }
   return out;
