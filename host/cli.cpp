@@ -1,5 +1,6 @@
 #include "cli.h"
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "commands.h"
 #include "errors.h"
 #include "image_io.h"
+#include "interrupt.h"
 #include "version.h"
 
 namespace rtvk {
@@ -35,6 +37,7 @@ int run_cli(int argc, char** argv) {
     return 2;
   }
 
+  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
   try {
     for (const auto& [name, action] : commands)
       if (app.got_subcommand(name)) return action();
@@ -42,6 +45,11 @@ int run_cli(int argc, char** argv) {
   } catch (const usage_error& e) {
     std::cerr << "rtvk: " << e.what() << '\n';
     return 2;
+  } catch (const render_cancelled& e) {
+    const int sig = pending_signal();
+    std::cerr << "rtvk: interrupted by " << (sig == SIGTERM ? "SIGTERM" : "SIGINT") << ": "
+              << e.what() << "; no image written\n";
+    return 128 + (sig ? sig : SIGINT);
   } catch (const image_read_error& e) {
     std::cerr << "rtvk: " << e.what() << '\n';
     return 2;

@@ -13,6 +13,7 @@
 #include "gpu/context.h"
 #include "gpu/render_gpu.h"
 #include "gpu/vk_error.h"
+#include "interrupt.h"
 #include "render_cpu.h"
 #include "scene_file.h"
 #include "scene_flags.h"
@@ -87,6 +88,7 @@ int run_bench(bench_options& o) {
   engine.use_bvh = o.accel == "bvh";
   engine.threads = o.threads;
   engine.count_rays = true;
+  engine.cancelled = interrupt_requested();
 
   bench_record base;
   base.scene = s.name;

@@ -15,6 +15,7 @@
 #include "gpu/vk_error.h"
 #include "image_compare.h"
 #include "image_io.h"
+#include "interrupt.h"
 #include "progress.h"
 #include "quantize.h"
 #include "render_cpu.h"
@@ -35,6 +36,7 @@ struct render_options {
   bool quiet = false;             // no summary line, no progress bar
   std::string accel = "bvh";      // bvh or none
   int threads = 0;                // CPU threads; 0: one per core
+  double gpu_timeout = 120;       // seconds one GPU submission may take
   scene_flags flags;              // --width, --spp, --lookfrom, ...
 };
 
@@ -53,6 +55,7 @@ engine_options engine_from(const render_options& o) {
   engine_options e;
   e.use_bvh = o.accel == "bvh";
   e.threads = o.threads;
+  e.cancelled = interrupt_requested();
   return e;
 }
 
@@ -85,7 +88,15 @@ gpu::gpu_options gpu_options_from(const render_options& o) {
   g.device = o.device;
   const char* env = std::getenv("RTVK_VALIDATE");
   g.validate = o.validate || (env && std::string(env) == "1");
+  g.fence_timeout =
+      std::chrono::milliseconds(std::max<long long>(1, std::llround(o.gpu_timeout * 1000)));
   return g;
+}
+
+// Writes the image, unless a signal arrived while rendering finished: Ctrl-C means no file.
+void write_unless_interrupted(const image_rgb8& img, const std::string& path, ppm_encoding enc) {
+  if (pending_signal() != 0) throw render_cancelled("the render had finished");
+  write_image(img, path, enc);
 }
 
 void summarize(const render_options& o, const scene& s, const rendered& r) {
@@ -110,7 +121,7 @@ int render_both(const render_options& o, const camera& cam, const scene& s, ppm_
   const rendered cpu_image = draw_cpu(o, cam, s);
   const agreement rule = agreement_for(s, cam);
   const image_difference d = compare_images(gpu_image.image, cpu_image.image, rule.tolerance);
-  write_image(gpu_image.image, o.output, enc);
+  write_unless_interrupted(gpu_image.image, o.output, enc);
   summarize(o, s, gpu_image);
   const bool ok = agrees(d, rule);
   std::fprintf(stderr,
@@ -145,7 +156,7 @@ int run_render(render_options o) {
     }
     result = ctx ? draw_gpu(o, *ctx, cam, s) : draw_cpu(o, cam, s);
   }
-  write_image(result->image, o.output, enc);
+  write_unless_interrupted(result->image, o.output, enc);
   summarize(o, s, *result);
   return 0;
 }
@@ -174,6 +185,10 @@ command_action add_render_command(CLI::App& app) {
   cmd->add_flag("-q,--quiet", o->quiet, "No summary line and no progress bar");
   cmd->add_option("--accel", o->accel, "bvh, or none to test every sphere (same image, slower)")
       ->check(CLI::IsMember({"bvh", "none"}))
+      ->capture_default_str();
+  cmd->add_option("--gpu-timeout", o->gpu_timeout,
+                  "Seconds one GPU submission may take before the device counts as hung")
+      ->check(CLI::Range(0.001, 86400.0))
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "CPU threads (0: one per core)")
       ->check(CLI::Range(0, 1024))

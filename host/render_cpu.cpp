@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "bvh.h"
+#include "interrupt.h"
 #include "random.h"
 #include "shading.h"
 
@@ -57,7 +58,7 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
   auto render_rows = [&](bool reports_progress) {
     const counting_world counted(*world);
     int y;
-    while ((y = next_row.fetch_add(1)) < height) {
+    while (!(engine.cancelled && engine.cancelled()) && (y = next_row.fetch_add(1)) < height) {
       const int j = height - 1 - y;  // the lesson counts rows from the bottom
       for (int i = 0; i < width; ++i) {
         color sum(0, 0, 0);
@@ -85,6 +86,9 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
   for (int t = 1; t < threads; ++t) helpers.emplace_back(render_rows, false);
   render_rows(true);
   for (auto& t : helpers) t.join();
+  if (rows_done.load() < height)
+    throw render_cancelled("stopped after " + std::to_string(rows_done.load()) + " of " +
+                           std::to_string(height) + " rows");
   if (stats) {
     stats->rays = rays.load();
     stats->build_seconds = build_seconds;

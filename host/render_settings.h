@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <functional>
 
 namespace rtvk {
 
@@ -20,6 +21,9 @@ struct engine_options {
   int threads = 0;                    // CPU worker threads; 0: one per core
   std::uint32_t gpu_loop_budget = 0;  // GPU: most loop iterations per invocation; 0: the device's
   bool count_rays = false;            // fill render_stats::rays (costs a little on the GPU)
+  // Polled between passes (a CPU row, a GPU submission); when it returns true the render stops
+  // and throws render_cancelled. Empty: never cancelled.
+  std::function<bool()> cancelled = {};
 };
 
 // What a render did, for `rtvk bench`.

@@ -1,5 +1,6 @@
 #pragma once
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -41,37 +42,73 @@ inline std::vector<std::string> environment_with(const std::vector<std::string>&
   return env;
 }
 
+// The rtvk executable started with args (stdin from /dev/null, stdout to a file, stderr to a
+// file or to `stderr_path` when given, e.g. a pseudo-terminal), not yet waited for: tests can
+// signal it while it runs.
+class running_rtvk {
+ public:
+  running_rtvk(const std::vector<std::string>& args,
+               const std::vector<std::string>& env_overrides = {},
+               const std::string& stderr_path = "") {
+    out_ = (io_.path() / "out").string();
+    err_ = stderr_path.empty() ? (io_.path() / "err").string() : stderr_path;
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 1, out_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (stderr_path.empty())
+      posix_spawn_file_actions_addopen(&fa, 2, err_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    else
+      posix_spawn_file_actions_addopen(&fa, 2, err_.c_str(), O_RDWR | O_NOCTTY, 0);
+    std::vector<std::string> storage{RTVK_EXE};
+    storage.insert(storage.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& s : storage) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    std::vector<std::string> env = environment_with(env_overrides);
+    std::vector<char*> envp;
+    for (auto& e : env) envp.push_back(e.data());
+    envp.push_back(nullptr);
+    const int rc = posix_spawn(&pid_, RTVK_EXE, &fa, nullptr, argv.data(), envp.data());
+    posix_spawn_file_actions_destroy(&fa);
+    if (rc != 0) throw std::runtime_error("posix_spawn failed");
+    captured_stderr_ = stderr_path.empty();
+  }
+  ~running_rtvk() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGKILL);
+      wait();
+    }
+  }
+  running_rtvk(const running_rtvk&) = delete;
+  running_rtvk& operator=(const running_rtvk&) = delete;
+
+  void signal(int sig) const { ::kill(pid_, sig); }
+
+  process_result wait() {
+    int wstatus = 0;
+    while (waitpid(pid_, &wstatus, 0) < 0) {
+    }
+    pid_ = -1;
+    process_result r;
+    r.status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
+    r.out = slurp(out_);
+    if (captured_stderr_) r.err = slurp(err_);
+    return r;
+  }
+
+ private:
+  temp_dir io_;                  // holds the output files
+  std::string out_;              // stdout's file
+  std::string err_;              // stderr's file or terminal
+  bool captured_stderr_ = true;  // stderr went to a file this class reads back
+  pid_t pid_ = -1;               // the child, until waited for
+};
+
 // Runs the rtvk executable with args, stdin from /dev/null, and waits for it.
 inline process_result run_rtvk(const std::vector<std::string>& args,
                                const std::vector<std::string>& env_overrides = {}) {
-  temp_dir io;
-  const std::string out = (io.path() / "out").string(), err = (io.path() / "err").string();
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&fa, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> storage{RTVK_EXE};
-  storage.insert(storage.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& s : storage) argv.push_back(s.data());
-  argv.push_back(nullptr);
-  std::vector<std::string> env = environment_with(env_overrides);
-  std::vector<char*> envp;
-  for (auto& e : env) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, RTVK_EXE, &fa, nullptr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) throw std::runtime_error("posix_spawn failed");
-  int wstatus = 0;
-  while (waitpid(pid, &wstatus, 0) < 0) {
-  }
-  process_result r;
-  r.status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
+  return running_rtvk(args, env_overrides).wait();
 }
 
 }  // namespace rtvk::test

@@ -8,7 +8,7 @@ namespace rtvk::gpu {
 
 gpu_buffer::gpu_buffer(const gpu_context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
                        memory_use use)
-    : device_(ctx.vk()), size_(size) {
+    : ctx_(ctx), device_(ctx.vk()), size_(size) {
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size;
   info.usage = usage;
@@ -44,6 +44,13 @@ gpu_buffer::gpu_buffer(const gpu_context& ctx, VkDeviceSize size, VkBufferUsageF
   if (use != memory_use::device_local) {
     coherent_ = ctx.memory_type_has(type, VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     vk_check(vkMapMemory(device_, memory, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
+  }
+}
+
+gpu_buffer::~gpu_buffer() {
+  if (ctx_.lost()) {  // a hung device may still read or write it: leak rather than crash
+    buffer_.release();
+    memory_.release();
   }
 }
 

@@ -16,6 +16,9 @@ enum class memory_use {
 class gpu_buffer {
  public:
   gpu_buffer(const gpu_context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, memory_use use);
+  ~gpu_buffer();
+  gpu_buffer(const gpu_buffer&) = delete;
+  gpu_buffer& operator=(const gpu_buffer&) = delete;
 
   VkBuffer get() const { return buffer_.get(); }
   VkDeviceSize size() const { return size_; }
@@ -27,6 +30,7 @@ class gpu_buffer {
 
  private:
   // Destroyed in reverse order: the buffer, then its memory (which unmaps it).
+  const gpu_context& ctx_;  // tells whether the device may still be using the buffer
   VkDevice device_;         // owner of both handles
   VkDeviceSize size_;       // bytes
   unique_memory memory_;    // the allocation

@@ -7,7 +7,8 @@ namespace rtvk::gpu {
 compute_pipeline::compute_pipeline(const gpu_context& ctx, std::span<const std::uint32_t> spirv,
                                    const std::vector<buffer_binding>& bindings,
                                    std::uint32_t push_constant_bytes,
-                                   std::span<const std::uint32_t> spec_constants) {
+                                   std::span<const std::uint32_t> spec_constants)
+    : ctx_(ctx) {
   const VkDevice dev = ctx.vk();
 
   std::vector<VkDescriptorSetLayoutBinding> layout_bindings;
@@ -85,6 +86,15 @@ compute_pipeline::compute_pipeline(const gpu_context& ctx, std::span<const std::
     writes.push_back(w);
   }
   vkUpdateDescriptorSets(dev, std::uint32_t(writes.size()), writes.data(), 0, nullptr);
+}
+
+compute_pipeline::~compute_pipeline() {
+  if (ctx_.lost()) {  // a hung device may still be running it: leak rather than crash
+    pool_.release();
+    pipeline_.release();
+    layout_.release();
+    set_layout_.release();
+  }
 }
 
 void compute_pipeline::bind(VkCommandBuffer cb) const {

@@ -22,11 +22,16 @@ class compute_pipeline {
                    const std::vector<buffer_binding>& bindings, std::uint32_t push_constant_bytes,
                    std::span<const std::uint32_t> spec_constants = {});
 
+  ~compute_pipeline();
+  compute_pipeline(const compute_pipeline&) = delete;
+  compute_pipeline& operator=(const compute_pipeline&) = delete;
+
   // Binds the pipeline and its descriptor set.
   void bind(VkCommandBuffer cb) const;
   void push(VkCommandBuffer cb, const void* data, std::uint32_t bytes) const;
 
  private:
+  const gpu_context& ctx_;  // tells whether the device may still be using the pipeline
   // Destroyed in reverse order: descriptor pool (and its set), pipeline, layouts.
   unique_set_layout set_layout_;
   unique_pipeline_layout layout_;

@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "format.h"
 #include "vk_error.h"
 
 namespace rtvk::gpu {
@@ -80,6 +81,7 @@ gpu_context::~gpu_context() {
     fence_.release();
     pool_.release();
     device_.release();
+    instance_.abandon();
     return;
   }
   if (device_.get()) vkDeviceWaitIdle(device_.get());
@@ -126,7 +128,7 @@ void gpu_context::submit_and_wait(const std::function<void(VkCommandBuffer)>& re
     throw vk_error(
         "vkWaitForFences", r,
         "device " + device().name +
-            (r == VK_TIMEOUT ? ", no answer after " + std::to_string(ns.count() / 1e9) + " s"
+            (r == VK_TIMEOUT ? ", no answer after " + format_number(double(ns.count()) / 1e9) + " s"
                              : ""));
   }
   if (r == VK_ERROR_DEVICE_LOST) lost_ = true;

@@ -27,6 +27,9 @@ class gpu_context {
   gpu_context& operator=(const gpu_context&) = delete;
 
   const device_info& device() const { return devices_[chosen_]; }
+  // A submission timed out or the device was lost: work may still be running on it, so objects
+  // it may touch must not be destroyed (their owners give their handles up instead).
+  bool lost() const { return lost_; }
   const std::vector<device_info>& devices() const { return devices_; }
   std::size_t chosen() const { return chosen_; }
   VkDevice vk() const { return device_.get(); }

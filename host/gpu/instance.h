@@ -18,6 +18,12 @@ class vulkan_instance {
 
   VkInstance get() const { return instance_.get(); }
   bool validating() const { return validating_; }
+  // Gives the instance up without destroying it: the driver may still be running work for it.
+  void abandon() {
+    messenger_.release();
+    instance_.release();
+  }
+
   // Validation-layer messages of WARNING or ERROR severity so far.
   std::uint32_t validation_messages() const { return messages_.load(); }
 

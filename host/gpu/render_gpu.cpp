@@ -8,6 +8,7 @@
 #include "bvh.h"
 #include "compute_pipeline.h"
 #include "format.h"
+#include "interrupt.h"
 #include "packing.h"
 #include "shaders.h"
 
@@ -140,6 +141,9 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
   // keep the device busy, short enough for progress, interruption and the fence timeout.
   int done = 0, batch = 1;
   while (done < rs.spp) {
+    if (engine.cancelled && engine.cancelled())
+      throw render_cancelled("stopped after " + std::to_string(done) + " of " +
+                             std::to_string(rs.spp) + " samples per pixel");
     const int count = std::min(batch, rs.spp - done);
     const bool first = done == 0, last = done + count == rs.spp;
     const auto start = std::chrono::steady_clock::now();

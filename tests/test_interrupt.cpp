@@ -1,0 +1,79 @@
+// Interruption and device faults, on the real executable: a stopped render exits 128 + signal,
+// says how far it got, and leaves no file; a hung device becomes an error, not a hang.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "gpu_fixture.h"
+#include "process.h"
+
+namespace rtvk {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Long enough on any machine that the signal arrives mid-render (seconds on this project's).
+std::vector<std::string> long_render(const fs::path& out, const std::string& backend) {
+  return {"render",    "--scene", "book-final", "--spp", "200",
+          "--backend", backend,   "--validate", "-o",    out.string()};
+}
+
+void expect_interrupted(const std::string& backend, int sig, int status, const char* name) {
+  test::temp_dir dir;
+  const fs::path out = dir.path() / "out.png";
+  test::running_rtvk p(long_render(out, backend));
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  p.signal(sig);
+  const auto r = p.wait();
+  EXPECT_EQ(r.status, status) << r.err;
+  EXPECT_NE(r.err.find(std::string("interrupted by ") + name + ": stopped after"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("no image written"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("validation:"), std::string::npos) << "clean shutdown: " << r.err;
+  EXPECT_TRUE(fs::is_empty(dir.path())) << "no file, not even a temporary one";
+}
+
+TEST(Interrupt, SigintStopsACpuRender) {
+  expect_interrupted("cpu", SIGINT, 130, "SIGINT");
+}
+TEST(Interrupt, SigtermStopsACpuRender) {
+  expect_interrupted("cpu", SIGTERM, 143, "SIGTERM");
+}
+
+TEST(Interrupt, SigkillNeverLeavesAPartialFile) {
+  test::temp_dir dir;
+  const fs::path out = dir.path() / "out.ppm";
+  test::running_rtvk p(long_render(out, "cpu"));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  p.signal(SIGKILL);
+  EXPECT_EQ(p.wait().status, 128 + SIGKILL);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+class GpuInterrupt : public test::GpuTest {};
+
+TEST_F(GpuInterrupt, SigintStopsAGpuRenderAndReleasesTheDeviceCleanly) {
+  if (!test::test_device().empty()) GTEST_SKIP() << "uses lavapipe's speed for its timing";
+  expect_interrupted("gpu", SIGINT, 130, "SIGINT");
+}
+
+TEST_F(GpuInterrupt, AHungDeviceIsAnErrorNotAHang) {
+  // A fence timeout far shorter than the work stands in for a hung device.
+  test::temp_dir dir;
+  const fs::path out = dir.path() / "out.png";
+  std::vector<std::string> args{"render", "--scene", "book-final", "--width", "600",
+                                "--spp",  "20",      "--backend",  "gpu",     "--gpu-timeout",
+                                "0.001",  "-o",      out.string()};
+  if (!test::test_device().empty()) args.insert(args.end(), {"--device", test::test_device()});
+  const auto r = test::run_rtvk(args);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("vkWaitForFences: VK_TIMEOUT"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(gpu().device().name), std::string::npos) << "names the device: " << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace rtvk
