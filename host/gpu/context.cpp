@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "format.h"
+#include "pin_drivers.h"
 #include "vk_error.h"
 
 namespace rtvk::gpu {
@@ -59,6 +60,7 @@ gpu_context::gpu_context(const gpu_options& options)
   vk_check(vkCreateDevice(d.handle, &info, nullptr, &device), "vkCreateDevice");
   device_ = unique_device(device);
   volkLoadDevice(device);
+  pin_driver_libraries();
   vkGetDeviceQueue(device, d.compute_queue_family, 0, &queue_);
 
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "pin_drivers.h"
 #include "vk_error.h"
 
 namespace rtvk::gpu {
@@ -118,6 +119,7 @@ vulkan_instance::vulkan_instance(bool validate) : validating_(validate) {
   vk_check(r, "vkCreateInstance");
   instance_ = unique_instance(instance);
   volkLoadInstance(instance);
+  pin_driver_libraries();
 
   if (validate) {
     VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
