@@ -14,6 +14,7 @@
 #include "gpu/render_gpu.h"
 #include "gpu/vk_error.h"
 #include "interrupt.h"
+#include "memory_check.h"
 #include "render_cpu.h"
 #include "scene_file.h"
 #include "scene_flags.h"
@@ -84,6 +85,7 @@ int run_bench(bench_options& o) {
   check_scene(s);
   o.flags.apply(s);
   const camera cam = o.flags.make_camera(s, o.scene);
+  check_render_memory(cam.image_width(), cam.image_height(), 1);
   engine_options engine;
   engine.use_bvh = o.accel == "bvh";
   engine.threads = o.threads;

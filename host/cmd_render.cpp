@@ -16,6 +16,7 @@
 #include "image_compare.h"
 #include "image_io.h"
 #include "interrupt.h"
+#include "memory_check.h"
 #include "progress.h"
 #include "quantize.h"
 #include "render_cpu.h"
@@ -140,6 +141,7 @@ int run_render(render_options o) {
   check_scene(s);
   o.flags.apply(s);
   const camera cam = o.flags.make_camera(s, o.scene);
+  check_render_memory(cam.image_width(), cam.image_height(), o.backend == "both" ? 2 : 1);
   const ppm_encoding enc = o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3;
 
   if (o.backend == "both") return render_both(o, cam, s, enc);

@@ -21,6 +21,8 @@ struct engine_options {
   int threads = 0;                    // CPU worker threads; 0: one per core
   std::uint32_t gpu_loop_budget = 0;  // GPU: most loop iterations per invocation; 0: the device's
   bool count_rays = false;            // fill render_stats::rays (costs a little on the GPU)
+  std::uint64_t gpu_band_bytes = 0;   // GPU: largest accumulation buffer; 0: 64 MiB (or the
+                                      // device's storage buffer limit, if smaller)
   // Polled between passes (a CPU row, a GPU submission); when it returns true the render stops
   // and throws render_cancelled. Empty: never cancelled.
   std::function<bool()> cancelled = {};

@@ -30,8 +30,9 @@ layout(push_constant) uniform push_block { render_push pc; };
 #include "shading.glsl"
 
 void main() {
-  uvec2 pixel = gl_GlobalInvocationID.xy;  // x from the left, y from the top
-  if (pixel.x >= cam.image_width || pixel.y >= cam.image_height) return;
+  // x from the left, y from the top of the image; the dispatch covers one band of rows.
+  uvec2 pixel = uvec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y + pc.band_y0);
+  if (pixel.x >= cam.image_width || gl_GlobalInvocationID.y >= pc.band_rows) return;
 
   uint j = cam.image_height - 1u - pixel.y;  // the lesson counts rows from the bottom
   random_stream s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, pc.sample_index, 0u);
@@ -49,7 +50,7 @@ void main() {
     return;
   }
 
-  uint index = pixel.y * cam.image_width + pixel.x;
+  uint index = gl_GlobalInvocationID.y * cam.image_width + pixel.x;  // within the band
   if (pc.count_rays != 0u) ray_count[index] += rays;
   uint base = 3u * index;
   rgb[base + 0u] += c.r;

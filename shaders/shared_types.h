@@ -18,13 +18,13 @@ using uint = std::uint32_t;
 // Descriptor bindings, set 0.
 #define RTVK_BINDING_CAMERA 0     // uniform buffer: camera_ubo
 #define RTVK_BINDING_SPHERES 1    // storage buffer: gpu_sphere[]
-#define RTVK_BINDING_IMAGE 2      // storage buffer: float RGB sums per pixel, row 0 at the top
+#define RTVK_BINDING_IMAGE 2      // storage buffer: float RGB sums per pixel of one band of rows
 #define RTVK_BINDING_MATERIALS 3  // storage buffer: gpu_material[]
 #define RTVK_BINDING_STATUS 4     // storage buffer: render_status
 #define RTVK_BINDING_PROBE 5      // storage buffer: probe_io or rng_probe_entry[] (probes only)
 #define RTVK_BINDING_BVH_NODES 6  // storage buffer: bvh_node[]
 #define RTVK_BINDING_BVH_INDEX 7  // storage buffer: uint[], leaf slot -> sphere index
-#define RTVK_BINDING_RAY_COUNT 8  // storage buffer: uint[], rays traced per pixel
+#define RTVK_BINDING_RAY_COUNT 8  // storage buffer: uint[], rays traced per pixel of the band
 
 #define RTVK_BVH_STACK 64  // traversal stack entries; the builder keeps the tree shallower
 
@@ -95,8 +95,8 @@ struct render_push {
   uint jitter;        // 1: random positions inside the pixel
   uint use_bvh;       // 1: traverse the BVH; 0: test every sphere in order
   uint count_rays;    // 1: add the rays each invocation traces to its pixel's counter
-  uint pad0;          // unused
-  uint pad1;          // unused
+  uint band_y0;       // first image row of this band: the image buffers hold rows band_y0 on
+  uint band_rows;     // rows in this band
 };
 
 // std430: written by the shader when something went wrong.
@@ -160,6 +160,8 @@ static_assert(offsetof(render_push, loop_budget) == 40);
 static_assert(offsetof(render_push, jitter) == 44);
 static_assert(offsetof(render_push, use_bvh) == 48);
 static_assert(offsetof(render_push, count_rays) == 52);
+static_assert(offsetof(render_push, band_y0) == 56);
+static_assert(offsetof(render_push, band_rows) == 60);
 static_assert(sizeof(render_push) == 64 && sizeof(render_push) <= 128);
 static_assert(offsetof(bvh_node, bounds_min) == 0);
 static_assert(offsetof(bvh_node, first) == 12);

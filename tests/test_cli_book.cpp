@@ -172,3 +172,20 @@ TEST(CliBench, SpheresSceneNamesAreChecked) {
 
 }  // namespace
 }  // namespace rtvk
+
+namespace rtvk {
+namespace {
+
+TEST(CliBook, ImageTooLargeForMemoryIsRefusedUpFront) {
+  test::temp_dir dir;
+  const auto out = (dir.path() / "huge.png").string();
+  // 65536 x 65536 needs over 100 GiB: refused before any work, naming what it needs.
+  const auto r = run_rtvk({"render", "--width", "65536", "--aspect", "1", "-o", out});
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("65536x65536 needs about"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("GiB"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace rtvk

@@ -145,3 +145,32 @@ TEST_F(GpuBook, RayCountsAgreeWithTheCpu) {
 
 }  // namespace
 }  // namespace rtvk
+
+namespace rtvk {
+namespace {
+
+TEST_F(GpuBook, BandsOfRowsJoinWithoutASeam) {
+  // Images larger than one storage buffer are rendered in bands; force bands of 5 rows on a small
+  // image and require the very same bytes as one band.
+  for (const char* name : {"seed", "materials"}) {
+    scene s = builtin_scene(name);
+    s.render.width = 97;
+    s.render.spp = std::min(s.render.spp, 3);
+    const camera cam = test::scene_camera(s);
+    auto image = [&](std::uint64_t band_bytes) {
+      render_stats stats;
+      engine_options e;
+      e.gpu_band_bytes = band_bytes;
+      e.count_rays = true;
+      const image_rgb8 img = quantize(gpu::render_gpu(gpu(), cam, s, s.render, {}, e, &stats), 2);
+      return std::pair(img, stats.rays);
+    };
+    const auto [whole, whole_rays] = image(0);
+    const auto [banded, banded_rays] = image(97 * 12 * 5);
+    EXPECT_EQ(banded.rgb, whole.rgb) << name;
+    EXPECT_EQ(banded_rays, whole_rays) << name;
+  }
+}
+
+}  // namespace
+}  // namespace rtvk

@@ -74,13 +74,18 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
                        const engine_options& engine, render_stats* stats) {
   const std::uint32_t width = std::uint32_t(cam.image_width());
   const std::uint32_t height = std::uint32_t(cam.image_height());
-  const VkDeviceSize image_bytes = VkDeviceSize(width) * height * 3 * sizeof(float);
   const device_info& dev = ctx.device();
-  if (image_bytes > dev.limits.maxStorageBufferRange)
-    throw std::runtime_error(
-        std::to_string(width) + "x" + std::to_string(height) + " needs a " +
-        format_number(double(image_bytes) / (1 << 20)) + " MiB storage buffer; " + dev.name +
-        " allows " + format_number(double(dev.limits.maxStorageBufferRange) / (1 << 20)) + " MiB");
+
+  // The image is rendered in bands of whole rows, each small enough for one storage buffer and
+  // for a bounded share of device memory; the random numbers use the full image's pixel index,
+  // so the bands join without a seam.
+  const VkDeviceSize row_bytes = VkDeviceSize(width) * 3 * sizeof(float);
+  const VkDeviceSize band_limit = std::min<VkDeviceSize>(
+      dev.limits.maxStorageBufferRange, engine.gpu_band_bytes ? engine.gpu_band_bytes : 64u << 20);
+  const std::uint32_t band_rows =
+      std::uint32_t(std::clamp<VkDeviceSize>(band_limit / row_bytes, 1, height));
+  const VkDeviceSize band_pixels = VkDeviceSize(width) * band_rows;
+  const VkDeviceSize image_bytes = band_pixels * 3 * sizeof(float);
 
   const camera_ubo ubo = to_ubo(cam);
   gpu_buffer ubo_buf(ctx, sizeof ubo, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, memory_use::upload);
@@ -97,21 +102,17 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
   // One 32-bit counter per pixel: it holds at most spp * max_depth rays.
   const bool count_rays =
       engine.count_rays && std::uint64_t(rs.spp) * std::uint64_t(rs.max_depth) < (1ull << 32);
-  const VkDeviceSize count_bytes =
-      count_rays ? VkDeviceSize(width) * height * sizeof(std::uint32_t) : 4;
-  gpu_buffer ray_counts(ctx, count_bytes,
-                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                            VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                        memory_use::device_local);
+  const VkDeviceSize count_bytes = count_rays ? band_pixels * sizeof(std::uint32_t) : 4;
+  constexpr VkBufferUsageFlags storage_copy = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                              VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  gpu_buffer ray_counts(ctx, count_bytes, storage_copy, memory_use::device_local);
   gpu_buffer ray_readback(ctx, count_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, memory_use::readback);
-  gpu_buffer image(ctx, image_bytes,
-                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                   memory_use::device_local);
+  gpu_buffer image(ctx, image_bytes, storage_copy, memory_use::device_local);
+  gpu_buffer readback(ctx, image_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, memory_use::readback);
   gpu_buffer status(ctx, sizeof(render_status),
                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                     memory_use::readback);
-  gpu_buffer readback(ctx, image_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, memory_use::readback);
 
   const auto wg = workgroup_size(dev);
   const compute_pipeline pipeline(
@@ -137,73 +138,87 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
   push.use_bvh = engine.use_bvh ? 1u : 0u;
   push.count_rays = count_rays ? 1u : 0u;
 
-  // Submissions grow from one sample until each takes about a quarter second: long enough to
-  // keep the device busy, short enough for progress, interruption and the fence timeout.
-  int done = 0, batch = 1;
-  while (done < rs.spp) {
-    if (engine.cancelled && engine.cancelled())
-      throw render_cancelled("stopped after " + std::to_string(done) + " of " +
-                             std::to_string(rs.spp) + " samples per pixel");
-    const int count = std::min(batch, rs.spp - done);
-    const bool first = done == 0, last = done + count == rs.spp;
-    const auto start = std::chrono::steady_clock::now();
-    ctx.submit_and_wait([&](VkCommandBuffer cb) {
-      if (first) {
-        spheres.record_upload(cb);
-        materials.record_upload(cb);
-        nodes.record_upload(cb);
-        bvh_index.record_upload(cb);
-        vkCmdFillBuffer(cb, image.get(), 0, VK_WHOLE_SIZE, 0);
-        vkCmdFillBuffer(cb, ray_counts.get(), 0, VK_WHOLE_SIZE, 0);
-        vkCmdFillBuffer(cb, status.get(), 0, VK_WHOLE_SIZE, 0);
-        barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
-      } else {  // the previous submission's samples are in the sums this one adds to
-        barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
-      }
-      pipeline.bind(cb);
-      for (int k = 0; k < count; ++k) {
-        if (k > 0) barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
-        push.sample_index = std::uint32_t(done + k);
-        pipeline.push(cb, &push, sizeof push);
-        vkCmdDispatch(cb, (width + wg[0] - 1) / wg[0], (height + wg[1] - 1) / wg[1], 1);
-      }
-      if (last) {
-        barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
-                VK_ACCESS_TRANSFER_READ_BIT);
-        const VkBufferCopy copy{0, 0, image_bytes};
-        vkCmdCopyBuffer(cb, image.get(), readback.get(), 1, &copy);
-        const VkBufferCopy counts{0, 0, count_bytes};
-        vkCmdCopyBuffer(cb, ray_counts.get(), ray_readback.get(), 1, &counts);
-        barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                VK_ACCESS_HOST_READ_BIT);
-      }
-      barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-              VK_ACCESS_HOST_READ_BIT);
-    });
-    const auto* st = static_cast<const render_status*>(status.read());
-    if (st->overrun_pixels > 0)
-      throw loop_budget_error(
-          std::to_string(st->overrun_pixels) + " pixel samples needed more than " +
-          std::to_string(push.loop_budget) + " loop iterations on " + dev.name +
-          " (lavapipe silently stops loops at 65,535, so rtvk stops first and writes no image): "
-          "lower --depth or use fewer spheres");
-    done += count;
-    if (progress) progress(done);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (seconds < 0.25) batch = std::min(batch * 2, 256);
-  }
-
-  if (stats && count_rays) {
-    const auto* counts = static_cast<const std::uint32_t*>(ray_readback.read());
-    stats->rays = 0;
-    for (VkDeviceSize i = 0; i < VkDeviceSize(width) * height; ++i) stats->rays += counts[i];
-  }
-  const float* rgb = static_cast<const float*>(readback.read());
   framebuffer fb{int(width), int(height)};
-  for (std::uint32_t y = 0; y < height; ++y)
-    for (std::uint32_t x = 0; x < width; ++x, rgb += 3)
-      fb.at(int(x), int(y)) = divide(color(rgb[0], rgb[1], rgb[2]), rs.spp);
+  if (stats) stats->rays = 0;
+  const std::uint32_t bands = (height + band_rows - 1) / band_rows;
+  int batch = 1;
+  for (std::uint32_t band = 0; band < bands; ++band) {
+    push.band_y0 = band * band_rows;
+    push.band_rows = std::min(band_rows, height - push.band_y0);
+    // Submissions grow from one sample until each takes about a quarter second: long enough to
+    // keep the device busy, short enough for progress, interruption and the fence timeout.
+    int done = 0;
+    while (done < rs.spp) {
+      if (engine.cancelled && engine.cancelled())
+        throw render_cancelled("stopped after " + std::to_string(done) + " of " +
+                               std::to_string(rs.spp) + " samples per pixel of band " +
+                               std::to_string(band + 1) + " of " + std::to_string(bands));
+      const int count = std::min(batch, rs.spp - done);
+      const bool first = done == 0, last = done + count == rs.spp;
+      const auto start = std::chrono::steady_clock::now();
+      ctx.submit_and_wait([&](VkCommandBuffer cb) {
+        if (first) {
+          if (band == 0) {
+            spheres.record_upload(cb);
+            materials.record_upload(cb);
+            nodes.record_upload(cb);
+            bvh_index.record_upload(cb);
+            vkCmdFillBuffer(cb, status.get(), 0, VK_WHOLE_SIZE, 0);
+          } else {  // the previous band's copies out of these buffers come first
+            barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_READ_BIT, transfer_stage,
+                    VK_ACCESS_TRANSFER_WRITE_BIT);
+          }
+          vkCmdFillBuffer(cb, image.get(), 0, VK_WHOLE_SIZE, 0);
+          vkCmdFillBuffer(cb, ray_counts.get(), 0, VK_WHOLE_SIZE, 0);
+          barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
+        } else {  // the previous submission's samples are in the sums this one adds to
+          barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
+        }
+        pipeline.bind(cb);
+        for (int k = 0; k < count; ++k) {
+          if (k > 0)
+            barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
+          push.sample_index = std::uint32_t(done + k);
+          pipeline.push(cb, &push, sizeof push);
+          vkCmdDispatch(cb, (width + wg[0] - 1) / wg[0], (push.band_rows + wg[1] - 1) / wg[1], 1);
+        }
+        if (last) {
+          barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
+                  VK_ACCESS_TRANSFER_READ_BIT);
+          const VkBufferCopy copy{0, 0, VkDeviceSize(width) * push.band_rows * 3 * sizeof(float)};
+          vkCmdCopyBuffer(cb, image.get(), readback.get(), 1, &copy);
+          const VkBufferCopy counts{0, 0, count_bytes};
+          vkCmdCopyBuffer(cb, ray_counts.get(), ray_readback.get(), 1, &counts);
+          barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                  VK_ACCESS_HOST_READ_BIT);
+        }
+        barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                VK_ACCESS_HOST_READ_BIT);
+      });
+      const auto* st = static_cast<const render_status*>(status.read());
+      if (st->overrun_pixels > 0)
+        throw loop_budget_error(
+            std::to_string(st->overrun_pixels) + " pixel samples needed more than " +
+            std::to_string(push.loop_budget) + " loop iterations on " + dev.name +
+            " (lavapipe silently stops loops at 65,535, so rtvk stops first and writes no "
+            "image): lower --depth or use fewer spheres");
+      done += count;
+      if (progress) progress(int((std::int64_t(band) * rs.spp + done) / bands));
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (seconds < 0.25) batch = std::min(batch * 2, 256);
+    }
+
+    if (stats && count_rays) {
+      const auto* counts = static_cast<const std::uint32_t*>(ray_readback.read());
+      for (VkDeviceSize i = 0; i < VkDeviceSize(width) * push.band_rows; ++i)
+        stats->rays += counts[i];
+    }
+    const float* rgb = static_cast<const float*>(readback.read());
+    for (std::uint32_t y = push.band_y0; y < push.band_y0 + push.band_rows; ++y)
+      for (std::uint32_t x = 0; x < width; ++x, rgb += 3)
+        fb.at(int(x), int(y)) = divide(color(rgb[0], rgb[1], rgb[2]), rs.spp);
+  }
   return fb;
 }
 
