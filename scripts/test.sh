@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# README command 2: install what is missing, build with warnings as errors, run every test; then
-# build again with AddressSanitizer + UndefinedBehaviorSanitizer (LeakSanitizer on) and run every
-# test again under them.
+# README command 2: install what is missing, then for each preset build (warnings are errors) and
+# run its tests: fuzz (a one-minute libFuzzer run on the scene parser), ci (every test), asan
+# (every test again under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/install-deps.sh"
 cd "$root"
-for preset in ci asan; do
+for preset in fuzz ci asan; do
   echo "== preset $preset"
   cmake --preset "$preset" >/dev/null
   cmake --build --preset "$preset"
