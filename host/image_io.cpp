@@ -3,8 +3,12 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -35,6 +39,15 @@ void check_output_path(const fs::path& path, const std::string& flag) {
                       "' does not exist");
   if (fs::is_directory(path, ec))
     throw usage_error(flag + ": '" + path.string() + "' is a folder, not a file name");
+  // Try what the final write will do -- create a file in the folder -- before any work, so a
+  // read-only folder or file system fails now (also as root, where permission bits do not).
+  std::string probe = (dir / ".rtvk-write-test-XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0)
+    throw usage_error(flag + ": cannot write in folder '" + dir.string() + "' of '" +
+                      path.string() + "': " + std::strerror(errno));
+  ::close(fd);
+  ::unlink(probe.c_str());
 }
 
 std::string encode_ppm(const image_rgb8& img, ppm_encoding enc) {

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -185,6 +186,92 @@ TEST(CliBook, ImageTooLargeForMemoryIsRefusedUpFront) {
   EXPECT_NE(r.err.find("65536x65536 needs about"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("GiB"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace rtvk
+
+namespace rtvk {
+namespace {
+
+// Every bad scene file, through the real executable: exit 2, one line naming the file and what
+// is wrong, nothing rendered.
+TEST(CliBadInput, SceneFiles) {
+  const std::string m = R"("materials":{"m":{"type":"normal"}})";
+  const struct {
+    std::string name, content, expect;
+  } cases[] = {
+      {"empty.json", "", "empty scene file"},
+      {"not_json.json", "this is not JSON", "parse error at line 1, column "},
+      {"wrong_shape.json", "[1, 2, 3]", "/: expected an object"},
+      {"wrong_type.json", "{" + m + R"(,"spheres":[{"center":"here","radius":1,"material":"m"}]})",
+       "/spheres/0/center: expected an array of 3 numbers"},
+      {"negative_radius.json",
+       "{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":-1,"material":"m"}]})",
+       "/spheres/0/radius: expected a radius > 0, got -1"},
+      {"zero_radius.json",
+       "{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":0,"material":"m"}]})",
+       "/spheres/0/radius: expected a radius > 0, got 0"},
+      {"infinite.json",
+       "{" + m + R"(,"spheres":[{"center":[0,1e400,0],"radius":1,"material":"m"}]})",
+       "number overflow"},
+      {"unknown_material.json", R"({"materials":{"m":{"type":"unobtainium"}},"spheres":[]})",
+       "/materials/m/type: unknown material type \"unobtainium\""},
+      {"missing_material.json",
+       "{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":1,"material":"x"}]})",
+       "/spheres/0/material: no material named \"x\""},
+  };
+  test::temp_dir dir;
+  const auto out = (dir.path() / "out.png").string();
+  for (const auto& c : cases) {
+    const auto file = (dir.path() / c.name).string();
+    std::ofstream(file) << c.content;
+    const auto r = run_rtvk({"render", "--scene", file, "-o", out});
+    EXPECT_EQ(r.status, 2) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(file + ": "), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.name;
+  }
+  // Missing, and unreadable (a folder stands in: root reads any file whatever its mode).
+  for (const std::string& path :
+       {(dir.path() / "missing.json").string(), dir.path().string() + "/"}) {
+    const auto r = run_rtvk({"render", "--scene", path, "-o", out});
+    EXPECT_EQ(r.status, 2) << path << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+}
+
+TEST(CliBadInput, AHundredThousandSphereFileRenders) {
+  test::temp_dir dir;
+  const auto file = (dir.path() / "big.json").string();
+  {
+    std::ofstream f(file);
+    f << R"({"materials":{"m":{"type":"normal"}},"spheres":[)";
+    for (int i = 0; i < 100000; ++i)
+      f << (i ? "," : "") << R"({"center":[)" << (i % 317 - 158) << ",0," << (-20 - i / 317)
+        << R"(],"radius":0.4,"material":"m"})";
+    f << "]}";
+  }
+  const auto out = (dir.path() / "big.png").string();
+  const auto r = run_rtvk({"render", "--scene", file, "--width", "64", "-o", out});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+TEST(CliBadInput, UnwritableOutputFolder) {
+  // /proc accepts no new files, even from root; the check runs before any rendering.
+  const auto r = run_rtvk({"render", "-o", "/proc/rtvk-test.png"});
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--output: cannot write in folder '/proc'"), std::string::npos) << r.err;
+  if (::geteuid() != 0) {  // and a folder without write permission, where that means something
+    test::temp_dir dir;
+    std::filesystem::permissions(
+        dir.path(), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+    const auto r2 = run_rtvk({"render", "-o", (dir.path() / "x.png").string()});
+    EXPECT_EQ(r2.status, 2) << r2.err;
+    std::filesystem::permissions(dir.path(), std::filesystem::perms::owner_all);
+  }
 }
 
 }  // namespace
