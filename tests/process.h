@@ -5,7 +5,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <fstream>
+#include <thread>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -84,6 +86,23 @@ class running_rtvk {
   running_rtvk& operator=(const running_rtvk&) = delete;
 
   void signal(int sig) const { ::kill(pid_, sig); }
+
+  // Waits (up to `limit`) until the child has installed a handler for `sig`, read from the
+  // SigCgt mask in /proc/<pid>/status: a signal sent earlier would find the default action.
+  bool wait_until_catching(int sig, std::chrono::milliseconds limit) const {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < end) {
+      std::ifstream status("/proc/" + std::to_string(pid_) + "/status");
+      std::string line;
+      while (std::getline(status, line)) {
+        if (line.rfind("SigCgt:", 0) != 0) continue;
+        const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
+        if (mask & (1ull << (sig - 1))) return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+  }
 
   process_result wait() {
     int wstatus = 0;

@@ -24,7 +24,8 @@ void expect_interrupted(const std::string& backend, int sig, int status, const c
   test::temp_dir dir;
   const fs::path out = dir.path() / "out.png";
   test::running_rtvk p(long_render(out, backend));
-  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  ASSERT_TRUE(p.wait_until_catching(sig, std::chrono::seconds(30)));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // well into the render
   p.signal(sig);
   const auto r = p.wait();
   EXPECT_EQ(r.status, status) << r.err;
