@@ -7,10 +7,10 @@
 
 #include <chrono>
 #include <fstream>
-#include <thread>
 #include <iterator>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "temp_dir.h"

@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+#include <string>
 // Short ways for tests to render a scene with its own settings on either backend.
 #include "camera.h"
 #include "gpu/render_gpu.h"
@@ -24,6 +26,14 @@ inline image_rgb8 gpu_image(gpu::gpu_context& ctx, const scene& s, const camera&
 }
 inline image_rgb8 gpu_image(gpu::gpu_context& ctx, const scene& s) {
   return gpu_image(ctx, s, scene_camera(s));
+}
+
+// A built-in scene made small for tests: `width` pixels wide, at most `max_spp` samples.
+inline scene small_scene(const std::string& name, int width, int max_spp) {
+  scene s = builtin_scene(name);
+  s.render.width = width;
+  s.render.spp = std::min(s.render.spp, max_spp);
+  return s;
 }
 
 // The lesson's image: the seed scene through the lesson's camera.

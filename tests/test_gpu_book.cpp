@@ -92,9 +92,7 @@ namespace {
 // The BVH and the thread count change how fast an image is made, never the image.
 TEST(Accel, BvhAndThreadsGiveTheIdenticalCpuImage) {
   for (const char* name : {"seed", "materials", "book-final"}) {
-    scene s = builtin_scene(name);
-    s.render.width = 96;
-    s.render.spp = std::min(s.render.spp, 3);
+    const scene s = test::small_scene(name, 96, 3);
     const camera cam = test::scene_camera(s);
     auto image = [&](engine_options e) { return quantize(render_cpu(cam, s, s.render, {}, e), 2); };
     const image_rgb8 reference = image({.use_bvh = false, .threads = 1});
@@ -119,9 +117,7 @@ TEST(Accel, CoincidentSpheresBreakTiesLikeTheLinearScan) {
 
 TEST_F(GpuBook, BvhGivesTheIdenticalGpuImage) {
   for (const char* name : {"seed", "materials", "book-final"}) {
-    scene s = builtin_scene(name);
-    s.render.width = 96;
-    s.render.spp = std::min(s.render.spp, 3);
+    const scene s = test::small_scene(name, 96, 3);
     const camera cam = test::scene_camera(s);
     auto image = [&](bool bvh) {
       return quantize(gpu::render_gpu(gpu(), cam, s, s.render, {}, {.use_bvh = bvh}), 2);
@@ -153,9 +149,7 @@ TEST_F(GpuBook, BandsOfRowsJoinWithoutASeam) {
   // Images larger than one storage buffer are rendered in bands; force bands of 5 rows on a small
   // image and require the very same bytes as one band.
   for (const char* name : {"seed", "materials"}) {
-    scene s = builtin_scene(name);
-    s.render.width = 97;
-    s.render.spp = std::min(s.render.spp, 3);
+    const scene s = test::small_scene(name, 97, 3);
     const camera cam = test::scene_camera(s);
     auto image = [&](std::uint64_t band_bytes) {
       render_stats stats;
