@@ -109,22 +109,22 @@ struct render_status {
 
 // std430, read and written by probe.comp: the host fills uv, the shader fills the rest.
 struct probe_io {
-  vec4 uv[RTVK_PROBE_POINTS];         // xy: normalized image coordinates; zw: lens sample
-  vec4 direction[RTVK_PROBE_POINTS];  // xyz: get_ray(uv).direction
-  vec4 ray_origin[RTVK_PROBE_POINTS]; // xyz: get_ray(uv).origin
-  camera_ubo echo;                    // the uniform buffer exactly as the shader read it
+  vec4 uv[RTVK_PROBE_POINTS];          // xy: normalized image coordinates; zw: lens sample
+  vec4 direction[RTVK_PROBE_POINTS];   // xyz: get_ray(uv).direction
+  vec4 ray_origin[RTVK_PROBE_POINTS];  // xyz: get_ray(uv).origin
+  camera_ubo echo;                     // the uniform buffer exactly as the shader read it
 };
 
 // std430 array element for rng_probe.comp: the host fills the counters, the shader the results.
 struct rng_probe_entry {
-  uint pixel;    // counter: pixel index
+  uint pixel;         // counter: pixel index
   uint sample_index;  // counter: sample index
-  uint bounce;   // counter: bounce
-  uint dim;      // counter: dimension
-  uint bits;     // random_bits(seed 0x5eed, ...)
-  float value;   // random_float(seed 0x5eed, ...)
-  uint pad0;     // unused
-  uint pad1;     // unused
+  uint bounce;        // counter: bounce
+  uint dim;           // counter: dimension
+  uint bits;          // random_bits(seed 0x5eed, ...)
+  float value;        // random_float(seed 0x5eed, ...)
+  uint pad0;          // unused
+  uint pad1;          // unused
 };
 
 #ifdef __cplusplus
