@@ -1,5 +1,9 @@
 #include "bvh.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -162,7 +166,48 @@ bvh::bvh(std::vector<sphere> spheres) : spheres_(std::move(spheres)) {
   nodes_.reserve(2 * spheres_.size() / std::size_t(max_leaf) + 1);
   index_.reserve(spheres_.size());
   depth_ = builder(prims, nodes_, index_).build(0, prims.size(), 1);
+  children_.resize(nodes_.size());
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (nodes_[i].count > 0) continue;
+    const gpu::bvh_node& l = nodes_[i + 1];
+    const gpu::bvh_node& r = nodes_[nodes_[i].first];
+    children_[i] = {{l.bounds_min.x, r.bounds_min.x, l.bounds_max.x, r.bounds_max.x},
+                    {l.bounds_min.y, r.bounds_min.y, l.bounds_max.y, r.bounds_max.y},
+                    {l.bounds_min.z, r.bounds_min.z, l.bounds_max.z, r.bounds_max.z}};
+  }
 }
+
+namespace {
+
+// The slab test of ray_box_entry for both children at once. Lane 0 is the left child, lane 1 the
+// right; each gets its entry distance, or -1 when the ray misses it. Same float operations, same
+// results, as two calls of ray_box_entry.
+#if defined(__SSE2__)
+void both_children(const glm::vec3& o, const glm::vec3& inv_d, const float (&x)[4],
+                   const float (&y)[4], const float (&z)[4], float t_min, float t_max,
+                   float& t_left, float& t_right) {
+  const auto axis = [](const float(&v)[4], float origin, float inv, __m128& near, __m128& far) {
+    const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(v), _mm_set1_ps(origin)), _mm_set1_ps(inv));
+    const __m128 swapped =
+        _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 0, 3, 2));  // min lanes <-> max lanes
+    near = _mm_min_ps(t, swapped);
+    far = _mm_max_ps(t, swapped);
+  };
+  __m128 nx, fx, ny, fy, nz, fz;
+  axis(x, o.x, inv_d.x, nx, fx);
+  axis(y, o.y, inv_d.y, ny, fy);
+  axis(z, o.z, inv_d.z, nz, fz);
+  const __m128 enter = _mm_max_ps(_mm_max_ps(_mm_set1_ps(t_min), nx), _mm_max_ps(ny, nz));
+  const __m128 leave = _mm_min_ps(_mm_min_ps(_mm_set1_ps(t_max), fx), _mm_min_ps(fy, fz));
+  alignas(16) float e[4], l[4];
+  _mm_store_ps(e, enter);
+  _mm_store_ps(l, leave);
+  t_left = e[0] <= l[0] ? e[0] : -1.0f;
+  t_right = e[1] <= l[1] ? e[1] : -1.0f;
+}
+#endif
+
+}  // namespace
 
 bool bvh::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
   if (nodes_.empty()) return false;
@@ -192,8 +237,14 @@ bool bvh::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
       // Visit the nearer child first; remember the other if the ray enters it at all.
       const float box_max = widen_up(closest);
       const std::uint32_t left = node + 1, right = n.first;
+#if defined(__SSE2__)
+      float t_left, t_right;
+      const child_boxes& c = children_[node];
+      both_children(o, inv_d, c.x, c.y, c.z, box_min, box_max, t_left, t_right);
+#else
       const float t_left = ray_box_entry(o, inv_d, nodes_[left], box_min, box_max);
       const float t_right = ray_box_entry(o, inv_d, nodes_[right], box_min, box_max);
+#endif
       if (t_left >= 0 && t_right >= 0) {
         const bool left_first = t_left <= t_right;
         stack_node[top] = left_first ? right : left;

@@ -31,10 +31,19 @@ class bvh final : public hittable {
   static constexpr int max_depth = RTVK_BVH_STACK - 2;
 
  private:
-  std::vector<sphere> spheres_;       // in scene order
-  std::vector<gpu::bvh_node> nodes_;  // node 0 is the root (absent when there are no spheres)
-  std::vector<std::uint32_t> index_;  // leaf slot -> index into spheres_
-  int depth_ = 0;                     // levels in the tree
+  // An interior node's two child boxes, per axis: (left min, right min, left max, right max).
+  // The CPU tests both children in one pass of 4-wide float operations; the GPU reads nodes_.
+  struct child_boxes {
+    float x[4];
+    float y[4];
+    float z[4];
+  };
+
+  std::vector<sphere> spheres_;        // in scene order
+  std::vector<child_boxes> children_;  // per node; meaningful for interior nodes
+  std::vector<gpu::bvh_node> nodes_;   // node 0 is the root (absent when there are no spheres)
+  std::vector<std::uint32_t> index_;   // leaf slot -> index into spheres_
+  int depth_ = 0;                      // levels in the tree
 };
 
 // 1 / d per component, with zero components replaced by a tiny signed value so that the slab
