@@ -54,8 +54,8 @@ class builder {
           std::vector<std::uint32_t>& index)
       : prims_(prims), nodes_(nodes), index_(index) {}
 
-  // Builds the subtree over prims_[begin, end) and returns the depth it reached.
-  int build(std::size_t begin, std::size_t end, int depth) {
+  // Builds the subtree over prims_[begin, end), `depth` levels below the root.
+  void build(std::size_t begin, std::size_t end, int depth) {
     const std::size_t at = nodes_.size();
     nodes_.push_back({});
     box bounds, centroids;
@@ -73,14 +73,13 @@ class builder {
         mid = begin + count / 2;  // no useful split (e.g. equal centers): halve by order
       } else {
         make_leaf(at, begin, end);
-        return depth;
+        return;
       }
     }
-    const int left = build(begin, mid, depth + 1);
+    build(begin, mid, depth + 1);
     nodes_[at].first = std::uint32_t(nodes_.size());
     nodes_[at].count = 0;
-    const int right = build(mid, end, depth + 1);
-    return std::max(left, right);
+    build(mid, end, depth + 1);
   }
 
  private:
@@ -165,7 +164,7 @@ bvh::bvh(std::vector<sphere> spheres) : spheres_(std::move(spheres)) {
   }
   nodes_.reserve(2 * spheres_.size() / std::size_t(max_leaf) + 1);
   index_.reserve(spheres_.size());
-  depth_ = builder(prims, nodes_, index_).build(0, prims.size(), 1);
+  builder(prims, nodes_, index_).build(0, prims.size(), 1);
   children_.resize(nodes_.size());
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     if (nodes_[i].count > 0) continue;

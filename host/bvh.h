@@ -23,8 +23,6 @@ class bvh final : public hittable {
 
   const std::vector<gpu::bvh_node>& nodes() const { return nodes_; }
   const std::vector<std::uint32_t>& index() const { return index_; }
-  const std::vector<sphere>& spheres() const { return spheres_; }
-  int depth() const { return depth_; }  // levels, root = 1
 
   // Most spheres in one leaf; the tree never exceeds this depth (the GPU's stack fits it).
   static constexpr int max_leaf = 1;
@@ -43,7 +41,6 @@ class bvh final : public hittable {
   std::vector<child_boxes> children_;  // per node; meaningful for interior nodes
   std::vector<gpu::bvh_node> nodes_;   // node 0 is the root (absent when there are no spheres)
   std::vector<std::uint32_t> index_;   // leaf slot -> index into spheres_
-  int depth_ = 0;                      // levels in the tree
 };
 
 // 1 / d per component, with zero components replaced by a tiny signed value so that the slab

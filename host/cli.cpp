@@ -37,7 +37,6 @@ int run_cli(int argc, char** argv) {
     return 2;
   }
 
-  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
   try {
     for (const auto& [name, action] : commands)
       if (app.got_subcommand(name)) return action();

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -79,8 +80,14 @@ void measure(int repeat, bench_record base, Render render, std::vector<bench_rec
 }
 
 int run_bench(bench_options& o) {
-  if (!o.json.empty() && names_scene_file(o.json) == false && o.json.find('.') == std::string::npos)
-    throw usage_error("--json: '" + o.json + "' should name a .json file");
+  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
+  if (!o.json.empty()) {
+    const std::filesystem::path json(o.json);
+    const auto dir = json.has_parent_path() ? json.parent_path() : std::filesystem::path(".");
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec))
+      throw usage_error("--json: folder '" + dir.string() + "' of '" + o.json + "' does not exist");
+  }
   scene s = load_scene(o.scene);
   check_scene(s);
   o.flags.apply(s);

@@ -134,6 +134,7 @@ int render_both(const render_options& o, const camera& cam, const scene& s, ppm_
 }
 
 int run_render(render_options o) {
+  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
   check_output_path(o.output, "--output");
   if (!o.device.empty() && o.backend == "cpu")
     throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");

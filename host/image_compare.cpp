@@ -23,12 +23,13 @@ image_difference compare_images(const image_rgb8& a, const image_rgb8& b, int to
   d.height = a.height;
   double sum = 0, sum_sq = 0;
   for (std::size_t i = 0; i < a.rgb.size(); i += 3) {
+    int worst = 0;
     for (int c = 0; c < 3; ++c) {
       const int diff = std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c]));
       sum += diff;
       sum_sq += double(diff) * diff;
+      worst = std::max(worst, diff);
     }
-    const int worst = worst_channel(a, b, i);
     d.max_abs = std::max(d.max_abs, worst);
     if (worst > tolerance) ++d.pixels_over;
   }

@@ -57,6 +57,8 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
 
   auto render_rows = [&](bool reports_progress) {
     const counting_world counted(*world);
+    // Counting costs a virtual call per ray: only when someone asked for it.
+    const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
     int y;
     while (!(engine.cancelled && engine.cancelled()) && (y = next_row.fetch_add(1)) < height) {
       const int j = height - 1 - y;  // the lesson counts rows from the bottom
@@ -71,7 +73,7 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
           const glm::dvec2 lens = cam.lens_radius() > 0
                                       ? random_in_unit_disk(rnd(dim_lens_a), rnd(dim_lens_b))
                                       : glm::dvec2(0, 0);
-          sum += ray_color(cam.get_ray(u, v, lens), counted, materials, s.sky, rs.max_depth, rnd);
+          sum += ray_color(cam.get_ray(u, v, lens), target, materials, s.sky, rs.max_depth, rnd);
         }
         fb.at(i, y) = divide(sum, rs.spp);
       }

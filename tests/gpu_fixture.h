@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "ci.h"
 #include "gpu/context.h"
 
 namespace rtvk::test {
@@ -15,11 +16,6 @@ inline constexpr const char* lavapipe_icd = "/usr/share/vulkan/icd.d/lvp_icd.x86
 inline std::string test_device() {
   const char* d = std::getenv("RTVK_TEST_DEVICE");
   return d ? d : "";
-}
-
-inline bool in_ci() {
-  const char* ci = std::getenv("CI");
-  return ci && *ci && std::string(ci) != "false" && std::string(ci) != "0";
 }
 
 // Every GPU test: one validated context per test process. A test fails if the validation layer

@@ -30,8 +30,6 @@ class gpu_context {
   // A submission timed out or the device was lost: work may still be running on it, so objects
   // it may touch must not be destroyed (their owners give their handles up instead).
   bool lost() const { return lost_; }
-  const std::vector<device_info>& devices() const { return devices_; }
-  std::size_t chosen() const { return chosen_; }
   VkDevice vk() const { return device_.get(); }
   std::uint32_t validation_messages() const { return instance_.validation_messages(); }
   bool validating() const { return instance_.validating(); }
