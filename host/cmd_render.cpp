@@ -4,7 +4,9 @@
 #include <cstdlib>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "camera.h"
 #include "commands.h"
@@ -17,12 +19,15 @@
 #include "image_io.h"
 #include "interrupt.h"
 #include "memory_check.h"
+#include "partial_image.h"
 #include "progress.h"
 #include "quantize.h"
 #include "render_cpu.h"
+#include "render_jobs.h"
 #include "scene.h"
 #include "scene_file.h"
 #include "scene_flags.h"
+#include "shared_types.h"
 
 namespace rtvk {
 namespace {
@@ -30,7 +35,7 @@ namespace {
 struct render_options {
   std::string scene = "seed";     // built-in scene name or .json file
   std::string backend = "cpu";    // cpu, gpu, auto or both
-  std::string output;             // image path; .png or .ppm
+  job_request jobs;               // cameras, frames, region, samples and the -o pattern
   std::string ppm_format = "P3";  // P3 (ASCII, as the lesson) or P6 (binary)
   std::string device;             // GPU selector: index or name substring
   bool validate = false;          // Vulkan validation layer on
@@ -45,43 +50,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// A finished render: its pixels, the backend's name for the summary, and the time it took.
-struct rendered {
-  image_rgb8 image;     // quantized with the one shared rule
-  std::string backend;  // "cpu" or "gpu (device name)"
-  double seconds = 0;   // rendering only, not set-up or file output
-};
-
 engine_options engine_from(const render_options& o) {
   engine_options e;
   e.use_bvh = o.accel == "bvh";
   e.threads = o.threads;
   e.cancelled = interrupt_requested();
   return e;
-}
-
-rendered draw_cpu(const render_options& o, const camera& cam, const scene& s) {
-  progress_bar bar("rendering on the CPU", cam.image_height(), !o.quiet);
-  const auto start = std::chrono::steady_clock::now();
-  const framebuffer fb = render_cpu(
-      cam, s, s.render, [&](int rows) { bar.update(rows); }, engine_from(o));
-  bar.finish();
-  return {quantize(fb, s.render.gamma), "cpu", seconds_since(start)};
-}
-
-rendered draw_gpu(const render_options& o, gpu::gpu_context& ctx, const camera& cam,
-                  const scene& s) {
-  progress_bar bar("rendering on the GPU", s.render.spp, !o.quiet);
-  const auto start = std::chrono::steady_clock::now();
-  const framebuffer fb = gpu::render_gpu(
-      ctx, cam, s, s.render, [&](int samples) { bar.update(samples); }, engine_from(o));
-  bar.finish();
-  const double seconds = seconds_since(start);
-  if (ctx.validation_messages() > 0)
-    throw std::runtime_error("the Vulkan validation layer reported " +
-                             std::to_string(ctx.validation_messages()) +
-                             " problem(s) (above); no image written");
-  return {quantize(fb, s.render.gamma), "gpu (" + ctx.device().name + ")", seconds};
 }
 
 gpu::gpu_options gpu_options_from(const render_options& o) {
@@ -94,62 +68,141 @@ gpu::gpu_options gpu_options_from(const render_options& o) {
   return g;
 }
 
+// Everything a run shares between its images.
+struct run_context {
+  const render_options& o;
+  const scene& s;
+  const render_window& win;
+  ppm_encoding enc;
+  bool several;  // more than one image: each summary line names its camera and frame
+};
+
+std::string label(const run_context& run, const render_job& job) {
+  if (!run.several && job.frame == 0) return run.s.name;
+  return run.s.name + " [camera " + job.camera_name + ", frame " + std::to_string(job.frame) + "]";
+}
+
 // Writes the image, unless a signal arrived while rendering finished: Ctrl-C means no file.
-void write_unless_interrupted(const image_rgb8& img, const std::string& path, ppm_encoding enc) {
+// .exr keeps the linear floats and the sample range for `rtvk merge`; .png and .ppm quantize.
+void write_job(const run_context& run, const render_job& job, const framebuffer& fb) {
   if (pending_signal() != 0) throw render_cancelled("the render had finished");
-  write_image(img, path, enc);
+  if (format_for_path(job.output, "--output") == file_format::exr) {
+    partial_image p = make_partial(fb, run.win, job.cam.image_width(), job.cam.image_height());
+    p.gamma = run.s.render.gamma;
+    p.fingerprint = job.fingerprint;
+    p.scene = run.s.name;
+    p.camera = job.camera_name;
+    p.frame = job.frame;
+    write_partial_exr(p, job.output);
+  } else {
+    write_image(quantize(fb, run.s.render.gamma), job.output, run.enc);
+  }
 }
 
-void summarize(const render_options& o, const scene& s, const rendered& r) {
-  if (o.quiet) return;
-  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, on %s in %.3f s -> %s\n", s.name.c_str(),
-               r.image.width, r.image.height, s.render.spp, r.backend.c_str(), r.seconds,
-               o.output.c_str());
+void summarize(const run_context& run, const render_job& job, const std::string& backend,
+               double seconds) {
+  if (run.o.quiet) return;
+  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, on %s in %.3f s -> %s\n",
+               label(run, job).c_str(), run.win.width, run.win.height, run.win.samples(),
+               backend.c_str(), seconds, job.output.c_str());
 }
 
-// Deterministic scenes (one sample, no jitter, no lens, normal shading) must agree to a level;
+framebuffer draw_cpu(const run_context& run, const render_job& job) {
+  progress_bar bar("rendering on the CPU", run.win.height, !run.o.quiet);
+  return render_cpu_window(
+      job.cam, run.s, run.s.render, run.win, [&](int rows) { bar.update(rows); },
+      engine_from(run.o));
+}
+
+// One set-up and shared submissions for a group of views (cameras, frames).
+std::vector<framebuffer> draw_gpu(const run_context& run, gpu::gpu_context& ctx,
+                                  std::span<const render_job> jobs) {
+  progress_bar bar("rendering on the GPU", run.win.samples(), !run.o.quiet);
+  std::vector<camera> views;
+  for (const render_job& j : jobs) views.push_back(j.cam);
+  std::vector<framebuffer> fbs = gpu::render_gpu_views(
+      ctx, views, run.s, run.s.render, run.win, [&](int samples) { bar.update(samples); },
+      engine_from(run.o));
+  bar.finish();
+  if (ctx.validation_messages() > 0)
+    throw std::runtime_error("the Vulkan validation layer reported " +
+                             std::to_string(ctx.validation_messages()) +
+                             " problem(s) (above); no image written");
+  return fbs;
+}
+
+// Deterministic renders (one sample, no jitter, no lens, normal shading) must agree to a level;
 // Monte Carlo ones to the noise rule.
-agreement agreement_for(const scene& s, const camera& cam) {
-  bool deterministic = s.render.spp == 1 && !s.render.jitter && cam.lens_radius() == 0;
-  for (const auto& m : s.materials) deterministic &= m.m.type == material_type::normal;
+agreement agreement_for(const run_context& run, const camera& cam) {
+  bool deterministic = run.win.samples() == 1 && !run.s.render.jitter && cam.lens_radius() == 0;
+  for (const auto& m : run.s.materials) deterministic &= m.m.type == material_type::normal;
   return deterministic ? agreement{} : monte_carlo_agreement;
 }
 
 // --backend both: the GPU image is written; the exit status says whether the CPU agrees.
-int render_both(const render_options& o, const camera& cam, const scene& s, ppm_encoding enc) {
-  gpu::gpu_context ctx(gpu_options_from(o));
-  const rendered gpu_image = draw_gpu(o, ctx, cam, s);
-  const rendered cpu_image = draw_cpu(o, cam, s);
-  const agreement rule = agreement_for(s, cam);
-  const image_difference d = compare_images(gpu_image.image, cpu_image.image, rule.tolerance);
-  write_unless_interrupted(gpu_image.image, o.output, enc);
-  summarize(o, s, gpu_image);
+bool check_against_cpu(const run_context& run, const render_job& job, const framebuffer& gpu_fb) {
+  const auto start = std::chrono::steady_clock::now();
+  const framebuffer cpu_fb = draw_cpu(run, job);
+  const double cpu_seconds = seconds_since(start);
+  const agreement rule = agreement_for(run, job.cam);
+  const image_difference d = compare_images(quantize(gpu_fb, run.s.render.gamma),
+                                            quantize(cpu_fb, run.s.render.gamma), rule.tolerance);
   const bool ok = agrees(d, rule);
   std::fprintf(stderr,
-               "rtvk: gpu vs cpu (%.3f s): %s -- PSNR %.1f dB, max %d levels, mean %.4f, %.4f%% "
+               "rtvk: %sgpu vs cpu (%.3f s): %s -- PSNR %.1f dB, max %d levels, mean %.4f, %.4f%% "
                "of pixels over %d (allowed %.2f%%)\n",
-               cpu_image.seconds, ok ? "alike" : "DIFFERENT", d.psnr_db, d.max_abs, d.mean_abs,
-               100 * d.share_over, rule.tolerance, 100 * rule.max_share);
-  return ok ? 0 : 1;
+               run.several ? (label(run, job) + ": ").c_str() : "", cpu_seconds,
+               ok ? "alike" : "DIFFERENT", d.psnr_db, d.max_abs, d.mean_abs, 100 * d.share_over,
+               rule.tolerance, 100 * rule.max_share);
+  return ok;
+}
+
+// Views per GPU set-up: as many as the shader's camera array holds, within a quarter GiB of
+// host framebuffers.
+std::size_t gpu_group_size(const render_window& win) {
+  const std::uint64_t per_view = std::uint64_t(win.width) * std::uint64_t(win.height) * 24;
+  return std::size_t(std::clamp<std::uint64_t>((256ull << 20) / per_view, 1, RTVK_MAX_VIEWS));
+}
+
+int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
+                  const std::vector<render_job>& jobs) {
+  const std::string backend = "gpu (" + ctx.device().name + ")";
+  const std::size_t group = gpu_group_size(run.win);
+  bool all_alike = true;
+  for (std::size_t first = 0; first < jobs.size(); first += group) {
+    const std::span<const render_job> part(jobs.data() + first,
+                                           std::min(group, jobs.size() - first));
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<framebuffer> fbs = draw_gpu(run, ctx, part);
+    const double seconds = seconds_since(start);
+    for (std::size_t k = 0; k < part.size(); ++k) {
+      if (run.o.backend == "both") all_alike &= check_against_cpu(run, part[k], fbs[k]);
+      write_job(run, part[k], fbs[k]);
+      summarize(run, part[k], part.size() > 1 ? backend + ", " + std::to_string(part.size()) +
+                                                    " views together"
+                                              : backend,
+                seconds);
+    }
+  }
+  return all_alike ? 0 : 1;
 }
 
 int run_render(render_options o) {
   const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
-  check_output_path(o.output, "--output");
   if (!o.device.empty() && o.backend == "cpu")
     throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");
   scene s = load_scene(o.scene);
   check_scene(s);
-  o.flags.apply(s);
-  const camera cam = o.flags.make_camera(s, o.scene);
-  check_render_memory(cam.image_width(), cam.image_height(), o.backend == "both" ? 2 : 1);
-  const ppm_encoding enc = o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3;
+  render_window win;
+  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, o.flags, win);
+  const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win);
+  check_render_memory(win.width, win.height,
+                      int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));
+  const run_context run{o, s, win,
+                        o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3,
+                        jobs.size() > 1};
 
-  if (o.backend == "both") return render_both(o, cam, s, enc);
-  std::optional<rendered> result;
-  if (o.backend == "cpu") {
-    result = draw_cpu(o, cam, s);
-  } else {
+  if (o.backend != "cpu") {
     std::unique_ptr<gpu::gpu_context> ctx;
     try {
       ctx = std::make_unique<gpu::gpu_context>(gpu_options_from(o));
@@ -157,10 +210,15 @@ int run_render(render_options o) {
       if (o.backend != "auto") throw;
       std::fprintf(stderr, "rtvk: note: no Vulkan device (%s); rendering on the CPU\n", e.what());
     }
-    result = ctx ? draw_gpu(o, *ctx, cam, s) : draw_cpu(o, cam, s);
+    if (ctx) return render_on_gpu(run, *ctx, jobs);
   }
-  write_unless_interrupted(result->image, o.output, enc);
-  summarize(o, s, *result);
+  for (const render_job& job : jobs) {
+    const auto start = std::chrono::steady_clock::now();
+    const framebuffer fb = draw_cpu(run, job);
+    const double seconds = seconds_since(start);
+    write_job(run, job, fb);
+    summarize(run, job, "cpu", seconds);
+  }
   return 0;
 }
 
@@ -177,7 +235,24 @@ command_action add_render_command(CLI::App& app) {
                   "both (gpu, checked against cpu)")
       ->check(CLI::IsMember({"cpu", "gpu", "auto", "both"}))
       ->capture_default_str();
-  cmd->add_option("-o,--output", o->output, "Output image (.png or .ppm)")->required();
+  cmd->add_option("-o,--output", o->jobs.output,
+                  "Output image: .png, .ppm, or .exr (linear float with the sample range, for "
+                  "rtvk merge); {camera}, {frame} and {frame:04} are filled in")
+      ->required();
+  cmd->add_option("--camera", o->jobs.cameras,
+                  "Camera of the scene to render (repeatable), or all; default: the first")
+      ->type_name("NAME|all");
+  cmd->add_option("--frames", o->jobs.frames,
+                  "Animation frames A:B (A up to, not including, B) or one frame N; default 0")
+      ->type_name("A:B|N");
+  cmd->add_option("--fps", o->jobs.fps, "Frames per second: frame f shows time f / fps")
+      ->capture_default_str();
+  cmd->add_option("--region", o->jobs.region,
+                  "Render only this rectangle of the image: x,y,w,h in pixels from the top left")
+      ->type_name("X,Y,W,H");
+  cmd->add_option("--samples", o->jobs.samples,
+                  "Render only samples A:B of each pixel's --spp (for splitting a render)")
+      ->type_name("A:B");
   cmd->add_option("--ppm-format", o->ppm_format, "PPM flavour: P3 (ASCII) or P6 (binary)")
       ->transform(CLI::IsMember({"P3", "P6"}, CLI::ignore_case))
       ->capture_default_str();

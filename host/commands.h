@@ -13,5 +13,6 @@ command_action add_compare_command(CLI::App& app);
 command_action add_devices_command(CLI::App& app);
 command_action add_scene_command(CLI::App& app);
 command_action add_bench_command(CLI::App& app);
+command_action add_merge_command(CLI::App& app);
 
 }  // namespace rtvk

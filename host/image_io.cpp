@@ -26,12 +26,15 @@ file_format format_for_path(const fs::path& path, const std::string& flag) {
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == ".ppm") return file_format::ppm;
   if (ext == ".png") return file_format::png;
+  if (ext == ".exr") return file_format::exr;
   throw usage_error(flag + ": unknown image extension in '" + path.string() +
-                    "' (expected .png or .ppm)");
+                    "' (expected .png, .ppm or .exr)");
 }
 
-void check_output_path(const fs::path& path, const std::string& flag) {
-  format_for_path(path, flag);
+void check_output_path(const fs::path& path, const std::string& flag, bool float_ok) {
+  if (format_for_path(path, flag) == file_format::exr && !float_ok)
+    throw usage_error(flag + ": '" + path.string() +
+                      "': OpenEXR is for rtvk render and rtvk merge; use .png or .ppm");
   const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
@@ -77,6 +80,9 @@ std::string encode_png(const image_rgb8& img) {
 
 void write_image(const image_rgb8& img, const fs::path& path, ppm_encoding enc) {
   const file_format fmt = format_for_path(path, "output");
+  if (fmt == file_format::exr)
+    throw std::logic_error("write_image: " + path.string() + ": 8-bit images are not written as "
+                           "OpenEXR; write a partial_image");
   write_file_atomically(path, fmt == file_format::png ? encode_png(img) : encode_ppm(img, enc));
 }
 

@@ -6,16 +6,18 @@
 
 namespace rtvk {
 
-enum class file_format { ppm, png };
+enum class file_format { ppm, png, exr };
 enum class ppm_encoding { ascii_p3, binary_p6 };
 
-// The format for an output path, from its extension (.ppm or .png, any case).
+// The format for an output path, from its extension (.ppm, .png or .exr, any case).
 // Throws usage_error naming the flag and the path for anything else.
 file_format format_for_path(const std::filesystem::path& path, const std::string& flag);
 
 // Checks, before any work is done, that `path` can be written: known extension, existing folder.
 // Throws usage_error naming the flag and the value.
-void check_output_path(const std::filesystem::path& path, const std::string& flag);
+// .exr only where `float_ok` (linear float output: rtvk render and rtvk merge).
+void check_output_path(const std::filesystem::path& path, const std::string& flag,
+                       bool float_ok = false);
 
 std::string encode_ppm(const image_rgb8& img, ppm_encoding enc);
 std::string encode_png(const image_rgb8& img);

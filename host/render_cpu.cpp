@@ -3,6 +3,8 @@
 #include <atomic>
 #include <chrono>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "bvh.h"
@@ -41,17 +43,41 @@ int worker_threads(int threads) {
   return int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+void check_window(const render_window& w, int width, int height) {
+  auto fail = [&](const std::string& what) {
+    throw std::invalid_argument("region " + std::to_string(w.x) + "," + std::to_string(w.y) + "," +
+                                std::to_string(w.width) + "," + std::to_string(w.height) + " " +
+                                what + " of the " + std::to_string(width) + "x" +
+                                std::to_string(height) + " image");
+  };
+  if (w.width < 1 || w.height < 1) fail("is empty: it needs a width and height >= 1");
+  if (w.x < 0 || w.y < 0 || w.x > width - w.width || w.y > height - w.height) fail("reaches outside");
+  if (w.sample_begin < 0 || w.sample_end <= w.sample_begin || w.sample_end > max_spp)
+    throw std::invalid_argument("sample range " + std::to_string(w.sample_begin) + ":" +
+                                std::to_string(w.sample_end) + " is empty or outside [0, " +
+                                std::to_string(max_spp) + "]");
+}
+
 framebuffer render_cpu(const camera& cam, const scene& s, const render_settings& rs,
                        const progress_callback& progress, const engine_options& engine,
                        render_stats* stats) {
+  return render_cpu_window(cam, s, rs,
+                           whole_render(cam.image_width(), cam.image_height(), rs.spp), progress,
+                           engine, stats);
+}
+
+framebuffer render_cpu_window(const camera& cam, const scene& s, const render_settings& rs,
+                              const render_window& win, const progress_callback& progress,
+                              const engine_options& engine, render_stats* stats) {
   const int width = cam.image_width();
   const int height = cam.image_height();
+  check_window(win, width, height);
   const auto build_start = std::chrono::steady_clock::now();
   const std::unique_ptr<hittable> world = make_accelerated_world(s, engine.use_bvh);
   const double build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
   const std::vector<material> materials = scene_materials(s);
-  framebuffer fb(width, height);
+  framebuffer fb(win.width, win.height);
   std::atomic<int> next_row{0}, rows_done{0};
   std::atomic<std::uint64_t> rays{0};
 
@@ -59,12 +85,14 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
     const counting_world counted(*world);
     // Counting costs a virtual call per ray: only when someone asked for it.
     const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
-    int y;
-    while (!(engine.cancelled && engine.cancelled()) && (y = next_row.fetch_add(1)) < height) {
+    int row;
+    while (!(engine.cancelled && engine.cancelled()) &&
+           (row = next_row.fetch_add(1)) < win.height) {
+      const int y = win.y + row;
       const int j = height - 1 - y;  // the lesson counts rows from the bottom
-      for (int i = 0; i < width; ++i) {
+      for (int i = win.x; i < win.x + win.width; ++i) {
         color sum(0, 0, 0);
-        for (int sample = 0; sample < rs.spp; ++sample) {
+        for (int sample = win.sample_begin; sample < win.sample_end; ++sample) {
           const random_stream rnd{rs.seed,
                                   std::uint32_t(y) * std::uint32_t(width) + std::uint32_t(i),
                                   std::uint32_t(sample), 0};
@@ -75,7 +103,7 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
                                       : glm::dvec2(0, 0);
           sum += ray_color(cam.get_ray(u, v, lens), target, materials, s.sky, rs.max_depth, rnd);
         }
-        fb.at(i, y) = divide(sum, rs.spp);
+        fb.at(i - win.x, row) = divide(sum, win.samples());
       }
       const int done = rows_done.fetch_add(1) + 1;
       if (reports_progress && progress) progress(done);
@@ -84,13 +112,13 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
   };
 
   std::vector<std::thread> helpers;
-  const int threads = std::min(worker_threads(engine.threads), height);
+  const int threads = std::min(worker_threads(engine.threads), win.height);
   for (int t = 1; t < threads; ++t) helpers.emplace_back(render_rows, false);
   render_rows(true);
   for (auto& t : helpers) t.join();
-  if (rows_done.load() < height)
+  if (rows_done.load() < win.height)
     throw render_cancelled("stopped after " + std::to_string(rows_done.load()) + " of " +
-                           std::to_string(height) + " rows");
+                           std::to_string(win.height) + " rows");
   if (stats) {
     stats->rays = rays.load();
     stats->build_seconds = build_seconds;

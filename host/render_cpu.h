@@ -1,5 +1,6 @@
 #pragma once
 #include <functional>
+#include <string>
 
 #include "camera.h"
 #include "framebuffer.h"
@@ -24,6 +25,18 @@ using progress_callback = std::function<void(int rows_done)>;
 framebuffer render_cpu(const camera& cam, const scene& s, const render_settings& rs,
                        const progress_callback& progress = {}, const engine_options& engine = {},
                        render_stats* stats = nullptr);
+
+// The same for part of the image and of the samples: the framebuffer is win.width x win.height
+// and holds the mean of samples [win.sample_begin, win.sample_end) of those pixels, each computed
+// exactly as the whole render computes it. Throws std::invalid_argument for a window outside the
+// image or an empty sample range; rs.spp is not used.
+framebuffer render_cpu_window(const camera& cam, const scene& s, const render_settings& rs,
+                              const render_window& win, const progress_callback& progress = {},
+                              const engine_options& engine = {}, render_stats* stats = nullptr);
+
+// Throws std::invalid_argument unless `win` lies inside a width x height image and draws at least
+// one sample.
+void check_window(const render_window& win, int width, int height);
 
 // The number of worker threads `threads` asks for (0: one per core).
 int worker_threads(int threads);

@@ -15,6 +15,26 @@ struct render_settings {
   bool jitter = false;         // random sample positions inside each pixel (antialiasing)
 };
 
+// The part of a render that one run draws: a rectangle of the image and a range of each pixel's
+// sample indices. Every pixel's random numbers depend only on (seed, pixel, sample, ...), so
+// pieces drawn apart -- on other machines -- and merged equal the whole render.
+struct render_window {
+  int x = 0;             // left column, pixels from the image's left edge
+  int y = 0;             // top row, pixels from the image's top edge
+  int width = 0;         // pixels
+  int height = 0;        // pixels
+  int sample_begin = 0;  // first sample index drawn
+  int sample_end = 0;    // one past the last sample index drawn
+
+  int samples() const { return sample_end - sample_begin; }
+  bool operator==(const render_window&) const = default;
+};
+
+// The whole image, every sample.
+inline render_window whole_render(int image_width, int image_height, int spp) {
+  return {0, 0, image_width, image_height, 0, spp};
+}
+
 // How a backend does the work, as opposed to what it draws: none of this changes the image.
 struct engine_options {
   bool use_bvh = true;                // false: test every sphere for every ray (--accel none)
@@ -32,6 +52,7 @@ struct engine_options {
 struct render_stats {
   std::uint64_t rays = 0;    // rays traced: camera rays plus scattered rays
   double build_seconds = 0;  // of the render's time, building the BVH
+  int submissions = 0;       // GPU: command buffers submitted (all views of a group share each)
 };
 
 inline constexpr int max_spp = 1 << 20;        // samples per pixel

@@ -49,11 +49,12 @@ render_settings book_render(int width, double aspect, int spp) {
 scene materials_scene() {
   scene s;
   s.name = "materials";
-  s.camera.lookfrom = point3(3, 3, 2);
-  s.camera.lookat = point3(0, 0, -1);
-  s.camera.vfov = 20;
-  s.camera.aperture = 2.0;
-  s.camera.focus_dist = glm::length(s.camera.lookfrom - s.camera.lookat);
+  camera_pose& c = main_camera(s).pose;
+  c.lookfrom = point3(3, 3, 2);
+  c.lookat = point3(0, 0, -1);
+  c.vfov = 20;
+  c.aperture = 2.0;
+  c.focus_dist = glm::length(c.lookfrom - c.lookat);
   s.render = book_render(400, 16.0 / 9.0, 100);
   s.materials = {{"ground", lambertian(color(0.8, 0.8, 0.0))},
                  {"center", lambertian(color(0.1, 0.2, 0.5))},
@@ -72,11 +73,12 @@ scene materials_scene() {
 scene book_final_scene() {
   scene s;
   s.name = "book-final";
-  s.camera.lookfrom = point3(13, 2, 3);
-  s.camera.lookat = point3(0, 0, 0);
-  s.camera.vfov = 20;
-  s.camera.aperture = 0.1;
-  s.camera.focus_dist = 10;
+  camera_pose& c = main_camera(s).pose;
+  c.lookfrom = point3(13, 2, 3);
+  c.lookat = point3(0, 0, 0);
+  c.vfov = 20;
+  c.aperture = 0.1;
+  c.focus_dist = 10;
   s.render = book_render(1200, 3.0 / 2.0, 500);
 
   std::uint32_t counter = 0;
@@ -168,6 +170,21 @@ std::vector<material> scene_materials(const scene& s) {
 }
 
 void check_scene(const scene& s) {
+  if (s.cameras.empty()) throw usage_error(s.name + ": the scene has no camera");
+  for (std::size_t i = 0; i < s.cameras.size(); ++i) {
+    const named_camera& c = s.cameras[i];
+    if (!valid_camera_name(c.name))
+      throw usage_error(s.name + ": camera " + std::to_string(i) + ": name \"" + c.name +
+                        "\" is not a valid camera name");
+    for (std::size_t k = 0; k < i; ++k)
+      if (s.cameras[k].name == c.name)
+        throw usage_error(s.name + ": two cameras are named \"" + c.name + "\"");
+    try {
+      check_camera_path(c.path);
+    } catch (const std::invalid_argument& e) {
+      throw usage_error(s.name + ": camera " + c.name + ": " + e.what());
+    }
+  }
   for (std::size_t i = 0; i < s.spheres.size(); ++i) {
     const sphere& sp = s.spheres[i];
     const std::string where = s.name + ": sphere " + std::to_string(i);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "camera.h"
+#include "camera_path.h"
 #include "hittable_list.h"
 #include "material.h"
 #include "render_settings.h"
@@ -19,6 +20,11 @@ struct sky {
   color zenith{0.5, 0.7, 1.0};   // ...this along +y
 };
 
+struct named_camera {
+  std::string name;  // how --camera and {camera} in -o refer to it
+  camera_path path;  // where it stands at each time
+};
+
 struct named_material {
   std::string name;  // how spheres refer to it in scene files
   material m;        // its optics
@@ -28,7 +34,8 @@ struct named_material {
 // packs the same spheres and materials into storage buffers.
 struct scene {
   std::string name;                       // built-in name or the file it came from
-  camera_pose camera;                     // where the camera stands; the lesson's by default
+  std::vector<named_camera> cameras{{"default", {}}};  // at least one; the first is the
+                                                      // default; the lesson's camera unless set
   render_settings render;                 // default image size, samples, depth, ...
   rtvk::sky sky;                          // what rays that escape see
   std::vector<named_material> materials;  // spheres index into this
@@ -37,6 +44,14 @@ struct scene {
 
 hittable_list make_world(const scene& s);
 std::vector<material> scene_materials(const scene& s);
+
+// The first camera's path: the one a render uses unless --camera picks others.
+inline camera_path& main_camera(scene& s) {
+  return s.cameras.front().path;
+}
+inline const camera_path& main_camera(const scene& s) {
+  return s.cameras.front().path;
+}
 
 // Throws usage_error when a sphere names a material that does not exist or has a radius that is
 // not finite and > 0, naming the sphere.

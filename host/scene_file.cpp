@@ -99,9 +99,17 @@ class scene_reader {
   std::string file_;  // named in every message
 };
 
-camera_pose read_camera(const scene_reader& r, const json& j) {
-  const std::string p = "/camera";
-  r.only_fields(j, p, {"lookfrom", "lookat", "vup", "vfov", "aperture", "focus_dist"});
+std::string escape_pointer(const std::string& key) {
+  std::string out;
+  for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+  return out;
+}
+
+const std::set<std::string> pose_fields = {"lookfrom", "lookat", "vup",
+                                           "vfov",     "aperture", "focus_dist"};
+
+// The pose fields of `j` over the defaults; the caller has checked which fields may appear.
+camera_pose read_pose(const scene_reader& r, const json& j, const std::string& p) {
   camera_pose c;
   if (j.contains("lookfrom")) c.lookfrom = r.vector3(j["lookfrom"], p + "/lookfrom");
   if (j.contains("lookat")) c.lookat = r.vector3(j["lookat"], p + "/lookat");
@@ -110,6 +118,78 @@ camera_pose read_camera(const scene_reader& r, const json& j) {
   if (j.contains("aperture")) c.aperture = r.number(j["aperture"], p + "/aperture");
   if (j.contains("focus_dist")) c.focus_dist = r.number(j["focus_dist"], p + "/focus_dist");
   return c;
+}
+
+std::vector<camera_keyframe> read_keyframes(const scene_reader& r, const json& j,
+                                            const std::string& p) {
+  if (!j.is_array() || j.empty())
+    r.fail(p, "expected a non-empty array of keyframes, got " + r.type_of(j));
+  std::vector<camera_keyframe> keys;
+  for (std::size_t k = 0; k < j.size(); ++k) {
+    const std::string kp = p + "/" + std::to_string(k);
+    std::set<std::string> fields = pose_fields;
+    fields.insert("time");
+    r.only_fields(j[k], kp, fields);
+    const double time = r.number(r.required(j[k], kp, "time"), kp + "/time");
+    if (k > 0 && !(time > keys.back().time))
+      r.fail(kp + "/time", "expected a time after the previous keyframe's " +
+                               format_number(keys.back().time) + ", got " + format_number(time));
+    keys.push_back({time, read_pose(r, j[k], kp)});
+  }
+  return keys;
+}
+
+// A camera: a pose, optionally turning ("orbit"), or a list of keyframes instead of a pose.
+camera_path read_camera(const scene_reader& r, const json& j, const std::string& p) {
+  std::set<std::string> fields = pose_fields;
+  fields.insert({"orbit", "keyframes"});
+  r.only_fields(j, p, fields);
+  camera_path path;
+  if (j.contains("keyframes")) {
+    for (const auto& [key, value] : j.items())
+      if (key != "keyframes")
+        r.fail(p + "/" + key, "a camera with keyframes takes its pose from them; move \"" + key +
+                                  "\" into the keyframes");
+    path.motion = camera_motion::keyframes;
+    path.keyframes = read_keyframes(r, j["keyframes"], p + "/keyframes");
+  } else {
+    path.pose = read_pose(r, j, p);
+    if (j.contains("orbit")) {
+      const json& o = j["orbit"];
+      r.only_fields(o, p + "/orbit", {"period"});
+      path.motion = camera_motion::orbit;
+      path.orbit_period = r.number(r.required(o, p + "/orbit", "period"), p + "/orbit/period");
+      if (path.orbit_period <= 0)
+        r.fail(p + "/orbit/period",
+               "expected seconds per turn > 0, got " + format_number(path.orbit_period));
+    }
+  }
+  try {
+    check_camera_path(path);
+  } catch (const std::invalid_argument& e) {
+    r.fail(p, e.what());
+  }
+  return path;
+}
+
+std::vector<named_camera> read_cameras(const scene_reader& r, const json& root) {
+  if (root.contains("camera") && root.contains("cameras"))
+    r.fail("/cameras", "a scene has either \"camera\" (one) or \"cameras\" (named), not both");
+  if (root.contains("camera")) return {{"default", read_camera(r, root["camera"], "/camera")}};
+  std::vector<named_camera> cams;
+  if (!root.contains("cameras")) return {{"default", {}}};
+  const json& j = root["cameras"];
+  if (!j.is_object() || j.empty())
+    r.fail("/cameras", "expected an object of named cameras, got " +
+                           (j.is_object() ? std::string("an empty one") : r.type_of(j)));
+  for (const auto& [name, value] : j.items()) {
+    const std::string p = "/cameras/" + escape_pointer(name);
+    if (!valid_camera_name(name))
+      r.fail(p, "camera names may use letters, digits, '-', '_' and '.' (not first), at most 64 "
+                "characters, and not \"all\"");
+    cams.push_back({name, read_camera(r, value, p)});
+  }
+  return cams;
 }
 
 render_settings read_render(const scene_reader& r, const json& j) {
@@ -171,17 +251,12 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
   return m;
 }
 
-std::string escape_pointer(const std::string& key) {
-  std::string out;
-  for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-  return out;
-}
 
 scene read_scene(const scene_reader& r, const json& root, const std::string& name) {
-  r.only_fields(root, "", {"camera", "render", "sky", "materials", "spheres"});
+  r.only_fields(root, "", {"camera", "cameras", "render", "sky", "materials", "spheres"});
   scene s;
   s.name = name;
-  if (root.contains("camera")) s.camera = read_camera(r, root["camera"]);
+  s.cameras = read_cameras(r, root);
   if (root.contains("render")) s.render = read_render(r, root["render"]);
   if (root.contains("sky")) {
     const json& j = root["sky"];
@@ -223,15 +298,36 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
   }
 
   try {
-    camera(s.camera, s.render.aspect, s.render.width);
+    camera(camera_pose{}, s.render.aspect, s.render.width);  // the image size, alone
   } catch (const std::invalid_argument& e) {
-    r.fail("/camera", e.what());
+    r.fail("/render", e.what());
   }
   return s;
 }
 
 json vec_json(const vec3& v) {
   return json::array({v.x, v.y, v.z});
+}
+
+json pose_json(const camera_pose& c) {
+  return {{"lookfrom", vec_json(c.lookfrom)}, {"lookat", vec_json(c.lookat)},
+          {"vup", vec_json(c.vup)},           {"vfov", c.vfov},
+          {"aperture", c.aperture},           {"focus_dist", c.focus_dist}};
+}
+
+json camera_json(const camera_path& path) {
+  if (path.motion == camera_motion::keyframes) {
+    json keys = json::array();
+    for (const camera_keyframe& k : path.keyframes) {
+      json key = {{"time", k.time}};
+      key.update(pose_json(k.pose));
+      keys.push_back(key);
+    }
+    return {{"keyframes", keys}};
+  }
+  json j = pose_json(path.pose);
+  if (path.motion == camera_motion::orbit) j["orbit"] = {{"period", path.orbit_period}};
+  return j;
 }
 
 // Pretty-prints with anything that fits on one line kept on one line: a sphere or a vector
@@ -287,10 +383,13 @@ scene load_scene_file(const std::filesystem::path& path) {
 
 std::string dump_scene_json(const scene& s) {
   json root;
-  const camera_pose& c = s.camera;
-  root["camera"] = {{"lookfrom", vec_json(c.lookfrom)}, {"lookat", vec_json(c.lookat)},
-                    {"vup", vec_json(c.vup)},           {"vfov", c.vfov},
-                    {"aperture", c.aperture},           {"focus_dist", c.focus_dist}};
+  if (s.cameras.size() == 1 && s.cameras[0].name == "default") {
+    root["camera"] = camera_json(s.cameras[0].path);
+  } else {
+    json cams = json::object();
+    for (const named_camera& c : s.cameras) cams[c.name] = camera_json(c.path);
+    root["cameras"] = cams;
+  }
   const render_settings& r = s.render;
   root["render"] = {{"width", r.width},         {"aspect", r.aspect}, {"spp", r.spp},
                     {"max_depth", r.max_depth}, {"seed", r.seed},     {"gamma", r.gamma},

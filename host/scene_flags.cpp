@@ -43,6 +43,10 @@ void scene_flags::add_to(CLI::App& cmd) {
   aperture_opt_ =
       cmd.add_option("--aperture", aperture_, "Lens diameter (0: pinhole)")->group(group);
   focus_dist_opt_ = cmd.add_option("--focus-dist", focus_dist_, "Distance in focus")->group(group);
+  orbit_opt_ = cmd.add_option("--orbit", orbit_,
+                              "Turn the camera about the up axis through its look-at point, one "
+                              "turn in this many seconds (the built-in orbit path)")
+                   ->group(group);
 }
 
 void scene_flags::apply(scene& s) const {
@@ -52,24 +56,38 @@ void scene_flags::apply(scene& s) const {
   if (given(spp_opt_)) r.spp = spp_;
   if (given(depth_opt_)) r.max_depth = depth_;
   if (given(seed_opt_)) r.seed = std::uint32_t(seed_);
-  camera_pose& c = s.camera;
-  if (given(lookfrom_opt_)) c.lookfrom = parse_vec3(lookfrom_, "--lookfrom");
-  if (given(lookat_opt_)) c.lookat = parse_vec3(lookat_, "--lookat");
-  if (given(vup_opt_)) c.vup = parse_vec3(vup_, "--vup");
-  if (given(vfov_opt_))
-    c.vfov = checked(vfov_, vfov_ > 0 && vfov_ < 180, "--vfov", "in (0, 180) degrees");
-  if (given(aperture_opt_)) c.aperture = checked(aperture_, aperture_ >= 0, "--aperture", ">= 0");
-  if (given(focus_dist_opt_))
-    c.focus_dist = checked(focus_dist_, focus_dist_ > 0, "--focus-dist", "> 0");
+  const bool pose_flags = given(lookfrom_opt_) || given(lookat_opt_) || given(vup_opt_) ||
+                          given(vfov_opt_) || given(aperture_opt_) || given(focus_dist_opt_);
+  for (named_camera& cam : s.cameras) {
+    if (cam.path.motion == camera_motion::keyframes && (pose_flags || given(orbit_opt_)))
+      throw usage_error(std::string(given(orbit_opt_) ? "--orbit" : "a camera pose flag") +
+                        ": camera " + cam.name + " of " + s.name +
+                        " moves by keyframes; pick another with --camera or edit its keyframes");
+    camera_pose& c = cam.path.pose;
+    if (given(lookfrom_opt_)) c.lookfrom = parse_vec3(lookfrom_, "--lookfrom");
+    if (given(lookat_opt_)) c.lookat = parse_vec3(lookat_, "--lookat");
+    if (given(vup_opt_)) c.vup = parse_vec3(vup_, "--vup");
+    if (given(vfov_opt_))
+      c.vfov = checked(vfov_, vfov_ > 0 && vfov_ < 180, "--vfov", "in (0, 180) degrees");
+    if (given(aperture_opt_))
+      c.aperture = checked(aperture_, aperture_ >= 0, "--aperture", ">= 0");
+    if (given(focus_dist_opt_))
+      c.focus_dist = checked(focus_dist_, focus_dist_ > 0, "--focus-dist", "> 0");
+    if (given(orbit_opt_)) {
+      cam.path.motion = camera_motion::orbit;
+      cam.path.orbit_period = checked(orbit_, orbit_ > 0, "--orbit", "> 0 seconds");
+    }
+  }
 }
 
-camera scene_flags::make_camera(const scene& s, const std::string& scene_name) const {
+camera scene_flags::make_camera(const scene& s, const camera_pose& pose,
+                                const std::string& what) const {
   try {
-    return camera(s.camera, s.render.aspect, s.render.width);
+    return camera(pose, s.render.aspect, s.render.width);
   } catch (const std::invalid_argument& e) {
     const std::string aspect = given(aspect_opt_) ? aspect_ : format_number(s.render.aspect);
     throw usage_error("--width " + std::to_string(s.render.width) + " / --aspect " + aspect +
-                      " / camera of " + scene_name + ": " + e.what());
+                      " / " + what + ": " + e.what());
   }
 }
 

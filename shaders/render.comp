@@ -1,13 +1,17 @@
 #version 450
-// One invocation per pixel draws one sample (pc.sample_index) and adds it to the pixel's sum;
-// the host dispatches once per sample, so no invocation comes near lavapipe's loop cap.
+// One invocation per pixel and view draws one sample (pc.sample_index) and adds it to the pixel's
+// sum; the host dispatches once per sample, so no invocation comes near lavapipe's loop cap.
+// The dispatch's z index is the view: every camera (or animation frame) of a group shares the
+// scene buffers and the dispatch.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 
 // The host picks the workgroup size from the device's limits (specialization constants 0, 1).
 layout(local_size_x_id = 0, local_size_y_id = 1, local_size_z = 1) in;
 
-layout(std140, set = 0, binding = RTVK_BINDING_CAMERA) uniform camera_block { camera_ubo cam; };
+layout(std140, set = 0, binding = RTVK_BINDING_CAMERA) uniform camera_block {
+  camera_ubo cams[RTVK_MAX_VIEWS];
+};
 layout(std430, set = 0, binding = RTVK_BINDING_SPHERES) readonly buffer sphere_block {
   gpu_sphere spheres[];
 };
@@ -30,9 +34,12 @@ layout(push_constant) uniform push_block { render_push pc; };
 #include "shading.glsl"
 
 void main() {
-  // x from the left, y from the top of the image; the dispatch covers one band of rows.
-  uvec2 pixel = uvec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y + pc.band_y0);
-  if (pixel.x >= cam.image_width || gl_GlobalInvocationID.y >= pc.band_rows) return;
+  // x from the left, y from the top of the image; the dispatch covers one band of rows of the
+  // region, for every view.
+  if (gl_GlobalInvocationID.x >= pc.region_width || gl_GlobalInvocationID.y >= pc.band_rows) return;
+  uint view = gl_GlobalInvocationID.z;
+  camera_ubo cam = cams[view];
+  uvec2 pixel = uvec2(gl_GlobalInvocationID.x + pc.region_x0, gl_GlobalInvocationID.y + pc.band_y0);
 
   uint j = cam.image_height - 1u - pixel.y;  // the lesson counts rows from the bottom
   random_stream s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, pc.sample_index, 0u);
@@ -50,7 +57,8 @@ void main() {
     return;
   }
 
-  uint index = gl_GlobalInvocationID.y * cam.image_width + pixel.x;  // within the band
+  // within the view's band
+  uint index = (view * pc.band_rows + gl_GlobalInvocationID.y) * pc.region_width + gl_GlobalInvocationID.x;
   if (pc.count_rays != 0u) ray_count[index] += rays;
   uint base = 3u * index;
   rgb[base + 0u] += c.r;

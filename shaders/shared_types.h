@@ -16,7 +16,7 @@ using uint = std::uint32_t;
 #endif
 
 // Descriptor bindings, set 0.
-#define RTVK_BINDING_CAMERA 0     // uniform buffer: camera_ubo
+#define RTVK_BINDING_CAMERA 0     // uniform buffer: camera_ubo[RTVK_MAX_VIEWS], one per view
 #define RTVK_BINDING_SPHERES 1    // storage buffer: gpu_sphere[]
 #define RTVK_BINDING_IMAGE 2      // storage buffer: float RGB sums per pixel of one band of rows
 #define RTVK_BINDING_MATERIALS 3  // storage buffer: gpu_material[]
@@ -25,6 +25,10 @@ using uint = std::uint32_t;
 #define RTVK_BINDING_BVH_NODES 6  // storage buffer: bvh_node[]
 #define RTVK_BINDING_BVH_INDEX 7  // storage buffer: uint[], leaf slot -> sphere index
 #define RTVK_BINDING_RAY_COUNT 8  // storage buffer: uint[], rays traced per pixel of the band
+
+// Views (cameras, animation frames) one dispatch draws, its z index picking the view: 128 camera
+// blocks are 12 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
+#define RTVK_MAX_VIEWS 128
 
 #define RTVK_BVH_STACK 64  // traversal stack entries; the builder keeps the tree shallower
 
@@ -97,6 +101,8 @@ struct render_push {
   uint count_rays;    // 1: add the rays each invocation traces to its pixel's counter
   uint band_y0;       // first image row of this band: the image buffers hold rows band_y0 on
   uint band_rows;     // rows in this band
+  uint region_x0;     // first image column drawn
+  uint region_width;  // columns drawn; the image buffers hold, per view, band_rows x this
 };
 
 // std430: written by the shader when something went wrong.
@@ -162,7 +168,10 @@ static_assert(offsetof(render_push, use_bvh) == 48);
 static_assert(offsetof(render_push, count_rays) == 52);
 static_assert(offsetof(render_push, band_y0) == 56);
 static_assert(offsetof(render_push, band_rows) == 60);
-static_assert(sizeof(render_push) == 64 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, region_x0) == 64);
+static_assert(offsetof(render_push, region_width) == 68);
+static_assert(sizeof(render_push) == 72 && sizeof(render_push) <= 128);
+static_assert(RTVK_MAX_VIEWS * sizeof(camera_ubo) <= 16384);
 static_assert(offsetof(bvh_node, bounds_min) == 0);
 static_assert(offsetof(bvh_node, first) == 12);
 static_assert(offsetof(bvh_node, bounds_max) == 16);

@@ -15,7 +15,7 @@ namespace {
 
 // Camera rays of the book-final view, from the same random numbers every run.
 std::vector<ray> camera_rays(const scene& s, int count) {
-  const camera cam(s.camera, 16.0 / 9.0, 1200);
+  const camera cam(main_camera(s).pose, 16.0 / 9.0, 1200);
   std::vector<ray> rays;
   rays.reserve(std::size_t(count));
   for (int i = 0; i < count; ++i) {

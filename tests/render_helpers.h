@@ -11,7 +11,7 @@
 namespace rtvk::test {
 
 inline camera scene_camera(const scene& s) {
-  return camera(s.camera, s.render.aspect, s.render.width);
+  return camera(main_camera(s).pose, s.render.aspect, s.render.width);
 }
 
 inline image_rgb8 cpu_image(const scene& s, const camera& cam) {

@@ -14,10 +14,10 @@ namespace {
 scene grey_floor() {
   scene s;
   s.name = "grey floor";
-  s.camera.lookfrom = point3(0, 1, 0);
-  s.camera.lookat = point3(0, 0, 0);
-  s.camera.vup = vec3(0, 0, -1);
-  s.camera.vfov = 40;
+  main_camera(s).pose.lookfrom = point3(0, 1, 0);
+  main_camera(s).pose.lookat = point3(0, 0, 0);
+  main_camera(s).pose.vup = vec3(0, 0, -1);
+  main_camera(s).pose.vfov = 40;
   s.render.width = 64;
   s.render.aspect = 1;
   s.render.spp = 16;
@@ -54,8 +54,8 @@ TEST(Furnace, GreyFloorUnderTheGradientSkyCpu) {
 scene white_furnace() {
   scene s;
   s.name = "white furnace";
-  s.camera.lookfrom = point3(0, 1, 4);
-  s.camera.lookat = point3(0, 0, 0);
+  main_camera(s).pose.lookfrom = point3(0, 1, 4);
+  main_camera(s).pose.lookat = point3(0, 0, 0);
   s.render.width = 48;
   s.render.spp = 8;
   s.render.jitter = true;

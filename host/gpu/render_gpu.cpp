@@ -10,6 +10,7 @@
 #include "format.h"
 #include "interrupt.h"
 #include "packing.h"
+#include "render_cpu.h"
 #include "shaders.h"
 
 namespace rtvk::gpu {
@@ -69,40 +70,78 @@ std::uint32_t default_loop_budget(const device_info& d) {
   return llvmpipe ? 60'000u : 0xffffffffu;
 }
 
+namespace {
+
+// How the views and rows of a render are grouped so that one group's sums fit one storage
+// buffer (and a bounded share of device memory): many views of a small region at once, or one
+// view in bands of whole rows when a single view is too large.
+struct work_layout {
+  std::uint32_t views_per_group;  // views one dispatch draws (its z size)
+  std::uint32_t band_rows;        // rows of the region one dispatch draws
+};
+
+work_layout plan_work(const device_info& dev, const engine_options& engine,
+                      const render_window& win, std::size_t views) {
+  const VkDeviceSize row_bytes = VkDeviceSize(win.width) * 3 * sizeof(float);
+  const VkDeviceSize limit = std::min<VkDeviceSize>(
+      dev.limits.maxStorageBufferRange, engine.gpu_band_bytes ? engine.gpu_band_bytes : 64u << 20);
+  const VkDeviceSize view_bytes = row_bytes * VkDeviceSize(win.height);
+  if (view_bytes <= limit) {
+    const VkDeviceSize fit = std::min<VkDeviceSize>(limit / view_bytes, RTVK_MAX_VIEWS);
+    return {std::uint32_t(std::min<VkDeviceSize>(fit, views)), std::uint32_t(win.height)};
+  }
+  return {1, std::uint32_t(std::clamp<VkDeviceSize>(limit / row_bytes, 1, win.height))};
+}
+
+void check_views(const std::vector<camera>& views, const render_window& win) {
+  if (views.empty()) throw std::invalid_argument("render_gpu_views: no views");
+  for (const camera& c : views)
+    if (c.image_width() != views[0].image_width() || c.image_height() != views[0].image_height())
+      throw std::invalid_argument("render_gpu_views: views of different image sizes");
+  check_window(win, views[0].image_width(), views[0].image_height());
+}
+
+}  // namespace
+
 framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
                        const render_settings& rs, const sample_progress& progress,
                        const engine_options& engine, render_stats* stats) {
-  const std::uint32_t width = std::uint32_t(cam.image_width());
-  const std::uint32_t height = std::uint32_t(cam.image_height());
+  return std::move(render_gpu_views(ctx, {cam}, s, rs,
+                                    whole_render(cam.image_width(), cam.image_height(), rs.spp),
+                                    progress, engine, stats)
+                       .front());
+}
+
+std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<camera>& views,
+                                          const scene& s, const render_settings& rs,
+                                          const render_window& win,
+                                          const sample_progress& progress,
+                                          const engine_options& engine, render_stats* stats) {
+  check_views(views, win);
   const device_info& dev = ctx.device();
+  const work_layout layout = plan_work(dev, engine, win, views.size());
+  const VkDeviceSize group_pixels =
+      VkDeviceSize(win.width) * layout.band_rows * layout.views_per_group;
+  const VkDeviceSize image_bytes = group_pixels * 3 * sizeof(float);
 
-  // The image is rendered in bands of whole rows, each small enough for one storage buffer and
-  // for a bounded share of device memory; the random numbers use the full image's pixel index,
-  // so the bands join without a seam.
-  const VkDeviceSize row_bytes = VkDeviceSize(width) * 3 * sizeof(float);
-  const VkDeviceSize band_limit = std::min<VkDeviceSize>(
-      dev.limits.maxStorageBufferRange, engine.gpu_band_bytes ? engine.gpu_band_bytes : 64u << 20);
-  const std::uint32_t band_rows =
-      std::uint32_t(std::clamp<VkDeviceSize>(band_limit / row_bytes, 1, height));
-  const VkDeviceSize band_pixels = VkDeviceSize(width) * band_rows;
-  const VkDeviceSize image_bytes = band_pixels * 3 * sizeof(float);
-
-  const camera_ubo ubo = to_ubo(cam);
-  gpu_buffer ubo_buf(ctx, sizeof ubo, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, memory_use::upload);
-  ubo_buf.write(&ubo, sizeof ubo);
+  gpu_buffer ubo_buf(ctx, RTVK_MAX_VIEWS * sizeof(camera_ubo), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                     memory_use::upload);
   const device_array<gpu_sphere> spheres(ctx, to_gpu_spheres(s));
   const device_array<gpu_material> materials(ctx, to_gpu_materials(s));
   const auto build_start = std::chrono::steady_clock::now();
   const bvh tree(engine.use_bvh ? s.spheres : std::vector<sphere>{});
-  if (stats)
+  if (stats) {
+    *stats = render_stats{};
     stats->build_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
+  }
   const device_array<bvh_node> nodes(ctx, tree.nodes());
   const device_array<std::uint32_t> bvh_index(ctx, tree.index());
   // One 32-bit counter per pixel: it holds at most spp * max_depth rays.
-  const bool count_rays =
-      engine.count_rays && std::uint64_t(rs.spp) * std::uint64_t(rs.max_depth) < (1ull << 32);
-  const VkDeviceSize count_bytes = count_rays ? band_pixels * sizeof(std::uint32_t) : 4;
+  const bool count_rays = engine.count_rays && std::uint64_t(win.samples()) *
+                                                       std::uint64_t(rs.max_depth) <
+                                                   (1ull << 32);
+  const VkDeviceSize count_bytes = count_rays ? group_pixels * sizeof(std::uint32_t) : 4;
   constexpr VkBufferUsageFlags storage_copy = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                               VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -137,89 +176,114 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
   push.jitter = rs.jitter ? 1u : 0u;
   push.use_bvh = engine.use_bvh ? 1u : 0u;
   push.count_rays = count_rays ? 1u : 0u;
+  push.region_x0 = std::uint32_t(win.x);
+  push.region_width = std::uint32_t(win.width);
 
-  framebuffer fb{int(width), int(height)};
-  if (stats) stats->rays = 0;
-  const std::uint32_t bands = (height + band_rows - 1) / band_rows;
+  std::vector<framebuffer> out(views.size(), framebuffer{win.width, win.height});
+  const int samples = win.samples();
+  const std::uint32_t bands = (std::uint32_t(win.height) + layout.band_rows - 1) / layout.band_rows;
+  const std::size_t groups = (views.size() + layout.views_per_group - 1) / layout.views_per_group;
+  const std::int64_t passes = std::int64_t(groups) * bands;  // for progress
+  bool uploaded = false;
   int batch = 1;
-  for (std::uint32_t band = 0; band < bands; ++band) {
-    push.band_y0 = band * band_rows;
-    push.band_rows = std::min(band_rows, height - push.band_y0);
-    // Submissions grow from one sample until each takes about a quarter second: long enough to
-    // keep the device busy, short enough for progress, interruption and the fence timeout.
-    int done = 0;
-    while (done < rs.spp) {
-      if (engine.cancelled && engine.cancelled())
-        throw render_cancelled("stopped after " + std::to_string(done) + " of " +
-                               std::to_string(rs.spp) + " samples per pixel of band " +
-                               std::to_string(band + 1) + " of " + std::to_string(bands));
-      const int count = std::min(batch, rs.spp - done);
-      const bool first = done == 0, last = done + count == rs.spp;
-      const auto start = std::chrono::steady_clock::now();
-      ctx.submit_and_wait([&](VkCommandBuffer cb) {
-        if (first) {
-          if (band == 0) {
-            spheres.record_upload(cb);
-            materials.record_upload(cb);
-            nodes.record_upload(cb);
-            bvh_index.record_upload(cb);
-            vkCmdFillBuffer(cb, status.get(), 0, VK_WHOLE_SIZE, 0);
-          } else {  // the previous band's copies out of these buffers come first
-            barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_READ_BIT, transfer_stage,
-                    VK_ACCESS_TRANSFER_WRITE_BIT);
-          }
-          vkCmdFillBuffer(cb, image.get(), 0, VK_WHOLE_SIZE, 0);
-          vkCmdFillBuffer(cb, ray_counts.get(), 0, VK_WHOLE_SIZE, 0);
-          barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
-        } else {  // the previous submission's samples are in the sums this one adds to
-          barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
-        }
-        pipeline.bind(cb);
-        for (int k = 0; k < count; ++k) {
-          if (k > 0)
-            barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
-          push.sample_index = std::uint32_t(done + k);
-          pipeline.push(cb, &push, sizeof push);
-          vkCmdDispatch(cb, (width + wg[0] - 1) / wg[0], (push.band_rows + wg[1] - 1) / wg[1], 1);
-        }
-        if (last) {
-          barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
-                  VK_ACCESS_TRANSFER_READ_BIT);
-          const VkBufferCopy copy{0, 0, VkDeviceSize(width) * push.band_rows * 3 * sizeof(float)};
-          vkCmdCopyBuffer(cb, image.get(), readback.get(), 1, &copy);
-          const VkBufferCopy counts{0, 0, count_bytes};
-          vkCmdCopyBuffer(cb, ray_counts.get(), ray_readback.get(), 1, &counts);
-          barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                  VK_ACCESS_HOST_READ_BIT);
-        }
-        barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                VK_ACCESS_HOST_READ_BIT);
-      });
-      const auto* st = static_cast<const render_status*>(status.read());
-      if (st->overrun_pixels > 0)
-        throw loop_budget_error(
-            std::to_string(st->overrun_pixels) + " pixel samples needed more than " +
-            std::to_string(push.loop_budget) + " loop iterations on " + dev.name +
-            " (lavapipe silently stops loops at 65,535, so rtvk stops first and writes no "
-            "image): lower --depth or use fewer spheres");
-      done += count;
-      if (progress) progress(int((std::int64_t(band) * rs.spp + done) / bands));
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (seconds < 0.25) batch = std::min(batch * 2, 256);
-    }
+  for (std::size_t group = 0; group < groups; ++group) {
+    const std::size_t first_view = group * layout.views_per_group;
+    const std::uint32_t group_views =
+        std::uint32_t(std::min<std::size_t>(layout.views_per_group, views.size() - first_view));
+    std::vector<camera_ubo> ubos(RTVK_MAX_VIEWS);
+    for (std::uint32_t v = 0; v < group_views; ++v) ubos[v] = to_ubo(views[first_view + v]);
+    ubo_buf.write(ubos.data(), ubos.size() * sizeof(camera_ubo));  // no submission is in flight
 
-    if (stats && count_rays) {
-      const auto* counts = static_cast<const std::uint32_t*>(ray_readback.read());
-      for (VkDeviceSize i = 0; i < VkDeviceSize(width) * push.band_rows; ++i)
-        stats->rays += counts[i];
+    for (std::uint32_t band = 0; band < bands; ++band) {
+      push.band_y0 = std::uint32_t(win.y) + band * layout.band_rows;
+      push.band_rows = std::min(layout.band_rows, std::uint32_t(win.height) - band * layout.band_rows);
+      // Submissions grow from one sample until each takes about a quarter second: long enough to
+      // keep the device busy, short enough for progress, interruption and the fence timeout.
+      int done = 0;
+      while (done < samples) {
+        if (engine.cancelled && engine.cancelled())
+          throw render_cancelled("stopped after " + std::to_string(done) + " of " +
+                                 std::to_string(samples) + " samples per pixel of band " +
+                                 std::to_string(band + 1) + " of " + std::to_string(bands) +
+                                 " of view group " + std::to_string(group + 1) + " of " +
+                                 std::to_string(groups));
+        const int count = std::min(batch, samples - done);
+        const bool first = done == 0, last = done + count == samples;
+        const auto start = std::chrono::steady_clock::now();
+        ctx.submit_and_wait([&](VkCommandBuffer cb) {
+          if (first) {
+            if (!uploaded) {
+              spheres.record_upload(cb);
+              materials.record_upload(cb);
+              nodes.record_upload(cb);
+              bvh_index.record_upload(cb);
+              vkCmdFillBuffer(cb, status.get(), 0, VK_WHOLE_SIZE, 0);
+            } else {  // the previous band's copies out of these buffers come first
+              barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_READ_BIT, transfer_stage,
+                      VK_ACCESS_TRANSFER_WRITE_BIT);
+            }
+            vkCmdFillBuffer(cb, image.get(), 0, VK_WHOLE_SIZE, 0);
+            vkCmdFillBuffer(cb, ray_counts.get(), 0, VK_WHOLE_SIZE, 0);
+            barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
+          } else {  // the previous submission's samples are in the sums this one adds to
+            barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
+          }
+          pipeline.bind(cb);
+          for (int k = 0; k < count; ++k) {
+            if (k > 0)
+              barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
+            push.sample_index = std::uint32_t(win.sample_begin + done + k);
+            pipeline.push(cb, &push, sizeof push);
+            vkCmdDispatch(cb, (push.region_width + wg[0] - 1) / wg[0],
+                          (push.band_rows + wg[1] - 1) / wg[1], group_views);
+          }
+          if (last) {
+            barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
+                    VK_ACCESS_TRANSFER_READ_BIT);
+            const VkDeviceSize pixels = VkDeviceSize(win.width) * push.band_rows * group_views;
+            const VkBufferCopy copy{0, 0, pixels * 3 * sizeof(float)};
+            vkCmdCopyBuffer(cb, image.get(), readback.get(), 1, &copy);
+            const VkBufferCopy counts{0, 0, count_rays ? pixels * sizeof(std::uint32_t) : 4};
+            vkCmdCopyBuffer(cb, ray_counts.get(), ray_readback.get(), 1, &counts);
+            barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                    VK_ACCESS_HOST_READ_BIT);
+          }
+          barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                  VK_ACCESS_HOST_READ_BIT);
+        });
+        uploaded = true;
+        if (stats) ++stats->submissions;
+        const auto* st = static_cast<const render_status*>(status.read());
+        if (st->overrun_pixels > 0)
+          throw loop_budget_error(
+              std::to_string(st->overrun_pixels) + " pixel samples needed more than " +
+              std::to_string(push.loop_budget) + " loop iterations on " + dev.name +
+              " (lavapipe silently stops loops at 65,535, so rtvk stops first and writes no "
+              "image): lower --depth or use fewer spheres");
+        done += count;
+        if (progress)
+          progress(int((std::int64_t(group * bands + band) * samples + done) / passes));
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (seconds < 0.25) batch = std::min(batch * 2, 256);
+      }
+
+      const std::size_t band_pixels = std::size_t(win.width) * push.band_rows;
+      if (stats && count_rays) {
+        const auto* counts = static_cast<const std::uint32_t*>(ray_readback.read());
+        for (std::size_t i = 0; i < band_pixels * group_views; ++i) stats->rays += counts[i];
+      }
+      const float* rgb = static_cast<const float*>(readback.read());
+      for (std::uint32_t v = 0; v < group_views; ++v) {
+        framebuffer& fb = out[first_view + v];
+        for (std::uint32_t row = 0; row < push.band_rows; ++row)
+          for (int x = 0; x < win.width; ++x, rgb += 3)
+            fb.at(x, int(push.band_y0 - std::uint32_t(win.y) + row)) =
+                divide(color(rgb[0], rgb[1], rgb[2]), samples);
+      }
     }
-    const float* rgb = static_cast<const float*>(readback.read());
-    for (std::uint32_t y = push.band_y0; y < push.band_y0 + push.band_rows; ++y)
-      for (std::uint32_t x = 0; x < width; ++x, rgb += 3)
-        fb.at(int(x), int(y)) = divide(color(rgb[0], rgb[1], rgb[2]), rs.spp);
   }
-  return fb;
+  return out;
 }
 
 }  // namespace rtvk::gpu

@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
+#include <vector>
 
 #include "camera.h"
 #include "context.h"
@@ -32,5 +33,19 @@ using sample_progress = std::function<void(int samples_done)>;
 framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
                        const render_settings& rs, const sample_progress& progress = {},
                        const engine_options& engine = {}, render_stats* stats = nullptr);
+
+// Many views of one scene -- several cameras, the frames of an animation -- drawn together: one
+// set-up (scene buffers, BVH, pipeline), and each submission's dispatches cover every view of a
+// group (up to RTVK_MAX_VIEWS, or fewer when their sums would not fit one storage buffer), the
+// dispatch's z index picking the camera. Each view's framebuffer holds the mean of samples
+// [win.sample_begin, win.sample_end) over the window, bit for bit what the view alone gives.
+// All views must have the same image size; throws std::invalid_argument otherwise, or for a
+// window outside the image.
+std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<camera>& views,
+                                          const scene& s, const render_settings& rs,
+                                          const render_window& win,
+                                          const sample_progress& progress = {},
+                                          const engine_options& engine = {},
+                                          render_stats* stats = nullptr);
 
 }  // namespace rtvk::gpu

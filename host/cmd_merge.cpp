@@ -1,0 +1,68 @@
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "image_io.h"
+#include "memory_check.h"
+#include "merge.h"
+#include "partial_image.h"
+#include "quantize.h"
+
+namespace rtvk {
+namespace {
+
+struct merge_options {
+  std::vector<std::string> parts;  // .exr pieces from rtvk render
+  std::string output;              // .png, .ppm, or .exr to merge further later
+  std::string ppm_format = "P3";   // P3 or P6
+  bool quiet = false;              // no summary line
+};
+
+int run_merge(const merge_options& o) {
+  check_output_path(o.output, "--output", true);
+  std::vector<named_partial> parts;
+  for (const std::string& file : o.parts) {
+    parts.push_back({file, read_partial_exr(file)});
+    if (parts.size() == 1)
+      check_render_memory(parts[0].image.image_width, parts[0].image.image_height, 2);
+  }
+  const merged_render m = merge_partials(parts);
+  if (format_for_path(o.output, "--output") == file_format::exr) {
+    partial_image whole = make_partial(m.fb, m.summary.window, m.fb.width(), m.fb.height());
+    whole.gamma = m.summary.gamma;
+    whole.fingerprint = m.summary.fingerprint;
+    whole.scene = m.summary.scene;
+    whole.camera = m.summary.camera;
+    whole.frame = m.summary.frame;
+    write_partial_exr(whole, o.output);
+  } else {
+    write_image(quantize(m.fb, m.summary.gamma), o.output,
+                o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3);
+  }
+  if (!o.quiet)
+    std::fprintf(stderr, "rtvk: merged %zu part(s) of %s [camera %s, frame %d]: %dx%d, samples "
+                         "%d:%d -> %s\n",
+                 parts.size(), m.summary.scene.c_str(), m.summary.camera.c_str(), m.summary.frame,
+                 m.fb.width(), m.fb.height(), m.summary.window.sample_begin,
+                 m.summary.window.sample_end, o.output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+command_action add_merge_command(CLI::App& app) {
+  auto o = std::make_shared<merge_options>();
+  CLI::App* cmd = app.add_subcommand(
+      "merge", "Combine .exr pieces of one render (tiles, sample ranges) into the whole image");
+  cmd->add_option("PARTS", o->parts, ".exr files written by rtvk render")->required();
+  cmd->add_option("-o,--output", o->output, "Merged image: .png, .ppm, or .exr")->required();
+  cmd->add_option("--ppm-format", o->ppm_format, "PPM flavour: P3 (ASCII) or P6 (binary)")
+      ->transform(CLI::IsMember({"P3", "P6"}, CLI::ignore_case))
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary line");
+  return [o] { return run_merge(*o); };
+}
+
+}  // namespace rtvk

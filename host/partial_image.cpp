@@ -1,0 +1,152 @@
+#include "partial_image.h"
+
+#include <ImfChannelList.h>
+#include <ImfDoubleAttribute.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfIntAttribute.h>
+#include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
+#include <ImfVecAttribute.h>
+
+#include <cinttypes>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+
+#include "atomic_file.h"
+#include "camera.h"
+#include "image_io.h"
+
+namespace rtvk {
+namespace {
+
+// OpenEXR writes through a stream; this one collects the bytes, so the file can be written
+// atomically afterwards like every other rtvk output.
+class memory_stream final : public Imf::OStream {
+ public:
+  memory_stream() : Imf::OStream("memory") {}
+  void write(const char c[], int n) override {
+    if (pos_ + std::size_t(n) > bytes_.size()) bytes_.resize(pos_ + std::size_t(n));
+    std::memcpy(bytes_.data() + pos_, c, std::size_t(n));
+    pos_ += std::size_t(n);
+  }
+  uint64_t tellp() override { return pos_; }
+  void seekp(uint64_t pos) override { pos_ = std::size_t(pos); }
+  const std::string& bytes() const { return bytes_; }
+
+ private:
+  std::string bytes_;
+  std::size_t pos_ = 0;
+};
+
+Imf::FrameBuffer slices(float* rgb, const Imath::Box2i& data_window) {
+  Imf::FrameBuffer fb;
+  const char* names[] = {"R", "G", "B"};
+  for (int c = 0; c < 3; ++c)
+    fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, rgb + c, data_window, 3 * sizeof(float),
+                                         std::size_t(data_window.size().x + 1) * 3 *
+                                             sizeof(float)));
+  return fb;
+}
+
+template <typename Attr>
+const Attr& attribute(const Imf::Header& h, const char* name, const std::string& file) {
+  const Attr* a = h.findTypedAttribute<Attr>(name);
+  if (!a)
+    throw image_read_error(file + ": not an rtvk partial render (no " + std::string(name) +
+                           " attribute in its OpenEXR header)");
+  return *a;
+}
+
+}  // namespace
+
+partial_image make_partial(const framebuffer& fb, const render_window& win, int image_width,
+                           int image_height) {
+  partial_image p;
+  p.image_width = image_width;
+  p.image_height = image_height;
+  p.window = win;
+  p.rgb.reserve(std::size_t(fb.width()) * std::size_t(fb.height()) * 3);
+  for (int y = 0; y < fb.height(); ++y)
+    for (int x = 0; x < fb.width(); ++x)
+      for (int c = 0; c < 3; ++c) p.rgb.push_back(float(fb.at(x, y)[c]));
+  return p;
+}
+
+void write_partial_exr(const partial_image& p, const std::filesystem::path& path) {
+  const Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(p.image_width - 1, p.image_height - 1));
+  const Imath::Box2i data(Imath::V2i(p.window.x, p.window.y),
+                          Imath::V2i(p.window.x + p.window.width - 1,
+                                     p.window.y + p.window.height - 1));
+  Imf::Header h(display, data, 1, Imath::V2f(0, 0), 1, Imf::INCREASING_Y, Imf::ZIP_COMPRESSION);
+  for (const char* c : {"R", "G", "B"}) h.channels().insert(c, Imf::Channel(Imf::FLOAT));
+  h.insert("rtvk.samples", Imf::V2iAttribute(Imath::V2i(p.window.sample_begin, p.window.sample_end)));
+  h.insert("rtvk.gamma", Imf::DoubleAttribute(p.gamma));
+  h.insert("rtvk.fingerprint", Imf::StringAttribute(p.fingerprint));
+  h.insert("rtvk.scene", Imf::StringAttribute(p.scene));
+  h.insert("rtvk.camera", Imf::StringAttribute(p.camera));
+  h.insert("rtvk.frame", Imf::IntAttribute(p.frame));
+  memory_stream out;
+  try {
+    Imf::OutputFile file(out, h, 1);
+    std::vector<float> pixels = p.rgb;  // OpenEXR's slices take non-const pointers
+    file.setFrameBuffer(slices(pixels.data(), data));
+    file.writePixels(p.window.height);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("OpenEXR: encoding " + path.string() + ": " + e.what());
+  }
+  write_file_atomically(path, out.bytes());
+}
+
+partial_image read_partial_exr(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  partial_image p;
+  try {
+    Imf::InputFile file(name.c_str(), 1);
+    const Imf::Header& h = file.header();
+    const Imath::Box2i display = h.displayWindow(), data = h.dataWindow();
+    if (display.max.x >= max_image_side || display.max.y >= max_image_side)
+      throw image_read_error(name + ": display window is larger than " +
+                             std::to_string(max_image_side) + " pixels a side");
+    if (display.min != Imath::V2i(0, 0) || data.min.x < 0 || data.min.y < 0 ||
+        data.max.x > display.max.x || data.max.y > display.max.y || data.isEmpty())
+      throw image_read_error(name + ": data window is not inside a display window at 0,0");
+    const Imath::V2i samples = attribute<Imf::V2iAttribute>(h, "rtvk.samples", name).value();
+    p.gamma = attribute<Imf::DoubleAttribute>(h, "rtvk.gamma", name).value();
+    p.fingerprint = attribute<Imf::StringAttribute>(h, "rtvk.fingerprint", name).value();
+    p.scene = attribute<Imf::StringAttribute>(h, "rtvk.scene", name).value();
+    p.camera = attribute<Imf::StringAttribute>(h, "rtvk.camera", name).value();
+    p.frame = attribute<Imf::IntAttribute>(h, "rtvk.frame", name).value();
+    for (const char* c : {"R", "G", "B"})
+      if (!h.channels().findChannel(c))
+        throw image_read_error(name + ": no " + std::string(c) + " channel");
+    p.image_width = display.max.x + 1;
+    p.image_height = display.max.y + 1;
+    p.window = {data.min.x, data.min.y, data.max.x - data.min.x + 1, data.max.y - data.min.y + 1,
+                samples.x, samples.y};
+    if (p.window.sample_begin < 0 || p.window.sample_end <= p.window.sample_begin)
+      throw image_read_error(name + ": rtvk.samples " + std::to_string(samples.x) + ":" +
+                             std::to_string(samples.y) + " is not a sample range");
+    p.rgb.assign(std::size_t(p.window.width) * std::size_t(p.window.height) * 3, 0.0f);
+    file.setFrameBuffer(slices(p.rgb.data(), data));
+    file.readPixels(data.min.y, data.max.y);
+  } catch (const image_read_error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw image_read_error(name + ": cannot read as OpenEXR: " + e.what());
+  }
+  return p;
+}
+
+std::string fingerprint_of(const std::string& text) {
+  std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a, 64 bits
+  for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ull;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016" PRIx64, h);
+  return buf;
+}
+
+}  // namespace rtvk

@@ -1,0 +1,42 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "framebuffer.h"
+#include "render_settings.h"
+
+namespace rtvk {
+
+// A piece of a render in linear float, as `rtvk render -o piece.exr` writes it and `rtvk merge`
+// reads it: an OpenEXR file whose display window is the whole image, whose data window is the
+// piece's rectangle, and whose header carries the sample range and what was rendered.
+struct partial_image {
+  int image_width = 0;      // the whole image, pixels
+  int image_height = 0;     // the whole image, pixels
+  render_window window;     // the rectangle (data window) and sample range this piece holds
+  std::vector<float> rgb;   // window.width * window.height * 3: the mean linear color of the
+                            // window's samples, row-major from the window's top row
+  double gamma = 1;         // how to encode the merged image for PNG or PPM
+  std::string fingerprint;  // the scene, settings and camera pose, hashed: only pieces with
+                            // equal fingerprints merge
+  std::string scene;        // scene name, for people reading the header
+  std::string camera;       // camera name
+  int frame = 0;            // animation frame
+};
+
+// The piece of a render: `fb` (win.width x win.height) with its window.
+partial_image make_partial(const framebuffer& fb, const render_window& win, int image_width,
+                           int image_height);
+
+// Writes atomically (never a partial file at `path`). Throws std::runtime_error on failure.
+void write_partial_exr(const partial_image& p, const std::filesystem::path& path);
+
+// Throws image_read_error naming the file when it cannot be read, is not OpenEXR, or lacks
+// rtvk's header attributes.
+partial_image read_partial_exr(const std::filesystem::path& path);
+
+// 16 hex digits identifying a render's inputs from a canonical text of them.
+std::string fingerprint_of(const std::string& canonical_text);
+
+}  // namespace rtvk

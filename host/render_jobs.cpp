@@ -1,0 +1,167 @@
+#include "render_jobs.h"
+
+#include <algorithm>
+#include <charconv>
+#include <set>
+
+#include "errors.h"
+#include "format.h"
+#include "image_io.h"
+#include "partial_image.h"
+#include "render_cpu.h"
+#include "scene_file.h"
+
+namespace rtvk {
+namespace {
+
+bool parse_int(std::string_view s, int& out) {
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && end == s.data() + s.size() && !s.empty();
+}
+
+std::string names_of(const scene& s) {
+  std::string out;
+  for (const named_camera& c : s.cameras) out += (out.empty() ? "" : ", ") + c.name;
+  return out;
+}
+
+// Narrows s.cameras to the ones asked for, keeping the scene's order.
+void select_cameras(scene& s, const std::vector<std::string>& asked) {
+  if (asked.empty()) {
+    s.cameras.resize(1);
+    return;
+  }
+  if (std::find(asked.begin(), asked.end(), "all") != asked.end()) return;
+  for (const std::string& name : asked)
+    if (std::none_of(s.cameras.begin(), s.cameras.end(),
+                     [&](const named_camera& c) { return c.name == name; }))
+      throw usage_error("--camera " + name + ": " + s.name + " has no such camera (it has " +
+                        names_of(s) + ")");
+  std::erase_if(s.cameras, [&](const named_camera& c) {
+    return std::find(asked.begin(), asked.end(), c.name) == asked.end();
+  });
+}
+
+// What identifies the image a job draws, whatever machine draws it: the scene as a file would
+// hold it with only this camera, posed, and the sample count left out (pieces of one render may
+// come from runs with different --spp as long as their sample ranges do not overlap).
+std::string job_fingerprint(const scene& s, const camera_pose& pose) {
+  scene one = s;
+  one.cameras = {{"default", camera_path{camera_motion::fixed, pose, 0, {}}}};
+  one.render.spp = 1;
+  return fingerprint_of(dump_scene_json(one));
+}
+
+}  // namespace
+
+int_range parse_range(const std::string& text, const std::string& flag, int lo, int hi) {
+  const auto colon = text.find(':');
+  int_range r;
+  bool ok;
+  if (colon == std::string::npos) {
+    ok = parse_int(text, r.begin) && r.begin < hi;
+    r.end = r.begin + 1;
+  } else {
+    ok = parse_int(std::string_view(text).substr(0, colon), r.begin) &&
+         parse_int(std::string_view(text).substr(colon + 1), r.end);
+  }
+  if (!ok || r.begin < lo || r.end > hi || r.begin >= r.end)
+    throw usage_error(flag + ": '" + text + "' is not A:B (A up to, not including, B) or N with " +
+                      std::to_string(lo) + " <= A < B <= " + std::to_string(hi));
+  return r;
+}
+
+render_window parse_region(const std::string& text, const std::string& flag) {
+  int v[4];
+  std::string_view rest = text;
+  for (int k = 0; k < 4; ++k) {
+    const auto comma = k < 3 ? rest.find(',') : std::string_view::npos;
+    if ((k < 3 && comma == std::string_view::npos) || !parse_int(rest.substr(0, comma), v[k]))
+      throw usage_error(flag + ": '" + text + "' is not x,y,w,h (four integers, pixels)");
+    rest = k < 3 ? rest.substr(comma + 1) : std::string_view();
+  }
+  return {v[0], v[1], v[2], v[3], 0, 0};
+}
+
+std::string expand_output(const std::string& pattern, const std::string& camera_name, int frame) {
+  std::string out;
+  for (std::size_t i = 0; i < pattern.size();) {
+    if (pattern[i] != '{') {
+      out += pattern[i++];
+      continue;
+    }
+    const auto close = pattern.find('}', i);
+    const std::string field =
+        pattern.substr(i + 1, close == std::string::npos ? std::string::npos : close - i - 1);
+    if (field == "camera") {
+      out += camera_name;
+    } else if (field == "frame") {
+      out += std::to_string(frame);
+    } else if (field.size() == 8 && field.compare(0, 7, "frame:0") == 0 && field[7] >= '1' &&
+               field[7] <= '9') {
+      const int digits = field[7] - '0';
+      std::string n = std::to_string(frame);
+      out += std::string(std::size_t(std::max(0, digits - int(n.size()))), '0') + n;
+    } else {
+      throw usage_error("--output: unknown placeholder {" + field + "} in '" + pattern +
+                        "' (expected {camera}, {frame} or {frame:0N}, N from 1 to 9)");
+    }
+    i = close + 1;
+  }
+  return out;
+}
+
+std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_flags& flags,
+                                  render_window& window) {
+  select_cameras(s, req.cameras);
+  flags.apply(s);
+  const int_range frames = req.frames.empty() ? int_range{0, 1}
+                                              : parse_range(req.frames, "--frames", 0, 1'000'000);
+  if (!(req.fps > 0)) throw usage_error("--fps: " + format_number(req.fps) + " is not > 0");
+  const std::size_t count = s.cameras.size() * std::size_t(frames.end - frames.begin);
+  if (count > 100'000)
+    throw usage_error("--frames " + req.frames + ": " + std::to_string(count) +
+                      " images in one run; the most is 100000");
+  if (s.cameras.size() > 1 && req.output.find("{camera}") == std::string::npos)
+    throw usage_error("--output " + req.output + ": " + std::to_string(s.cameras.size()) +
+                      " cameras would share it; put {camera} in the name");
+  if (frames.end - frames.begin > 1 && req.output.find("{frame") == std::string::npos)
+    throw usage_error("--output " + req.output + ": " + std::to_string(frames.end - frames.begin) +
+                      " frames would share it; put {frame} or {frame:04} in the name");
+
+  std::vector<render_job> jobs;
+  std::set<std::string> outputs;
+  for (const named_camera& c : s.cameras)
+    for (int f = frames.begin; f < frames.end; ++f) {
+      const camera_pose pose = c.path.at(f / req.fps);
+      render_job job{c.name, f,
+                     flags.make_camera(s, pose,
+                                       "camera " + c.name + " of " + s.name + " at frame " +
+                                           std::to_string(f)),
+                     expand_output(req.output, c.name, f), job_fingerprint(s, pose)};
+      if (!outputs.insert(job.output).second)
+        throw usage_error("--output " + req.output + ": two images would be written to " +
+                          job.output);
+      jobs.push_back(std::move(job));
+    }
+  for (const std::string& path : outputs) check_output_path(path, "--output", true);
+
+  const int width = jobs[0].cam.image_width(), height = jobs[0].cam.image_height();
+  window = req.region.empty() ? whole_render(width, height, s.render.spp)
+                              : parse_region(req.region, "--region");
+  if (!req.region.empty()) {
+    try {
+      check_window({window.x, window.y, window.width, window.height, 0, 1}, width, height);
+    } catch (const std::invalid_argument& e) {
+      throw usage_error("--region " + req.region + ": " + e.what());
+    }
+  }
+  const int_range samples = req.samples.empty()
+                                ? int_range{0, s.render.spp}
+                                : parse_range(req.samples, "--samples", 0, s.render.spp);
+  window.sample_begin = samples.begin;
+  window.sample_end = samples.end;
+  return jobs;
+}
+
+}  // namespace rtvk

@@ -1,0 +1,54 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "render_settings.h"
+#include "scene.h"
+#include "scene_flags.h"
+
+namespace rtvk {
+
+// A half-open range of integers written "A:B" (A up to, not including, B, like a Python slice),
+// or a single number "N" (N:N+1).
+struct int_range {
+  int begin = 0;  // first
+  int end = 0;    // one past the last
+};
+
+// Parses "A:B" or "N" with lo <= A < B <= hi. Throws usage_error naming the flag and the text.
+int_range parse_range(const std::string& text, const std::string& flag, int lo, int hi);
+
+// Parses "x,y,w,h" (four integers). Throws usage_error naming the flag and the text.
+render_window parse_region(const std::string& text, const std::string& flag);
+
+// What `rtvk render` was asked to draw, besides the scene.
+struct job_request {
+  std::vector<std::string> cameras;  // --camera values; "all", or empty for the first camera
+  std::string frames;                // --frames A:B or N; empty: frame 0 only
+  double fps = 24;                   // --fps: frame f shows time f / fps
+  std::string region;                // --region x,y,w,h; empty: the whole image
+  std::string samples;               // --samples A:B; empty: 0:spp
+  std::string output;                // -o, with {camera}, {frame} or {frame:0N} placeholders
+};
+
+// One image a run produces: a camera at a frame.
+struct render_job {
+  std::string camera_name;  // the scene's name for the camera
+  int frame = 0;            // animation frame number
+  camera cam;               // posed for the frame's time
+  std::string output;       // the -o path with placeholders filled in
+  std::string fingerprint;  // the scene, settings and this pose, hashed (see partial_image.h)
+};
+
+// The selected cameras (s.cameras narrowed to them, in the scene's order), the flags applied,
+// and one job per camera and frame, every output path checked. Throws usage_error naming the
+// flag and the value for an unknown camera, a range or region outside the image or its samples,
+// a -o that would make two images share a file, or an unwritable folder.
+std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_flags& flags,
+                                  render_window& window);
+
+// -o with its placeholders filled in. Throws usage_error for an unknown placeholder.
+std::string expand_output(const std::string& pattern, const std::string& camera_name, int frame);
+
+}  // namespace rtvk
