@@ -97,12 +97,57 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
       {R"({"camera":{"vfov":200},"spheres":[]})", "/camera: vertical field of view"},
       {R"({"camera":{"lookat":[0,0,0]},"spheres":[]})", "/camera: lookfrom and lookat"},
       {R"({"sky":{"zenith":[0,-1,0]},"spheres":[]})", "/sky/zenith/1"},
+      {R"({"camera":{},"cameras":{"a":{}},"spheres":[]})", "/cameras: a scene has either"},
+      {R"({"cameras":{},"spheres":[]})", "/cameras: expected an object of named cameras"},
+      {R"({"cameras":{"a b":{}},"spheres":[]})", "/cameras/a b: camera names may use"},
+      {R"({"cameras":{"all":{}},"spheres":[]})", "/cameras/all: camera names"},
+      {R"({"cameras":{"a":{"orbit":{"period":0}}},"spheres":[]})",
+       "/cameras/a/orbit/period: expected seconds per turn > 0, got 0"},
+      {R"({"cameras":{"a":{"orbit":{"speed":1}}},"spheres":[]})",
+       "/cameras/a/orbit/speed: unknown field"},
+      {R"({"cameras":{"a":{"keyframes":[]}},"spheres":[]})",
+       "/cameras/a/keyframes: expected a non-empty array"},
+      {R"({"cameras":{"a":{"keyframes":[{"lookfrom":[0,0,1]}]}},"spheres":[]})",
+       "/cameras/a/keyframes/0: missing field \"time\""},
+      {R"({"cameras":{"a":{"keyframes":[{"time":1},{"time":1}]}},"spheres":[]})",
+       "/cameras/a/keyframes/1/time: expected a time after the previous keyframe's 1, got 1"},
+      {R"({"cameras":{"a":{"vfov":30,"keyframes":[{"time":0}]}},"spheres":[]})",
+       "/cameras/a/vfov: a camera with keyframes takes its pose from them"},
+      {R"({"cameras":{"a":{"keyframes":[{"time":0,"lookat":[0,0,0]}]}},"spheres":[]})",
+       "/cameras/a: keyframe 0: lookfrom and lookat are the same point"},
   };
   for (const auto& c : cases) {
     const std::string e = error_of(c.json);
     EXPECT_NE(e.find(c.expect), std::string::npos) << c.json << "\n  gave: " << e;
     EXPECT_EQ(e.rfind("bad.json: ", 0), 0u) << e;
   }
+}
+
+TEST(SceneFile, NamedCamerasWithPathsRoundTrip) {
+  const std::string text = R"({
+    "cameras": {
+      "front": {"lookfrom": [0, 1, 5], "vfov": 30},
+      "spin": {"lookfrom": [13, 2, 3], "lookat": [0, 0, 0], "orbit": {"period": 8}},
+      "fly": {"keyframes": [{"time": 0, "lookfrom": [0, 0, 3]},
+                            {"time": 2.5, "lookfrom": [3, 1, 0], "vfov": 60}]}
+    },
+    "spheres": []})";
+  const scene s = parse_scene_json(text, "cams.json");
+  ASSERT_EQ(s.cameras.size(), 3u);
+  EXPECT_EQ(s.cameras[0].name, "front");  // the file's order: the first is the default
+  EXPECT_EQ(s.cameras[0].path.motion, camera_motion::fixed);
+  EXPECT_EQ(s.cameras[0].path.pose.vfov, 30);
+  EXPECT_EQ(s.cameras[0].path.pose.lookat, point3(0, 0, -1));  // unset fields: the lesson's
+  EXPECT_EQ(s.cameras[1].path.motion, camera_motion::orbit);
+  EXPECT_EQ(s.cameras[1].path.orbit_period, 8);
+  ASSERT_EQ(s.cameras[2].path.keyframes.size(), 2u);
+  EXPECT_EQ(s.cameras[2].path.keyframes[1].time, 2.5);
+  EXPECT_EQ(s.cameras[2].path.keyframes[1].pose.vfov, 60);
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "again.json")), dumped);
+  EXPECT_NE(dumped.find("\"cameras\""), std::string::npos);
+  // One camera named "default" is written the old way, so older files read back unchanged.
+  EXPECT_NE(dump_scene_json(builtin_scene("seed")).find("\"camera\""), std::string::npos);
 }
 
 TEST(SceneFile, MissingEmptyAndFolderFiles) {

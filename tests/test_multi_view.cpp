@@ -1,0 +1,98 @@
+// Many views of one scene on the GPU: four cameras go out together -- one set-up, one submission
+// per batch of samples for all of them -- and each comes back exactly as it renders alone.
+#include <gtest/gtest.h>
+
+#include "gpu_fixture.h"
+#include "render_helpers.h"
+
+namespace rtvk {
+namespace {
+
+// book-final through four cameras: the book's, one orbiting, one keyframed, one from above.
+scene four_camera_scene() {
+  scene s = test::small_scene("book-final", 40, 3);
+  s.render.max_depth = 6;
+  const camera_pose book = main_camera(s).pose;
+  camera_pose above = book;
+  above.lookfrom = point3(0, 20, 0.5);
+  above.vfov = 40;
+  camera_path keyed{camera_motion::keyframes, {}, 0, {{0, book}, {2, above}}};
+  s.cameras = {{"book", {camera_motion::fixed, book, 0, {}}},
+               {"orbit", {camera_motion::orbit, book, 8, {}}},
+               {"swoop", keyed},
+               {"above", {camera_motion::fixed, above, 0, {}}}};
+  return s;
+}
+
+std::vector<camera> cameras_at(const scene& s, double seconds) {
+  std::vector<camera> out;
+  for (const named_camera& c : s.cameras)
+    out.push_back(camera(c.path.at(seconds), s.render.aspect, s.render.width));
+  return out;
+}
+
+bool same_pixels(const framebuffer& a, const framebuffer& b) {
+  if (a.width() != b.width() || a.height() != b.height()) return false;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      if (a.at(x, y) != b.at(x, y)) return false;
+  return true;
+}
+
+using MultiView = test::GpuTest;
+
+TEST_F(MultiView, FourCamerasInOneSubmissionEachEqualsTheCameraAlone) {
+  scene s = four_camera_scene();
+  s.render.spp = 1;  // one sample: the first (and only) batch is one submission
+  const std::vector<camera> views = cameras_at(s, 1.0);
+  const render_window all = whole_render(views[0].image_width(), views[0].image_height(), 1);
+  render_stats together;
+  const std::vector<framebuffer> fbs =
+      gpu::render_gpu_views(gpu(), views, s, s.render, all, {}, {}, &together);
+  EXPECT_EQ(together.submissions, 1);
+  ASSERT_EQ(fbs.size(), 4u);
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    render_stats alone;
+    const framebuffer fb = gpu::render_gpu(gpu(), views[k], s, s.render, {}, {}, &alone);
+    EXPECT_TRUE(same_pixels(fbs[k], fb)) << s.cameras[k].name;
+    EXPECT_EQ(alone.submissions, 1);
+  }
+  // The four views really differ: the test is not comparing one image with itself.
+  for (std::size_t k = 1; k < views.size(); ++k)
+    EXPECT_FALSE(same_pixels(fbs[0], fbs[k])) << s.cameras[k].name;
+}
+
+TEST_F(MultiView, ManySamplesTakeNoMoreSubmissionsThanOneCamera) {
+  const scene s = four_camera_scene();
+  const std::vector<camera> views = cameras_at(s, 0.5);
+  const render_window all = whole_render(views[0].image_width(), views[0].image_height(), 3);
+  render_stats together, alone;
+  const auto fbs = gpu::render_gpu_views(gpu(), views, s, s.render, all, {}, {}, &together);
+  const framebuffer first = gpu::render_gpu(gpu(), views[0], s, s.render, {}, {}, &alone);
+  EXPECT_TRUE(same_pixels(fbs[0], first));
+  // Submissions grow with time taken, so allow the four-view run one more for its slower batches.
+  EXPECT_LE(together.submissions, alone.submissions + 1);
+  EXPECT_GE(together.submissions, 1);
+}
+
+TEST_F(MultiView, ViewsThatDoNotFitOneBufferGoInGroupsAndStillMatch) {
+  const scene s = four_camera_scene();
+  const std::vector<camera> views = cameras_at(s, 1.5);
+  const int w = views[0].image_width(), h = views[0].image_height();
+  engine_options two_at_a_time;
+  two_at_a_time.gpu_band_bytes = std::uint64_t(w) * h * 12 * 2;
+  engine_options bands;  // one view at a time, in bands of three rows
+  bands.gpu_band_bytes = std::uint64_t(w) * 12 * 3;
+  const render_window all = whole_render(w, h, s.render.spp);
+  const auto reference = gpu::render_gpu_views(gpu(), views, s, s.render, all);
+  for (const engine_options& e : {two_at_a_time, bands}) {
+    render_stats st;
+    const auto fbs = gpu::render_gpu_views(gpu(), views, s, s.render, all, {}, e, &st);
+    for (std::size_t k = 0; k < views.size(); ++k)
+      EXPECT_TRUE(same_pixels(fbs[k], reference[k])) << s.cameras[k].name;
+    EXPECT_GT(st.submissions, 1);
+  }
+}
+
+}  // namespace
+}  // namespace rtvk
