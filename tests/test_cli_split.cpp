@@ -1,0 +1,187 @@
+// The executable's many-camera, animation and split-render paths: files named from -o patterns,
+// pieces written as OpenEXR and merged, and bad requests refused with exit 2 and no file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "gpu_fixture.h"
+#include "process.h"
+
+namespace rtvk {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_rtvk;
+using test::slurp;
+
+std::vector<std::string> gpu_args(std::vector<std::string> args) {
+  args.insert(args.end(), {"--backend", "gpu", "--validate"});
+  if (!test::test_device().empty()) args.insert(args.end(), {"--device", test::test_device()});
+  return args;
+}
+
+// Four cameras over the materials scene, one of them keyframed.
+fs::path write_four_camera_scene(const fs::path& dir) {
+  const fs::path path = dir / "four.json";
+  std::ofstream(path) << R"({
+  "cameras": {
+    "front": {"lookfrom": [0, 0.5, 2], "lookat": [0, 0, -1], "vfov": 50},
+    "left": {"lookfrom": [-3, 1, 0], "lookat": [0, 0, -1], "vfov": 40},
+    "top": {"lookfrom": [0, 4, -0.9], "lookat": [0, 0, -1], "vfov": 60},
+    "dolly": {"keyframes": [{"time": 0, "lookfrom": [3, 3, 2], "lookat": [0, 0, -1], "vfov": 20},
+                            {"time": 1, "lookfrom": [1, 1, 1], "lookat": [0, 0, -1], "vfov": 50}]}
+  },
+  "render": {"width": 48, "aspect": "3:2", "spp": 4, "max_depth": 8, "gamma": 2, "jitter": true},
+  "materials": {"ground": {"type": "lambertian", "albedo": [0.8, 0.8, 0]},
+                "glass": {"type": "dielectric", "ir": 1.5},
+                "gold": {"type": "metal", "albedo": [0.8, 0.6, 0.2], "fuzz": 0.1}},
+  "spheres": [{"center": [0, -100.5, -1], "radius": 100, "material": "ground"},
+              {"center": [0, 0, -1], "radius": 0.5, "material": "glass"},
+              {"center": [1, 0, -1], "radius": 0.5, "material": "gold"}]
+})";
+  return path;
+}
+
+class CliSplitGpu : public test::GpuTest {};
+
+TEST_F(CliSplitGpu, AllCamerasInOneRunEachEqualTheCameraAlone) {
+  test::temp_dir dir;
+  const std::string scene = write_four_camera_scene(dir.path()).string();
+  const auto all = run_rtvk(gpu_args({"render", "--scene", scene, "--camera", "all", "--frames",
+                                      "1", "-o", (dir.path() / "all_{camera}.png").string()}));
+  ASSERT_EQ(all.status, 0) << all.err;
+  EXPECT_NE(all.err.find("4 views together"), std::string::npos) << all.err;
+  for (const std::string name : {"front", "left", "top", "dolly"}) {
+    const fs::path alone = dir.path() / ("alone_" + name + ".png");
+    const auto r = run_rtvk(gpu_args({"render", "--scene", scene, "--camera", name, "--frames",
+                                      "1", "-o", alone.string()}));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string together = slurp(dir.path() / ("all_" + name + ".png"));
+    EXPECT_FALSE(together.empty()) << name;
+    EXPECT_EQ(together, slurp(alone)) << name;
+  }
+  EXPECT_NE(slurp(dir.path() / "all_front.png"), slurp(dir.path() / "all_top.png"));
+}
+
+TEST_F(CliSplitGpu, GpuTilesMergeToTheWholeRenderAndSampleHalvesAgree) {
+  test::temp_dir dir;
+  auto at = [&](const std::string& f) { return (dir.path() / f).string(); };
+  const std::vector<std::string> base = {"render", "--scene", "book-final", "--width", "50",
+                                         "--spp", "4", "--depth", "8", "-q"};
+  auto render = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_rtvk(gpu_args(args)).status;
+  };
+  ASSERT_EQ(render({"-o", at("whole.exr")}), 0);
+  ASSERT_EQ(render({"--region", "0,0,20,33", "-o", at("t0.exr")}), 0);
+  ASSERT_EQ(render({"--region", "20,0,30,33", "-o", at("t1.exr")}), 0);
+  ASSERT_EQ(render({"--samples", "0:1", "-o", at("s0.exr")}), 0);
+  ASSERT_EQ(render({"--samples", "1:4", "-o", at("s1.exr")}), 0);
+  ASSERT_EQ(run_rtvk({"merge", at("whole.exr"), "-o", at("whole.png")}).status, 0);
+  ASSERT_EQ(run_rtvk({"merge", at("t1.exr"), at("t0.exr"), "-o", at("tiles.png")}).status, 0);
+  EXPECT_EQ(slurp(at("tiles.png")), slurp(at("whole.png")));
+  const auto halves = run_rtvk({"merge", at("s0.exr"), at("s1.exr"), "-o", at("halves.png")});
+  ASSERT_EQ(halves.status, 0) << halves.err;
+  EXPECT_NE(halves.err.find("samples 0:4"), std::string::npos) << halves.err;
+  // Float sums in another order: equal to within a level almost everywhere.
+  const auto cmp = run_rtvk({"compare", at("halves.png"), at("whole.png"), "--tolerance", "1",
+                             "--max-share", "0.001"});
+  EXPECT_EQ(cmp.status, 0) << cmp.out;
+}
+
+TEST(CliSplit, OrbitAnimationWritesNumberedFrames) {
+  test::temp_dir dir;
+  const auto r = run_rtvk({"render", "--scene", "book-final", "--width", "40", "--spp", "2",
+                           "--depth", "6", "--orbit", "8", "--fps", "2", "--frames", "0:3", "-o",
+                           (dir.path() / "frame_{frame:04}.png").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string f0 = slurp(dir.path() / "frame_0000.png");
+  const std::string f1 = slurp(dir.path() / "frame_0001.png");
+  const std::string f2 = slurp(dir.path() / "frame_0002.png");
+  EXPECT_FALSE(f0.empty());
+  EXPECT_NE(f0, f1);
+  EXPECT_NE(f1, f2);
+  EXPECT_FALSE(fs::exists(dir.path() / "frame_0003.png"));  // A:B stops before B
+  // Frame 0 of an orbit is the camera's own pose.
+  const auto still = run_rtvk({"render", "--scene", "book-final", "--width", "40", "--spp", "2",
+                               "--depth", "6", "-o", (dir.path() / "still.png").string()});
+  ASSERT_EQ(still.status, 0);
+  EXPECT_EQ(slurp(dir.path() / "still.png"), f0);
+}
+
+TEST(CliSplit, CpuSplitsMergeAndMergeRefusesMismatches) {
+  test::temp_dir dir;
+  auto at = [&](const std::string& f) { return (dir.path() / f).string(); };
+  auto render = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"render", "--scene", "materials", "--width", "40", "--spp",
+                                     "4", "-q"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_rtvk(args);
+  };
+  ASSERT_EQ(render({"-o", at("whole.exr")}).status, 0);
+  ASSERT_EQ(render({"--region", "0,0,40,10", "-o", at("top.exr")}).status, 0);
+  ASSERT_EQ(render({"--region", "0,10,40,12", "-o", at("bottom.exr")}).status, 0);
+  ASSERT_EQ(run_rtvk({"merge", at("whole.exr"), "-o", at("whole.ppm")}).status, 0);
+  ASSERT_EQ(run_rtvk({"merge", at("top.exr"), at("bottom.exr"), "-o", at("tiles.ppm")}).status,
+            0);
+  EXPECT_EQ(slurp(at("tiles.ppm")), slurp(at("whole.ppm")));
+  // A merged .exr merges again, and the result is unchanged.
+  ASSERT_EQ(run_rtvk({"merge", at("top.exr"), at("bottom.exr"), "-o", at("again.exr")}).status,
+            0);
+  ASSERT_EQ(run_rtvk({"merge", at("again.exr"), "-o", at("again.ppm")}).status, 0);
+  EXPECT_EQ(slurp(at("again.ppm")), slurp(at("whole.ppm")));
+
+  ASSERT_EQ(render({"--seed", "7", "--region", "0,10,40,12", "-o", at("other.exr")}).status, 0);
+  std::ofstream(at("not.exr")) << "P3\n1 1\n255\n0 0 0\n";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> refusals = {
+      {{at("top.exr")}, "is in none of the parts"},
+      {{at("top.exr"), at("whole.exr")}, "hold the same samples"},
+      {{at("top.exr"), at("other.exr")}, "rendered from a different scene"},
+      {{at("not.exr")}, "not.exr"},
+      {{at("missing.exr")}, "missing.exr"},
+  };
+  for (const auto& [parts, expect] : refusals) {
+    std::vector<std::string> args = {"merge"};
+    args.insert(args.end(), parts.begin(), parts.end());
+    args.insert(args.end(), {"-o", at("refused.png")});
+    const auto r = run_rtvk(args);
+    EXPECT_EQ(r.status, 2) << expect << ": " << r.err;
+    EXPECT_NE(r.err.find(expect), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(at("refused.png"))) << expect;
+  }
+}
+
+TEST(CliSplit, BadRequestsExit2WithoutFiles) {
+  test::temp_dir dir;
+  const std::string scene = write_four_camera_scene(dir.path()).string();
+  const std::string out = (dir.path() / "out").string();
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--camera", "nope", "-o", out + ".png"}, "--camera nope"},
+      {{"--camera", "all", "-o", out + ".png"}, "put {camera} in the name"},
+      {{"--frames", "0:3", "-o", out + "_{camera}.png"}, "put {frame} or {frame:04}"},
+      {{"--frames", "3:1", "-o", out + ".png"}, "--frames: '3:1'"},
+      {{"--frames", "x", "-o", out + ".png"}, "--frames: 'x'"},
+      {{"--fps", "0", "-o", out + ".png"}, "--fps: 0"},
+      {{"--region", "40,0,9,4", "-o", out + ".png"}, "--region 40,0,9,4"},
+      {{"--region", "1,2,3", "-o", out + ".png"}, "--region: '1,2,3'"},
+      {{"--samples", "0:5", "-o", out + ".png"}, "--samples: '0:5'"},
+      {{"-o", out + "_{take}.png"}, "unknown placeholder {take}"},
+      {{"--camera", "dolly", "--orbit", "4", "-o", out + ".png"}, "--orbit"},
+      {{"--camera", "dolly", "--vfov", "30", "-o", out + ".png"}, "moves by keyframes"},
+  };
+  for (const auto& [args, expect] : cases) {
+    std::vector<std::string> full = {"render", "--scene", scene};
+    full.insert(full.end(), args.begin(), args.end());
+    const auto r = run_rtvk(full);
+    EXPECT_EQ(r.status, 2) << expect << ": " << r.err;
+    EXPECT_NE(r.err.find(expect), std::string::npos) << r.err;
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(dir.path())) files += e.path() != scene;
+    EXPECT_EQ(files, 0) << expect;
+  }
+}
+
+}  // namespace
+}  // namespace rtvk
