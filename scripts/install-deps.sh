@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs, from Debian bookworm's archive, every package rtvk needs to build, render and test.
 # Does nothing (and needs no network) when all of them are already installed.
+#   install-deps.sh          build and render
+#   install-deps.sh --test   also what only the tests use: Slurm, for the farm job files' test
 set -euo pipefail
 
 packages=(
@@ -10,7 +12,11 @@ packages=(
   libvulkan-dev libvulkan-volk-dev glslang-tools spirv-tools
   mesa-vulkan-drivers vulkan-validationlayers
   clang libclang-rt-14-dev
+  libopenexr-dev
 )
+if [ "${1:-}" = "--test" ]; then
+  packages+=(slurm-wlm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
