@@ -39,8 +39,8 @@ camera_pose orbit_at(const camera_pose& start, double period, double seconds) {
 camera_pose between(const camera_pose& a, const camera_pose& b, double f) {
   const glm::dquat q = glm::slerp(orientation(a), orientation(b), f);  // the short way round
   const glm::dmat3 frame = glm::mat3_cast(glm::normalize(q));
-  const double distance = glm::mix(glm::length(a.lookfrom - a.lookat),
-                                   glm::length(b.lookfrom - b.lookat), f);
+  const double distance =
+      glm::mix(glm::length(a.lookfrom - a.lookat), glm::length(b.lookfrom - b.lookat), f);
   camera_pose p;
   p.lookfrom = glm::mix(a.lookfrom, b.lookfrom, f);
   p.lookat = p.lookfrom - frame[2] * distance;

@@ -42,8 +42,9 @@ int run_merge(const merge_options& o) {
                 o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3);
   }
   if (!o.quiet)
-    std::fprintf(stderr, "rtvk: merged %zu part(s) of %s [camera %s, frame %d]: %dx%d, samples "
-                         "%d:%d -> %s\n",
+    std::fprintf(stderr,
+                 "rtvk: merged %zu part(s) of %s [camera %s, frame %d]: %dx%d, samples "
+                 "%d:%d -> %s\n",
                  parts.size(), m.summary.scene.c_str(), m.summary.camera.c_str(), m.summary.frame,
                  m.fb.width(), m.fb.height(), m.summary.window.sample_begin,
                  m.summary.window.sample_end, o.output.c_str());

@@ -102,9 +102,9 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
 void summarize(const run_context& run, const render_job& job, const std::string& backend,
                double seconds) {
   if (run.o.quiet) return;
-  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, on %s in %.3f s -> %s\n",
-               label(run, job).c_str(), run.win.width, run.win.height, run.win.samples(),
-               backend.c_str(), seconds, job.output.c_str());
+  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, on %s in %.3f s -> %s\n", label(run, job).c_str(),
+               run.win.width, run.win.height, run.win.samples(), backend.c_str(), seconds,
+               job.output.c_str());
 }
 
 framebuffer draw_cpu(const run_context& run, const render_job& job) {
@@ -178,9 +178,9 @@ int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
     for (std::size_t k = 0; k < part.size(); ++k) {
       if (run.o.backend == "both") all_alike &= check_against_cpu(run, part[k], fbs[k]);
       write_job(run, part[k], fbs[k]);
-      summarize(run, part[k], part.size() > 1 ? backend + ", " + std::to_string(part.size()) +
-                                                    " views together"
-                                              : backend,
+      summarize(run, part[k],
+                part.size() > 1 ? backend + ", " + std::to_string(part.size()) + " views together"
+                                : backend,
                 seconds);
     }
   }

@@ -81,7 +81,8 @@ std::string encode_png(const image_rgb8& img) {
 void write_image(const image_rgb8& img, const fs::path& path, ppm_encoding enc) {
   const file_format fmt = format_for_path(path, "output");
   if (fmt == file_format::exr)
-    throw std::logic_error("write_image: " + path.string() + ": 8-bit images are not written as "
+    throw std::logic_error("write_image: " + path.string() +
+                           ": 8-bit images are not written as "
                            "OpenEXR; write a partial_image");
   write_file_atomically(path, fmt == file_format::png ? encode_png(img) : encode_ppm(img, enc));
 }

@@ -38,7 +38,8 @@ void check_compatible(const std::vector<named_partial>& parts) {
     for (std::size_t k = 0; k < i; ++k)
       if (overlap(p.image.window, parts[k].image.window))
         throw usage_error(p.file + " (" + describe(p.image.window) + ") and " + parts[k].file +
-                          " (" + describe(parts[k].image.window) + ") hold the same samples of "
+                          " (" + describe(parts[k].image.window) +
+                          ") hold the same samples of "
                           "some pixels");
   }
 }
@@ -79,8 +80,7 @@ merged_render merge_partials(const std::vector<named_partial>& parts) {
                         std::to_string(begin[i]) + ":" + std::to_string(end[i]) + " of " + where +
                         " (a sample range is missing)");
     // A true division: a pixel from one piece gets back exactly its stored value.
-    out.fb.at(int(i % std::size_t(width)), int(i / std::size_t(width))) =
-        sum[i] / double(count[i]);
+    out.fb.at(int(i % std::size_t(width)), int(i / std::size_t(width))) = sum[i] / double(count[i]);
   }
   return out;
 }

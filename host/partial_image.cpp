@@ -46,9 +46,9 @@ Imf::FrameBuffer slices(float* rgb, const Imath::Box2i& data_window) {
   Imf::FrameBuffer fb;
   const char* names[] = {"R", "G", "B"};
   for (int c = 0; c < 3; ++c)
-    fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, rgb + c, data_window, 3 * sizeof(float),
-                                         std::size_t(data_window.size().x + 1) * 3 *
-                                             sizeof(float)));
+    fb.insert(names[c],
+              Imf::Slice::Make(Imf::FLOAT, rgb + c, data_window, 3 * sizeof(float),
+                               std::size_t(data_window.size().x + 1) * 3 * sizeof(float)));
   return fb;
 }
 
@@ -78,12 +78,13 @@ partial_image make_partial(const framebuffer& fb, const render_window& win, int 
 
 void write_partial_exr(const partial_image& p, const std::filesystem::path& path) {
   const Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(p.image_width - 1, p.image_height - 1));
-  const Imath::Box2i data(Imath::V2i(p.window.x, p.window.y),
-                          Imath::V2i(p.window.x + p.window.width - 1,
-                                     p.window.y + p.window.height - 1));
+  const Imath::Box2i data(
+      Imath::V2i(p.window.x, p.window.y),
+      Imath::V2i(p.window.x + p.window.width - 1, p.window.y + p.window.height - 1));
   Imf::Header h(display, data, 1, Imath::V2f(0, 0), 1, Imf::INCREASING_Y, Imf::ZIP_COMPRESSION);
   for (const char* c : {"R", "G", "B"}) h.channels().insert(c, Imf::Channel(Imf::FLOAT));
-  h.insert("rtvk.samples", Imf::V2iAttribute(Imath::V2i(p.window.sample_begin, p.window.sample_end)));
+  h.insert("rtvk.samples",
+           Imf::V2iAttribute(Imath::V2i(p.window.sample_begin, p.window.sample_end)));
   h.insert("rtvk.gamma", Imf::DoubleAttribute(p.gamma));
   h.insert("rtvk.fingerprint", Imf::StringAttribute(p.fingerprint));
   h.insert("rtvk.scene", Imf::StringAttribute(p.scene));
@@ -126,7 +127,7 @@ partial_image read_partial_exr(const std::filesystem::path& path) {
     p.image_width = display.max.x + 1;
     p.image_height = display.max.y + 1;
     p.window = {data.min.x, data.min.y, data.max.x - data.min.x + 1, data.max.y - data.min.y + 1,
-                samples.x, samples.y};
+                samples.x,  samples.y};
     if (p.window.sample_begin < 0 || p.window.sample_end <= p.window.sample_begin)
       throw image_read_error(name + ": rtvk.samples " + std::to_string(samples.x) + ":" +
                              std::to_string(samples.y) + " is not a sample range");

@@ -51,7 +51,8 @@ void check_window(const render_window& w, int width, int height) {
                                 std::to_string(height) + " image");
   };
   if (w.width < 1 || w.height < 1) fail("is empty: it needs a width and height >= 1");
-  if (w.x < 0 || w.y < 0 || w.x > width - w.width || w.y > height - w.height) fail("reaches outside");
+  if (w.x < 0 || w.y < 0 || w.x > width - w.width || w.y > height - w.height)
+    fail("reaches outside");
   if (w.sample_begin < 0 || w.sample_end <= w.sample_begin || w.sample_end > max_spp)
     throw std::invalid_argument("sample range " + std::to_string(w.sample_begin) + ":" +
                                 std::to_string(w.sample_end) + " is empty or outside [0, " +
@@ -61,9 +62,8 @@ void check_window(const render_window& w, int width, int height) {
 framebuffer render_cpu(const camera& cam, const scene& s, const render_settings& rs,
                        const progress_callback& progress, const engine_options& engine,
                        render_stats* stats) {
-  return render_cpu_window(cam, s, rs,
-                           whole_render(cam.image_width(), cam.image_height(), rs.spp), progress,
-                           engine, stats);
+  return render_cpu_window(cam, s, rs, whole_render(cam.image_width(), cam.image_height(), rs.spp),
+                           progress, engine, stats);
 }
 
 framebuffer render_cpu_window(const camera& cam, const scene& s, const render_settings& rs,

@@ -54,7 +54,8 @@ std::string job_fingerprint(const scene& s, const camera_pose& pose) {
 
 }  // namespace
 
-int_range parse_range(const std::string& text, const std::string& flag, int lo, int hi) {
+int_range parse_range(const std::string& text, const std::string& flag, int lo, int hi,
+                      const std::string& hi_note) {
   const auto colon = text.find(':');
   int_range r;
   bool ok;
@@ -67,7 +68,7 @@ int_range parse_range(const std::string& text, const std::string& flag, int lo, 
   }
   if (!ok || r.begin < lo || r.end > hi || r.begin >= r.end)
     throw usage_error(flag + ": '" + text + "' is not A:B (A up to, not including, B) or N with " +
-                      std::to_string(lo) + " <= A < B <= " + std::to_string(hi));
+                      std::to_string(lo) + " <= A < B <= " + std::to_string(hi) + hi_note);
   return r;
 }
 
@@ -115,8 +116,8 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_
                                   render_window& window) {
   select_cameras(s, req.cameras);
   flags.apply(s);
-  const int_range frames = req.frames.empty() ? int_range{0, 1}
-                                              : parse_range(req.frames, "--frames", 0, 1'000'000);
+  const int_range frames =
+      req.frames.empty() ? int_range{0, 1} : parse_range(req.frames, "--frames", 0, 1'000'000);
   if (!(req.fps > 0)) throw usage_error("--fps: " + format_number(req.fps) + " is not > 0");
   const std::size_t count = s.cameras.size() * std::size_t(frames.end - frames.begin);
   if (count > 100'000)
@@ -134,11 +135,11 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_
   for (const named_camera& c : s.cameras)
     for (int f = frames.begin; f < frames.end; ++f) {
       const camera_pose pose = c.path.at(f / req.fps);
-      render_job job{c.name, f,
-                     flags.make_camera(s, pose,
-                                       "camera " + c.name + " of " + s.name + " at frame " +
-                                           std::to_string(f)),
-                     expand_output(req.output, c.name, f), job_fingerprint(s, pose)};
+      render_job job{
+          c.name, f,
+          flags.make_camera(
+              s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f)),
+          expand_output(req.output, c.name, f), job_fingerprint(s, pose)};
       if (!outputs.insert(job.output).second)
         throw usage_error("--output " + req.output + ": two images would be written to " +
                           job.output);
@@ -158,7 +159,8 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_
   }
   const int_range samples = req.samples.empty()
                                 ? int_range{0, s.render.spp}
-                                : parse_range(req.samples, "--samples", 0, s.render.spp);
+                                : parse_range(req.samples, "--samples", 0, s.render.spp,
+                                              " (the samples per pixel, --spp)");
   window.sample_begin = samples.begin;
   window.sample_end = samples.end;
   return jobs;

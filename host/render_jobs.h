@@ -17,7 +17,9 @@ struct int_range {
 };
 
 // Parses "A:B" or "N" with lo <= A < B <= hi. Throws usage_error naming the flag and the text.
-int_range parse_range(const std::string& text, const std::string& flag, int lo, int hi);
+// `hi_note` follows hi in the message, saying where the limit comes from.
+int_range parse_range(const std::string& text, const std::string& flag, int lo, int hi,
+                      const std::string& hi_note = "");
 
 // Parses "x,y,w,h" (four integers). Throws usage_error naming the flag and the text.
 render_window parse_region(const std::string& text, const std::string& flag);

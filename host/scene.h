@@ -33,13 +33,13 @@ struct named_material {
 // What to render, independent of the backend: the CPU builds a hittable_list from it, the GPU
 // packs the same spheres and materials into storage buffers.
 struct scene {
-  std::string name;                       // built-in name or the file it came from
+  std::string name;                                    // built-in name or the file it came from
   std::vector<named_camera> cameras{{"default", {}}};  // at least one; the first is the
-                                                      // default; the lesson's camera unless set
-  render_settings render;                 // default image size, samples, depth, ...
-  rtvk::sky sky;                          // what rays that escape see
-  std::vector<named_material> materials;  // spheres index into this
-  std::vector<sphere> spheres;            // every object, in the order hits are tested
+                                                       // default; the lesson's camera unless set
+  render_settings render;                              // default image size, samples, depth, ...
+  rtvk::sky sky;                                       // what rays that escape see
+  std::vector<named_material> materials;               // spheres index into this
+  std::vector<sphere> spheres;                         // every object, in the order hits are tested
 };
 
 hittable_list make_world(const scene& s);

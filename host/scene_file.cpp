@@ -105,7 +105,7 @@ std::string escape_pointer(const std::string& key) {
   return out;
 }
 
-const std::set<std::string> pose_fields = {"lookfrom", "lookat", "vup",
+const std::set<std::string> pose_fields = {"lookfrom", "lookat",   "vup",
                                            "vfov",     "aperture", "focus_dist"};
 
 // The pose fields of `j` over the defaults; the caller has checked which fields may appear.
@@ -185,8 +185,9 @@ std::vector<named_camera> read_cameras(const scene_reader& r, const json& root) 
   for (const auto& [name, value] : j.items()) {
     const std::string p = "/cameras/" + escape_pointer(name);
     if (!valid_camera_name(name))
-      r.fail(p, "camera names may use letters, digits, '-', '_' and '.' (not first), at most 64 "
-                "characters, and not \"all\"");
+      r.fail(p,
+             "camera names may use letters, digits, '-', '_' and '.' (not first), at most 64 "
+             "characters, and not \"all\"");
     cams.push_back({name, read_camera(r, value, p)});
   }
   return cams;
@@ -250,7 +251,6 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
   }
   return m;
 }
-
 
 scene read_scene(const scene_reader& r, const json& root, const std::string& name) {
   r.only_fields(root, "", {"camera", "cameras", "render", "sky", "materials", "spheres"});

@@ -69,8 +69,7 @@ void scene_flags::apply(scene& s) const {
     if (given(vup_opt_)) c.vup = parse_vec3(vup_, "--vup");
     if (given(vfov_opt_))
       c.vfov = checked(vfov_, vfov_ > 0 && vfov_ < 180, "--vfov", "in (0, 180) degrees");
-    if (given(aperture_opt_))
-      c.aperture = checked(aperture_, aperture_ >= 0, "--aperture", ">= 0");
+    if (given(aperture_opt_)) c.aperture = checked(aperture_, aperture_ >= 0, "--aperture", ">= 0");
     if (given(focus_dist_opt_))
       c.focus_dist = checked(focus_dist_, focus_dist_ > 0, "--focus-dist", "> 0");
     if (given(orbit_opt_)) {

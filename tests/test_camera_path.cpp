@@ -62,11 +62,11 @@ camera_keyframe key(double time, point3 from, point3 at, double vfov) {
 }
 
 TEST(CameraPath, KeyframesAreHeldAndBlended) {
-  const camera_path path{camera_motion::keyframes,
-                         {},
-                         0,
-                         {key(1, point3(0, 0, 4), point3(0, 0, 0), 30),
-                          key(3, point3(4, 0, 4), point3(4, 0, 0), 50)}};
+  const camera_path path{
+      camera_motion::keyframes,
+      {},
+      0,
+      {key(1, point3(0, 0, 4), point3(0, 0, 0), 30), key(3, point3(4, 0, 4), point3(4, 0, 0), 50)}};
   EXPECT_EQ(path.at(-5).lookfrom, point3(0, 0, 4));  // before the first: held
   EXPECT_EQ(path.at(1).lookfrom, point3(0, 0, 4));   // at a keyframe: exactly its pose
   EXPECT_EQ(path.at(3).lookat, point3(4, 0, 0));

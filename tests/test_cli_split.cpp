@@ -54,8 +54,8 @@ TEST_F(CliSplitGpu, AllCamerasInOneRunEachEqualTheCameraAlone) {
   EXPECT_NE(all.err.find("4 views together"), std::string::npos) << all.err;
   for (const std::string name : {"front", "left", "top", "dolly"}) {
     const fs::path alone = dir.path() / ("alone_" + name + ".png");
-    const auto r = run_rtvk(gpu_args({"render", "--scene", scene, "--camera", name, "--frames",
-                                      "1", "-o", alone.string()}));
+    const auto r = run_rtvk(gpu_args(
+        {"render", "--scene", scene, "--camera", name, "--frames", "1", "-o", alone.string()}));
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string together = slurp(dir.path() / ("all_" + name + ".png"));
     EXPECT_FALSE(together.empty()) << name;
@@ -68,7 +68,7 @@ TEST_F(CliSplitGpu, GpuTilesMergeToTheWholeRenderAndSampleHalvesAgree) {
   test::temp_dir dir;
   auto at = [&](const std::string& f) { return (dir.path() / f).string(); };
   const std::vector<std::string> base = {"render", "--scene", "book-final", "--width", "50",
-                                         "--spp", "4", "--depth", "8", "-q"};
+                                         "--spp",  "4",       "--depth",    "8",       "-q"};
   auto render = [&](std::vector<std::string> extra) {
     std::vector<std::string> args = base;
     args.insert(args.end(), extra.begin(), extra.end());
@@ -86,8 +86,8 @@ TEST_F(CliSplitGpu, GpuTilesMergeToTheWholeRenderAndSampleHalvesAgree) {
   ASSERT_EQ(halves.status, 0) << halves.err;
   EXPECT_NE(halves.err.find("samples 0:4"), std::string::npos) << halves.err;
   // Float sums in another order: equal to within a level almost everywhere.
-  const auto cmp = run_rtvk({"compare", at("halves.png"), at("whole.png"), "--tolerance", "1",
-                             "--max-share", "0.001"});
+  const auto cmp = run_rtvk(
+      {"compare", at("halves.png"), at("whole.png"), "--tolerance", "1", "--max-share", "0.001"});
   EXPECT_EQ(cmp.status, 0) << cmp.out;
 }
 
@@ -115,8 +115,8 @@ TEST(CliSplit, CpuSplitsMergeAndMergeRefusesMismatches) {
   test::temp_dir dir;
   auto at = [&](const std::string& f) { return (dir.path() / f).string(); };
   auto render = [&](std::vector<std::string> extra) {
-    std::vector<std::string> args = {"render", "--scene", "materials", "--width", "40", "--spp",
-                                     "4", "-q"};
+    std::vector<std::string> args = {"render", "--scene", "materials", "--width",
+                                     "40",     "--spp",   "4",         "-q"};
     args.insert(args.end(), extra.begin(), extra.end());
     return run_rtvk(args);
   };
@@ -124,12 +124,10 @@ TEST(CliSplit, CpuSplitsMergeAndMergeRefusesMismatches) {
   ASSERT_EQ(render({"--region", "0,0,40,10", "-o", at("top.exr")}).status, 0);
   ASSERT_EQ(render({"--region", "0,10,40,12", "-o", at("bottom.exr")}).status, 0);
   ASSERT_EQ(run_rtvk({"merge", at("whole.exr"), "-o", at("whole.ppm")}).status, 0);
-  ASSERT_EQ(run_rtvk({"merge", at("top.exr"), at("bottom.exr"), "-o", at("tiles.ppm")}).status,
-            0);
+  ASSERT_EQ(run_rtvk({"merge", at("top.exr"), at("bottom.exr"), "-o", at("tiles.ppm")}).status, 0);
   EXPECT_EQ(slurp(at("tiles.ppm")), slurp(at("whole.ppm")));
   // A merged .exr merges again, and the result is unchanged.
-  ASSERT_EQ(run_rtvk({"merge", at("top.exr"), at("bottom.exr"), "-o", at("again.exr")}).status,
-            0);
+  ASSERT_EQ(run_rtvk({"merge", at("top.exr"), at("bottom.exr"), "-o", at("again.exr")}).status, 0);
   ASSERT_EQ(run_rtvk({"merge", at("again.exr"), "-o", at("again.ppm")}).status, 0);
   EXPECT_EQ(slurp(at("again.ppm")), slurp(at("whole.ppm")));
 

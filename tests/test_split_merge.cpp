@@ -52,10 +52,9 @@ void tiles_equal_the_whole(const scene& s, const window_renderer& draw) {
   // Uneven tiles: a 2x2 grid split off-center.
   const int cx = w / 3, cy = h / 2 + 1;
   std::vector<named_partial> tiles;
-  for (const render_window& t : {render_window{0, 0, cx, cy, 0, n},
-                                 render_window{cx, 0, w - cx, cy, 0, n},
-                                 render_window{0, cy, cx, h - cy, 0, n},
-                                 render_window{cx, cy, w - cx, h - cy, 0, n}})
+  for (const render_window& t :
+       {render_window{0, 0, cx, cy, 0, n}, render_window{cx, 0, w - cx, cy, 0, n},
+        render_window{0, cy, cx, h - cy, 0, n}, render_window{cx, cy, w - cx, h - cy, 0, n}})
     tiles.push_back(through_file(piece(s, cam, t, draw), dir));
   const merged_render m = merge_partials(tiles);
   EXPECT_EQ(m.summary.window, whole.image.window);
@@ -73,8 +72,8 @@ void sample_halves_equal_the_whole(const scene& s, const window_renderer& draw, 
   const camera cam = test::scene_camera(s);
   const int w = cam.image_width(), h = cam.image_height(), n = s.render.spp;
   const named_partial whole = piece(s, cam, whole_render(w, h, n), draw);
-  const merged_render m = merge_partials({piece(s, cam, {0, 0, w, h, 0, 3}, draw),
-                                          piece(s, cam, {0, 0, w, h, 3, n}, draw)});
+  const merged_render m = merge_partials(
+      {piece(s, cam, {0, 0, w, h, 0, 3}, draw), piece(s, cam, {0, 0, w, h, 3, n}, draw)});
   EXPECT_EQ(m.summary.window, whole.image.window);
   double worst = 0;
   for (int y = 0; y < h; ++y)

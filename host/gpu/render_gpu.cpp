@@ -114,8 +114,7 @@ framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
 
 std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<camera>& views,
                                           const scene& s, const render_settings& rs,
-                                          const render_window& win,
-                                          const sample_progress& progress,
+                                          const render_window& win, const sample_progress& progress,
                                           const engine_options& engine, render_stats* stats) {
   check_views(views, win);
   const device_info& dev = ctx.device();
@@ -138,9 +137,8 @@ std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<ca
   const device_array<bvh_node> nodes(ctx, tree.nodes());
   const device_array<std::uint32_t> bvh_index(ctx, tree.index());
   // One 32-bit counter per pixel: it holds at most spp * max_depth rays.
-  const bool count_rays = engine.count_rays && std::uint64_t(win.samples()) *
-                                                       std::uint64_t(rs.max_depth) <
-                                                   (1ull << 32);
+  const bool count_rays = engine.count_rays &&
+                          std::uint64_t(win.samples()) * std::uint64_t(rs.max_depth) < (1ull << 32);
   const VkDeviceSize count_bytes = count_rays ? group_pixels * sizeof(std::uint32_t) : 4;
   constexpr VkBufferUsageFlags storage_copy = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
@@ -196,7 +194,8 @@ std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<ca
 
     for (std::uint32_t band = 0; band < bands; ++band) {
       push.band_y0 = std::uint32_t(win.y) + band * layout.band_rows;
-      push.band_rows = std::min(layout.band_rows, std::uint32_t(win.height) - band * layout.band_rows);
+      push.band_rows =
+          std::min(layout.band_rows, std::uint32_t(win.height) - band * layout.band_rows);
       // Submissions grow from one sample until each takes about a quarter second: long enough to
       // keep the device busy, short enough for progress, interruption and the fence timeout.
       int done = 0;
@@ -261,8 +260,7 @@ std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<ca
               " (lavapipe silently stops loops at 65,535, so rtvk stops first and writes no "
               "image): lower --depth or use fewer spheres");
         done += count;
-        if (progress)
-          progress(int((std::int64_t(group * bands + band) * samples + done) / passes));
+        if (progress) progress(int((std::int64_t(group * bands + band) * samples + done) / passes));
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (seconds < 0.25) batch = std::min(batch * 2, 256);
