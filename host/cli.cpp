@@ -47,7 +47,7 @@ int run_cli(int argc, char** argv) {
   } catch (const render_cancelled& e) {
     const int sig = pending_signal();
     std::cerr << "rtvk: interrupted by " << (sig == SIGTERM ? "SIGTERM" : "SIGINT") << ": "
-              << e.what() << "; no image written\n";
+              << e.what() << "; the image being rendered was not written\n";
     return 128 + (sig ? sig : SIGINT);
   } catch (const image_read_error& e) {
     std::cerr << "rtvk: " << e.what() << '\n';

@@ -74,7 +74,8 @@ struct run_context {
   const scene& s;
   const render_window& win;
   ppm_encoding enc;
-  bool several;  // more than one image: each summary line names its camera and frame
+  bool several;          // more than one image: each summary line names its camera and frame
+  std::size_t* written;  // images finished and written so far
 };
 
 std::string label(const run_context& run, const render_job& job) {
@@ -97,6 +98,7 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
   } else {
     write_image(quantize(fb, run.s.render.gamma), job.output, run.enc);
   }
+  ++*run.written;
 }
 
 void summarize(const run_context& run, const render_job& job, const std::string& backend,
@@ -187,20 +189,9 @@ int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
   return all_alike ? 0 : 1;
 }
 
-int run_render(render_options o) {
-  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
-  if (!o.device.empty() && o.backend == "cpu")
-    throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");
-  scene s = load_scene(o.scene);
-  check_scene(s);
-  render_window win;
-  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, o.flags, win);
-  const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win);
-  check_render_memory(win.width, win.height,
-                      int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));
-  const run_context run{o, s, win,
-                        o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3,
-                        jobs.size() > 1};
+// Every job on the backend asked for: GPU groups, or the CPU one job at a time.
+int render_all(const run_context& run, const std::vector<render_job>& jobs) {
+  const render_options& o = run.o;
 
   if (o.backend != "cpu") {
     std::unique_ptr<gpu::gpu_context> ctx;
@@ -220,6 +211,33 @@ int run_render(render_options o) {
     summarize(run, job, "cpu", seconds);
   }
   return 0;
+}
+
+int run_render(render_options o) {
+  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
+  if (!o.device.empty() && o.backend == "cpu")
+    throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");
+  scene s = load_scene(o.scene);
+  check_scene(s);
+  render_window win;
+  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, o.flags, win);
+  const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win);
+  check_render_memory(win.width, win.height,
+                      int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));
+  std::size_t written = 0;
+  const run_context run{o,
+                        s,
+                        win,
+                        o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3,
+                        jobs.size() > 1,
+                        &written};
+  try {
+    return render_all(run, jobs);
+  } catch (const render_cancelled& e) {
+    if (!run.several) throw;
+    throw render_cancelled(std::string(e.what()) + " (" + std::to_string(written) + " of " +
+                           std::to_string(jobs.size()) + " images were finished and written)");
+  }
 }
 
 }  // namespace

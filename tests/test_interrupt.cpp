@@ -32,7 +32,7 @@ void expect_interrupted(const std::string& backend, int sig, int status, const c
   EXPECT_NE(r.err.find(std::string("interrupted by ") + name + ": stopped after"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("no image written"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("was not written"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("validation:"), std::string::npos) << "clean shutdown: " << r.err;
   EXPECT_TRUE(fs::is_empty(dir.path())) << "no file, not even a temporary one";
 }
