@@ -32,6 +32,11 @@ stop_daemons() {
   rm -rf "$dir"
 }
 trap stop_daemons EXIT
+on_error() {
+  echo "FAIL: line $1 of run_job_array.sh exited $2; Slurm's logs:"
+  tail -n 15 "$dir"/*.log 2>/dev/null || true
+}
+trap 'on_error $LINENO $?' ERR
 
 host=$(hostname -s)
 port=$((20000 + RANDOM % 20000))
