@@ -45,7 +45,7 @@ chmod 400 "$dir/munge.key"
 mkdir -p "$dir/state" "$dir/spool"
 cat >"$dir/slurm.conf" <<CONF
 ClusterName=rtvk-test
-SlurmctldHost=$host
+SlurmctldHost=$host(127.0.0.1)
 SlurmctldPort=$port
 SlurmdPort=$((port + 1))
 SlurmUser=root
@@ -67,7 +67,7 @@ SelectType=select/cons_tres
 SelectTypeParameters=CR_Core
 ReturnToService=2
 MpiDefault=none
-NodeName=$host CPUs=$(nproc) State=UNKNOWN
+NodeName=$host NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
 PartitionName=test Nodes=$host Default=YES MaxTime=30 State=UP
 CONF
 export SLURM_CONF=$dir/slurm.conf
@@ -77,10 +77,10 @@ munged --socket="$dir/munge.socket" --key-file="$dir/munge.key" --pid-file="$dir
 slurmctld -f "$SLURM_CONF"
 slurmd -f "$SLURM_CONF"
 for _ in $(seq 60); do
-  [[ $(sinfo -h -o %t 2>/dev/null) == idle ]] && break
+  [[ $(timeout 5 sinfo -h -o %t 2>/dev/null) == idle ]] && break
   sleep 0.5
 done
-[[ $(sinfo -h -o %t) == idle ]] || {
+[[ $(timeout 5 sinfo -h -o %t 2>/dev/null) == idle ]] || {
   echo "FAIL: the Slurm node did not come up"
   tail -n 20 "$dir"/*.log
   exit 1
