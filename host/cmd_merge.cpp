@@ -22,13 +22,13 @@ struct merge_options {
 
 int run_merge(const merge_options& o) {
   check_output_path(o.output, "--output", true);
-  std::vector<named_partial> parts;
-  for (const std::string& file : o.parts) {
-    parts.push_back({file, read_partial_exr(file)});
-    if (parts.size() == 1)
-      check_render_memory(parts[0].image.image_width, parts[0].image.image_height, 2);
+  render_merger merger;
+  for (std::size_t k = 0; k < o.parts.size(); ++k) {
+    const partial_image piece = read_partial_exr(o.parts[k]);  // one piece in memory at a time
+    if (k == 0) check_render_memory(piece.image_width, piece.image_height, 3);
+    merger.add(o.parts[k], piece);
   }
-  const merged_render m = merge_partials(parts);
+  const merged_render m = merger.finish();
   if (format_for_path(o.output, "--output") == file_format::exr) {
     partial_image whole = make_partial(m.fb, m.summary.window, m.fb.width(), m.fb.height());
     whole.gamma = m.summary.gamma;
@@ -45,7 +45,7 @@ int run_merge(const merge_options& o) {
     std::fprintf(stderr,
                  "rtvk: merged %zu part(s) of %s [camera %s, frame %d]: %dx%d, samples "
                  "%d:%d -> %s\n",
-                 parts.size(), m.summary.scene.c_str(), m.summary.camera.c_str(), m.summary.frame,
+                 o.parts.size(), m.summary.scene.c_str(), m.summary.camera.c_str(), m.summary.frame,
                  m.fb.width(), m.fb.height(), m.summary.window.sample_begin,
                  m.summary.window.sample_end, o.output.c_str());
   return 0;

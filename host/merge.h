@@ -20,10 +20,30 @@ struct merged_render {
   partial_image summary;  // the pieces' header fields, with the whole image's window (rgb empty)
 };
 
-// Throws usage_error, naming the files, when the pieces are not of one render (different image
-// size, fingerprint or gamma), when two of them hold the same samples of a pixel, or when the
-// pieces leave pixels or samples out: every pixel must end up with the same, gap-free range of
-// samples.
+// Combines pieces one at a time, so a merge of many full-image sample ranges holds one piece in
+// memory, not all of them. add() throws usage_error, naming the files, for a piece of another
+// render (image size, fingerprint or gamma) or one holding samples of some pixel that an earlier
+// piece holds; finish() throws usage_error when the pieces leave pixels or samples out: every
+// pixel must end up with the same, gap-free range of samples.
+class render_merger {
+ public:
+  void add(const std::string& file, const partial_image& piece);
+  merged_render finish() const;
+
+ private:
+  struct seen {
+    std::string file;      // for messages
+    render_window window;  // what it held
+  };
+  partial_image first_;           // the first piece's header fields (no pixels)
+  std::string first_file_;        // and its file
+  std::vector<seen> seen_;        // every piece so far
+  std::vector<color> sum_;        // per pixel: sum of mean * samples
+  std::vector<int> count_;        // per pixel: samples added
+  std::vector<int> begin_, end_;  // per pixel: smallest and largest sample index bound
+};
+
+// All of `parts` through a render_merger.
 merged_render merge_partials(const std::vector<named_partial>& parts);
 
 }  // namespace rtvk
