@@ -24,8 +24,8 @@ bool overlap(const render_window& a, const render_window& b) {
 
 void render_merger::add(const std::string& file, const partial_image& p) {
   if (seen_.empty()) {
-    first_ = p;
-    first_.rgb.clear();
+    first_ = partial_image{p.image_width, p.image_height, p.window, {},     p.gamma,
+                           p.fingerprint, p.scene,        p.camera, p.frame};
     first_file_ = file;
     const std::size_t pixels = std::size_t(p.image_width) * std::size_t(p.image_height);
     sum_.assign(pixels, color(0));
