@@ -30,13 +30,7 @@ int run_merge(const merge_options& o) {
   }
   const merged_render m = merger.finish();
   if (format_for_path(o.output, "--output") == file_format::exr) {
-    partial_image whole = make_partial(m.fb, m.summary.window, m.fb.width(), m.fb.height());
-    whole.gamma = m.summary.gamma;
-    whole.fingerprint = m.summary.fingerprint;
-    whole.scene = m.summary.scene;
-    whole.camera = m.summary.camera;
-    whole.frame = m.summary.frame;
-    write_partial_exr(whole, o.output);
+    write_partial_exr(make_partial(m.fb, m.summary), o.output);
   } else {
     write_image(quantize(m.fb, m.summary.gamma), o.output,
                 o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3);

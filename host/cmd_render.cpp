@@ -88,13 +88,16 @@ std::string label(const run_context& run, const render_job& job) {
 void write_job(const run_context& run, const render_job& job, const framebuffer& fb) {
   if (pending_signal() != 0) throw render_cancelled("the render had finished");
   if (format_for_path(job.output, "--output") == file_format::exr) {
-    partial_image p = make_partial(fb, run.win, job.cam.image_width(), job.cam.image_height());
-    p.gamma = run.s.render.gamma;
-    p.fingerprint = job.fingerprint;
-    p.scene = run.s.name;
-    p.camera = job.camera_name;
-    p.frame = job.frame;
-    write_partial_exr(p, job.output);
+    write_partial_exr(make_partial(fb, {job.cam.image_width(),
+                                        job.cam.image_height(),
+                                        run.win,
+                                        {},
+                                        run.s.render.gamma,
+                                        job.fingerprint,
+                                        run.s.name,
+                                        job.camera_name,
+                                        job.frame}),
+                      job.output);
   } else {
     write_image(quantize(fb, run.s.render.gamma), job.output, run.enc);
   }

@@ -63,12 +63,9 @@ const Attr& attribute(const Imf::Header& h, const char* name, const std::string&
 
 }  // namespace
 
-partial_image make_partial(const framebuffer& fb, const render_window& win, int image_width,
-                           int image_height) {
-  partial_image p;
-  p.image_width = image_width;
-  p.image_height = image_height;
-  p.window = win;
+partial_image make_partial(const framebuffer& fb, partial_image header) {
+  partial_image p = std::move(header);
+  p.rgb.clear();
   p.rgb.reserve(std::size_t(fb.width()) * std::size_t(fb.height()) * 3);
   for (int y = 0; y < fb.height(); ++y)
     for (int x = 0; x < fb.width(); ++x)
@@ -93,8 +90,8 @@ void write_partial_exr(const partial_image& p, const std::filesystem::path& path
   memory_stream out;
   try {
     Imf::OutputFile file(out, h, 1);
-    std::vector<float> pixels = p.rgb;  // OpenEXR's slices take non-const pointers
-    file.setFrameBuffer(slices(pixels.data(), data));
+    // Slices take non-const pointers for both directions; an OutputFile only reads them.
+    file.setFrameBuffer(slices(const_cast<float*>(p.rgb.data()), data));
     file.writePixels(p.window.height);
   } catch (const std::exception& e) {
     throw std::runtime_error("OpenEXR: encoding " + path.string() + ": " + e.what());

@@ -25,9 +25,9 @@ struct partial_image {
   int frame = 0;            // animation frame
 };
 
-// The piece of a render: `fb` (win.width x win.height) with its window.
-partial_image make_partial(const framebuffer& fb, const render_window& win, int image_width,
-                           int image_height);
+// `header` (every field but rgb) with the pixels of `fb`, which is header.window.width x
+// header.window.height, rounded to float.
+partial_image make_partial(const framebuffer& fb, partial_image header);
 
 // Writes atomically (never a partial file at `path`). Throws std::runtime_error on failure.
 void write_partial_exr(const partial_image& p, const std::filesystem::path& path);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <set>
 
 #include "errors.h"
@@ -43,13 +44,23 @@ void select_cameras(scene& s, const std::vector<std::string>& asked) {
 }
 
 // What identifies the image a job draws, whatever machine draws it: the scene as a file would
-// hold it with only this camera, posed, and the sample count left out (pieces of one render may
-// come from runs with different --spp as long as their sample ranges do not overlap).
-std::string job_fingerprint(const scene& s, const camera_pose& pose) {
-  scene one = s;
-  one.cameras = {{"default", camera_path{camera_motion::fixed, pose, 0, {}}}};
-  one.render.spp = 1;
-  return fingerprint_of(dump_scene_json(one));
+// hold it, without its cameras and with the sample count left out (pieces of one render may come
+// from runs with different --spp as long as their sample ranges do not overlap), then the job's
+// pose. The scene part is the same for every job of a run: dumped once.
+std::string scene_identity(const scene& s) {
+  scene rest = s;
+  rest.cameras.clear();
+  rest.render.spp = 1;
+  return dump_scene_json(rest);
+}
+
+std::string job_fingerprint(const std::string& scene_text, const camera_pose& p) {
+  char pose[512];
+  std::snprintf(pose, sizeof pose,
+                "%.17g %.17g %.17g|%.17g %.17g %.17g|%.17g %.17g %.17g|%.17g %.17g %.17g",
+                p.lookfrom.x, p.lookfrom.y, p.lookfrom.z, p.lookat.x, p.lookat.y, p.lookat.z,
+                p.vup.x, p.vup.y, p.vup.z, p.vfov, p.aperture, p.focus_dist);
+  return fingerprint_of(scene_text + pose);
 }
 
 }  // namespace
@@ -130,6 +141,7 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_
     throw usage_error("--output " + req.output + ": " + std::to_string(frames.end - frames.begin) +
                       " frames would share it; put {frame} or {frame:04} in the name");
 
+  const std::string scene_text = scene_identity(s);
   std::vector<render_job> jobs;
   std::set<std::string> outputs;
   for (const named_camera& c : s.cameras)
@@ -139,7 +151,7 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_
           c.name, f,
           flags.make_camera(
               s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f)),
-          expand_output(req.output, c.name, f), job_fingerprint(s, pose)};
+          expand_output(req.output, c.name, f), job_fingerprint(scene_text, pose)};
       if (!outputs.insert(job.output).second)
         throw usage_error("--output " + req.output + ": two images would be written to " +
                           job.output);

@@ -176,12 +176,12 @@ std::vector<named_camera> read_cameras(const scene_reader& r, const json& root) 
   if (root.contains("camera") && root.contains("cameras"))
     r.fail("/cameras", "a scene has either \"camera\" (one) or \"cameras\" (named), not both");
   if (root.contains("camera")) return {{"default", read_camera(r, root["camera"], "/camera")}};
-  std::vector<named_camera> cams;
   if (!root.contains("cameras")) return {{"default", {}}};
   const json& j = root["cameras"];
   if (!j.is_object() || j.empty())
     r.fail("/cameras", "expected an object of named cameras, got " +
                            (j.is_object() ? std::string("an empty one") : r.type_of(j)));
+  std::vector<named_camera> cams;
   for (const auto& [name, value] : j.items()) {
     const std::string p = "/cameras/" + escape_pointer(name);
     if (!valid_camera_name(name))

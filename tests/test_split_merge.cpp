@@ -29,9 +29,8 @@ using window_renderer = std::function<framebuffer(const render_window&)>;
 
 named_partial piece(const scene& s, const camera& cam, const render_window& w,
                     const window_renderer& draw) {
-  partial_image p = make_partial(draw(w), w, cam.image_width(), cam.image_height());
-  p.fingerprint = "test";
-  p.gamma = s.render.gamma;
+  partial_image p = make_partial(
+      draw(w), {cam.image_width(), cam.image_height(), w, {}, s.render.gamma, "test", "", "", 0});
   return {"piece " + std::to_string(w.x) + "," + std::to_string(w.y) + " " +
               std::to_string(w.sample_begin),
           std::move(p)};
@@ -168,12 +167,8 @@ TEST(SplitMerge, ExrPiecesKeepTheirHeader) {
   test::temp_dir dir;
   framebuffer fb(3, 2);
   fb.at(2, 1) = color(0.25, 1e-8, 7.5);
-  partial_image p = make_partial(fb, {4, 5, 3, 2, 10, 20}, 9, 8);
-  p.gamma = 2;
-  p.fingerprint = "0123456789abcdef";
-  p.scene = "book-final";
-  p.camera = "front";
-  p.frame = 17;
+  const partial_image p = make_partial(
+      fb, {9, 8, {4, 5, 3, 2, 10, 20}, {}, 2, "0123456789abcdef", "book-final", "front", 17});
   write_partial_exr(p, dir.path() / "p.exr");
   const partial_image q = read_partial_exr(dir.path() / "p.exr");
   EXPECT_EQ(q.window, p.window);

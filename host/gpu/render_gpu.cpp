@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <span>
 
 #include "buffer.h"
 #include "bvh.h"
@@ -99,6 +100,25 @@ void check_views(const std::vector<camera>& views, const render_window& win) {
     if (c.image_width() != views[0].image_width() || c.image_height() != views[0].image_height())
       throw std::invalid_argument("render_gpu_views: views of different image sizes");
   check_window(win, views[0].image_width(), views[0].image_height());
+}
+
+// Fails the render when any invocation ran out of its loop budget.
+void check_overrun(const render_status& st, std::uint32_t budget, const device_info& dev) {
+  if (st.overrun_pixels > 0)
+    throw loop_budget_error(std::to_string(st.overrun_pixels) + " pixel samples needed more than " +
+                            std::to_string(budget) + " loop iterations on " + dev.name +
+                            " (lavapipe silently stops loops at 65,535, so rtvk stops first and "
+                            "writes no image): lower --depth or use fewer spheres");
+}
+
+// The readback of one band -- for each view in turn, `rows` rows of sums -- divided into means
+// and placed at row `first_row` of each view's framebuffer.
+void unpack_band(const float* rgb, std::span<framebuffer> views, int first_row, int rows,
+                 int samples) {
+  for (framebuffer& fb : views)
+    for (int row = first_row; row < first_row + rows; ++row)
+      for (int x = 0; x < fb.width(); ++x, rgb += 3)
+        fb.at(x, row) = divide(color(rgb[0], rgb[1], rgb[2]), samples);
 }
 
 }  // namespace
@@ -252,13 +272,7 @@ std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<ca
         });
         uploaded = true;
         if (stats) ++stats->submissions;
-        const auto* st = static_cast<const render_status*>(status.read());
-        if (st->overrun_pixels > 0)
-          throw loop_budget_error(
-              std::to_string(st->overrun_pixels) + " pixel samples needed more than " +
-              std::to_string(push.loop_budget) + " loop iterations on " + dev.name +
-              " (lavapipe silently stops loops at 65,535, so rtvk stops first and writes no "
-              "image): lower --depth or use fewer spheres");
+        check_overrun(*static_cast<const render_status*>(status.read()), push.loop_budget, dev);
         done += count;
         if (progress) progress(int((std::int64_t(group * bands + band) * samples + done) / passes));
         const double seconds =
@@ -271,14 +285,9 @@ std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<ca
         const auto* counts = static_cast<const std::uint32_t*>(ray_readback.read());
         for (std::size_t i = 0; i < band_pixels * group_views; ++i) stats->rays += counts[i];
       }
-      const float* rgb = static_cast<const float*>(readback.read());
-      for (std::uint32_t v = 0; v < group_views; ++v) {
-        framebuffer& fb = out[first_view + v];
-        for (std::uint32_t row = 0; row < push.band_rows; ++row)
-          for (int x = 0; x < win.width; ++x, rgb += 3)
-            fb.at(x, int(push.band_y0 - std::uint32_t(win.y) + row)) =
-                divide(color(rgb[0], rgb[1], rgb[2]), samples);
-      }
+      unpack_band(static_cast<const float*>(readback.read()),
+                  std::span(out).subspan(first_view, group_views), int(push.band_y0) - win.y,
+                  int(push.band_rows), samples);
     }
   }
   return out;
