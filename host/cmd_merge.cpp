@@ -14,15 +14,16 @@ namespace rtvk {
 namespace {
 
 struct merge_options {
-  std::vector<std::string> parts;  // .exr pieces from rtvk render
-  std::string output;              // .png, .ppm, or .exr to merge further later
-  std::string ppm_format = "P3";   // P3 or P6
-  bool quiet = false;              // no summary line
+  std::vector<std::string> parts;     // .exr pieces from rtvk render
+  std::string output;                 // .png, .ppm, or .exr to merge further later
+  std::string ppm_format = "P3";      // P3 or P6
+  bool quiet = false;                 // no summary line
+  bool allow_mixed_versions = false;  // merge pieces of different rtvk versions
 };
 
 int run_merge(const merge_options& o) {
   check_output_path(o.output, "--output", true);
-  render_merger merger;
+  render_merger merger(o.allow_mixed_versions);
   for (std::size_t k = 0; k < o.parts.size(); ++k) {
     const partial_image piece = read_partial_exr(o.parts[k]);  // one piece in memory at a time
     if (k == 0) check_render_memory(piece.image_width, piece.image_height, 3);
@@ -57,6 +58,8 @@ command_action add_merge_command(CLI::App& app) {
       ->transform(CLI::IsMember({"P3", "P6"}, CLI::ignore_case))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "No summary line");
+  cmd->add_flag("--allow-mixed-versions", o->allow_mixed_versions,
+                "Merge pieces rendered by different rtvk versions or shaders (refused otherwise)");
   return [o] { return run_merge(*o); };
 }
 

@@ -14,11 +14,13 @@
 #include "format.h"
 #include "gpu/context.h"
 #include "gpu/render_gpu.h"
+#include "gpu/shaders.h"
 #include "gpu/vk_error.h"
 #include "image_compare.h"
 #include "image_io.h"
 #include "interrupt.h"
 #include "memory_check.h"
+#include "output_pattern.h"
 #include "partial_image.h"
 #include "progress.h"
 #include "quantize.h"
@@ -28,6 +30,7 @@
 #include "scene_file.h"
 #include "scene_flags.h"
 #include "shared_types.h"
+#include "version.h"
 
 namespace rtvk {
 namespace {
@@ -83,6 +86,15 @@ std::string label(const run_context& run, const render_job& job) {
   return run.s.name + " [camera " + job.camera_name + ", frame " + std::to_string(job.frame) + "]";
 }
 
+// The render shader's SPIR-V, hashed: pieces drawn by different shaders do not merge unasked.
+const std::string& render_shader_identity() {
+  static const std::string id = [] {
+    const std::span<const std::uint32_t> spv = gpu::render_shader();
+    return fingerprint_of(std::string(reinterpret_cast<const char*>(spv.data()), spv.size_bytes()));
+  }();
+  return id;
+}
+
 // Writes the image, unless a signal arrived while rendering finished: Ctrl-C means no file.
 // .exr keeps the linear floats and the sample range for `rtvk merge`; .png and .ppm quantize.
 void write_job(const run_context& run, const render_job& job, const framebuffer& fb) {
@@ -96,7 +108,9 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
                                         job.fingerprint,
                                         run.s.name,
                                         job.camera_name,
-                                        job.frame}),
+                                        job.frame,
+                                        version_string,
+                                        render_shader_identity()}),
                       job.output);
   } else {
     write_image(quantize(fb, run.s.render.gamma), job.output, run.enc);
@@ -220,6 +234,7 @@ int run_render(render_options o) {
   const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
   if (!o.device.empty() && o.backend == "cpu")
     throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");
+  const output_pattern checked(o.jobs.output, "--output");  // refused before the scene loads
   scene s = load_scene(o.scene);
   check_scene(s);
   render_window win;

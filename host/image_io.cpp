@@ -16,6 +16,7 @@
 #include "atomic_file.h"
 #include "camera.h"
 #include "errors.h"
+#include "input_file.h"
 
 namespace rtvk {
 namespace fs = std::filesystem;
@@ -171,10 +172,12 @@ image_rgb8 decode_ppm(const std::string& bytes, const std::string& name) {
 }
 
 image_rgb8 read_image(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw image_read_error(path.string() + ": cannot open for reading");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw image_read_error(path.string() + ": read error");
+  std::string bytes;
+  try {
+    bytes = read_regular_file(path, max_image_file_bytes, "image file");
+  } catch (const usage_error& e) {
+    throw image_read_error(e.what());
+  }
 
   static constexpr char png_magic[] = "\x89PNG\r\n\x1a\n";
   if (bytes.compare(0, 8, png_magic, 8) == 0) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -31,6 +32,10 @@ class image_read_error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// The largest image file `rtvk compare` reads (a P3 file of the largest image is far larger, but
+// anything above this would not fit the memory of the machines rtvk runs on anyway).
+inline constexpr std::uint64_t max_image_file_bytes = std::uint64_t(4) << 30;
 
 // Reads PNG or PPM (P3 or P6, any maxval up to 255), told apart by content, not name.
 image_rgb8 read_image(const std::filesystem::path& path);

@@ -20,12 +20,18 @@ bool overlap(const render_window& a, const render_window& b) {
          b.y < a.y + a.height && a.sample_begin < b.sample_end && b.sample_begin < a.sample_end;
 }
 
+std::string build_of(const partial_image& p) {
+  return (p.version.empty() ? "(unknown version)" : p.version) + " with shader " +
+         (p.shader.empty() ? "(unknown)" : p.shader);
+}
+
 }  // namespace
 
 void render_merger::add(const std::string& file, const partial_image& p) {
   if (seen_.empty()) {
-    first_ = partial_image{p.image_width, p.image_height, p.window, {},     p.gamma,
-                           p.fingerprint, p.scene,        p.camera, p.frame};
+    first_ =
+        partial_image{p.image_width, p.image_height, p.window, {},        p.gamma, p.fingerprint,
+                      p.scene,       p.camera,       p.frame,  p.version, p.shader};
     first_file_ = file;
     const std::size_t pixels = std::size_t(p.image_width) * std::size_t(p.image_height);
     sum_.assign(pixels, color(0));
@@ -42,6 +48,10 @@ void render_merger::add(const std::string& file, const partial_image& p) {
     throw usage_error(file + ": rendered from a different scene, camera, frame or settings " +
                       "than " + first_file_ + " (fingerprint " + p.fingerprint + " vs " +
                       first_.fingerprint + ")");
+  if (!allow_mixed_versions_ && (p.version != first_.version || p.shader != first_.shader))
+    throw usage_error(file + ": rendered by rtvk " + build_of(p) + " but " + first_file_ +
+                      " by rtvk " + build_of(first_) +
+                      " (their images may differ; --allow-mixed-versions merges them anyway)");
   const render_window& w = p.window;
   if (w.x < 0 || w.y < 0 || w.x + w.width > p.image_width || w.y + w.height > p.image_height ||
       p.rgb.size() != std::size_t(w.width) * std::size_t(w.height) * 3)
@@ -86,8 +96,8 @@ merged_render render_merger::finish() const {
   return out;
 }
 
-merged_render merge_partials(const std::vector<named_partial>& parts) {
-  render_merger m;
+merged_render merge_partials(const std::vector<named_partial>& parts, bool allow_mixed_versions) {
+  render_merger m(allow_mixed_versions);
   for (const named_partial& p : parts) m.add(p.file, p.image);
   return m.finish();
 }

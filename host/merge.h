@@ -23,10 +23,15 @@ struct merged_render {
 // Combines pieces one at a time, so a merge of many full-image sample ranges holds one piece in
 // memory, not all of them. add() throws usage_error, naming the files, for a piece of another
 // render (image size, fingerprint or gamma) or one holding samples of some pixel that an earlier
-// piece holds; finish() throws usage_error when the pieces leave pixels or samples out: every
-// pixel must end up with the same, gap-free range of samples.
+// piece holds, or (unless allowed) for one rendered by another rtvk version; finish() throws
+// usage_error when the pieces leave pixels or samples out: every pixel must end up with the same,
+// gap-free range of samples.
 class render_merger {
  public:
+  // With `allow_mixed_versions`, pieces rendered by different rtvk versions or shaders merge;
+  // without it, add() refuses them.
+  explicit render_merger(bool allow_mixed_versions = false)
+      : allow_mixed_versions_(allow_mixed_versions) {}
   void add(const std::string& file, const partial_image& piece);
   merged_render finish() const;
 
@@ -41,9 +46,11 @@ class render_merger {
   std::vector<color> sum_;        // per pixel: sum of mean * samples
   std::vector<int> count_;        // per pixel: samples added
   std::vector<int> begin_, end_;  // per pixel: smallest and largest sample index bound
+  bool allow_mixed_versions_;     // pieces of different rtvk versions may merge
 };
 
 // All of `parts` through a render_merger.
-merged_render merge_partials(const std::vector<named_partial>& parts);
+merged_render merge_partials(const std::vector<named_partial>& parts,
+                             bool allow_mixed_versions = false);
 
 }  // namespace rtvk

@@ -18,7 +18,11 @@
 
 #include "atomic_file.h"
 #include "camera.h"
+#include "errors.h"
+#include "format.h"
 #include "image_io.h"
+#include "input_file.h"
+#include "memory_check.h"
 
 namespace rtvk {
 namespace {
@@ -61,6 +65,18 @@ const Attr& attribute(const Imf::Header& h, const char* name, const std::string&
   return *a;
 }
 
+// The header, not the file's size, says how many pixels there are: a forged header could claim
+// any window up to the largest image. Refused before anything is allocated for it.
+void check_piece_memory(const render_window& w, const std::string& name) {
+  const std::uint64_t need = std::uint64_t(w.width) * std::uint64_t(w.height) * 3 * sizeof(float);
+  const std::uint64_t have = available_memory_bytes();
+  if (have != 0 && need > have / 2)
+    throw image_read_error(
+        name + ": its data window of " + std::to_string(w.width) + "x" + std::to_string(w.height) +
+        " pixels needs " + format_number(double(need) / double(1 << 30)) + " GiB; " +
+        format_number(double(have) / double(1 << 30)) + " GiB of memory is available");
+}
+
 }  // namespace
 
 partial_image make_partial(const framebuffer& fb, partial_image header) {
@@ -87,6 +103,8 @@ void write_partial_exr(const partial_image& p, const std::filesystem::path& path
   h.insert("rtvk.scene", Imf::StringAttribute(p.scene));
   h.insert("rtvk.camera", Imf::StringAttribute(p.camera));
   h.insert("rtvk.frame", Imf::IntAttribute(p.frame));
+  h.insert("rtvk.version", Imf::StringAttribute(p.version));
+  h.insert("rtvk.shader", Imf::StringAttribute(p.shader));
   memory_stream out;
   try {
     Imf::OutputFile file(out, h, 1);
@@ -101,6 +119,11 @@ void write_partial_exr(const partial_image& p, const std::filesystem::path& path
 
 partial_image read_partial_exr(const std::filesystem::path& path) {
   const std::string name = path.string();
+  try {
+    check_regular_file(path, "OpenEXR piece");
+  } catch (const usage_error& e) {
+    throw image_read_error(e.what());
+  }
   partial_image p;
   try {
     Imf::InputFile file(name.c_str(), 1);
@@ -118,6 +141,8 @@ partial_image read_partial_exr(const std::filesystem::path& path) {
     p.scene = attribute<Imf::StringAttribute>(h, "rtvk.scene", name).value();
     p.camera = attribute<Imf::StringAttribute>(h, "rtvk.camera", name).value();
     p.frame = attribute<Imf::IntAttribute>(h, "rtvk.frame", name).value();
+    p.version = attribute<Imf::StringAttribute>(h, "rtvk.version", name).value();
+    p.shader = attribute<Imf::StringAttribute>(h, "rtvk.shader", name).value();
     for (const char* c : {"R", "G", "B"})
       if (!h.channels().findChannel(c))
         throw image_read_error(name + ": no " + std::string(c) + " channel");
@@ -128,6 +153,7 @@ partial_image read_partial_exr(const std::filesystem::path& path) {
     if (p.window.sample_begin < 0 || p.window.sample_end <= p.window.sample_begin)
       throw image_read_error(name + ": rtvk.samples " + std::to_string(samples.x) + ":" +
                              std::to_string(samples.y) + " is not a sample range");
+    check_piece_memory(p.window, name);
     p.rgb.assign(std::size_t(p.window.width) * std::size_t(p.window.height) * 3, 0.0f);
     file.setFrameBuffer(slices(p.rgb.data(), data));
     file.readPixels(data.min.y, data.max.y);

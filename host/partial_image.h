@@ -23,6 +23,9 @@ struct partial_image {
   std::string scene;        // scene name, for people reading the header
   std::string camera;       // camera name
   int frame = 0;            // animation frame
+  std::string version;      // the rtvk that rendered it (version_string, and the commit when
+                            // built from git): pieces of different versions do not merge
+  std::string shader;       // identity of the render shader (hash of its SPIR-V), likewise
 };
 
 // `header` (every field but rgb) with the pixels of `fb`, which is header.window.width x
@@ -32,8 +35,9 @@ partial_image make_partial(const framebuffer& fb, partial_image header);
 // Writes atomically (never a partial file at `path`). Throws std::runtime_error on failure.
 void write_partial_exr(const partial_image& p, const std::filesystem::path& path);
 
-// Throws image_read_error naming the file when it cannot be read, is not OpenEXR, or lacks
-// rtvk's header attributes.
+// Throws image_read_error naming the file when it is not a regular file, cannot be read, is not
+// OpenEXR, lacks rtvk's header attributes, or claims a data window whose pixels would not fit in
+// the memory available (checked from the header, before anything is allocated for them).
 partial_image read_partial_exr(const std::filesystem::path& path);
 
 // 16 hex digits identifying a render's inputs from a canonical text of them.

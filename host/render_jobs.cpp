@@ -8,6 +8,7 @@
 #include "errors.h"
 #include "format.h"
 #include "image_io.h"
+#include "output_pattern.h"
 #include "partial_image.h"
 #include "render_cpu.h"
 #include "scene_file.h"
@@ -95,34 +96,6 @@ render_window parse_region(const std::string& text, const std::string& flag) {
   return {v[0], v[1], v[2], v[3], 0, 0};
 }
 
-std::string expand_output(const std::string& pattern, const std::string& camera_name, int frame) {
-  std::string out;
-  for (std::size_t i = 0; i < pattern.size();) {
-    if (pattern[i] != '{') {
-      out += pattern[i++];
-      continue;
-    }
-    const auto close = pattern.find('}', i);
-    const std::string field =
-        pattern.substr(i + 1, close == std::string::npos ? std::string::npos : close - i - 1);
-    if (field == "camera") {
-      out += camera_name;
-    } else if (field == "frame") {
-      out += std::to_string(frame);
-    } else if (field.size() == 8 && field.compare(0, 7, "frame:0") == 0 && field[7] >= '1' &&
-               field[7] <= '9') {
-      const int digits = field[7] - '0';
-      std::string n = std::to_string(frame);
-      out += std::string(std::size_t(std::max(0, digits - int(n.size()))), '0') + n;
-    } else {
-      throw usage_error("--output: unknown placeholder {" + field + "} in '" + pattern +
-                        "' (expected {camera}, {frame} or {frame:0N}, N from 1 to 9)");
-    }
-    i = close + 1;
-  }
-  return out;
-}
-
 std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_flags& flags,
                                   render_window& window) {
   select_cameras(s, req.cameras);
@@ -134,10 +107,11 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_
   if (count > 100'000)
     throw usage_error("--frames " + req.frames + ": " + std::to_string(count) +
                       " images in one run; the most is 100000");
-  if (s.cameras.size() > 1 && req.output.find("{camera}") == std::string::npos)
+  const output_pattern output(req.output, "--output");
+  if (s.cameras.size() > 1 && !output.has_camera())
     throw usage_error("--output " + req.output + ": " + std::to_string(s.cameras.size()) +
                       " cameras would share it; put {camera} in the name");
-  if (frames.end - frames.begin > 1 && req.output.find("{frame") == std::string::npos)
+  if (frames.end - frames.begin > 1 && !output.has_frame())
     throw usage_error("--output " + req.output + ": " + std::to_string(frames.end - frames.begin) +
                       " frames would share it; put {frame} or {frame:04} in the name");
 
@@ -151,7 +125,7 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_
           c.name, f,
           flags.make_camera(
               s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f)),
-          expand_output(req.output, c.name, f), job_fingerprint(scene_text, pose)};
+          output.expand(c.name, f), job_fingerprint(scene_text, pose)};
       if (!outputs.insert(job.output).second)
         throw usage_error("--output " + req.output + ": two images would be written to " +
                           job.output);

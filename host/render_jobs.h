@@ -50,7 +50,4 @@ struct render_job {
 std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_flags& flags,
                                   render_window& window);
 
-// -o with its placeholders filled in. Throws usage_error for an unknown placeholder.
-std::string expand_output(const std::string& pattern, const std::string& camera_name, int frame);
-
 }  // namespace rtvk

@@ -9,6 +9,7 @@
 
 #include "errors.h"
 #include "format.h"
+#include "input_file.h"
 #include "parse_values.h"
 
 namespace rtvk {
@@ -369,13 +370,7 @@ scene parse_scene_json(const std::string& text, const std::string& file_name) {
 }
 
 scene load_scene_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw usage_error(path.string() + ": is a folder, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw usage_error(path.string() + ": cannot open scene file");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw usage_error(path.string() + ": read error");
+  const std::string text = read_regular_file(path, max_scene_file_bytes, "scene file");
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     throw usage_error(path.string() + ": empty scene file");
   return parse_scene_json(text, path.string());

@@ -18,11 +18,12 @@ bool sphere::hit_distance(const ray& r, double t_min, double t_max, double& t) c
   if (discriminant < 0) return false;
   const double sqrtd = std::sqrt(discriminant);
 
-  // The nearer root first; the farther one only when the nearer is out of range.
+  // The nearer root first; the farther one only when the nearer is out of range. Written as
+  // "not inside" so that a NaN root (a degenerate ray: zero or infinite direction) is no hit.
   double root = (-half_b - sqrtd) / a;
-  if (root < t_min || t_max < root) {
+  if (!(t_min <= root && root <= t_max)) {
     root = (-half_b + sqrtd) / a;
-    if (root < t_min || t_max < root) return false;
+    if (!(t_min <= root && root <= t_max)) return false;
   }
   t = root;
   return true;

@@ -2,7 +2,7 @@
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
 #include "material.glsl"
-#include "sphere.glsl"
+#include "world.glsl"
 
 const float max_float = 3.402823466e+38;  // stands in for the host's infinity as t_max
 const float t_min = 0.001;                // ignore self-hits ("shadow acne")

@@ -133,6 +133,21 @@ struct rng_probe_entry {
   uint pad1;          // unused
 };
 
+// std430 array element for hit_probe.comp: the host fills a ray, an interval and a sphere; the
+// shader runs hit_distance on them.
+struct hit_probe_entry {
+  vec3 origin;     // ray origin, scene units
+  float t_min;     // interval start
+  vec3 direction;  // ray direction (may be degenerate: that is what the probe is for)
+  float t_max;     // interval end
+  vec3 center;     // sphere center, scene units
+  float radius;    // sphere radius, scene units
+  float t;         // out: the root hit_distance found (0 when none)
+  uint hit;        // out: 1 when hit_distance reported a hit
+  uint pad0;       // unused
+  uint pad1;       // unused
+};
+
 #ifdef __cplusplus
 static_assert(offsetof(camera_ubo, origin) == 0);
 static_assert(offsetof(camera_ubo, image_width) == 12);
@@ -185,6 +200,14 @@ static_assert(sizeof(probe_io) == 48 * RTVK_PROBE_POINTS + 96);
 static_assert(offsetof(rng_probe_entry, bits) == 16);
 static_assert(offsetof(rng_probe_entry, value) == 20);
 static_assert(sizeof(rng_probe_entry) == 32);
+static_assert(offsetof(hit_probe_entry, t_min) == 12);
+static_assert(offsetof(hit_probe_entry, direction) == 16);
+static_assert(offsetof(hit_probe_entry, t_max) == 28);
+static_assert(offsetof(hit_probe_entry, center) == 32);
+static_assert(offsetof(hit_probe_entry, radius) == 44);
+static_assert(offsetof(hit_probe_entry, t) == 48);
+static_assert(offsetof(hit_probe_entry, hit) == 52);
+static_assert(sizeof(hit_probe_entry) == 64);
 }  // namespace rtvk::gpu
 #endif
 

@@ -1,5 +1,5 @@
-// Mirrors host/sphere.cpp and host/hittable_list.cpp. Expects `spheres` (gpu_sphere[]) and
-// `pc` (render_push) declared by the including shader.
+// Mirrors host/sphere.cpp, and the slab test of host/bvh.h. Reads no buffers: probes include it
+// alone; the world's traversal is in world.glsl.
 #ifndef RTVK_SPHERE_GLSL
 #define RTVK_SPHERE_GLSL
 #include "ray.glsl"
@@ -16,10 +16,11 @@ bool hit_distance(gpu_sphere s, ray r, float t_min, float t_max, out float t) {
   if (discriminant < 0.0) return false;
   float sqrtd = sqrt(discriminant);
 
+  // "Not inside", as on the host: a NaN root is no hit.
   float root = (-half_b - sqrtd) / a;
-  if (root < t_min || t_max < root) {
+  if (!(t_min <= root && root <= t_max)) {
     root = (-half_b + sqrtd) / a;
-    if (root < t_min || t_max < root) return false;
+    if (!(t_min <= root && root <= t_max)) return false;
   }
   t = root;
   return true;
@@ -52,85 +53,6 @@ float ray_box_entry(vec3 o, vec3 inv_d, bvh_node n, float t_min, float t_max) {
   float enter = max(max(near.x, near.y), max(near.z, t_min));
   float leave = min(min(far.x, far.y), min(far.z, t_max));
   return enter <= leave ? enter : -1.0;
-}
-
-// Mirrors bvh::hit: the same nodes, the same order, ties to the later sphere, the record filled
-// once for the winner. Every node visit and sphere test counts against the loop budget.
-bool hit_bvh(ray r, float t_min, float t_max, inout hit_record rec, inout uint iterations) {
-  if (pc.sphere_count == 0u) return false;
-  vec3 o = r.origin;
-  vec3 inv_d = safe_inverse(r.direction);
-  float box_min = t_min * (1.0 - 1.0 / 1048576.0);
-  uint stack_node[RTVK_BVH_STACK];
-  float stack_entry[RTVK_BVH_STACK];
-  int top = 0;
-  uint node = 0u;
-  float closest = t_max;
-  int best = -1;
-  while (true) {
-    if (++iterations > pc.loop_budget) return false;
-    bvh_node n = bvh_nodes[node];
-    if (n.count > 0u) {
-      for (uint k = n.first; k < n.first + n.count; ++k) {
-        if (++iterations > pc.loop_budget) return false;
-        uint i = bvh_index[k];
-        float t;
-        if (hit_distance(spheres[i], r, t_min, closest, t) && (t < closest || int(i) > best)) {
-          closest = t;
-          best = int(i);
-        }
-      }
-    } else {
-      float box_max = closest * (1.0 + 1.0 / 1048576.0);
-      uint left = node + 1u;
-      uint right = n.first;
-      float t_left = ray_box_entry(o, inv_d, bvh_nodes[left], box_min, box_max);
-      float t_right = ray_box_entry(o, inv_d, bvh_nodes[right], box_min, box_max);
-      if (t_left >= 0.0 && t_right >= 0.0) {
-        bool left_first = t_left <= t_right;
-        stack_node[top] = left_first ? right : left;
-        stack_entry[top] = left_first ? t_right : t_left;
-        ++top;
-        node = left_first ? left : right;
-        continue;
-      }
-      if (t_left >= 0.0 || t_right >= 0.0) {
-        node = t_left >= 0.0 ? left : right;
-        continue;
-      }
-    }
-    float box_max = closest * (1.0 + 1.0 / 1048576.0);
-    while (top > 0 && stack_entry[top - 1] > box_max) {
-      if (++iterations > pc.loop_budget) return false;
-      --top;
-    }
-    if (top == 0) break;
-    node = stack_node[--top];
-  }
-  if (best < 0) return false;
-  record_hit(spheres[best], r, closest, rec);
-  return true;
-}
-
-// The closest hit over every sphere, as hittable_list::hit (or, with pc.use_bvh, as bvh::hit).
-// Each iteration counts against the loop budget; over budget, the search stops and `iterations`
-// tells the caller.
-bool hit_world(ray r, float t_min, float t_max, inout hit_record rec, inout uint iterations) {
-  if (pc.use_bvh != 0u) return hit_bvh(r, t_min, t_max, rec, iterations);
-  bool hit_anything = false;
-  float closest_so_far = t_max;
-  uint closest_sphere = 0u;
-  for (uint i = 0u; i < pc.sphere_count; ++i) {
-    if (++iterations > pc.loop_budget) return false;
-    float t;
-    if (hit_distance(spheres[i], r, t_min, closest_so_far, t)) {
-      hit_anything = true;
-      closest_so_far = t;
-      closest_sphere = i;
-    }
-  }
-  if (hit_anything) record_hit(spheres[closest_sphere], r, closest_so_far, rec);
-  return hit_anything;
 }
 
 #endif

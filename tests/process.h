@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <fstream>
 #include <iterator>
@@ -104,10 +105,28 @@ class running_rtvk {
     return false;
   }
 
+  // Waits up to `limit`; a child still running then is killed (status 128 + SIGKILL), so a hang
+  // fails the test instead of stalling the suite.
+  process_result wait_at_most(std::chrono::milliseconds limit) {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    int wstatus = 0;
+    pid_t rc;
+    while ((rc = waitpid(pid_, &wstatus, WNOHANG)) == 0 || (rc < 0 && errno == EINTR)) {
+      if (std::chrono::steady_clock::now() > end) ::kill(pid_, SIGKILL);
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return reaped(wstatus);
+  }
+
   process_result wait() {
     int wstatus = 0;
     while (waitpid(pid_, &wstatus, 0) < 0) {
     }
+    return reaped(wstatus);
+  }
+
+ private:
+  process_result reaped(int wstatus) {
     pid_ = -1;
     process_result r;
     r.status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
@@ -116,7 +135,6 @@ class running_rtvk {
     return r;
   }
 
- private:
   temp_dir io_;                  // holds the output files
   std::string out_;              // stdout's file
   std::string err_;              // stderr's file or terminal
@@ -128,6 +146,13 @@ class running_rtvk {
 inline process_result run_rtvk(const std::vector<std::string>& args,
                                const std::vector<std::string>& env_overrides = {}) {
   return running_rtvk(args, env_overrides).wait();
+}
+
+// The same, killed after `limit`: for inputs that once made rtvk hang.
+inline process_result run_rtvk_within(std::chrono::milliseconds limit,
+                                      const std::vector<std::string>& args,
+                                      const std::vector<std::string>& env_overrides = {}) {
+  return running_rtvk(args, env_overrides).wait_at_most(limit);
 }
 
 }  // namespace rtvk::test

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <limits>
 
+#include "bvh.h"
+#include "gpu/probe.h"
+#include "gpu_fixture.h"
 #include "hittable_list.h"
 #include "sphere.h"
 
@@ -62,6 +65,58 @@ TEST(Sphere, TangentRayHitsOnce) {
   EXPECT_DOUBLE_EQ(std::abs(rec.normal.y), 1.0);
   EXPECT_DOUBLE_EQ(glm::dot(rec.normal, vec3(0, 0, -1)), 0.0);
   EXPECT_FALSE(s.hit(ray(point3(0, -1e-9, 0), vec3(0, 0, -1)), 0, inf, rec));  // just below: miss
+}
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// Rays no camera should make, but that float overflow or a zero-length scatter direction can:
+// every one of them gives NaN roots, which must not count as hits (one would poison a pixel).
+struct degenerate_case {
+  const char* what;
+  point3 origin;
+  vec3 direction;
+};
+const degenerate_case degenerate_rays[] = {
+    {"zero direction, outside", point3(0, 0, 0), vec3(0, 0, 0)},
+    {"zero direction, inside", point3(0, 0, -3), vec3(0, 0, 0)},
+    {"NaN direction", point3(0, 0, 0), vec3(nan, 0, -1)},
+    {"infinite direction", point3(0, 0, 0), vec3(0, 0, -inf)},
+    {"NaN origin", point3(nan, 0, 0), vec3(0, 0, -1)},
+};
+
+TEST(Sphere, DegenerateRaysAreNoHit) {
+  const sphere s(point3(0, 0, -3), 1);
+  for (const degenerate_case& c : degenerate_rays) {
+    hit_record rec;
+    double t = -1;
+    EXPECT_FALSE(s.hit_distance(ray(c.origin, c.direction), 0.001, inf, t)) << c.what << " t=" << t;
+    EXPECT_FALSE(s.hit(ray(c.origin, c.direction), 0.001, inf, rec)) << c.what;
+    // The BVH over the same sphere agrees: no NaN slips through its traversal either.
+    EXPECT_FALSE(bvh({s}).hit(ray(c.origin, c.direction), 0.001, inf, rec)) << c.what;
+  }
+}
+
+class GpuSphere : public test::GpuTest {};
+
+TEST_F(GpuSphere, DegenerateRaysAreNoHitOnTheGpuEither) {
+  std::vector<gpu::hit_probe_entry> entries;
+  auto add = [&](const point3& o, const vec3& d) {
+    gpu::hit_probe_entry e{};
+    e.origin = glm::vec3(o);
+    e.direction = glm::vec3(d);
+    e.t_min = 0.001f;
+    e.t_max = 3.402823466e+38f;
+    e.center = glm::vec3(0, 0, -3);
+    e.radius = 1;
+    entries.push_back(e);
+  };
+  add(point3(0, 0, 0), vec3(0, 0, -1));  // a plain hit at t = 2: the probe itself works
+  for (const degenerate_case& c : degenerate_rays) add(c.origin, c.direction);
+  const std::vector<gpu::hit_probe_entry> out = gpu::run_hit_probe(gpu(), entries);
+  EXPECT_EQ(out[0].hit, 1u);
+  EXPECT_EQ(out[0].t, 2.0f);
+  for (std::size_t k = 1; k < out.size(); ++k)
+    EXPECT_EQ(out[k].hit, 0u) << degenerate_rays[k - 1].what << " t=" << out[k].t;
 }
 
 TEST(HittableList, ClosestOfOverlappingHits) {

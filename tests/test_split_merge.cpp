@@ -29,8 +29,17 @@ using window_renderer = std::function<framebuffer(const render_window&)>;
 
 named_partial piece(const scene& s, const camera& cam, const render_window& w,
                     const window_renderer& draw) {
-  partial_image p = make_partial(
-      draw(w), {cam.image_width(), cam.image_height(), w, {}, s.render.gamma, "test", "", "", 0});
+  partial_image p = make_partial(draw(w), {cam.image_width(),
+                                           cam.image_height(),
+                                           w,
+                                           {},
+                                           s.render.gamma,
+                                           "test",
+                                           "",
+                                           "",
+                                           0,
+                                           "1.0",
+                                           "s"});
   return {"piece " + std::to_string(w.x) + "," + std::to_string(w.y) + " " +
               std::to_string(w.sample_begin),
           std::move(p)};
@@ -158,6 +167,13 @@ TEST(SplitMerge, MergeRefusesPiecesThatDoNotMakeOneRender) {
   named_partial bigger = right;
   bigger.image.image_width += 1;
   refused({left, bigger}, "image is 62x");
+  named_partial older = right;
+  older.image.version = "0.0.9";
+  refused({left, older}, "rendered by rtvk 0.0.9 with shader s but");
+  named_partial other_shader = right;
+  other_shader.image.shader = "t";
+  refused({left, other_shader}, "--allow-mixed-versions merges them anyway");
+  EXPECT_NO_THROW(merge_partials({left, older}, true)) << "allowed when asked";
   // Samples 0:2 and 4:6 of every pixel: same range everywhere, but 2:4 is missing.
   refused({piece(s, cam, {0, 0, w, h, 0, 2}, draw), piece(s, cam, {0, 0, w, h, 4, 6}, draw)},
           "a sample range is missing");
@@ -167,8 +183,17 @@ TEST(SplitMerge, ExrPiecesKeepTheirHeader) {
   test::temp_dir dir;
   framebuffer fb(3, 2);
   fb.at(2, 1) = color(0.25, 1e-8, 7.5);
-  const partial_image p = make_partial(
-      fb, {9, 8, {4, 5, 3, 2, 10, 20}, {}, 2, "0123456789abcdef", "book-final", "front", 17});
+  const partial_image p = make_partial(fb, {9,
+                                            8,
+                                            {4, 5, 3, 2, 10, 20},
+                                            {},
+                                            2,
+                                            "0123456789abcdef",
+                                            "book-final",
+                                            "front",
+                                            17,
+                                            "0.1.0",
+                                            "fedcba9876543210"});
   write_partial_exr(p, dir.path() / "p.exr");
   const partial_image q = read_partial_exr(dir.path() / "p.exr");
   EXPECT_EQ(q.window, p.window);
@@ -179,6 +204,8 @@ TEST(SplitMerge, ExrPiecesKeepTheirHeader) {
   EXPECT_EQ(q.fingerprint, p.fingerprint);
   EXPECT_EQ(q.camera, "front");
   EXPECT_EQ(q.frame, 17);
+  EXPECT_EQ(q.version, "0.1.0");
+  EXPECT_EQ(q.shader, "fedcba9876543210");
   std::ofstream(dir.path() / "bad.exr") << "not an exr";
   EXPECT_THROW(read_partial_exr(dir.path() / "bad.exr"), image_read_error);
   EXPECT_THROW(read_partial_exr(dir.path() / "none.exr"), image_read_error);

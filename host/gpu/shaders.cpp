@@ -3,6 +3,7 @@
 // The generated headers declare uint32_t arrays without including <cstdint> themselves.
 #include <cstdint>
 
+#include "hit_probe_spv.h"
 #include "probe_spv.h"
 #include "render_spv.h"
 #include "rng_probe_spv.h"
@@ -17,6 +18,9 @@ std::span<const std::uint32_t> probe_shader() {
 }
 std::span<const std::uint32_t> rng_probe_shader() {
   return rng_probe_spv;
+}
+std::span<const std::uint32_t> hit_probe_shader() {
+  return hit_probe_spv;
 }
 
 }  // namespace rtvk::gpu

@@ -8,5 +8,6 @@ namespace rtvk::gpu {
 std::span<const std::uint32_t> render_shader();     // render.comp
 std::span<const std::uint32_t> probe_shader();      // probe.comp
 std::span<const std::uint32_t> rng_probe_shader();  // rng_probe.comp
+std::span<const std::uint32_t> hit_probe_shader();  // hit_probe.comp
 
 }  // namespace rtvk::gpu
