@@ -9,6 +9,7 @@
 
 #include "bvh.h"
 #include "interrupt.h"
+#include "parallel.h"
 #include "random.h"
 #include "shading.h"
 
@@ -81,12 +82,13 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
   std::atomic<int> next_row{0}, rows_done{0};
   std::atomic<std::uint64_t> rays{0};
 
-  auto render_rows = [&](bool reports_progress) {
+  auto render_rows = [&](int worker, const std::atomic<bool>& stop) {
+    const bool reports_progress = worker == 0;
     const counting_world counted(*world);
     // Counting costs a virtual call per ray: only when someone asked for it.
     const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
     int row;
-    while (!(engine.cancelled && engine.cancelled()) &&
+    while (!stop.load(std::memory_order_relaxed) && !(engine.cancelled && engine.cancelled()) &&
            (row = next_row.fetch_add(1)) < win.height) {
       const int y = win.y + row;
       const int j = height - 1 - y;  // the lesson counts rows from the bottom
@@ -111,11 +113,7 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
     rays += counted.rays;
   };
 
-  std::vector<std::thread> helpers;
-  const int threads = std::min(worker_threads(engine.threads), win.height);
-  for (int t = 1; t < threads; ++t) helpers.emplace_back(render_rows, false);
-  render_rows(true);
-  for (auto& t : helpers) t.join();
+  run_workers(std::min(worker_threads(engine.threads), win.height), render_rows);
   if (rows_done.load() < win.height)
     throw render_cancelled("stopped after " + std::to_string(rows_done.load()) + " of " +
                            std::to_string(win.height) + " rows");
