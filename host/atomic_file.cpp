@@ -5,67 +5,135 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace rtvk {
 namespace {
 
-[[noreturn]] void fail(const std::string& call, const std::filesystem::path& path, int err) {
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const std::string& call, const fs::path& path, int err) {
   throw std::runtime_error(call + "(" + path.string() + "): " + std::strerror(err));
 }
 
-// Owns the temporary file until it is renamed into place; removes it on any failure.
-class temp_file {
- public:
-  explicit temp_file(const std::filesystem::path& target) {
-    const auto dir = target.has_parent_path() ? target.parent_path() : ".";
-    path_ = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
-    fd_ = ::mkstemp(path_.data());
-    if (fd_ < 0) fail("mkstemp", path_, errno);
-  }
-  ~temp_file() {
-    if (fd_ >= 0) ::close(fd_);
-    if (!committed_) ::unlink(path_.c_str());
-  }
-  temp_file(const temp_file&) = delete;
-  temp_file& operator=(const temp_file&) = delete;
+fs::path folder_of(const fs::path& target) {
+  return target.has_parent_path() ? target.parent_path() : fs::path(".");
+}
 
-  void write_all(std::string_view bytes) {
-    while (!bytes.empty()) {
-      const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) fail("write", path_, errno);
-      bytes.remove_prefix(std::size_t(n));
-    }
-  }
+// A name beside the target that no other file has, for the moment before a rename.
+fs::path temp_name(const fs::path& target) {
+  static thread_local std::mt19937_64 random(std::random_device{}());
+  char suffix[17];
+  std::snprintf(suffix, sizeof suffix, "%016llx", static_cast<unsigned long long>(random()));
+  return folder_of(target) / ("." + target.filename().string() + ".tmp-" + suffix);
+}
 
-  void commit(const std::filesystem::path& target) {
+void write_all(int fd, std::string_view bytes, const fs::path& path) {
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) fail("write", path, errno);
+    bytes.remove_prefix(std::size_t(n));
+  }
+}
+
+// The test suite's way to land a SIGKILL between writing and committing: with
+// RTVK_TEST_PAUSE_BEFORE_COMMIT=S set, every write says so on stderr and waits S seconds there.
+void test_pause_before_commit(const fs::path& path) {
+  const char* seconds = std::getenv("RTVK_TEST_PAUSE_BEFORE_COMMIT");
+  if (!seconds || !*seconds) return;
+  std::fprintf(stderr, "rtvk: test pause: %s written, not yet committed\n", path.c_str());
+  std::fflush(stderr);
+  std::this_thread::sleep_for(std::chrono::duration<double>(std::atof(seconds)));
+}
+
+// The folder's entry for the new file reaches the disk too, not only the file's data.
+void sync_folder(const fs::path& target) {
+  const int fd = ::open(folder_of(target).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) fail("open", folder_of(target), errno);
+  const int rc = ::fsync(fd), err = errno;
+  ::close(fd);
+  if (rc != 0 && err != EINVAL) fail("fsync", folder_of(target), err);  // EINVAL: cannot sync
+}
+
+// An open file descriptor, closed on destruction.
+struct descriptor {
+  int fd = -1;
+  ~descriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+// O_TMPFILE: the data is written to a file with no name at all, and the complete file gets its
+// name in one step, so a process killed at any moment leaves nothing behind. Returns false,
+// having written nothing, where the file system or kernel does not offer it.
+bool write_unnamed(const fs::path& target, std::string_view bytes) {
+  descriptor file;
+  file.fd = ::open(folder_of(target).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+  if (file.fd < 0) {
+    if (errno == EOPNOTSUPP || errno == EISDIR || errno == EINVAL) return false;
+    fail("open(O_TMPFILE)", folder_of(target), errno);
+  }
+  write_all(file.fd, bytes, target);
+  if (::fsync(file.fd) != 0) fail("fsync", target, errno);
+  test_pause_before_commit(target);
+  const std::string self = "/proc/self/fd/" + std::to_string(file.fd);
+  if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, target.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+    sync_folder(target);
+    return true;
+  }
+  if (errno == ENOENT && !fs::exists("/proc/self/fd")) return false;  // no /proc mounted
+  if (errno != EEXIST) fail("linkat", target, errno);
+  // linkat never replaces a file: name the complete file beside it, then rename it over.
+  fs::path temp = temp_name(target);
+  while (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, temp.c_str(), AT_SYMLINK_FOLLOW) != 0) {
+    if (errno != EEXIST) fail("linkat", temp, errno);
+    temp = temp_name(target);
+  }
+  if (::rename(temp.c_str(), target.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(temp.c_str());
+    fail("rename", target, err);
+  }
+  sync_folder(target);
+  return true;
+}
+
+// Where O_TMPFILE is missing: a named temporary file, removed on any failure, renamed into place.
+void write_named(const fs::path& target, std::string_view bytes) {
+  std::string temp = (folder_of(target) / ("." + target.filename().string() + ".tmp-XXXXXX"));
+  descriptor file;
+  file.fd = ::mkstemp(temp.data());
+  if (file.fd < 0) fail("mkstemp", temp, errno);
+  try {
     // mkstemp creates the file 0600; give it the mode a plain open() would have.
     const mode_t mask = ::umask(0);
     ::umask(mask);
-    if (::fchmod(fd_, 0666 & ~mask) != 0) fail("fchmod", path_, errno);
-    if (::fsync(fd_) != 0) fail("fsync", path_, errno);
-    const int fd = fd_;
-    fd_ = -1;
-    if (::close(fd) != 0) fail("close", path_, errno);
-    if (::rename(path_.c_str(), target.c_str()) != 0) fail("rename", target, errno);
-    committed_ = true;
+    if (::fchmod(file.fd, 0666 & ~mask) != 0) fail("fchmod", temp, errno);
+    write_all(file.fd, bytes, temp);
+    if (::fsync(file.fd) != 0) fail("fsync", temp, errno);
+    test_pause_before_commit(target);
+    if (::rename(temp.c_str(), target.c_str()) != 0) fail("rename", target, errno);
+  } catch (...) {
+    ::unlink(temp.c_str());
+    throw;
   }
-
- private:
-  std::string path_;        // the temporary file, in the target's folder
-  int fd_ = -1;             // open descriptor, -1 once closed
-  bool committed_ = false;  // renamed into place: nothing to clean up
-};
+  sync_folder(target);
+}
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-  temp_file tmp(path);
-  tmp.write_all(bytes);
-  tmp.commit(path);
+void write_file_atomically(const fs::path& path, std::string_view bytes) {
+  // RTVK_TEST_NO_O_TMPFILE: the tests' way to reach the fallback on a system that has O_TMPFILE.
+  if (std::getenv("RTVK_TEST_NO_O_TMPFILE") == nullptr && write_unnamed(path, bytes)) return;
+  write_named(path, bytes);
 }
 
 }  // namespace rtvk

@@ -88,6 +88,9 @@ class running_rtvk {
 
   void signal(int sig) const { ::kill(pid_, sig); }
 
+  // What the child has written to stderr so far (when it goes to a file).
+  std::string stderr_so_far() const { return slurp(err_); }
+
   // Waits (up to `limit`) until the child has installed a handler for `sig`, read from the
   // SigCgt mask in /proc/<pid>/status: a signal sent earlier would find the default action.
   bool wait_until_catching(int sig, std::chrono::milliseconds limit) const {

@@ -1,9 +1,12 @@
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
 
+#include "atomic_file.h"
 #include "errors.h"
 #include "image_io.h"
+#include "process.h"
 #include "temp_dir.h"
 
 namespace rtvk {
@@ -57,14 +60,34 @@ TEST(OutputPath, ChecksExtensionAndFolder) {
   EXPECT_THROW(check_output_path(dir.path() / "d.png", "-o"), usage_error);
 }
 
-TEST(AtomicWrite, LeavesNoTemporaryFiles) {
+// Writes, then replaces, a file, and checks what a reader sees: the content, a plain open()'s
+// mode, and nothing else in the folder.
+void expect_atomic_writes_replace_cleanly() {
   test::temp_dir dir;
-  image_rgb8 img{2, 2, std::vector<std::uint8_t>(12, 200)};
-  write_image(img, dir.path() / "x.png");
-  write_image(img, dir.path() / "x.png");  // replaces in place
+  const std::filesystem::path path = dir.path() / "x.txt";
+  write_file_atomically(path, "first");
+  EXPECT_EQ(test::slurp(path), "first");
+  write_file_atomically(path, "second, longer");  // replaces in place
+  EXPECT_EQ(test::slurp(path), "second, longer");
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  struct stat st {};
+  ASSERT_EQ(::stat(path.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0666 & ~mask);
   int files = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
   EXPECT_EQ(files, 1);
+  EXPECT_THROW(write_file_atomically(dir.path() / "no" / "x.txt", "z"), std::runtime_error);
+}
+
+TEST(AtomicWrite, UnnamedTemporaryFileReplacesCleanly) {
+  expect_atomic_writes_replace_cleanly();
+}
+
+TEST(AtomicWrite, NamedTemporaryFileFallbackReplacesCleanly) {
+  ::setenv("RTVK_TEST_NO_O_TMPFILE", "1", 1);
+  expect_atomic_writes_replace_cleanly();
+  ::unsetenv("RTVK_TEST_NO_O_TMPFILE");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include "gpu_fixture.h"
@@ -44,14 +45,41 @@ TEST(Interrupt, SigtermStopsACpuRender) {
   expect_interrupted("cpu", SIGTERM, 143, "SIGTERM");
 }
 
-TEST(Interrupt, SigkillNeverLeavesAPartialFile) {
+// SIGKILL cannot be caught: what it leaves is what the file system holds at that moment. The
+// test pause holds rtvk after the image's bytes are written and flushed but before they get
+// their name, the worst moment; the kill lands there.
+void expect_killed_mid_write_leaves_nothing(bool target_exists) {
   test::temp_dir dir;
   const fs::path out = dir.path() / "out.ppm";
-  test::running_rtvk p(long_render(out, "cpu"));
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  if (target_exists) std::ofstream(out) << "the old image";
+  test::running_rtvk p({"render", "--scene", "seed", "--width", "2000", "-q", "-o", out.string()},
+                       {"RTVK_TEST_PAUSE_BEFORE_COMMIT=60"});
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (p.stderr_so_far().find("written, not yet committed") == std::string::npos &&
+         std::chrono::steady_clock::now() < end)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_NE(p.stderr_so_far().find("written, not yet committed"), std::string::npos)
+      << p.stderr_so_far();
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir.path())) names.push_back(e.path().string());
   p.signal(SIGKILL);
   EXPECT_EQ(p.wait().status, 128 + SIGKILL);
-  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(names.size(), target_exists ? 1u : 0u)
+      << "while paused: " << ::testing::PrintToString(names);
+  std::vector<std::string> after;
+  for (const auto& e : fs::directory_iterator(dir.path())) after.push_back(e.path().string());
+  EXPECT_EQ(after.size(), target_exists ? 1u : 0u) << ::testing::PrintToString(after);
+  if (target_exists) {
+    EXPECT_EQ(test::slurp(out), "the old image");
+  }
+}
+
+TEST(Interrupt, SigkillDuringTheWriteLeavesNoFileAndNoTemporaryFile) {
+  expect_killed_mid_write_leaves_nothing(false);
+}
+
+TEST(Interrupt, SigkillDuringTheWriteOverAnImageLeavesTheOldImageAlone) {
+  expect_killed_mid_write_leaves_nothing(true);
 }
 
 class GpuInterrupt : public test::GpuTest {};
