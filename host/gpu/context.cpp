@@ -33,6 +33,20 @@ class scoped_command_buffer {
   VkCommandBuffer cb_ = VK_NULL_HANDLE;
 };
 
+template <typename T>
+void cap(T& value, T most) {
+  if (most != 0 && (value == 0 || most < value)) value = most;
+}
+
+void apply_caps(const device_limit_caps& caps, device_info& d,
+                VkPhysicalDeviceMemoryProperties& memory) {
+  cap<VkDeviceSize>(d.max_allocation_size, caps.allocation_size);
+  cap<std::uint32_t>(d.limits.maxStorageBufferRange, std::uint32_t(caps.storage_range));
+  cap<std::uint32_t>(d.limits.maxMemoryAllocationCount, caps.allocations);
+  for (std::uint32_t h = 0; h < memory.memoryHeapCount; ++h)
+    cap<VkDeviceSize>(memory.memoryHeaps[h].size, caps.heap_size);
+}
+
 }  // namespace
 
 gpu_context::gpu_context(const gpu_options& options)
@@ -41,6 +55,7 @@ gpu_context::gpu_context(const gpu_options& options)
   chosen_ = select_device(devices_, options.device);
   const device_info& d = devices_[chosen_];
   vkGetPhysicalDeviceMemoryProperties(d.handle, &memory_);
+  apply_caps(options.caps, devices_[chosen_], memory_);
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

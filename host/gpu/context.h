@@ -12,10 +12,19 @@
 
 namespace rtvk::gpu {
 
+// Limits lower than the device's own, for tests that prove a limit is checked (0: the device's).
+struct device_limit_caps {
+  VkDeviceSize storage_range = 0;    // maxStorageBufferRange, bytes
+  VkDeviceSize allocation_size = 0;  // maxMemoryAllocationSize, bytes
+  std::uint32_t allocations = 0;     // maxMemoryAllocationCount
+  VkDeviceSize heap_size = 0;        // every memory heap's size, bytes
+};
+
 struct gpu_options {
   std::string device;     // --device: index, name substring, or empty for the default pick
   bool validate = false;  // enable VK_LAYER_KHRONOS_validation
   std::chrono::milliseconds fence_timeout{120'000};  // longest wait for one submission
+  device_limit_caps caps;                            // tests only
 };
 
 // One chosen device with its queue, command pool and fence: everything a render submits with.
@@ -39,6 +48,7 @@ class gpu_context {
   std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
                             VkMemoryPropertyFlags preferred = 0) const;
   bool memory_type_has(std::uint32_t type, VkMemoryPropertyFlags flags) const;
+  const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_; }
 
   // Records one command buffer, submits it and waits for the fence. A wait longer than the
   // timeout, or a lost device, throws vk_error naming the device; the context is then unusable.

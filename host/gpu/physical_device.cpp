@@ -35,12 +35,16 @@ device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
   d.api_version = props.apiVersion;
   d.limits = props.limits;
 
-  VkPhysicalDeviceSubgroupProperties subgroup{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceMaintenance3Properties maintenance3{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES,
+                                              &maintenance3};
   VkPhysicalDeviceProperties2 with_subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
   with_subgroup.pNext = &subgroup;
   vkGetPhysicalDeviceProperties2(dev, &with_subgroup);
   d.subgroup_size = std::max(1u, subgroup.subgroupSize);
+  if (props.apiVersion >= VK_API_VERSION_1_1)
+    d.max_allocation_size = maintenance3.maxMemoryAllocationSize;
 
   if (props.apiVersion >= VK_API_VERSION_1_2 ||
       has_device_extension(dev, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME)) {

@@ -23,6 +23,8 @@ struct device_info {
   std::uint32_t subgroup_size = 1;         // invocations that run in lockstep (a warp, a wave)
   std::string unusable_reason;             // empty when rtvk can render on it
   VkPhysicalDeviceLimits limits{};         // for workgroup and buffer sizes
+  VkDeviceSize max_allocation_size = 0;    // largest single allocation (Vulkan 1.1's
+                                           // maintenance3); 0 when the device does not say
 };
 
 std::vector<device_info> list_devices(VkInstance instance);

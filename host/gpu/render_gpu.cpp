@@ -8,6 +8,7 @@
 #include "buffer.h"
 #include "bvh.h"
 #include "compute_pipeline.h"
+#include "device_fit.h"
 #include "format.h"
 #include "interrupt.h"
 #include "packing.h"
@@ -102,6 +103,34 @@ void check_views(const std::vector<camera>& views, const render_window& win) {
   check_window(win, views[0].image_width(), views[0].image_height());
 }
 
+// Every buffer render_gpu_views allocates, in order, sized before anything is built: the BVH at
+// its largest, 2N - 1 nodes for N spheres (a binary tree with at most N leaves).
+std::vector<buffer_request> render_buffers(const scene& s, const engine_options& engine,
+                                           VkDeviceSize image_bytes, VkDeviceSize count_bytes) {
+  const VkDeviceSize n = s.spheres.size();
+  const VkDeviceSize spheres = std::max<VkDeviceSize>(n, 1) * sizeof(gpu_sphere);
+  const VkDeviceSize materials =
+      std::max<VkDeviceSize>(s.materials.size(), 1) * sizeof(gpu_material);
+  const bool tree = engine.use_bvh && n > 0;
+  const VkDeviceSize nodes = (tree ? 2 * n - 1 : 1) * sizeof(bvh_node);
+  const VkDeviceSize index = (tree ? n : 1) * sizeof(std::uint32_t);
+  using u = memory_use;
+  return {{"the camera block", RTVK_MAX_VIEWS * sizeof(camera_ubo), false, u::upload},
+          {"the spheres' upload copy", spheres, false, u::upload},
+          {"the sphere array", spheres, true, u::device_local},
+          {"the materials' upload copy", materials, false, u::upload},
+          {"the material array", materials, true, u::device_local},
+          {"the BVH's upload copy", nodes, false, u::upload},
+          {"the BVH", nodes, true, u::device_local},
+          {"the BVH index's upload copy", index, false, u::upload},
+          {"the BVH index", index, true, u::device_local},
+          {"the ray counters", count_bytes, true, u::device_local},
+          {"the ray counters' readback", count_bytes, false, u::readback},
+          {"the image band", image_bytes, true, u::device_local},
+          {"the image band's readback", image_bytes, false, u::readback},
+          {"the status block", sizeof(render_status), true, u::readback}};
+}
+
 // Fails the render when any invocation ran out of its loop budget.
 void check_overrun(const render_status& st, std::uint32_t budget, const device_info& dev) {
   if (st.overrun_pixels > 0)
@@ -142,6 +171,11 @@ std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<ca
   const VkDeviceSize group_pixels =
       VkDeviceSize(win.width) * layout.band_rows * layout.views_per_group;
   const VkDeviceSize image_bytes = group_pixels * 3 * sizeof(float);
+  // One 32-bit counter per pixel: it holds at most spp * max_depth rays.
+  const bool count_rays = engine.count_rays &&
+                          std::uint64_t(win.samples()) * std::uint64_t(rs.max_depth) < (1ull << 32);
+  const VkDeviceSize count_bytes = count_rays ? group_pixels * sizeof(std::uint32_t) : 4;
+  check_device_fits(ctx, render_buffers(s, engine, image_bytes, count_bytes), "--scene " + s.name);
 
   gpu_buffer ubo_buf(ctx, RTVK_MAX_VIEWS * sizeof(camera_ubo), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                      memory_use::upload);
@@ -156,10 +190,6 @@ std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<ca
   }
   const device_array<bvh_node> nodes(ctx, tree.nodes());
   const device_array<std::uint32_t> bvh_index(ctx, tree.index());
-  // One 32-bit counter per pixel: it holds at most spp * max_depth rays.
-  const bool count_rays = engine.count_rays &&
-                          std::uint64_t(win.samples()) * std::uint64_t(rs.max_depth) < (1ull << 32);
-  const VkDeviceSize count_bytes = count_rays ? group_pixels * sizeof(std::uint32_t) : 4;
   constexpr VkBufferUsageFlags storage_copy = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                               VK_BUFFER_USAGE_TRANSFER_DST_BIT;

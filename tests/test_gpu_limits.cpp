@@ -1,0 +1,65 @@
+// Every buffer a GPU render allocates is checked against the device's limits before any is: a
+// scene too large for the device is refused with a message, never bound past a limit (a wrong
+// image or a device fault on devices without robust buffer access). Limits are lowered through
+// gpu_options::caps to prove each check fires.
+#include <gtest/gtest.h>
+
+#include "errors.h"
+#include "gpu_fixture.h"
+#include "render_helpers.h"
+
+namespace rtvk {
+namespace {
+
+class GpuLimits : public test::GpuTest {
+ protected:
+  // Renders `s` small on a context whose limits are lowered to `caps`; returns the refusal's
+  // message, or "" when it rendered.
+  std::string render_with(const scene& s, const gpu::device_limit_caps& caps) {
+    gpu::gpu_options o;
+    o.device = test::test_device();
+    o.validate = true;
+    o.caps = caps;
+    gpu::gpu_context ctx(o);
+    try {
+      gpu::render_gpu(ctx, test::scene_camera(s), s, s.render);
+    } catch (const usage_error& e) {
+      EXPECT_EQ(ctx.validation_messages(), 0u);
+      return e.what();
+    }
+    EXPECT_EQ(ctx.validation_messages(), 0u);
+    return "";
+  }
+};
+
+scene two_thousand_spheres() {
+  scene s = builtin_scene("spheres:2000");
+  s.render.width = 16;
+  s.render.spp = 1;
+  return s;
+}
+
+TEST_F(GpuLimits, AStorageBufferAboveTheRangeIsRefused) {
+  // 2000 spheres and the ground: 4001 BVH nodes of 32 bytes, 128,032 bytes in one storage buffer.
+  const std::string refused = render_with(two_thousand_spheres(), {.storage_range = 100 << 10});
+  EXPECT_EQ(refused,
+            "--scene spheres:2000: the BVH needs 125.031 KiB in one storage buffer; "
+            "device '" +
+                gpu().device().name + "' allows 100 KiB");
+}
+
+TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
+  const scene s = two_thousand_spheres();
+  EXPECT_EQ(render_with(s, {.storage_range = 200 << 10}), "") << "everything fits 200 KiB";
+  EXPECT_NE(render_with(s, {.allocation_size = 100 << 10})
+                .find("the BVH's upload copy needs 125.031 KiB in one memory allocation"),
+            std::string::npos);
+  EXPECT_NE(
+      render_with(s, {.allocations = 10}).find("the render needs 14 memory allocations; device '"),
+      std::string::npos);
+  EXPECT_NE(render_with(s, {.heap_size = 256 << 10}).find("of memory heap 0; device '"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace rtvk
