@@ -183,10 +183,12 @@ namespace {
 // results, as two calls of ray_box_entry.
 #if defined(__SSE2__)
 void both_children(const glm::vec3& o, const glm::vec3& inv_d, const float (&x)[4],
-                   const float (&y)[4], const float (&z)[4], float t_min, float t_max,
+                   const float (&y)[4], const float (&z)[4], float t_min, float t_max, float margin,
                    float& t_left, float& t_right) {
-  const auto axis = [](const float(&v)[4], float origin, float inv, __m128& near, __m128& far) {
-    const __m128 t = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(v), _mm_set1_ps(origin)), _mm_set1_ps(inv));
+  const __m128 grow = _mm_setr_ps(-margin, -margin, margin, margin);  // mins down, maxes up
+  const auto axis = [&](const float(&v)[4], float origin, float inv, __m128& near, __m128& far) {
+    const __m128 corner = _mm_add_ps(_mm_loadu_ps(v), grow);
+    const __m128 t = _mm_mul_ps(_mm_sub_ps(corner, _mm_set1_ps(origin)), _mm_set1_ps(inv));
     const __m128 swapped =
         _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 0, 3, 2));  // min lanes <-> max lanes
     near = _mm_min_ps(t, swapped);
@@ -211,6 +213,7 @@ void both_children(const glm::vec3& o, const glm::vec3& inv_d, const float (&x)[
 bool bvh::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
   if (nodes_.empty()) return false;
   const glm::vec3 o(r.origin()), inv_d = safe_inverse(glm::vec3(r.direction()));
+  const float margin = origin_margin(o);
   // Box tests run in float; widen the interval a little so no box holding a hit is culled.
   auto widen_up = [](double t) { return float(t) * (1.0f + 0x1p-20f); };
   const float box_min = float(t_min) * (1.0f - 0x1p-20f);
@@ -239,10 +242,10 @@ bool bvh::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
 #if defined(__SSE2__)
       float t_left, t_right;
       const child_boxes& c = children_[node];
-      both_children(o, inv_d, c.x, c.y, c.z, box_min, box_max, t_left, t_right);
+      both_children(o, inv_d, c.x, c.y, c.z, box_min, box_max, margin, t_left, t_right);
 #else
-      const float t_left = ray_box_entry(o, inv_d, nodes_[left], box_min, box_max);
-      const float t_right = ray_box_entry(o, inv_d, nodes_[right], box_min, box_max);
+      const float t_left = ray_box_entry(o, inv_d, nodes_[left], box_min, box_max, margin);
+      const float t_right = ray_box_entry(o, inv_d, nodes_[right], box_min, box_max, margin);
 #endif
       if (t_left >= 0 && t_right >= 0) {
         const bool left_first = t_left <= t_right;

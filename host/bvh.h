@@ -54,15 +54,24 @@ inline glm::vec3 safe_inverse(const glm::vec3& d) {
   return inv;
 }
 
+// How far the slab test's float arithmetic can misplace a ray that starts at o: rounding o to
+// float and subtracting it from a box corner each err by up to half an ulp of |o|, which the
+// boxes' own padding (scaled by the box) does not cover for a ray from far away. 2^-20 |o| is 16
+// such ulps: every box is grown by it, so the float test never culls a box the ray enters.
+inline float origin_margin(const glm::vec3& o) {
+  return std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)}) * 0x1p-20f;
+}
+
 // The slab test both backends use, in float on both: does the ray (origin o, inverse direction
-// inv_d) enter the box before t_max and leave it after t_min? Returns the entry distance, or a
-// negative value to cull. Node boxes are padded for float rounding when they are built.
+// inv_d) enter the box, grown by `margin` on every side, before t_max and leave it after t_min?
+// Returns the entry distance, or a negative value to cull. Node boxes are padded for float
+// rounding when they are built; `margin` (origin_margin) covers the ray's side.
 inline float ray_box_entry(const glm::vec3& o, const glm::vec3& inv_d, const gpu::bvh_node& n,
-                           float t_min, float t_max) {
+                           float t_min, float t_max, float margin) {
   float enter = t_min, leave = t_max;
   for (int k = 0; k < 3; ++k) {
-    const float t0 = (n.bounds_min[k] - o[k]) * inv_d[k];
-    const float t1 = (n.bounds_max[k] - o[k]) * inv_d[k];
+    const float t0 = (n.bounds_min[k] - margin - o[k]) * inv_d[k];
+    const float t1 = (n.bounds_max[k] + margin - o[k]) * inv_d[k];
     enter = std::max(enter, std::min(t0, t1));
     leave = std::min(leave, std::max(t0, t1));
   }

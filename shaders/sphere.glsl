@@ -44,10 +44,14 @@ vec3 safe_inverse(vec3 d) {
   return 1.0 / c;
 }
 
-// Mirrors ray_box_entry in host/bvh.cpp: the entry distance, or -1 to cull.
-float ray_box_entry(vec3 o, vec3 inv_d, bvh_node n, float t_min, float t_max) {
-  vec3 t0 = (n.bounds_min - o) * inv_d;
-  vec3 t1 = (n.bounds_max - o) * inv_d;
+// Mirrors origin_margin in host/bvh.h: how far float rounding can misplace a ray from o.
+float origin_margin(vec3 o) { return max(max(abs(o.x), abs(o.y)), abs(o.z)) * (1.0 / 1048576.0); }
+
+// Mirrors ray_box_entry in host/bvh.h: the entry distance into the box grown by `margin`, or -1
+// to cull.
+float ray_box_entry(vec3 o, vec3 inv_d, bvh_node n, float t_min, float t_max, float margin) {
+  vec3 t0 = (n.bounds_min - margin - o) * inv_d;
+  vec3 t1 = (n.bounds_max + margin - o) * inv_d;
   vec3 near = min(t0, t1);
   vec3 far = max(t0, t1);
   float enter = max(max(near.x, near.y), max(near.z, t_min));

@@ -10,6 +10,7 @@ bool hit_bvh(ray r, float t_min, float t_max, inout hit_record rec, inout uint i
   if (pc.sphere_count == 0u) return false;
   vec3 o = r.origin;
   vec3 inv_d = safe_inverse(r.direction);
+  float margin = origin_margin(o);
   float box_min = t_min * (1.0 - 1.0 / 1048576.0);
   uint stack_node[RTVK_BVH_STACK];
   float stack_entry[RTVK_BVH_STACK];
@@ -34,8 +35,8 @@ bool hit_bvh(ray r, float t_min, float t_max, inout hit_record rec, inout uint i
       float box_max = closest * (1.0 + 1.0 / 1048576.0);
       uint left = node + 1u;
       uint right = n.first;
-      float t_left = ray_box_entry(o, inv_d, bvh_nodes[left], box_min, box_max);
-      float t_right = ray_box_entry(o, inv_d, bvh_nodes[right], box_min, box_max);
+      float t_left = ray_box_entry(o, inv_d, bvh_nodes[left], box_min, box_max, margin);
+      float t_right = ray_box_entry(o, inv_d, bvh_nodes[right], box_min, box_max, margin);
       if (t_left >= 0.0 && t_right >= 0.0) {
         bool left_first = t_left <= t_right;
         stack_node[top] = left_first ? right : left;
