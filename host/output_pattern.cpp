@@ -23,8 +23,10 @@ output_pattern::output_pattern(const std::string& text, const std::string& flag)
       continue;
     }
     const std::size_t close = text.find_first_of("{}", i + 1);
-    if (close == std::string::npos || text[close] == '{')
+    if (close == std::string::npos)
       fail("'{' at character " + std::to_string(i + 1) + " is not closed by '}'");
+    if (text[close] == '{')
+      fail("'{' at character " + std::to_string(close + 1) + " is inside another placeholder");
     const std::string field = text.substr(i + 1, close - i - 1);
     piece p{piece::kind::literal, {}, 0};
     if (field == "camera") {

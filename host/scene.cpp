@@ -145,10 +145,17 @@ scene spheres_scene(std::uint32_t n) {
   const double side = std::max(22.0, std::sqrt(double(n)));
   const double ground = 1000;  // radius of the book's ground sphere, centered at (0, -1000, 0)
   s.spheres.reserve(n + 1);
+  const double rest = ground + 0.2;  // a center's distance from the ground's center
   for (std::uint32_t i = 0; i < n; ++i) {
-    const double x = side * (rnd() - 0.5), z = side * (rnd() - 0.5);
+    // Above 2,000,000 spheres the square is wider than the ground: corners that miss it are
+    // drawn again (below, no point is, so those scenes are as they always were).
+    double x, z;
+    do {
+      x = side * (rnd() - 0.5);
+      z = side * (rnd() - 0.5);
+    } while (x * x + z * z > 0.99 * rest * rest);
     // Resting on the ground: the center is radius + 0.2 from the ground's center.
-    const double y = std::sqrt((ground + 0.2) * (ground + 0.2) - x * x - z * z) - ground;
+    const double y = std::sqrt(rest * rest - x * x - z * z) - ground;
     s.spheres.push_back(sphere(point3(x, y, z), 0.2, 1 + int(hash32(i) % 64)));
   }
   return s;
@@ -188,6 +195,9 @@ void check_scene(const scene& s) {
   for (std::size_t i = 0; i < s.spheres.size(); ++i) {
     const sphere& sp = s.spheres[i];
     const std::string where = s.name + ": sphere " + std::to_string(i);
+    if (!std::isfinite(sp.center.x) || !std::isfinite(sp.center.y) || !std::isfinite(sp.center.z))
+      throw usage_error(where + ": center must be finite, got " + format_number(sp.center.x) +
+                        "," + format_number(sp.center.y) + "," + format_number(sp.center.z));
     if (!(sp.radius > 0) || !std::isfinite(sp.radius))
       throw usage_error(where + ": radius must be finite and > 0, got " + format_number(sp.radius));
     if (sp.material < 0 || std::size_t(sp.material) >= s.materials.size())
