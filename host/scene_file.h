@@ -8,7 +8,7 @@
 namespace rtvk {
 
 // The largest scene file rtvk reads. A file of 4,000,000 spheres as `rtvk scene dump` writes it
-// is about 525 MB; a larger file is refused (usage_error) rather than read without end.
+// is about 560 MB; a larger file is refused (usage_error) rather than read without end.
 inline constexpr std::uint64_t max_scene_file_bytes = std::uint64_t(1) << 30;
 
 // Reads a JSON scene file (docs/scene-format.md). Any problem -- unreadable file, invalid JSON,
