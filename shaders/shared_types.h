@@ -118,7 +118,6 @@ struct probe_io {
   vec4 uv[RTVK_PROBE_POINTS];          // xy: normalized image coordinates; zw: lens sample
   vec4 direction[RTVK_PROBE_POINTS];   // xyz: get_ray(uv).direction
   vec4 ray_origin[RTVK_PROBE_POINTS];  // xyz: get_ray(uv).origin
-  camera_ubo echo;                     // the uniform buffer exactly as the shader read it
 };
 
 // std430 array element for rng_probe.comp: the host fills the counters, the shader the results.
@@ -195,8 +194,7 @@ static_assert(sizeof(bvh_node) == 32);
 static_assert(sizeof(render_status) == 16);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
 static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);
-static_assert(offsetof(probe_io, echo) == 48 * RTVK_PROBE_POINTS);
-static_assert(sizeof(probe_io) == 48 * RTVK_PROBE_POINTS + 96);
+static_assert(sizeof(probe_io) == 48 * RTVK_PROBE_POINTS);
 static_assert(offsetof(rng_probe_entry, bits) == 16);
 static_assert(offsetof(rng_probe_entry, value) == 20);
 static_assert(sizeof(rng_probe_entry) == 32);

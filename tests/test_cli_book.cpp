@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "ci.h"
+#include "image_io.h"
 #include "process.h"
 
 namespace rtvk {
@@ -249,6 +250,7 @@ TEST(CliBadInput, AHundredThousandSphereFileRenders) {
   test::temp_dir dir;
   const auto file = (dir.path() / "big.json").string();
   {
+    // Rows of 317 spheres across x = -158..158, one row per unit of depth from z = -20 back.
     std::ofstream f(file);
     f << R"({"materials":{"m":{"type":"normal"}},"spheres":[)";
     for (int i = 0; i < 100000; ++i)
@@ -257,9 +259,17 @@ TEST(CliBadInput, AHundredThousandSphereFileRenders) {
     f << "]}";
   }
   const auto out = (dir.path() / "big.png").string();
-  const auto r = run_rtvk({"render", "--scene", file, "--width", "64", "-o", out});
-  EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_TRUE(std::filesystem::exists(out));
+  const auto r =
+      run_rtvk({"render", "--scene", file, "--width", "65", "--aspect", "1.94", "-o", out});
+  ASSERT_EQ(r.status, 0) << r.err;
+  // 65 / 1.94 = 33.5, so 65x33, and pixel (32, 16) looks through (u, v) = (32/64, 16/32) =
+  // (0.5, 0.5): straight down -z onto the sphere at (0, 0, -20), head on, normal (0, 0, 1),
+  // shaded 0.5 * (normal + 1) = (0.5, 0.5, 1) and written int(255.999 * c) = 127, 127, 255.
+  const image_rgb8 img = read_image(out);
+  ASSERT_EQ(img.width, 65);
+  ASSERT_EQ(img.height, 33);
+  const std::uint8_t* center = img.pixel(32, 16);
+  EXPECT_EQ(std::vector<int>(center, center + 3), (std::vector<int>{127, 127, 255}));
 }
 
 TEST(CliBadInput, UnwritableOutputFolder) {

@@ -63,11 +63,21 @@ TEST_F(CliGpu, BackendBothChecksGpuAgainstCpu) {
 
 TEST_F(CliGpu, ValidateByEnvironmentVariable) {
   test::temp_dir dir;
-  const auto r =
-      run_rtvk(gpu_args({"render", "--backend", "gpu", "-o", (dir.path() / "a.png").string()}),
-               {"RTVK_VALIDATE=1"});
+  const auto args = gpu_args({"render", "--backend", "gpu", "-o", (dir.path() / "a.png").string()});
+  const auto r = run_rtvk(args, {"RTVK_VALIDATE=1"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
+  // A clean run looks the same with validation off, so prove the variable asks for the layer:
+  // with the loader pointed at a folder of no layers, RTVK_VALIDATE=1 must fail for want of it,
+  // and the same run without it must not.
+  const std::string no_layers = "VK_LAYER_PATH=" + (dir.path() / "no-layers").string();
+  const auto without_layer = run_rtvk(args, {"RTVK_VALIDATE=1", no_layers});
+  EXPECT_EQ(without_layer.status, 1) << without_layer.err;
+  EXPECT_NE(without_layer.err.find("VK_LAYER_KHRONOS_validation is not installed"),
+            std::string::npos)
+      << without_layer.err;
+  const auto unvalidated = run_rtvk(args, {"RTVK_VALIDATE=0", no_layers});
+  EXPECT_EQ(unvalidated.status, 0) << unvalidated.err;
 }
 
 TEST_F(CliGpu, DevicesListsAndMarksThePick) {

@@ -65,8 +65,19 @@ TEST(Compare, HeatmapIsBlackWhereEqual) {
   const image_rgb8 a = seed(64);
   const image_rgb8 h = difference_heatmap(a, a);
   EXPECT_EQ(h.rgb, std::vector<std::uint8_t>(a.rgb.size(), 0));
-  const image_rgb8 u = difference_heatmap(a, upside_down(a));
-  EXPECT_NE(u.rgb, h.rgb);
+}
+
+TEST(Compare, HeatmapRunsThroughRedAndYellowToWhiteByTheWorstChannel) {
+  // Worst-channel differences 0, 16, 32, 64 and 200 levels; t = min(1, d / 64) is 0, 0.25,
+  // 0.5, 1, 1, and the color is 255 * clamp(3t, 3t - 1, 3t - 2 to [0, 1]):
+  //   t = 0.25: (255 * 0.75, 0, 0) = (191, 0, 0), dark red
+  //   t = 0.5:  (255, 255 * 0.5, 0) = (255, 127, 0), orange
+  //   t = 1:    (255, 255, 255), white, and no brighter for 200 levels
+  const image_rgb8 a{5, 1, {10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 10, 250, 250, 250}};
+  const image_rgb8 b{5, 1, {10, 10, 10, 10, 26, 12, 10, 42, 10, 74, 10, 10, 250, 50, 250}};
+  EXPECT_EQ(
+      difference_heatmap(a, b).rgb,
+      (std::vector<std::uint8_t>{0, 0, 0, 191, 0, 0, 255, 127, 0, 255, 255, 255, 255, 255, 255}));
 }
 
 }  // namespace

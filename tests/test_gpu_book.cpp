@@ -77,9 +77,45 @@ TEST_F(GpuBook, LoopBudgetOverrunFailsTheRenderInsteadOfTruncating) {
                                   engine_options{.use_bvh = false, .gpu_loop_budget = 100000}));
 }
 
-TEST_F(GpuBook, DefaultBudgetStaysBelowLavapipesCap) {
-  if (gpu().device().driver_name == "llvmpipe") {
-    EXPECT_LT(gpu::default_loop_budget(gpu().device()), 65535u);
+// One pixel looking down -z at a sphere listed after `hidden` spheres behind the camera. With
+// --accel none its one path costs an iteration for the bounce and one per sphere tested, so
+// hidden + 2 in all, and only the last test finds the sphere: a loop cut short sees the sky.
+scene last_sphere_seen_after(int hidden) {
+  scene s;
+  s.materials = {{"normal", material{}}};
+  for (int i = 0; i < hidden; ++i)
+    s.spheres.push_back(sphere(point3(i % 256, i / 256, 10), 0.4, 0));
+  s.spheres.push_back(sphere(point3(0, 0, -1), 0.5, 0));
+  s.render.width = 1;
+  s.render.aspect = 1;
+  return s;
+}
+
+TEST_F(GpuBook, DefaultBudgetFailsWhatLavapipeWouldTruncateAndRendersTheRest) {
+  const engine_options linear{.use_bvh = false};  // the default loop budget
+  const bool lavapipe = gpu().device().driver_name == "llvmpipe";
+  for (int hidden : {50'000, 70'000}) {
+    SCOPED_TRACE(std::to_string(hidden) + " spheres behind the camera");
+    const scene s = last_sphere_seen_after(hidden);
+    const camera cam = test::scene_camera(s);
+    // Head on: normal (0, 0, 1), shaded (0.5, 0.5, 1).
+    const color want = render_cpu(cam, s, s.render, {}, linear).at(0, 0);
+    ASSERT_EQ(want, color(0.5, 0.5, 1));
+    if (lavapipe && hidden > 65'535) {
+      // lavapipe would stop this path's loop after 65,535 iterations and return the sky: the
+      // budget (below that cap) must stop it first and fail the render.
+      try {
+        const color got = gpu::render_gpu(gpu(), cam, s, s.render, {}, linear).at(0, 0);
+        ADD_FAILURE() << "no loop_budget_error; the pixel came back (" << got.r << ", " << got.g
+                      << ", " << got.b << "), the sphere's color is (0.5, 0.5, 1)";
+      } catch (const gpu::loop_budget_error& e) {
+        EXPECT_NE(std::string(e.what()).find("loop iterations"), std::string::npos) << e.what();
+      }
+    } else {
+      // Within lavapipe's cap (or on a device without one) the path runs to its end.
+      const color got = gpu::render_gpu(gpu(), cam, s, s.render, {}, linear).at(0, 0);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], want[k], 1e-6) << "channel " << k;
+    }
   }
 }
 

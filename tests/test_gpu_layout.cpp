@@ -1,15 +1,280 @@
-// The GPU's view of the camera: the uniform buffer it received and the rays get_ray makes.
+// The GPU's view of the shared structs and of the camera. The layout check reads the Offset
+// decorations glslang wrote into the embedded SPIR-V and holds them against the C++ compiler's
+// offsetof: an independent witness, where an echo of the uniform buffer would come back
+// unchanged whatever the offsets were.
 #include <gtest/gtest.h>
+#include <spirv_cross/spirv_cross_c.h>
 
-#include <cstring>
+#include <algorithm>
+#include <cstddef>
+#include <map>
+#include <set>
+#include <span>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include "gpu/packing.h"
 #include "gpu/probe.h"
+#include "gpu/shaders.h"
 #include "gpu_fixture.h"
 
 namespace rtvk {
 namespace {
+
+// --- What the C++ compiler made of shaders/shared_types.h -------------------------------------
+
+struct cpp_member {
+  std::string name;
+  std::size_t offset;  // bytes
+};
+
+struct cpp_struct {
+  std::size_t size;                 // bytes
+  std::vector<cpp_member> members;  // in declaration order
+};
+
+#define RTVK_MEMBER(type, member)        \
+  cpp_member {                           \
+#member, offsetof(gpu::type, member) \
+  }
+
+// Every struct of shared_types.h, every member. Listed by hand on purpose: a member added to the
+// header but not here makes the member counts differ, and a renamed one is missing by name, so
+// this table cannot fall behind silently.
+const std::map<std::string, cpp_struct>& cpp_layouts() {
+  static const std::map<std::string, cpp_struct> layouts = {
+      {"camera_ubo",
+       {sizeof(gpu::camera_ubo),
+        {RTVK_MEMBER(camera_ubo, origin), RTVK_MEMBER(camera_ubo, image_width),
+         RTVK_MEMBER(camera_ubo, horizontal), RTVK_MEMBER(camera_ubo, image_height),
+         RTVK_MEMBER(camera_ubo, vertical), RTVK_MEMBER(camera_ubo, lens_radius),
+         RTVK_MEMBER(camera_ubo, lower_left), RTVK_MEMBER(camera_ubo, pad0),
+         RTVK_MEMBER(camera_ubo, lens_u), RTVK_MEMBER(camera_ubo, pad1),
+         RTVK_MEMBER(camera_ubo, lens_v), RTVK_MEMBER(camera_ubo, pad2)}}},
+      {"gpu_sphere",
+       {sizeof(gpu::gpu_sphere),
+        {RTVK_MEMBER(gpu_sphere, center), RTVK_MEMBER(gpu_sphere, radius),
+         RTVK_MEMBER(gpu_sphere, material), RTVK_MEMBER(gpu_sphere, pad0),
+         RTVK_MEMBER(gpu_sphere, pad1), RTVK_MEMBER(gpu_sphere, pad2)}}},
+      {"gpu_material",
+       {sizeof(gpu::gpu_material),
+        {RTVK_MEMBER(gpu_material, albedo), RTVK_MEMBER(gpu_material, type),
+         RTVK_MEMBER(gpu_material, fuzz), RTVK_MEMBER(gpu_material, ir),
+         RTVK_MEMBER(gpu_material, pad0), RTVK_MEMBER(gpu_material, pad1)}}},
+      {"bvh_node",
+       {sizeof(gpu::bvh_node),
+        {RTVK_MEMBER(bvh_node, bounds_min), RTVK_MEMBER(bvh_node, first),
+         RTVK_MEMBER(bvh_node, bounds_max), RTVK_MEMBER(bvh_node, count)}}},
+      {"render_push",
+       {sizeof(gpu::render_push),
+        {RTVK_MEMBER(render_push, sky_horizon), RTVK_MEMBER(render_push, sphere_count),
+         RTVK_MEMBER(render_push, sky_zenith), RTVK_MEMBER(render_push, sample_index),
+         RTVK_MEMBER(render_push, seed), RTVK_MEMBER(render_push, max_depth),
+         RTVK_MEMBER(render_push, loop_budget), RTVK_MEMBER(render_push, jitter),
+         RTVK_MEMBER(render_push, use_bvh), RTVK_MEMBER(render_push, count_rays),
+         RTVK_MEMBER(render_push, band_y0), RTVK_MEMBER(render_push, band_rows),
+         RTVK_MEMBER(render_push, region_x0), RTVK_MEMBER(render_push, region_width)}}},
+      {"render_status",
+       {sizeof(gpu::render_status),
+        {RTVK_MEMBER(render_status, overrun_pixels), RTVK_MEMBER(render_status, pad0),
+         RTVK_MEMBER(render_status, pad1), RTVK_MEMBER(render_status, pad2)}}},
+      {"probe_io",
+       {sizeof(gpu::probe_io),
+        {RTVK_MEMBER(probe_io, uv), RTVK_MEMBER(probe_io, direction),
+         RTVK_MEMBER(probe_io, ray_origin)}}},
+      {"rng_probe_entry",
+       {sizeof(gpu::rng_probe_entry),
+        {RTVK_MEMBER(rng_probe_entry, pixel), RTVK_MEMBER(rng_probe_entry, sample_index),
+         RTVK_MEMBER(rng_probe_entry, bounce), RTVK_MEMBER(rng_probe_entry, dim),
+         RTVK_MEMBER(rng_probe_entry, bits), RTVK_MEMBER(rng_probe_entry, value),
+         RTVK_MEMBER(rng_probe_entry, pad0), RTVK_MEMBER(rng_probe_entry, pad1)}}},
+      {"hit_probe_entry",
+       {sizeof(gpu::hit_probe_entry),
+        {RTVK_MEMBER(hit_probe_entry, origin), RTVK_MEMBER(hit_probe_entry, t_min),
+         RTVK_MEMBER(hit_probe_entry, direction), RTVK_MEMBER(hit_probe_entry, t_max),
+         RTVK_MEMBER(hit_probe_entry, center), RTVK_MEMBER(hit_probe_entry, radius),
+         RTVK_MEMBER(hit_probe_entry, t), RTVK_MEMBER(hit_probe_entry, hit),
+         RTVK_MEMBER(hit_probe_entry, pad0), RTVK_MEMBER(hit_probe_entry, pad1)}}},
+  };
+  return layouts;
+}
+
+#undef RTVK_MEMBER
+
+// --- What glslang made of it, read back from the SPIR-V ---------------------------------------
+
+// One spirv-cross context per shader; everything it hands out lives as long as the context.
+class spirv_reflection {
+ public:
+  explicit spirv_reflection(std::span<const std::uint32_t> words) {
+    if (spvc_context_create(&context_) != SPVC_SUCCESS) {
+      context_ = nullptr;
+      throw std::runtime_error("spvc_context_create failed");
+    }
+    spvc_parsed_ir ir = nullptr;
+    check(spvc_context_parse_spirv(context_, words.data(), words.size(), &ir));
+    check(spvc_context_create_compiler(context_, SPVC_BACKEND_NONE, ir,
+                                       SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler_));
+  }
+  ~spirv_reflection() {
+    if (context_) spvc_context_destroy(context_);
+  }
+  spirv_reflection(const spirv_reflection&) = delete;
+  spirv_reflection& operator=(const spirv_reflection&) = delete;
+
+  void check(spvc_result r) const {
+    if (r != SPVC_SUCCESS)
+      throw std::runtime_error(std::string("spirv-cross: ") +
+                               spvc_context_get_last_error_string(context_));
+  }
+  spvc_compiler compiler() const { return compiler_; }
+
+ private:
+  spvc_context context_ = nullptr;
+  spvc_compiler compiler_ = nullptr;
+};
+
+// Where a shared struct was met, for failure messages: "render.comp: camera_block.cams".
+struct found_struct {
+  std::string where;
+  spvc_type_id id;  // the struct itself, not an array of it
+};
+
+// Every struct type reachable from the shader's uniform buffers, storage buffers and push
+// constants, through members and arrays, by name. glslang gives a struct used under two layouts
+// (std140 and std430) two type ids, so one name may be found more than once.
+class struct_walker {
+ public:
+  struct_walker(const spirv_reflection& r, std::string shader) : r_(r), shader_(std::move(shader)) {
+    spvc_resources resources = nullptr;
+    r_.check(spvc_compiler_create_shader_resources(r_.compiler(), &resources));
+    for (spvc_resource_type kind :
+         {SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, SPVC_RESOURCE_TYPE_STORAGE_BUFFER,
+          SPVC_RESOURCE_TYPE_PUSH_CONSTANT}) {
+      const spvc_reflected_resource* list = nullptr;
+      std::size_t count = 0;
+      r_.check(spvc_resources_get_resource_list_for_type(resources, kind, &list, &count));
+      for (std::size_t i = 0; i < count; ++i) {
+        ++blocks_;
+        push_blocks_ += kind == SPVC_RESOURCE_TYPE_PUSH_CONSTANT;
+        walk(list[i].base_type_id, shader_ + ": " + list[i].name);
+      }
+    }
+  }
+
+  const std::multimap<std::string, found_struct>& structs() const { return structs_; }
+  int blocks() const { return blocks_; }
+  int push_blocks() const { return push_blocks_; }
+
+  // An array member's stride, where the member is an array of a shared struct: the shader
+  // indexes with it, the host with sizeof.
+  struct array_use {
+    std::string where;
+    std::string element;
+    unsigned stride;
+  };
+  const std::vector<array_use>& arrays() const { return arrays_; }
+
+ private:
+  void walk(spvc_type_id type_id, const std::string& where) {
+    const spvc_compiler c = r_.compiler();
+    const spvc_type type = spvc_compiler_get_type_handle(c, type_id);
+    if (spvc_type_get_basetype(type) != SPVC_BASETYPE_STRUCT) return;
+    // An array's base type id is its element struct, which holds the names and decorations.
+    const spvc_type_id id = spvc_type_get_base_type_id(type);
+    if (!visited_.insert(id).second) return;
+    const spvc_type st = spvc_compiler_get_type_handle(c, id);
+    const std::string name = spvc_compiler_get_name(c, id);
+    structs_.emplace(name, found_struct{where, id});
+    for (unsigned i = 0; i < spvc_type_get_num_member_types(st); ++i) {
+      const spvc_type_id member = spvc_type_get_member_type(st, i);
+      const std::string member_where = where + "." + spvc_compiler_get_member_name(c, id, i);
+      const spvc_type mt = spvc_compiler_get_type_handle(c, member);
+      if (spvc_type_get_num_array_dimensions(mt) > 0 &&
+          spvc_type_get_basetype(mt) == SPVC_BASETYPE_STRUCT) {
+        unsigned stride = 0;
+        r_.check(spvc_compiler_type_struct_member_array_stride(c, st, i, &stride));
+        arrays_.push_back(
+            {member_where, spvc_compiler_get_name(c, spvc_type_get_base_type_id(mt)), stride});
+      }
+      walk(member, member_where);
+    }
+  }
+
+  const spirv_reflection& r_;
+  std::string shader_;
+  std::set<spvc_type_id> visited_;
+  std::multimap<std::string, found_struct> structs_;
+  std::vector<array_use> arrays_;
+  int blocks_ = 0;
+  int push_blocks_ = 0;
+};
+
+TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
+  const std::vector<std::pair<std::string, std::span<const std::uint32_t>>> shaders = {
+      {"render.comp", gpu::render_shader()},
+      {"probe.comp", gpu::probe_shader()},
+      {"rng_probe.comp", gpu::rng_probe_shader()},
+      {"hit_probe.comp", gpu::hit_probe_shader()}};
+  std::map<std::string, int> checked;  // struct name -> times compared
+  int blocks = 0, push_blocks = 0;
+  for (const auto& [shader, words] : shaders) {
+    SCOPED_TRACE(shader);
+    ASSERT_FALSE(words.empty());
+    const spirv_reflection reflection(words);
+    const spvc_compiler c = reflection.compiler();
+    const struct_walker walker(reflection, shader);
+    blocks += walker.blocks();
+    push_blocks += walker.push_blocks();
+    for (const auto& [name, found] : walker.structs()) {
+      const auto want = cpp_layouts().find(name);
+      if (want == cpp_layouts().end()) continue;  // a block, or a struct of the shader's own
+      ++checked[name];
+      const cpp_struct& cpp = want->second;
+      const spvc_type st = spvc_compiler_get_type_handle(c, found.id);
+      const unsigned members = spvc_type_get_num_member_types(st);
+      EXPECT_EQ(members, cpp.members.size()) << name << " at " << found.where << ": member count";
+      // By name, so the table's order does not matter; with equal counts every member is matched.
+      for (unsigned i = 0; i < members; ++i) {
+        const std::string member = spvc_compiler_get_member_name(c, found.id, i);
+        const auto same = std::find_if(cpp.members.begin(), cpp.members.end(),
+                                       [&](const cpp_member& m) { return m.name == member; });
+        if (same == cpp.members.end()) {
+          ADD_FAILURE() << name << "." << member << " at " << found.where
+                        << ": no member of that name in the C++ struct";
+          continue;
+        }
+        ASSERT_TRUE(spvc_compiler_has_member_decoration(c, found.id, i, SpvDecorationOffset))
+            << name << "." << member << " at " << found.where << " has no Offset";
+        const unsigned offset =
+            spvc_compiler_get_member_decoration(c, found.id, i, SpvDecorationOffset);
+        EXPECT_EQ(offset, same->offset)
+            << name << "." << member << " at " << found.where << ": SPIR-V Offset " << offset
+            << ", C++ offsetof " << same->offset;
+      }
+      std::size_t size = 0;
+      reflection.check(spvc_compiler_get_declared_struct_size(c, st, &size));
+      EXPECT_EQ(size, cpp.size) << name << " at " << found.where << ": SPIR-V size " << size
+                                << ", C++ sizeof " << cpp.size;
+    }
+    for (const auto& a : walker.arrays()) {
+      const auto want = cpp_layouts().find(a.element);
+      if (want == cpp_layouts().end()) continue;
+      EXPECT_EQ(a.stride, want->second.size)
+          << a.where << ": array of " << a.element << " with SPIR-V ArrayStride " << a.stride
+          << ", C++ sizeof " << want->second.size;
+    }
+  }
+  // Coverage cannot shrink unnoticed: every shared struct is checked in some shader, and the
+  // push constants (render.comp's) are among the blocks walked.
+  for (const auto& [name, layout] : cpp_layouts())
+    EXPECT_GT(checked[name], 0) << name << " was found in no shader's buffers or push constants";
+  EXPECT_GE(blocks, 13) << "uniform, storage and push-constant blocks walked";
+  EXPECT_EQ(push_blocks, 1) << "push-constant blocks walked";
+}
+
+// --- The camera on the GPU ---------------------------------------------------------------------
 
 class GpuLayout : public test::GpuTest {};
 
@@ -18,7 +283,7 @@ void expect_near_vec(const glm::vec3& gpu, const vec3& cpu, const char* what) {
     EXPECT_NEAR(gpu[k], cpu[k], 1e-6 * (1 + std::abs(cpu[k]))) << what << " component " << k;
 }
 
-TEST_F(GpuLayout, UniformBufferArrivesIntactAndGetRayMatchesTheCpu) {
+TEST_F(GpuLayout, GetRayGivesTheCpuCamerasRays) {
   // (u, v, lens x, lens y): the corners and the center, then two lens samples.
   const std::array<glm::vec4, RTVK_PROBE_POINTS> uv = {
       glm::vec4(0, 0, 0, 0), glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0),
@@ -33,21 +298,6 @@ TEST_F(GpuLayout, UniformBufferArrivesIntactAndGetRayMatchesTheCpu) {
        {std::tuple{camera_pose{}, 16.0 / 9.0, 400}, {camera_pose{}, 2.0, 7}, {posed, 0.37, 333}}) {
     const camera cam(pose, aspect, width);
     const gpu::probe_io io = gpu::run_probe(gpu(), cam, uv);
-
-    // Byte for byte what the host wrote: every std140 offset agrees with the C++ struct.
-    const gpu::camera_ubo sent = gpu::to_ubo(cam);
-    EXPECT_EQ(io.echo.image_width, std::uint32_t(cam.image_width()));
-    EXPECT_EQ(io.echo.image_height, std::uint32_t(cam.image_height()));
-    EXPECT_EQ(io.echo.lower_left, sent.lower_left);
-    EXPECT_EQ(io.echo.lens_radius, sent.lens_radius);
-    EXPECT_EQ(io.echo.lens_u, sent.lens_u);
-    EXPECT_EQ(io.echo.lens_v, sent.lens_v);
-    // Every byte but the padding, which the shader need not preserve.
-    EXPECT_EQ(std::memcmp(&io.echo, &sent, offsetof(gpu::camera_ubo, pad0)), 0);
-    EXPECT_EQ(std::memcmp(&io.echo.lower_left, &sent.lower_left, sizeof(gpu::vec3)), 0);
-    EXPECT_EQ(std::memcmp(&io.echo.lens_u, &sent.lens_u, sizeof(gpu::vec3)), 0);
-    EXPECT_EQ(std::memcmp(&io.echo.lens_v, &sent.lens_v, sizeof(gpu::vec3)), 0);
-
     for (int k = 0; k < RTVK_PROBE_POINTS; ++k) {
       SCOPED_TRACE("probe point " + std::to_string(k) + ", width " + std::to_string(width));
       const ray r = cam.get_ray(uv[k].x, uv[k].y, glm::dvec2(uv[k].z, uv[k].w));

@@ -1,16 +1,21 @@
 // Many views of one scene on the GPU: four cameras go out together -- one set-up, one submission
-// per batch of samples for all of them -- and each comes back exactly as it renders alone.
+// per batch of samples for all of them -- and each comes back as the CPU reference draws that
+// camera.
 #include <gtest/gtest.h>
 
 #include "gpu_fixture.h"
+#include "image_compare.h"
 #include "render_helpers.h"
 
 namespace rtvk {
 namespace {
 
 // book-final through four cameras: the book's, one orbiting, one keyframed, one from above.
+// 160 pixels wide: at one sample a path that float rounding sends elsewhere changes its whole
+// pixel, and the CPU comparison's PSNR needs enough pixels around it (at 40 wide one such pixel
+// could sink it below 40 dB).
 scene four_camera_scene() {
-  scene s = test::small_scene("book-final", 40, 3);
+  scene s = test::small_scene("book-final", 160, 3);
   s.render.max_depth = 6;
   const camera_pose book = main_camera(s).pose;
   camera_pose above = book;
@@ -39,9 +44,27 @@ bool same_pixels(const framebuffer& a, const framebuffer& b) {
   return true;
 }
 
+// Each GPU view against the CPU reference through the same camera, scene and settings, by the
+// rule `rtvk render --backend both` applies to Monte Carlo scenes (book-final's materials scatter).
+void expect_each_view_matches_the_cpu(const std::vector<framebuffer>& gpu_views,
+                                      const std::vector<camera>& views, const scene& s,
+                                      const render_window& win) {
+  ASSERT_EQ(gpu_views.size(), views.size());
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    const framebuffer cpu = render_cpu_window(views[k], s, s.render, win);
+    const image_difference d =
+        compare_images(quantize(gpu_views[k], s.render.gamma), quantize(cpu, s.render.gamma),
+                       monte_carlo_agreement.tolerance);
+    EXPECT_TRUE(agrees(d, monte_carlo_agreement))
+        << s.cameras[k].name << ": PSNR " << d.psnr_db << " dB, " << d.pixels_over
+        << " pixels more than " << monte_carlo_agreement.tolerance << " levels off (share "
+        << d.share_over << "), max " << d.max_abs;
+  }
+}
+
 using MultiView = test::GpuTest;
 
-TEST_F(MultiView, FourCamerasInOneSubmissionEachEqualsTheCameraAlone) {
+TEST_F(MultiView, FourCamerasInOneSubmissionEachMatchTheCpuReference) {
   scene s = four_camera_scene();
   s.render.spp = 1;  // one sample: the first (and only) batch is one submission
   const std::vector<camera> views = cameras_at(s, 1.0);
@@ -50,15 +73,10 @@ TEST_F(MultiView, FourCamerasInOneSubmissionEachEqualsTheCameraAlone) {
   const std::vector<framebuffer> fbs =
       gpu::render_gpu_views(gpu(), views, s, s.render, all, {}, {}, &together);
   EXPECT_EQ(together.submissions, 1);
-  ASSERT_EQ(fbs.size(), 4u);
-  for (std::size_t k = 0; k < views.size(); ++k) {
-    render_stats alone;
-    const framebuffer fb = gpu::render_gpu(gpu(), views[k], s, s.render, {}, {}, &alone);
-    EXPECT_TRUE(same_pixels(fbs[k], fb)) << s.cameras[k].name;
-    EXPECT_EQ(alone.submissions, 1);
-  }
-  // The four views really differ: the test is not comparing one image with itself.
-  for (std::size_t k = 1; k < views.size(); ++k)
+  expect_each_view_matches_the_cpu(fbs, views, s, all);
+  // The four views really differ: a GPU that drew one camera four times would fail above, and
+  // this says so directly.
+  for (std::size_t k = 1; k < fbs.size(); ++k)
     EXPECT_FALSE(same_pixels(fbs[0], fbs[k])) << s.cameras[k].name;
 }
 
@@ -68,8 +86,8 @@ TEST_F(MultiView, ManySamplesTakeNoMoreSubmissionsThanOneCamera) {
   const render_window all = whole_render(views[0].image_width(), views[0].image_height(), 3);
   render_stats together, alone;
   const auto fbs = gpu::render_gpu_views(gpu(), views, s, s.render, all, {}, {}, &together);
-  const framebuffer first = gpu::render_gpu(gpu(), views[0], s, s.render, {}, {}, &alone);
-  EXPECT_TRUE(same_pixels(fbs[0], first));
+  gpu::render_gpu(gpu(), views[0], s, s.render, {}, {}, &alone);
+  expect_each_view_matches_the_cpu(fbs, views, s, all);
   // Submissions grow with time taken, so allow the four-view run one more for its slower batches.
   EXPECT_LE(together.submissions, alone.submissions + 1);
   EXPECT_GE(together.submissions, 1);

@@ -34,18 +34,5 @@ TEST(RenderCpuErrors, AFailureInAWorkerThreadReachesTheCaller) {
   }
 }
 
-TEST(RenderCpuErrors, AFailingProgressCallbackStopsTheRender) {
-  const scene s = test::small_scene("materials", 32, 2);
-  engine_options engine;
-  engine.threads = 3;
-  EXPECT_THROW(render_cpu(
-                   test::scene_camera(s), s, s.render,
-                   [](int rows) {
-                     if (rows == 2) throw std::runtime_error("progress failed");
-                   },
-                   engine),
-               std::runtime_error);
-}
-
 }  // namespace
 }  // namespace rtvk

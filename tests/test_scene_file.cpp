@@ -164,16 +164,41 @@ TEST(SceneFile, MissingEmptyAndFolderFiles) {
 }
 
 TEST(SceneFile, AHundredThousandSpheresLoadAndRender) {
+  // Rows of 317 spheres across x = -158..158, one row per unit of depth from z = -20 back.
+  auto center_of = [](int i) { return point3(i % 317 - 158, 0, -20 - i / 317); };
   std::string json = R"({"materials":{"m":{"type":"normal"}},"spheres":[)";
-  for (int i = 0; i < 100000; ++i)
-    json += (i ? "," : "") + std::string(R"({"center":[)") + std::to_string(i % 317 - 158) + ",0," +
-            std::to_string(-20 - i / 317) + R"(],"radius":0.4,"material":"m"})";
+  for (int i = 0; i < 100000; ++i) {
+    const point3 c = center_of(i);
+    json += (i ? "," : "") + std::string(R"({"center":[)") + std::to_string(int(c.x)) + ",0," +
+            std::to_string(int(c.z)) + R"(],"radius":0.4,"material":"m"})";
+  }
   json += "]}";
   const scene s = parse_scene_json(json, "big.json");
-  EXPECT_EQ(s.spheres.size(), 100000u);
+  ASSERT_EQ(s.spheres.size(), 100000u);
+  for (int i : {0, 158, 317, 99999}) {
+    const point3 c = s.spheres[std::size_t(i)].center;
+    EXPECT_EQ(c, center_of(i)) << "sphere " << i << " read as (" << c.x << ", " << c.y << ", "
+                               << c.z << ")";
+    EXPECT_EQ(s.spheres[std::size_t(i)].radius, 0.4) << "sphere " << i;
+  }
+
+  // 9 pixels wide at 16:9 is 5 high, so pixel (4, 2) looks through (u, v) = (4/8, 2/4) =
+  // (0.5, 0.5): straight down -z, onto sphere 158 at (0, 0, -20). It is hit head on, normal
+  // (0, 0, 1), shaded 0.5 * (normal + 1) = (0.5, 0.5, 1), written int(255.999 * c) = 127, 127, 255.
   scene small = s;
-  small.render.width = 8;
-  EXPECT_EQ(test::cpu_image(small).width, 8);
+  small.render.width = 9;
+  const image_rgb8 img = test::cpu_image(small);
+  ASSERT_EQ(img.width, 9);
+  ASSERT_EQ(img.height, 5);
+  const std::uint8_t* center = img.pixel(4, 2);
+  EXPECT_EQ(std::vector<int>(center, center + 3), (std::vector<int>{127, 127, 255}));
+
+  // Every pixel is what the same spheres give when built in memory rather than read from text.
+  scene built;
+  built.materials = {{"m", material{}}};
+  for (int i = 0; i < 100000; ++i) built.spheres.push_back(sphere(center_of(i), 0.4, 0));
+  built.render.width = 9;
+  EXPECT_EQ(img.rgb, test::cpu_image(built).rgb);
 }
 
 }  // namespace

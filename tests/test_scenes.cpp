@@ -17,7 +17,8 @@ TEST(SpheresScene, TheLargestStillRestsEverySphereOnTheGround) {
   ASSERT_EQ(s.spheres.size(), 4000001u);
   std::size_t off_ground = 0;
   for (std::size_t i = 1; i < s.spheres.size(); ++i)
-    off_ground += !(std::abs(glm::length(s.spheres[i].center - point3(0, -1000, 0)) - 1000.2) < 1e-6);
+    off_ground +=
+        !(std::abs(glm::length(s.spheres[i].center - point3(0, -1000, 0)) - 1000.2) < 1e-6);
   EXPECT_EQ(off_ground, 0u);
   EXPECT_NO_THROW(check_scene(s));
 }

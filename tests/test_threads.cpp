@@ -55,7 +55,9 @@ TEST(RunWorkers, OnlyTheFirstErrorIsRethrown) {
   EXPECT_THROW(run_workers(3,
                            [&](int w, const std::atomic<bool>&) {
                              if (w == 0) {
-                               EXPECT_TRUE(wait_until([&] { return thrown.load() == 2; }));
+                               // after a helper's error (which may keep the last helper
+                               // from starting at all)
+                               EXPECT_TRUE(wait_until([&] { return thrown.load() >= 1; }));
                                throw std::logic_error("late");
                              }
                              ++thrown;

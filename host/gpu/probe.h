@@ -10,8 +10,8 @@
 
 namespace rtvk::gpu {
 
-// Runs probe.comp: the GPU reports the camera uniform buffer it received and the rays get_ray
-// gives for each (u, v, lens_x, lens_y), so tests can check the GPU's camera against the CPU's.
+// Runs probe.comp: the GPU reports the rays get_ray gives for each (u, v, lens_x, lens_y), so
+// tests can check the GPU's camera against the CPU's.
 probe_io run_probe(gpu_context& ctx, const camera& cam,
                    const std::array<glm::vec4, RTVK_PROBE_POINTS>& uv_lens);
 
