@@ -54,6 +54,11 @@ void test_pause_before_commit(const fs::path& path) {
   std::this_thread::sleep_for(std::chrono::duration<double>(std::atof(seconds)));
 }
 
+// The errors open(O_TMPFILE) gives where the kernel or the file system does not offer it.
+bool lacks_o_tmpfile(int err) {
+  return err == EOPNOTSUPP || err == EISDIR || err == EINVAL;
+}
+
 // The folder's entry for the new file reaches the disk too, not only the file's data.
 void sync_folder(const fs::path& target) {
   const int fd = ::open(folder_of(target).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -78,7 +83,7 @@ bool write_unnamed(const fs::path& target, std::string_view bytes) {
   descriptor file;
   file.fd = ::open(folder_of(target).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
   if (file.fd < 0) {
-    if (errno == EOPNOTSUPP || errno == EISDIR || errno == EINVAL) return false;
+    if (lacks_o_tmpfile(errno)) return false;
     fail("open(O_TMPFILE)", folder_of(target), errno);
   }
   write_all(file.fd, bytes, target);
@@ -129,6 +134,18 @@ void write_named(const fs::path& target, std::string_view bytes) {
 }
 
 }  // namespace
+
+int try_create_in(const fs::path& folder) {
+  int fd = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (fd < 0 && lacks_o_tmpfile(errno)) {
+    std::string probe = (folder / ".rtvk-write-test-XXXXXX").string();
+    fd = ::mkstemp(probe.data());
+    if (fd >= 0) ::unlink(probe.c_str());
+  }
+  if (fd < 0) return errno;
+  ::close(fd);
+  return 0;
+}
 
 void write_file_atomically(const fs::path& path, std::string_view bytes) {
   // RTVK_TEST_NO_O_TMPFILE: the tests' way to reach the fallback on a system that has O_TMPFILE.

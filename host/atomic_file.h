@@ -13,4 +13,9 @@ namespace rtvk {
 // and errno's text.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
+// Whether write_file_atomically can create a file in `folder`, tried the same way (an unnamed
+// O_TMPFILE, so a probe killed midway leaves nothing; a named file, removed at once, only where
+// that is missing). Returns 0, or the errno of the failure.
+int try_create_in(const std::filesystem::path& folder);
+
 }  // namespace rtvk

@@ -20,7 +20,6 @@
 #include "image_io.h"
 #include "interrupt.h"
 #include "memory_check.h"
-#include "output_pattern.h"
 #include "partial_image.h"
 #include "progress.h"
 #include "quantize.h"
@@ -234,11 +233,11 @@ int run_render(render_options o) {
   const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
   if (!o.device.empty() && o.backend == "cpu")
     throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");
-  const output_pattern checked(o.jobs.output, "--output");  // refused before the scene loads
+  const output_pattern output(o.jobs.output, "--output");  // refused before the scene loads
   scene s = load_scene(o.scene);
   check_scene(s);
   render_window win;
-  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, o.flags, win);
+  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags, win);
   const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win);
   check_render_memory(win.width, win.height,
                       int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));

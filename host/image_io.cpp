@@ -45,13 +45,9 @@ void check_output_path(const fs::path& path, const std::string& flag, bool float
     throw usage_error(flag + ": '" + path.string() + "' is a folder, not a file name");
   // Try what the final write will do -- create a file in the folder -- before any work, so a
   // read-only folder or file system fails now (also as root, where permission bits do not).
-  std::string probe = (dir / ".rtvk-write-test-XXXXXX").string();
-  const int fd = ::mkstemp(probe.data());
-  if (fd < 0)
+  if (const int err = try_create_in(dir); err != 0)
     throw usage_error(flag + ": cannot write in folder '" + dir.string() + "' of '" +
-                      path.string() + "': " + std::strerror(errno));
-  ::close(fd);
-  ::unlink(probe.c_str());
+                      path.string() + "': " + std::strerror(err));
 }
 
 std::string encode_ppm(const image_rgb8& img, ppm_encoding enc) {

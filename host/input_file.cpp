@@ -19,49 +19,40 @@ const char* kind_of(mode_t mode) {
   if (S_ISBLK(mode)) return "a block device";
   if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
   if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
+  return "an unknown kind of file";
 }
-
-// An open descriptor of a regular file, closed on destruction.
-class regular_file {
- public:
-  regular_file(const std::filesystem::path& path, const std::string& what) {
-    // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
-    fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd_ < 0)
-      throw usage_error(path.string() + ": cannot open " + what + " (" + std::strerror(errno) +
-                        ")");
-    struct stat st {};
-    if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
-      const char* kind = kind_of(st.st_mode);
-      ::close(fd_);
-      throw usage_error(path.string() + ": is " + std::string(kind) + ", not a regular " + what);
-    }
-    size_ = std::uint64_t(st.st_size);
-    ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
-  }
-  ~regular_file() { ::close(fd_); }
-  regular_file(const regular_file&) = delete;
-  regular_file& operator=(const regular_file&) = delete;
-
-  int fd() const { return fd_; }
-  std::uint64_t size() const { return size_; }  // when opened
-
- private:
-  int fd_ = -1;             // open for reading
-  std::uint64_t size_ = 0;  // bytes, from fstat
-};
 
 [[noreturn]] void too_large(const std::filesystem::path& path, std::uint64_t max_bytes,
                             const std::string& what) {
-  throw usage_error(path.string() + ": " + what + " is larger than the " +
-                    format_number(double(max_bytes) / double(1 << 20)) + " MiB rtvk reads");
+  throw usage_error(path.string() + ": " + what + " is larger than the " + format_bytes(max_bytes) +
+                    " rtvk reads");
 }
 
 }  // namespace
 
-void check_regular_file(const std::filesystem::path& path, const std::string& what) {
-  const regular_file file(path, what);
+regular_file::regular_file(const std::filesystem::path& path, const std::string& what)
+    : path_(path) {
+  auto refuse = [&](mode_t mode) {
+    throw usage_error(path.string() + ": is " + std::string(kind_of(mode)) + ", not a regular " +
+                      what);
+  };
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) refuse(st.st_mode);
+  // O_NONBLOCK: should the path become a FIFO after the stat, opening it would otherwise wait
+  // for a writer forever.
+  fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd_ < 0)
+    throw usage_error(path.string() + ": cannot open " + what + " (" + std::strerror(errno) + ")");
+  if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd_);
+    refuse(st.st_mode);
+  }
+  size_ = std::uint64_t(st.st_size);
+  ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
+}
+
+regular_file::~regular_file() {
+  ::close(fd_);
 }
 
 std::string read_regular_file(const std::filesystem::path& path, std::uint64_t max_bytes,

@@ -28,11 +28,9 @@ void check_render_memory(int width, int height, int renders) {
   const std::uint64_t need = render_memory_bytes(width, height, renders);
   const std::uint64_t have = available_memory_bytes();
   if (have == 0 || need <= have) return;
-  const double gib = 1024.0 * 1024.0 * 1024.0;
   throw usage_error(std::to_string(width) + "x" + std::to_string(height) + " needs about " +
-                    format_number(double(need) / gib) + " GiB of memory; " +
-                    format_number(double(have) / gib) +
-                    " GiB is available (lower --width or use a smaller --aspect)");
+                    format_bytes(need) + " of memory; " + format_bytes(have) +
+                    " is available (lower --width or use a smaller --aspect)");
 }
 
 }  // namespace rtvk

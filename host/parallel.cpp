@@ -1,10 +1,10 @@
 #include "parallel.h"
 
+#include <algorithm>
 #include <exception>
 #include <mutex>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace rtvk {
@@ -29,10 +29,19 @@ class first_error {
   std::atomic<bool> stop_{false};  // set with the first error
 };
 
+std::string what_of(std::exception_ptr e) {
+  try {
+    std::rethrow_exception(std::move(e));
+  } catch (const std::exception& x) {
+    return x.what();
+  } catch (...) {
+    return "unknown error";
+  }
+}
+
 }  // namespace
 
-void run_workers(int workers,
-                 const std::function<void(int worker, const std::atomic<bool>& stop)>& work) {
+void run_workers(int workers, const worker_function& work, const thread_starter& start) {
   first_error error;
   auto guarded = [&](int worker) {
     try {
@@ -42,17 +51,20 @@ void run_workers(int workers,
     }
   };
   std::vector<std::thread> helpers;
+  helpers.reserve(std::size_t(std::max(0, workers - 1)));  // no reallocation while threads run
   for (int w = 1; w < workers && !error.stop().load(); ++w) {
     try {
-      helpers.emplace_back(guarded, w);
-    } catch (const std::system_error& e) {  // out of threads: stop, and say which one failed
+      std::function<void()> body = [&guarded, w] { guarded(w); };
+      helpers.push_back(start ? start(std::move(body)) : std::thread(std::move(body)));
+    } catch (...) {  // out of threads (std::system_error) or memory: stop, and say which one
       error.record(std::make_exception_ptr(
           std::runtime_error("starting CPU worker thread " + std::to_string(w + 1) + " of " +
-                             std::to_string(workers) + ": " + e.what())));
+                             std::to_string(workers) + ": " + what_of(std::current_exception()))));
     }
   }
   guarded(0);
-  for (std::thread& t : helpers) t.join();
+  for (std::thread& t : helpers)
+    if (t.joinable()) t.join();
   error.rethrow_if_any();
 }
 

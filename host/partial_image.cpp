@@ -11,10 +11,15 @@
 #include <ImfStringAttribute.h>
 #include <ImfVecAttribute.h>
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <cinttypes>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <optional>
 
 #include "atomic_file.h"
 #include "camera.h"
@@ -46,6 +51,33 @@ class memory_stream final : public Imf::OStream {
   std::size_t pos_ = 0;
 };
 
+// OpenEXR reads through a stream; this one reads the descriptor rtvk opened and checked, so the
+// file read is the file checked.
+class descriptor_stream final : public Imf::IStream {
+ public:
+  explicit descriptor_stream(const regular_file& file)
+      : Imf::IStream(file.path().c_str()), file_(file) {}
+  bool read(char c[], int n) override {
+    std::size_t got = 0;
+    while (got < std::size_t(n)) {
+      const ssize_t r = ::pread(file_.fd(), c + got, std::size_t(n) - got, off_t(pos_ + got));
+      if (r < 0 && errno == EINTR) continue;
+      if (r <= 0)
+        throw std::runtime_error("early end of file: read " + std::to_string(got) + " of " +
+                                 std::to_string(n) + " bytes at " + std::to_string(pos_));
+      got += std::size_t(r);
+    }
+    pos_ += std::uint64_t(n);
+    return pos_ < file_.size();
+  }
+  uint64_t tellg() override { return pos_; }
+  void seekg(uint64_t pos) override { pos_ = pos; }
+
+ private:
+  const regular_file& file_;  // open and checked
+  std::uint64_t pos_ = 0;     // where the next read starts
+};
+
 Imf::FrameBuffer slices(float* rgb, const Imath::Box2i& data_window) {
   Imf::FrameBuffer fb;
   const char* names[] = {"R", "G", "B"};
@@ -54,6 +86,12 @@ Imf::FrameBuffer slices(float* rgb, const Imath::Box2i& data_window) {
               Imf::Slice::Make(Imf::FLOAT, rgb + c, data_window, 3 * sizeof(float),
                                std::size_t(data_window.size().x + 1) * 3 * sizeof(float)));
   return fb;
+}
+
+// The value of an attribute rtvk 0.1.0 pieces may lack, or empty.
+std::string optional_string(const Imf::Header& h, const char* name) {
+  const Imf::StringAttribute* a = h.findTypedAttribute<Imf::StringAttribute>(name);
+  return a ? a->value() : std::string();
 }
 
 template <typename Attr>
@@ -71,10 +109,24 @@ void check_piece_memory(const render_window& w, const std::string& name) {
   const std::uint64_t need = std::uint64_t(w.width) * std::uint64_t(w.height) * 3 * sizeof(float);
   const std::uint64_t have = available_memory_bytes();
   if (have != 0 && need > have / 2)
-    throw image_read_error(
-        name + ": its data window of " + std::to_string(w.width) + "x" + std::to_string(w.height) +
-        " pixels needs " + format_number(double(need) / double(1 << 30)) + " GiB; " +
-        format_number(double(have) / double(1 << 30)) + " GiB of memory is available");
+    throw image_read_error(name + ": its data window of " + std::to_string(w.width) + "x" +
+                           std::to_string(w.height) + " pixels needs " + format_bytes(need) + "; " +
+                           format_bytes(have) + " of memory is available");
+}
+
+// The pixels, a band of rows at a time, the buffer growing only as rows arrive: a header that
+// claims more rows than the file holds fails at the first missing band, not after allocating
+// the whole claim.
+void read_in_bands(Imf::InputFile& file, const Imath::Box2i& data, std::vector<float>& rgb) {
+  constexpr int band = 64;
+  const std::size_t row_floats = std::size_t(data.max.x - data.min.x + 1) * 3;
+  for (int y0 = data.min.y; y0 <= data.max.y; y0 += band) {
+    const int y1 = std::min(y0 + band - 1, data.max.y);
+    rgb.resize(std::size_t(y1 - data.min.y + 1) * row_floats);
+    const Imath::Box2i rows(Imath::V2i(data.min.x, y0), Imath::V2i(data.max.x, y1));
+    file.setFrameBuffer(slices(rgb.data() + std::size_t(y0 - data.min.y) * row_floats, rows));
+    file.readPixels(y0, y1);
+  }
 }
 
 }  // namespace
@@ -119,14 +171,16 @@ void write_partial_exr(const partial_image& p, const std::filesystem::path& path
 
 partial_image read_partial_exr(const std::filesystem::path& path) {
   const std::string name = path.string();
+  std::optional<regular_file> input;
   try {
-    check_regular_file(path, "OpenEXR piece");
+    input.emplace(path, "OpenEXR piece");
   } catch (const usage_error& e) {
     throw image_read_error(e.what());
   }
   partial_image p;
   try {
-    Imf::InputFile file(name.c_str(), 1);
+    descriptor_stream stream(*input);
+    Imf::InputFile file(stream, 1);
     const Imf::Header& h = file.header();
     const Imath::Box2i display = h.displayWindow(), data = h.dataWindow();
     if (display.max.x >= max_image_side || display.max.y >= max_image_side)
@@ -141,8 +195,8 @@ partial_image read_partial_exr(const std::filesystem::path& path) {
     p.scene = attribute<Imf::StringAttribute>(h, "rtvk.scene", name).value();
     p.camera = attribute<Imf::StringAttribute>(h, "rtvk.camera", name).value();
     p.frame = attribute<Imf::IntAttribute>(h, "rtvk.frame", name).value();
-    p.version = attribute<Imf::StringAttribute>(h, "rtvk.version", name).value();
-    p.shader = attribute<Imf::StringAttribute>(h, "rtvk.shader", name).value();
+    p.version = optional_string(h, "rtvk.version");  // pieces of earlier rtvk have none
+    p.shader = optional_string(h, "rtvk.shader");
     for (const char* c : {"R", "G", "B"})
       if (!h.channels().findChannel(c))
         throw image_read_error(name + ": no " + std::string(c) + " channel");
@@ -154,9 +208,7 @@ partial_image read_partial_exr(const std::filesystem::path& path) {
       throw image_read_error(name + ": rtvk.samples " + std::to_string(samples.x) + ":" +
                              std::to_string(samples.y) + " is not a sample range");
     check_piece_memory(p.window, name);
-    p.rgb.assign(std::size_t(p.window.width) * std::size_t(p.window.height) * 3, 0.0f);
-    file.setFrameBuffer(slices(p.rgb.data(), data));
-    file.readPixels(data.min.y, data.max.y);
+    read_in_bands(file, data, p.rgb);
   } catch (const image_read_error&) {
     throw;
   } catch (const std::exception& e) {

@@ -23,8 +23,8 @@ struct partial_image {
   std::string scene;        // scene name, for people reading the header
   std::string camera;       // camera name
   int frame = 0;            // animation frame
-  std::string version;      // the rtvk that rendered it (version_string, and the commit when
-                            // built from git): pieces of different versions do not merge
+  std::string version;      // the rtvk that rendered it (version_string; empty in pieces of
+                            // earlier rtvk): pieces of different versions do not merge unasked
   std::string shader;       // identity of the render shader (hash of its SPIR-V), likewise
 };
 

@@ -8,7 +8,6 @@
 #include "errors.h"
 #include "format.h"
 #include "image_io.h"
-#include "output_pattern.h"
 #include "partial_image.h"
 #include "render_cpu.h"
 #include "scene_file.h"
@@ -96,8 +95,8 @@ render_window parse_region(const std::string& text, const std::string& flag) {
   return {v[0], v[1], v[2], v[3], 0, 0};
 }
 
-std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_flags& flags,
-                                  render_window& window) {
+std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output_pattern& output,
+                                  const scene_flags& flags, render_window& window) {
   select_cameras(s, req.cameras);
   flags.apply(s);
   const int_range frames =
@@ -107,7 +106,6 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_
   if (count > 100'000)
     throw usage_error("--frames " + req.frames + ": " + std::to_string(count) +
                       " images in one run; the most is 100000");
-  const output_pattern output(req.output, "--output");
   if (s.cameras.size() > 1 && !output.has_camera())
     throw usage_error("--output " + req.output + ": " + std::to_string(s.cameras.size()) +
                       " cameras would share it; put {camera} in the name");

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "camera.h"
+#include "output_pattern.h"
 #include "render_settings.h"
 #include "scene.h"
 #include "scene_flags.h"
@@ -47,7 +48,8 @@ struct render_job {
 // and one job per camera and frame, every output path checked. Throws usage_error naming the
 // flag and the value for an unknown camera, a range or region outside the image or its samples,
 // a -o that would make two images share a file, or an unwritable folder.
-std::vector<render_job> plan_jobs(scene& s, const job_request& req, const scene_flags& flags,
-                                  render_window& window);
+// `output` is req.output, parsed (before the scene was loaded).
+std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output_pattern& output,
+                                  const scene_flags& flags, render_window& window);
 
 }  // namespace rtvk

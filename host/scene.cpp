@@ -147,13 +147,14 @@ scene spheres_scene(std::uint32_t n) {
   s.spheres.reserve(n + 1);
   const double rest = ground + 0.2;  // a center's distance from the ground's center
   for (std::uint32_t i = 0; i < n; ++i) {
-    // Above 2,000,000 spheres the square is wider than the ground: corners that miss it are
-    // drawn again (below, no point is, so those scenes are as they always were).
+    // Above 2,000,000 spheres the square is wider than the ground: points beyond its edge are
+    // drawn again. Up to 2,000,000 every point of the square (x^2 + z^2 <= side^2 / 2 <= 10^6)
+    // is inside it, so those scenes are as they always were.
     double x, z;
     do {
       x = side * (rnd() - 0.5);
       z = side * (rnd() - 0.5);
-    } while (x * x + z * z > 0.99 * rest * rest);
+    } while (x * x + z * z >= rest * rest);
     // Resting on the ground: the center is radius + 0.2 from the ground's center.
     const double y = std::sqrt(rest * rest - x * x - z * z) - ground;
     s.spheres.push_back(sphere(point3(x, y, z), 0.2, 1 + int(hash32(i) % 64)));
@@ -195,11 +196,14 @@ void check_scene(const scene& s) {
   for (std::size_t i = 0; i < s.spheres.size(); ++i) {
     const sphere& sp = s.spheres[i];
     const std::string where = s.name + ": sphere " + std::to_string(i);
-    if (!std::isfinite(sp.center.x) || !std::isfinite(sp.center.y) || !std::isfinite(sp.center.z))
-      throw usage_error(where + ": center must be finite, got " + format_number(sp.center.x) +
-                        "," + format_number(sp.center.y) + "," + format_number(sp.center.z));
-    if (!(sp.radius > 0) || !std::isfinite(sp.radius))
-      throw usage_error(where + ": radius must be finite and > 0, got " + format_number(sp.radius));
+    const auto in_range = [](double v) { return std::abs(v) <= max_scene_coordinate; };
+    if (!in_range(sp.center.x) || !in_range(sp.center.y) || !in_range(sp.center.z))
+      throw usage_error(where + ": center must be finite and within +-1e18, got " +
+                        format_number(sp.center.x) + "," + format_number(sp.center.y) + "," +
+                        format_number(sp.center.z));
+    if (!(sp.radius > 0) || !in_range(sp.radius))
+      throw usage_error(where + ": radius must be > 0 and at most 1e18, got " +
+                        format_number(sp.radius));
     if (sp.material < 0 || std::size_t(sp.material) >= s.materials.size())
       throw usage_error(where + ": material index " + std::to_string(sp.material) +
                         " does not exist");

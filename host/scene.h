@@ -53,8 +53,12 @@ inline const camera_path& main_camera(const scene& s) {
   return s.cameras.front().path;
 }
 
-// Throws usage_error when a sphere names a material that does not exist or has a radius that is
-// not finite and > 0, naming the sphere.
+// The largest coordinate or radius a scene may hold: the GPU squares them in float, whose range
+// ends at 3.4e38, so anything near sqrt(3.4e38) = 1.8e19 would overflow there.
+inline constexpr double max_scene_coordinate = 1e18;
+
+// Throws usage_error, naming the sphere, when a sphere names a material that does not exist, or
+// has a center or radius that is not finite or beyond max_scene_coordinate, or a radius <= 0.
 void check_scene(const scene& s);
 
 // The most spheres spheres:N builds.

@@ -18,12 +18,15 @@ bool sphere::hit_distance(const ray& r, double t_min, double t_max, double& t) c
   if (discriminant < 0) return false;
   const double sqrtd = std::sqrt(discriminant);
 
-  // The nearer root first; the farther one only when the nearer is out of range. Written as
-  // "not inside" so that a NaN root (a degenerate ray: zero or infinite direction) is no hit.
+  // The nearer root first; the farther one only when the nearer is out of range. A root that is
+  // not a finite number inside the interval is no hit: NaN (a degenerate ray: zero or infinite
+  // direction) fails every comparison, and infinity (overflow) would pass `<= t_max` when t_max
+  // is infinite.
+  const auto usable = [&](double t) { return t_min <= t && t <= t_max && std::isfinite(t); };
   double root = (-half_b - sqrtd) / a;
-  if (!(t_min <= root && root <= t_max)) {
+  if (!usable(root)) {
     root = (-half_b + sqrtd) / a;
-    if (!(t_min <= root && root <= t_max)) return false;
+    if (!usable(root)) return false;
   }
   t = root;
   return true;

@@ -16,11 +16,11 @@ bool hit_distance(gpu_sphere s, ray r, float t_min, float t_max, out float t) {
   if (discriminant < 0.0) return false;
   float sqrtd = sqrt(discriminant);
 
-  // "Not inside", as on the host: a NaN root is no hit.
+  // As on the host: only a finite root inside the interval is a hit (NaN fails every comparison).
   float root = (-half_b - sqrtd) / a;
-  if (!(t_min <= root && root <= t_max)) {
+  if (!(t_min <= root && root <= t_max && !isinf(root))) {
     root = (-half_b + sqrtd) / a;
-    if (!(t_min <= root && root <= t_max)) return false;
+    if (!(t_min <= root && root <= t_max && !isinf(root))) return false;
   }
   t = root;
   return true;

@@ -2,6 +2,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,9 +22,10 @@ extern char** environ;
 namespace rtvk::test {
 
 struct process_result {
-  int status = -1;  // exit status, or 128 + signal number
-  std::string out;  // everything written to stdout
-  std::string err;  // everything written to stderr
+  int status = -1;       // exit status, or 128 + signal number
+  std::string out;       // everything written to stdout
+  std::string err;       // everything written to stderr
+  long max_rss_kib = 0;  // the child's peak resident memory
 };
 
 inline std::string slurp(const std::filesystem::path& p) {
@@ -113,25 +115,28 @@ class running_rtvk {
   process_result wait_at_most(std::chrono::milliseconds limit) {
     const auto end = std::chrono::steady_clock::now() + limit;
     int wstatus = 0;
+    struct rusage usage {};
     pid_t rc;
-    while ((rc = waitpid(pid_, &wstatus, WNOHANG)) == 0 || (rc < 0 && errno == EINTR)) {
+    while ((rc = wait4(pid_, &wstatus, WNOHANG, &usage)) == 0 || (rc < 0 && errno == EINTR)) {
       if (std::chrono::steady_clock::now() > end) ::kill(pid_, SIGKILL);
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    return reaped(wstatus);
+    return reaped(wstatus, usage);
   }
 
   process_result wait() {
     int wstatus = 0;
-    while (waitpid(pid_, &wstatus, 0) < 0) {
+    struct rusage usage {};
+    while (wait4(pid_, &wstatus, 0, &usage) < 0) {
     }
-    return reaped(wstatus);
+    return reaped(wstatus, usage);
   }
 
  private:
-  process_result reaped(int wstatus) {
+  process_result reaped(int wstatus, const struct rusage& usage) {
     pid_ = -1;
     process_result r;
+    r.max_rss_kib = usage.ru_maxrss;
     r.status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
     r.out = slurp(out_);
     if (captured_stderr_) r.err = slurp(err_);

@@ -91,7 +91,7 @@ TEST(CliHardening, ASceneFileAboveTheLimitIsRefusedUnread) {
   const auto r = run_rtvk_within(
       prompt, {"render", "--scene", big.string(), "-o", (dir.path() / "out.png").string()});
   EXPECT_EQ(r.status, 2) << r.err;
-  EXPECT_NE(r.err.find("big.json: scene file is larger than the 1024 MiB rtvk reads"),
+  EXPECT_NE(r.err.find("big.json: scene file is larger than the 1 GiB rtvk reads"),
             std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(dir.path() / "out.png"));
@@ -101,7 +101,7 @@ TEST(CliHardening, AForgedPieceClaimingAHugeWindowIsRefusedBeforeItsPixelsAreAll
   test::temp_dir dir;
   const fs::path piece = dir.path() / "piece.exr", out = dir.path() / "out.png";
   ASSERT_EQ(run_rtvk({"render", "--scene", "seed", "--width", "8", "-q", "-o", piece}).status, 0);
-  // 60000x60000 float RGB is 40 GiB: more than half of any machine this runs on.
+  // 60000x60000 float RGB is 40 GiB.
   patch(piece, std::string("dataWindow\0box2i\0", 17) + std::string("\x10\0\0\0", 4),
         box2i(0, 0, 59999, 59999));
   patch(piece, std::string("displayWindow\0box2i\0", 20) + std::string("\x10\0\0\0", 4),
@@ -111,9 +111,16 @@ TEST(CliHardening, AForgedPieceClaimingAHugeWindowIsRefusedBeforeItsPixelsAreAll
   std::ofstream(piece, std::ios::binary | std::ios::app) << std::string(3750 * 8, '\0');
   const auto r = run_rtvk_within(prompt, {"merge", piece, "-o", out});
   EXPECT_EQ(r.status, 2) << r.err;
-  EXPECT_NE(r.err.find("piece.exr: its data window of 60000x60000 pixels needs 40.2331 GiB"),
-            std::string::npos)
-      << r.err;
+  // Where less than twice the claim is available (any machine but the largest), the header alone
+  // is refused; elsewhere the pixels are read in bands and the first missing one ends the read.
+  // Either way the claim is never allocated.
+  const bool refused_by_header =
+      r.err.find("piece.exr: its data window of 60000x60000 pixels needs 40.2331 GiB; ") !=
+      std::string::npos;
+  const bool refused_by_read =
+      r.err.find("piece.exr: cannot read as OpenEXR: ") != std::string::npos;
+  EXPECT_TRUE(refused_by_header || refused_by_read) << r.err;
+  EXPECT_LT(r.max_rss_kib, 512 * 1024) << "KiB at the peak";
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -85,9 +85,11 @@ TEST(AtomicWrite, UnnamedTemporaryFileReplacesCleanly) {
 }
 
 TEST(AtomicWrite, NamedTemporaryFileFallbackReplacesCleanly) {
-  ::setenv("RTVK_TEST_NO_O_TMPFILE", "1", 1);
+  struct fallback_forced {  // unset again even when an assertion ends the test early
+    fallback_forced() { ::setenv("RTVK_TEST_NO_O_TMPFILE", "1", 1); }
+    ~fallback_forced() { ::unsetenv("RTVK_TEST_NO_O_TMPFILE"); }
+  } forced;
   expect_atomic_writes_replace_cleanly();
-  ::unsetenv("RTVK_TEST_NO_O_TMPFILE");
 }
 
 }  // namespace

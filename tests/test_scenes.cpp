@@ -23,16 +23,22 @@ TEST(SpheresScene, TheLargestStillRestsEverySphereOnTheGround) {
   EXPECT_NO_THROW(check_scene(s));
 }
 
-TEST(CheckScene, RefusesASphereWithoutAFiniteCenter) {
+TEST(CheckScene, RefusesCentersAndRadiiThatAreNotFiniteOrTooLargeForTheGpu) {
   scene s = builtin_scene("seed");
   s.spheres[0].center.y = std::numeric_limits<double>::quiet_NaN();
   try {
     check_scene(s);
     ADD_FAILURE() << "accepted";
   } catch (const usage_error& e) {
-    EXPECT_STREQ(e.what(), "seed: sphere 0: center must be finite, got 0,nan,-1");
+    EXPECT_STREQ(e.what(), "seed: sphere 0: center must be finite and within +-1e18, got 0,nan,-1");
   }
   s.spheres[0].center.y = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(check_scene(s), usage_error);
+  s.spheres[0].center.y = 2e18;  // finite in double, but its square overflows the GPU's float
+  EXPECT_THROW(check_scene(s), usage_error);
+  s.spheres[0].center.y = 1e18;
+  EXPECT_NO_THROW(check_scene(s));
+  s.spheres[0].radius = 1e155;
   EXPECT_THROW(check_scene(s), usage_error);
 }
 

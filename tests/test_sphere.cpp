@@ -84,6 +84,13 @@ const degenerate_case degenerate_rays[] = {
     {"NaN origin", point3(nan, 0, 0), vec3(0, 0, -1)},
 };
 
+TEST(Sphere, AnOverflowingRootIsNoHit) {
+  // radius^2 overflows to infinity: the roots are -inf and +inf, and +inf <= t_max = inf.
+  const sphere huge(point3(0, 0, -3), 1e155);
+  double t = -1;
+  EXPECT_FALSE(huge.hit_distance(ray(point3(0, 0, 0), vec3(0, 0, -1)), 0.001, inf, t)) << t;
+}
+
 TEST(Sphere, DegenerateRaysAreNoHit) {
   const sphere s(point3(0, 0, -3), 1);
   for (const degenerate_case& c : degenerate_rays) {

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <csignal>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include "errors.h"
@@ -36,34 +37,58 @@ TEST(RunWorkers, EveryWorkerRunsOnce) {
 }
 
 TEST(RunWorkers, AWorkersErrorStopsTheOthersAndIsRethrownOnTheCaller) {
-  std::atomic<int> finished{0};
+  std::atomic<int> started{0}, finished{0};
   try {
     run_workers(4, [&](int w, const std::atomic<bool>& stop) {
-      if (w == 2) throw usage_error("worker 2 failed");
+      ++started;
+      if (w == 1) throw usage_error("worker 1 failed");
       EXPECT_TRUE(wait_until([&] { return stop.load(); })) << "worker " << w << " never stopped";
       ++finished;
     });
     ADD_FAILURE() << "no exception";
   } catch (const usage_error& e) {  // its own type: the CLI maps it to its own exit status
-    EXPECT_STREQ(e.what(), "worker 2 failed");
+    EXPECT_STREQ(e.what(), "worker 1 failed");
   }
-  EXPECT_EQ(finished.load(), 3) << "every other worker stopped and was joined before the rethrow";
+  // Helpers not yet started when worker 1 failed are never started; every one that was, and the
+  // caller, stopped and was joined before the rethrow.
+  EXPECT_GE(started.load(), 2);
+  EXPECT_EQ(finished.load(), started.load() - 1);
 }
 
 TEST(RunWorkers, OnlyTheFirstErrorIsRethrown) {
-  std::atomic<int> thrown{0};
   EXPECT_THROW(run_workers(3,
-                           [&](int w, const std::atomic<bool>&) {
-                             if (w == 0) {
-                               // after a helper's error (which may keep the last helper
-                               // from starting at all)
-                               EXPECT_TRUE(wait_until([&] { return thrown.load() >= 1; }));
+                           [&](int w, const std::atomic<bool>& stop) {
+                             if (w == 0) {  // fails only after a helper's error is recorded
+                               EXPECT_TRUE(wait_until([&] { return stop.load(); }));
                                throw std::logic_error("late");
                              }
-                             ++thrown;
                              throw std::runtime_error("early");
                            }),
                std::runtime_error);
+}
+
+TEST(RunWorkers, AThreadThatCannotStartIsAnErrorOnceTheStartedOnesStop) {
+  std::atomic<int> finished{0};
+  int starts = 0;
+  const thread_starter out_of_threads = [&](std::function<void()> body) {
+    if (++starts == 2)
+      throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again));
+    return std::thread(std::move(body));
+  };
+  try {
+    run_workers(
+        4,
+        [&](int w, const std::atomic<bool>& stop) {
+          EXPECT_TRUE(wait_until([&] { return stop.load(); })) << "worker " << w;
+          ++finished;
+        },
+        out_of_threads);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "starting CPU worker thread 3 of 4: Resource temporarily unavailable");
+  }
+  EXPECT_EQ(starts, 2) << "no thread is started after one failed";
+  EXPECT_EQ(finished.load(), 2) << "worker 1 and the caller ran, stopped and were joined";
 }
 
 TEST(InterruptFlag, WorkerThreadsSeeASignalTheMainThreadReceives) {

@@ -8,18 +8,6 @@
 namespace rtvk::gpu {
 namespace {
 
-// In the largest binary unit that keeps the number at 1 or more: "244.141 MiB", "100 KiB".
-std::string size_text(VkDeviceSize bytes) {
-  const char* units[] = {"bytes", "KiB", "MiB", "GiB", "TiB"};
-  double value = double(bytes);
-  int unit = 0;
-  while (value >= 1024 && unit < 4) {
-    value /= 1024;
-    ++unit;
-  }
-  return format_number(value) + " " + units[unit];
-}
-
 // The heap gpu_buffer's memory for `use` comes from (the memory type it would pick for a buffer
 // that any type can hold).
 std::uint32_t heap_for(const gpu_context& ctx, memory_use use) {
@@ -48,13 +36,13 @@ void check_device_fits(const gpu_context& ctx, const std::vector<buffer_request>
   std::map<std::uint32_t, VkDeviceSize> per_heap;
   for (const buffer_request& b : buffers) {
     if (b.storage && b.bytes > dev.limits.maxStorageBufferRange)
-      throw usage_error(subject + ": " + b.what + " needs " + size_text(b.bytes) +
+      throw usage_error(subject + ": " + b.what + " needs " + format_bytes(b.bytes) +
                         " in one storage buffer; " + device + " allows " +
-                        size_text(dev.limits.maxStorageBufferRange));
+                        format_bytes(dev.limits.maxStorageBufferRange));
     if (dev.max_allocation_size != 0 && b.bytes > dev.max_allocation_size)
-      throw usage_error(subject + ": " + b.what + " needs " + size_text(b.bytes) +
+      throw usage_error(subject + ": " + b.what + " needs " + format_bytes(b.bytes) +
                         " in one memory allocation; " + device + " allows " +
-                        size_text(dev.max_allocation_size));
+                        format_bytes(dev.max_allocation_size));
     per_heap[heap_for(ctx, b.use)] += b.bytes;
   }
   if (buffers.size() > dev.limits.maxMemoryAllocationCount)
@@ -64,8 +52,8 @@ void check_device_fits(const gpu_context& ctx, const std::vector<buffer_request>
   for (const auto& [heap, bytes] : per_heap) {
     const VkDeviceSize size = ctx.memory_properties().memoryHeaps[heap].size;
     if (bytes > size)
-      throw usage_error(subject + ": the render needs " + size_text(bytes) + " of memory heap " +
-                        std::to_string(heap) + "; " + device + " has " + size_text(size) +
+      throw usage_error(subject + ": the render needs " + format_bytes(bytes) + " of memory heap " +
+                        std::to_string(heap) + "; " + device + " has " + format_bytes(size) +
                         " there");
   }
 }
