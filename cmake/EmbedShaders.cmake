@@ -1,4 +1,4 @@
-# rtvk_embed_shaders(TARGET <lib> INCLUDE_DIR <dir> SOURCES <a.comp> ...)
+# rtvk_embed_shaders(TARGET <lib> INCLUDE_DIRS <dir> ... SOURCES <a.comp> ...)
 # Compiles each GLSL compute shader with glslangValidator for Vulkan 1.1, validates the SPIR-V
 # with spirv-val, and adds a header <name>_spv.h (array <name>_spv) to TARGET's include path.
 # A shader that does not compile or validate fails the build.
@@ -6,10 +6,13 @@ find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 find_program(SPIRV_VAL spirv-val REQUIRED)
 
 function(rtvk_embed_shaders)
-  cmake_parse_arguments(ARG "" "TARGET;INCLUDE_DIR" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET" "INCLUDE_DIRS;SOURCES" ${ARGN})
   set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/spirv)
   file(MAKE_DIRECTORY ${out_dir})
-  set(flags --target-env vulkan1.1 -I${ARG_INCLUDE_DIR})
+  set(flags --target-env vulkan1.1)
+  foreach(dir IN LISTS ARG_INCLUDE_DIRS)
+    list(APPEND flags -I${dir})
+  endforeach()
   foreach(src IN LISTS ARG_SOURCES)
     get_filename_component(name ${src} NAME_WE)
     set(spv ${out_dir}/${name}.spv)

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "ci.h"
-#include "gpu/context.h"
+#include "context.h"
 
 namespace rtvk::test {
 

@@ -7,8 +7,10 @@
 
 #include "bvh.h"
 #include "camera.h"
+#include "hittable_sphere.h"
 #include "random.h"
 #include "scene.h"
+#include "world.h"
 
 namespace rtvk {
 namespace {
@@ -31,7 +33,7 @@ void BM_RaySphere(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     double t;
-    benchmark::DoNotOptimize(s.hit_distance(rays[i++ & 1023], 0.001, 1e30, t));
+    benchmark::DoNotOptimize(hit_distance(s, rays[i++ & 1023], 0.001, 1e30, t));
   }
   state.SetItemsProcessed(state.iterations());
 }
@@ -50,9 +52,7 @@ BENCHMARK(BM_BvhBuild)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmar
 template <bool UseBvh>
 void BM_Traversal(benchmark::State& state) {
   const scene s = builtin_scene("spheres:" + std::to_string(state.range(0)));
-  const std::unique_ptr<hittable> world =
-      UseBvh ? std::unique_ptr<hittable>(std::make_unique<bvh>(s.spheres))
-             : std::unique_ptr<hittable>(std::make_unique<hittable_list>(make_world(s)));
+  const std::unique_ptr<hittable> world = make_accelerated_world(s, UseBvh);
   const std::vector<ray> rays = camera_rays(s, 4096);
   std::size_t i = 0;
   for (auto _ : state) {

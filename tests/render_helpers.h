@@ -3,9 +3,9 @@
 #include <string>
 // Short ways for tests to render a scene with its own settings on either backend.
 #include "camera.h"
-#include "gpu/render_gpu.h"
 #include "quantize.h"
 #include "render_cpu.h"
+#include "render_gpu.h"
 #include "scene.h"
 
 namespace rtvk::test {

@@ -4,9 +4,10 @@
 
 #include <random>
 
-#include "bvh.h"
+#include "bvh_world.h"
 #include "gpu_fixture.h"
 #include "hittable_list.h"
+#include "hittable_sphere.h"
 #include "render_helpers.h"
 
 namespace rtvk {
@@ -29,9 +30,9 @@ vec3 random_unit(std::mt19937_64& rng) {
 TEST(BvhProperty, FarAwayRaysFindTheHitsOfTheLinearScan) {
   std::mt19937_64 rng(20261123);
   const std::vector<sphere> spheres = scattered_spheres(rng, 300);
-  const bvh tree(spheres);
+  const bvh_world tree(spheres);
   hittable_list list;
-  for (const sphere& s : spheres) list.add(std::make_shared<sphere>(s));
+  for (const sphere& s : spheres) list.add(std::make_shared<hittable_sphere>(s));
   std::uniform_int_distribution<std::size_t> pick(0, spheres.size() - 1);
   std::uniform_real_distribution<double> graze(0.98, 1.02), exponent(2, 7);
   int hits = 0, mismatches = 0;
@@ -103,7 +104,8 @@ TEST_F(GpuBvh, ACameraFarAwaySeesTheSameThroughTheBvhOnTheGpu) {
     const scene s = far_camera_scene(distance);
     const camera cam = test::scene_camera(s);
     auto draw = [&](bool use_bvh) {
-      return quantize(gpu::render_gpu(gpu(), cam, s, s.render, {}, {.use_bvh = use_bvh}), 1);
+      return quantize(
+          gpu::render_gpu(gpu(), cam, s, s.render, {}, {.engine = {.use_bvh = use_bvh}}), 1);
     };
     const image_rgb8 linear = draw(false);
     EXPECT_TRUE(has_spheres(linear)) << distance;

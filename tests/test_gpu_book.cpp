@@ -4,11 +4,11 @@
 
 #include <cstring>
 
-#include "gpu/probe.h"
-#include "gpu/render_gpu.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
+#include "probe.h"
 #include "random.h"
+#include "render_gpu.h"
 #include "render_helpers.h"
 
 namespace rtvk {
@@ -65,7 +65,7 @@ TEST_F(GpuBook, LoopBudgetOverrunFailsTheRenderInsteadOfTruncating) {
   // 5 spheres and up to 50 bounces: far more than 20 iterations for most pixels.
   try {
     gpu::render_gpu(gpu(), cam, s, s.render, {},
-                    engine_options{.use_bvh = false, .gpu_loop_budget = 20});
+                    gpu::gpu_render_options{.engine = {.use_bvh = false}, .loop_budget = 20});
     FAIL() << "no loop_budget_error";
   } catch (const gpu::loop_budget_error& e) {
     const std::string what = e.what();
@@ -73,8 +73,9 @@ TEST_F(GpuBook, LoopBudgetOverrunFailsTheRenderInsteadOfTruncating) {
     EXPECT_NE(what.find(gpu().device().name), std::string::npos) << what;
   }
   // The same render within budget succeeds.
-  EXPECT_NO_THROW(gpu::render_gpu(gpu(), cam, s, s.render, {},
-                                  engine_options{.use_bvh = false, .gpu_loop_budget = 100000}));
+  EXPECT_NO_THROW(gpu::render_gpu(
+      gpu(), cam, s, s.render, {},
+      gpu::gpu_render_options{.engine = {.use_bvh = false}, .loop_budget = 100000}));
 }
 
 // One pixel looking down -z at a sphere listed after `hidden` spheres behind the camera. With
@@ -105,7 +106,7 @@ TEST_F(GpuBook, DefaultBudgetFailsWhatLavapipeWouldTruncateAndRendersTheRest) {
       // lavapipe would stop this path's loop after 65,535 iterations and return the sky: the
       // budget (below that cap) must stop it first and fail the render.
       try {
-        const color got = gpu::render_gpu(gpu(), cam, s, s.render, {}, linear).at(0, 0);
+        const color got = gpu::render_gpu(gpu(), cam, s, s.render, {}, {.engine = linear}).at(0, 0);
         ADD_FAILURE() << "no loop_budget_error; the pixel came back (" << got.r << ", " << got.g
                       << ", " << got.b << "), the sphere's color is (0.5, 0.5, 1)";
       } catch (const gpu::loop_budget_error& e) {
@@ -113,7 +114,7 @@ TEST_F(GpuBook, DefaultBudgetFailsWhatLavapipeWouldTruncateAndRendersTheRest) {
       }
     } else {
       // Within lavapipe's cap (or on a device without one) the path runs to its end.
-      const color got = gpu::render_gpu(gpu(), cam, s, s.render, {}, linear).at(0, 0);
+      const color got = gpu::render_gpu(gpu(), cam, s, s.render, {}, {.engine = linear}).at(0, 0);
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], want[k], 1e-6) << "channel " << k;
     }
   }
@@ -156,7 +157,8 @@ TEST_F(GpuBook, BvhGivesTheIdenticalGpuImage) {
     const scene s = test::small_scene(name, 96, 3);
     const camera cam = test::scene_camera(s);
     auto image = [&](bool bvh) {
-      return quantize(gpu::render_gpu(gpu(), cam, s, s.render, {}, {.use_bvh = bvh}), 2);
+      return quantize(gpu::render_gpu(gpu(), cam, s, s.render, {}, {.engine = {.use_bvh = bvh}}),
+                      2);
     };
     EXPECT_EQ(image(true).rgb, image(false).rgb) << name;
   }
@@ -169,7 +171,7 @@ TEST_F(GpuBook, RayCountsAgreeWithTheCpu) {
   const camera cam = test::scene_camera(s);
   render_stats cpu, gpu_stats;
   render_cpu(cam, s, s.render, {}, {.count_rays = true}, &cpu);
-  gpu::render_gpu(gpu(), cam, s, s.render, {}, {.count_rays = true}, &gpu_stats);
+  gpu::render_gpu(gpu(), cam, s, s.render, {}, {.engine = {.count_rays = true}}, &gpu_stats);
   // At least one ray per sample; the same paths up to float divergence.
   EXPECT_GE(cpu.rays, 64u * 42 * 2);
   EXPECT_NEAR(double(gpu_stats.rays), double(cpu.rays), 0.01 * double(cpu.rays));
@@ -189,9 +191,9 @@ TEST_F(GpuBook, BandsOfRowsJoinWithoutASeam) {
     const camera cam = test::scene_camera(s);
     auto image = [&](std::uint64_t band_bytes) {
       render_stats stats;
-      engine_options e;
-      e.gpu_band_bytes = band_bytes;
-      e.count_rays = true;
+      gpu::gpu_render_options e;
+      e.band_bytes = band_bytes;
+      e.engine.count_rays = true;
       const image_rgb8 img = quantize(gpu::render_gpu(gpu(), cam, s, s.render, {}, e, &stats), 2);
       return std::pair(img, stats.rays);
     };

@@ -3,11 +3,11 @@
 
 #include <tuple>
 
-#include "gpu/render_gpu.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
 #include "quantize.h"
 #include "render_cpu.h"
+#include "render_gpu.h"
 #include "render_helpers.h"
 
 namespace rtvk {

@@ -14,10 +14,10 @@
 #include <tuple>
 #include <vector>
 
-#include "gpu/packing.h"
-#include "gpu/probe.h"
-#include "gpu/shaders.h"
 #include "gpu_fixture.h"
+#include "packing.h"
+#include "probe.h"
+#include "shaders.h"
 
 namespace rtvk {
 namespace {
@@ -326,7 +326,7 @@ TEST_F(GpuLayout, ValidationLayerFindingsAreCaughtAndCounted) {
 }  // namespace
 }  // namespace rtvk
 
-#include "gpu/buffer.h"
+#include "buffer.h"
 
 namespace rtvk {
 namespace {

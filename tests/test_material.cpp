@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "material.h"
+#include "scatter.h"
 
 namespace rtvk {
 namespace {

@@ -97,13 +97,13 @@ TEST_F(MultiView, ViewsThatDoNotFitOneBufferGoInGroupsAndStillMatch) {
   const scene s = four_camera_scene();
   const std::vector<camera> views = cameras_at(s, 1.5);
   const int w = views[0].image_width(), h = views[0].image_height();
-  engine_options two_at_a_time;
-  two_at_a_time.gpu_band_bytes = std::uint64_t(w) * h * 12 * 2;
-  engine_options bands;  // one view at a time, in bands of three rows
-  bands.gpu_band_bytes = std::uint64_t(w) * 12 * 3;
+  gpu::gpu_render_options two_at_a_time;
+  two_at_a_time.band_bytes = std::uint64_t(w) * h * 12 * 2;
+  gpu::gpu_render_options bands;  // one view at a time, in bands of three rows
+  bands.band_bytes = std::uint64_t(w) * 12 * 3;
   const render_window all = whole_render(w, h, s.render.spp);
   const auto reference = gpu::render_gpu_views(gpu(), views, s, s.render, all);
-  for (const engine_options& e : {two_at_a_time, bands}) {
+  for (const gpu::gpu_render_options& e : {two_at_a_time, bands}) {
     render_stats st;
     const auto fbs = gpu::render_gpu_views(gpu(), views, s, s.render, all, {}, e, &st);
     for (std::size_t k = 0; k < views.size(); ++k)

@@ -3,9 +3,9 @@
 #include <memory>
 
 #include "hittable_list.h"
+#include "hittable_sphere.h"
 #include "quantize.h"
 #include "shading.h"
-#include "sphere.h"
 
 namespace rtvk {
 namespace {
@@ -32,7 +32,7 @@ TEST(RayColor, HorizonAndStraightDown) {
 
 TEST(RayColor, HitIsColoredByItsNormal) {
   hittable_list world;
-  world.add(std::make_shared<sphere>(point3(0, 0, -1), 0.5));
+  world.add(std::make_shared<hittable_sphere>(point3(0, 0, -1), 0.5));
   // Looking down -z the hit is at (0, 0, -0.5), normal (0, 0, 1) -> color (0.5, 0.5, 1).
   const color c = ray_color(ray(point3(0, 0, 0), vec3(0, 0, -1)), world);
   EXPECT_DOUBLE_EQ(c.r, 0.5);

@@ -113,7 +113,7 @@ TEST(SplitMerge, CpuSampleHalvesEqualTheWholeRender) {
 
 class GpuSplitMerge : public test::GpuTest {
  protected:
-  window_renderer on_gpu(const scene& s, engine_options engine = {}) {
+  window_renderer on_gpu(const scene& s, gpu::gpu_render_options engine = {}) {
     return [this, s, engine](const render_window& w) {
       return gpu::render_gpu_views(gpu(), {test::scene_camera(s)}, s, s.render, w, {}, engine)
           .front();
@@ -128,8 +128,8 @@ TEST_F(GpuSplitMerge, TilesEqualTheWholeRenderExactly) {
 
 TEST_F(GpuSplitMerge, TilesInBandsOfRowsEqualTheWholeRenderExactly) {
   const scene s = split_scene();
-  engine_options small_bands;
-  small_bands.gpu_band_bytes = 61 * 12 * 5;  // five rows of the image per band
+  gpu::gpu_render_options small_bands;
+  small_bands.band_bytes = 61 * 12 * 5;  // five rows of the image per band
   tiles_equal_the_whole(s, on_gpu(s, small_bands));
 }
 

@@ -1,0 +1,192 @@
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "atomic_file.h"
+#include "commands.h"
+#include "context.h"
+#include "errors.h"
+#include "interrupt.h"
+#include "memory_check.h"
+#include "render_cpu.h"
+#include "render_gpu.h"
+#include "scene_file.h"
+#include "scene_flags.h"
+#include "vk_error.h"
+
+namespace rtvk {
+namespace {
+
+struct bench_options {
+  std::string scene = "book-final";  // what to render
+  std::string backend = "all";       // cpu, gpu or all
+  int threads = 0;                   // CPU threads; 0: one per core
+  std::string accel = "bvh";         // bvh or none
+  std::string device;                // GPU selector
+  int repeat = 1;                    // timed runs per backend, after one warm-up
+  std::string json;                  // write the records here too
+  scene_flags flags;                 // --width, --spp, --depth, ...
+};
+
+// One timed render, as `rtvk bench` reports it.
+struct bench_record {
+  std::string scene, backend, device;
+  int threads = 0, width = 0, height = 0, spp = 0, depth = 0;
+  std::uint64_t rays = 0;
+  double seconds = 0;        // the whole render, BVH build included
+  double build_seconds = 0;  // of which building the BVH
+  double mrays_per_s() const { return seconds > 0 ? double(rays) / seconds / 1e6 : 0; }
+};
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown CPU";
+}
+
+void print(const bench_record& r) {
+  std::printf(
+      "%-4s %s %dx%d, %d spp, depth %d: %.1f M rays in %.3f s (BVH build %.3f s) = %.2f Mrays/s "
+      "(%s%s)\n",
+      r.backend.c_str(), r.scene.c_str(), r.width, r.height, r.spp, r.depth, double(r.rays) / 1e6,
+      r.seconds, r.build_seconds, r.mrays_per_s(), r.device.c_str(),
+      r.backend == "cpu" ? (", " + std::to_string(r.threads) + " threads").c_str() : "");
+  std::fflush(stdout);
+}
+
+// Runs `render` once to warm up, then `repeat` times timed.
+template <typename Render>
+void measure(int repeat, bench_record base, Render render, std::vector<bench_record>& out) {
+  render_stats stats;
+  render(stats);
+  for (int k = 0; k < repeat; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    render(stats);
+    bench_record r = base;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.rays = stats.rays;
+    r.build_seconds = stats.build_seconds;
+    print(r);
+    out.push_back(r);
+  }
+}
+
+int run_bench(bench_options& o) {
+  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
+  if (!o.json.empty()) {
+    const std::filesystem::path json(o.json);
+    const auto dir = json.has_parent_path() ? json.parent_path() : std::filesystem::path(".");
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec))
+      throw usage_error("--json: folder '" + dir.string() + "' of '" + o.json + "' does not exist");
+  }
+  scene s = load_scene(o.scene);
+  check_scene(s);
+  s.cameras.resize(1);  // bench draws the scene's first camera at time 0
+  o.flags.apply(s);
+  const camera cam = o.flags.make_camera(s, main_camera(s).at(0),
+                                         "camera " + s.cameras[0].name + " of " + o.scene);
+  check_render_memory(cam.image_width(), cam.image_height(), 1);
+  engine_options engine;
+  engine.use_bvh = o.accel == "bvh";
+  engine.threads = o.threads;
+  engine.count_rays = true;
+  engine.cancelled = interrupt_requested();
+
+  bench_record base;
+  base.scene = s.name;
+  base.width = cam.image_width();
+  base.height = cam.image_height();
+  base.spp = s.render.spp;
+  base.depth = s.render.max_depth;
+  std::vector<bench_record> records;
+
+  if (o.backend == "cpu" || o.backend == "all") {
+    bench_record b = base;
+    b.backend = "cpu";
+    b.device = cpu_model();
+    b.threads = worker_threads(o.threads);
+    measure(
+        o.repeat, b, [&](render_stats& st) { render_cpu(cam, s, s.render, {}, engine, &st); },
+        records);
+  }
+  if (o.backend == "gpu" || o.backend == "all") {
+    gpu::gpu_options g;
+    g.device = o.device;
+    std::unique_ptr<gpu::gpu_context> ctx;
+    try {
+      ctx = std::make_unique<gpu::gpu_context>(g);
+    } catch (const gpu::no_device_error& e) {
+      if (o.backend == "gpu") throw;
+      std::fprintf(stderr, "rtvk: note: no Vulkan device (%s); GPU not measured\n", e.what());
+    }
+    if (ctx) {
+      bench_record b = base;
+      b.backend = "gpu";
+      const auto& d = ctx->device();
+      b.device = d.name + ", driver " + d.driver_name + " " + gpu::driver_version_string(d) +
+                 (d.driver_info.empty() ? "" : " (" + d.driver_info + ")");
+      measure(
+          o.repeat, b,
+          [&](render_stats& st) {
+            gpu::render_gpu(*ctx, cam, s, s.render, {}, {.engine = engine}, &st);
+          },
+          records);
+    }
+  }
+
+  if (!o.json.empty()) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const auto& r : records)
+      out.push_back({{"scene", r.scene},
+                     {"backend", r.backend},
+                     {"device", r.device},
+                     {"threads", r.threads},
+                     {"width", r.width},
+                     {"height", r.height},
+                     {"spp", r.spp},
+                     {"depth", r.depth},
+                     {"rays", r.rays},
+                     {"seconds", r.seconds},
+                     {"build_seconds", r.build_seconds},
+                     {"mrays_per_s", r.mrays_per_s()}});
+    write_file_atomically(o.json, out.dump(2) + "\n");
+  }
+  return 0;
+}
+
+}  // namespace
+
+command_action add_bench_command(CLI::App& app) {
+  auto o = std::make_shared<bench_options>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "Time renders (after one warm-up) and report rays traced per second");
+  cmd->add_option("--scene", o->scene, "Built-in scene (also spheres:N) or a .json scene file")
+      ->capture_default_str();
+  cmd->add_option("--backend", o->backend, "cpu, gpu or all")
+      ->check(CLI::IsMember({"cpu", "gpu", "all"}))
+      ->capture_default_str();
+  cmd->add_option("--threads", o->threads, "CPU threads (0: one per core)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--accel", o->accel, "bvh or none")
+      ->check(CLI::IsMember({"bvh", "none"}))
+      ->capture_default_str();
+  cmd->add_option("--device", o->device, "Vulkan device: an index or part of its name");
+  cmd->add_option("--repeat", o->repeat, "Timed runs per backend")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--json", o->json, "Also write one JSON record per run to this file");
+  o->flags.add_to(*cmd);
+  return [o] { return run_bench(*o); };
+}
+
+}  // namespace rtvk

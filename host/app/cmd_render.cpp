@@ -1,0 +1,314 @@
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "commands.h"
+#include "context.h"
+#include "errors.h"
+#include "format.h"
+#include "image_compare.h"
+#include "image_io.h"
+#include "interrupt.h"
+#include "memory_check.h"
+#include "partial_image.h"
+#include "progress.h"
+#include "quantize.h"
+#include "render_cpu.h"
+#include "render_gpu.h"
+#include "render_jobs.h"
+#include "scene.h"
+#include "scene_file.h"
+#include "scene_flags.h"
+#include "shaders.h"
+#include "shared_types.h"
+#include "version.h"
+#include "vk_error.h"
+
+namespace rtvk {
+namespace {
+
+struct render_options {
+  std::string scene = "seed";     // built-in scene name or .json file
+  std::string backend = "cpu";    // cpu, gpu, auto or both
+  job_request jobs;               // cameras, frames, region, samples and the -o pattern
+  std::string ppm_format = "P3";  // P3 (ASCII, as the lesson) or P6 (binary)
+  std::string device;             // GPU selector: index or name substring
+  bool validate = false;          // Vulkan validation layer on
+  bool quiet = false;             // no summary line, no progress bar
+  std::string accel = "bvh";      // bvh or none
+  int threads = 0;                // CPU threads; 0: one per core
+  double gpu_timeout = 120;       // seconds one GPU submission may take
+  scene_flags flags;              // --width, --spp, --lookfrom, ...
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+engine_options engine_from(const render_options& o) {
+  engine_options e;
+  e.use_bvh = o.accel == "bvh";
+  e.threads = o.threads;
+  e.cancelled = interrupt_requested();
+  return e;
+}
+
+gpu::gpu_options gpu_options_from(const render_options& o) {
+  gpu::gpu_options g;
+  g.device = o.device;
+  const char* env = std::getenv("RTVK_VALIDATE");
+  g.validate = o.validate || (env && std::string(env) == "1");
+  g.fence_timeout =
+      std::chrono::milliseconds(std::max<long long>(1, std::llround(o.gpu_timeout * 1000)));
+  return g;
+}
+
+// Everything a run shares between its images.
+struct run_context {
+  const render_options& o;
+  const scene& s;
+  const render_window& win;
+  ppm_encoding enc;
+  bool several;          // more than one image: each summary line names its camera and frame
+  std::size_t* written;  // images finished and written so far
+};
+
+std::string label(const run_context& run, const render_job& job) {
+  if (!run.several && job.frame == 0) return run.s.name;
+  return run.s.name + " [camera " + job.camera_name + ", frame " + std::to_string(job.frame) + "]";
+}
+
+// The render shader's SPIR-V, hashed: pieces drawn by different shaders do not merge unasked.
+const std::string& render_shader_identity() {
+  static const std::string id = [] {
+    const std::span<const std::uint32_t> spv = gpu::render_shader();
+    return fingerprint_of(std::string(reinterpret_cast<const char*>(spv.data()), spv.size_bytes()));
+  }();
+  return id;
+}
+
+// Writes the image, unless a signal arrived while rendering finished: Ctrl-C means no file.
+// .exr keeps the linear floats and the sample range for `rtvk merge`; .png and .ppm quantize.
+void write_job(const run_context& run, const render_job& job, const framebuffer& fb) {
+  if (pending_signal() != 0) throw render_cancelled("the render had finished");
+  if (format_for_path(job.output, "--output") == file_format::exr) {
+    write_partial_exr(make_partial(fb, {job.cam.image_width(),
+                                        job.cam.image_height(),
+                                        run.win,
+                                        {},
+                                        run.s.render.gamma,
+                                        job.fingerprint,
+                                        run.s.name,
+                                        job.camera_name,
+                                        job.frame,
+                                        version_string,
+                                        render_shader_identity()}),
+                      job.output);
+  } else {
+    write_image(quantize(fb, run.s.render.gamma), job.output, run.enc);
+  }
+  ++*run.written;
+}
+
+void summarize(const run_context& run, const render_job& job, const std::string& backend,
+               double seconds) {
+  if (run.o.quiet) return;
+  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, on %s in %.3f s -> %s\n", label(run, job).c_str(),
+               run.win.width, run.win.height, run.win.samples(), backend.c_str(), seconds,
+               job.output.c_str());
+}
+
+framebuffer draw_cpu(const run_context& run, const render_job& job) {
+  progress_bar bar("rendering on the CPU", run.win.height, !run.o.quiet);
+  return render_cpu_window(
+      job.cam, run.s, run.s.render, run.win, [&](int rows) { bar.update(rows); },
+      engine_from(run.o));
+}
+
+// One set-up and shared submissions for a group of views (cameras, frames).
+std::vector<framebuffer> draw_gpu(const run_context& run, gpu::gpu_context& ctx,
+                                  std::span<const render_job> jobs) {
+  progress_bar bar("rendering on the GPU", run.win.samples(), !run.o.quiet);
+  std::vector<camera> views;
+  for (const render_job& j : jobs) views.push_back(j.cam);
+  std::vector<framebuffer> fbs = gpu::render_gpu_views(ctx, views, run.s, run.s.render, run.win,
+                                                       [&](int samples) { bar.update(samples); },
+                                                       {.engine = engine_from(run.o)});
+  bar.finish();
+  if (ctx.validation_messages() > 0)
+    throw std::runtime_error("the Vulkan validation layer reported " +
+                             std::to_string(ctx.validation_messages()) +
+                             " problem(s) (above); no image written");
+  return fbs;
+}
+
+// Deterministic renders (one sample, no jitter, no lens, normal shading) must agree to a level;
+// Monte Carlo ones to the noise rule.
+agreement agreement_for(const run_context& run, const camera& cam) {
+  bool deterministic = run.win.samples() == 1 && !run.s.render.jitter && cam.lens_radius() == 0;
+  for (const auto& m : run.s.materials) deterministic &= m.m.type == material_type::normal;
+  return deterministic ? agreement{} : monte_carlo_agreement;
+}
+
+// --backend both: the GPU image is written; the exit status says whether the CPU agrees.
+bool check_against_cpu(const run_context& run, const render_job& job, const framebuffer& gpu_fb) {
+  const auto start = std::chrono::steady_clock::now();
+  const framebuffer cpu_fb = draw_cpu(run, job);
+  const double cpu_seconds = seconds_since(start);
+  const agreement rule = agreement_for(run, job.cam);
+  const image_difference d = compare_images(quantize(gpu_fb, run.s.render.gamma),
+                                            quantize(cpu_fb, run.s.render.gamma), rule.tolerance);
+  const bool ok = agrees(d, rule);
+  std::fprintf(stderr,
+               "rtvk: %sgpu vs cpu (%.3f s): %s -- PSNR %.1f dB, max %d levels, mean %.4f, %.4f%% "
+               "of pixels over %d (allowed %.2f%%)\n",
+               run.several ? (label(run, job) + ": ").c_str() : "", cpu_seconds,
+               ok ? "alike" : "DIFFERENT", d.psnr_db, d.max_abs, d.mean_abs, 100 * d.share_over,
+               rule.tolerance, 100 * rule.max_share);
+  return ok;
+}
+
+// Views per GPU set-up: as many as the shader's camera array holds, within a quarter GiB of
+// host framebuffers.
+std::size_t gpu_group_size(const render_window& win) {
+  const std::uint64_t per_view = std::uint64_t(win.width) * std::uint64_t(win.height) * 24;
+  return std::size_t(std::clamp<std::uint64_t>((256ull << 20) / per_view, 1, RTVK_MAX_VIEWS));
+}
+
+int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
+                  const std::vector<render_job>& jobs) {
+  const std::string backend = "gpu (" + ctx.device().name + ")";
+  const std::size_t group = gpu_group_size(run.win);
+  bool all_alike = true;
+  for (std::size_t first = 0; first < jobs.size(); first += group) {
+    const std::span<const render_job> part(jobs.data() + first,
+                                           std::min(group, jobs.size() - first));
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<framebuffer> fbs = draw_gpu(run, ctx, part);
+    const double seconds = seconds_since(start);
+    for (std::size_t k = 0; k < part.size(); ++k) {
+      if (run.o.backend == "both") all_alike &= check_against_cpu(run, part[k], fbs[k]);
+      write_job(run, part[k], fbs[k]);
+      summarize(run, part[k],
+                part.size() > 1 ? backend + ", " + std::to_string(part.size()) + " views together"
+                                : backend,
+                seconds);
+    }
+  }
+  return all_alike ? 0 : 1;
+}
+
+// Every job on the backend asked for: GPU groups, or the CPU one job at a time.
+int render_all(const run_context& run, const std::vector<render_job>& jobs) {
+  const render_options& o = run.o;
+
+  if (o.backend != "cpu") {
+    std::unique_ptr<gpu::gpu_context> ctx;
+    try {
+      ctx = std::make_unique<gpu::gpu_context>(gpu_options_from(o));
+    } catch (const gpu::no_device_error& e) {
+      if (o.backend != "auto") throw;
+      std::fprintf(stderr, "rtvk: note: no Vulkan device (%s); rendering on the CPU\n", e.what());
+    }
+    if (ctx) return render_on_gpu(run, *ctx, jobs);
+  }
+  for (const render_job& job : jobs) {
+    const auto start = std::chrono::steady_clock::now();
+    const framebuffer fb = draw_cpu(run, job);
+    const double seconds = seconds_since(start);
+    write_job(run, job, fb);
+    summarize(run, job, "cpu", seconds);
+  }
+  return 0;
+}
+
+int run_render(render_options o) {
+  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
+  if (!o.device.empty() && o.backend == "cpu")
+    throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");
+  const output_pattern output(o.jobs.output, "--output");  // refused before the scene loads
+  scene s = load_scene(o.scene);
+  check_scene(s);
+  render_window win;
+  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags, win);
+  const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win);
+  check_render_memory(win.width, win.height,
+                      int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));
+  std::size_t written = 0;
+  const run_context run{o,
+                        s,
+                        win,
+                        o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3,
+                        jobs.size() > 1,
+                        &written};
+  try {
+    return render_all(run, jobs);
+  } catch (const render_cancelled& e) {
+    if (!run.several) throw;
+    throw render_cancelled(std::string(e.what()) + " (" + std::to_string(written) + " of " +
+                           std::to_string(jobs.size()) + " images were finished and written)");
+  }
+}
+
+}  // namespace
+
+command_action add_render_command(CLI::App& app) {
+  auto o = std::make_shared<render_options>();
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
+  cmd->add_option("--scene", o->scene,
+                  "Built-in scene (seed, materials, book-final) or a .json scene file")
+      ->capture_default_str();
+  cmd->add_option("--backend", o->backend,
+                  "cpu (reference), gpu (Vulkan), auto (gpu if a device exists, else cpu), "
+                  "both (gpu, checked against cpu)")
+      ->check(CLI::IsMember({"cpu", "gpu", "auto", "both"}))
+      ->capture_default_str();
+  cmd->add_option("-o,--output", o->jobs.output,
+                  "Output image: .png, .ppm, or .exr (linear float with the sample range, for "
+                  "rtvk merge); {camera}, {frame} and {frame:04} are filled in")
+      ->required();
+  cmd->add_option("--camera", o->jobs.cameras,
+                  "Camera of the scene to render (repeatable), or all; default: the first")
+      ->type_name("NAME|all");
+  cmd->add_option("--frames", o->jobs.frames,
+                  "Animation frames A:B (A up to, not including, B) or one frame N; default 0")
+      ->type_name("A:B|N");
+  cmd->add_option("--fps", o->jobs.fps, "Frames per second: frame f shows time f / fps")
+      ->capture_default_str();
+  cmd->add_option("--region", o->jobs.region,
+                  "Render only this rectangle of the image: x,y,w,h in pixels from the top left")
+      ->type_name("X,Y,W,H");
+  cmd->add_option("--samples", o->jobs.samples,
+                  "Render only samples A:B of each pixel's --spp (for splitting a render)")
+      ->type_name("A:B");
+  cmd->add_option("--ppm-format", o->ppm_format, "PPM flavour: P3 (ASCII) or P6 (binary)")
+      ->transform(CLI::IsMember({"P3", "P6"}, CLI::ignore_case))
+      ->capture_default_str();
+  cmd->add_option("--device", o->device,
+                  "Vulkan device: an index or part of its name (see rtvk devices)");
+  cmd->add_flag("--validate", o->validate,
+                "Enable VK_LAYER_KHRONOS_validation (also RTVK_VALIDATE=1)");
+  cmd->add_flag("-q,--quiet", o->quiet, "No summary line and no progress bar");
+  cmd->add_option("--accel", o->accel, "bvh, or none to test every sphere (same image, slower)")
+      ->check(CLI::IsMember({"bvh", "none"}))
+      ->capture_default_str();
+  cmd->add_option("--gpu-timeout", o->gpu_timeout,
+                  "Seconds one GPU submission may take before the device counts as hung")
+      ->check(CLI::Range(0.001, 86400.0))
+      ->capture_default_str();
+  cmd->add_option("--threads", o->threads, "CPU threads (0: one per core)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+
+  o->flags.add_to(*cmd);
+  return [o] { return run_render(*o); };
+}
+
+}  // namespace rtvk

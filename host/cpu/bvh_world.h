@@ -1,0 +1,26 @@
+#pragma once
+#include <vector>
+
+#include "bvh.h"
+#include "hittable.h"
+#include "sphere.h"
+
+namespace rtvk {
+
+// The scene's spheres behind a BVH (accel/bvh.h): hits are identical to a linear scan over the
+// spheres in order -- the nearest root wins, and on an exact tie the later sphere, as in
+// hittable_list.
+class bvh_world final : public hittable {
+ public:
+  explicit bvh_world(std::vector<sphere> spheres) : spheres_(std::move(spheres)), tree_(spheres_) {}
+
+  bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
+
+  const bvh& tree() const { return tree_; }
+
+ private:
+  std::vector<sphere> spheres_;  // in scene order
+  bvh tree_;                     // over spheres_
+};
+
+}  // namespace rtvk

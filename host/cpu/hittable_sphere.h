@@ -1,0 +1,28 @@
+#pragma once
+#include "hittable.h"
+#include "sphere.h"
+
+namespace rtvk {
+
+// The two halves of a sphere hit, named as in shaders/sphere.glsl: the nearest root in
+// [t_min, t_max] (false when there is none), and the record of a hit at t. A search over many
+// spheres fills the record only for the winner.
+bool hit_distance(const sphere& s, const ray& r, double t_min, double t_max, double& t);
+void record_hit(const sphere& s, const ray& r, double t, hit_record& rec);
+
+// A scene sphere as a hittable, for the lesson's hittable_list.
+class hittable_sphere final : public hittable {
+ public:
+  explicit hittable_sphere(const sphere& s) : s_(s) {}
+  hittable_sphere(const point3& center, double radius, int material = 0)
+      : s_(center, radius, material) {}
+
+  bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
+
+  const sphere& data() const { return s_; }
+
+ private:
+  sphere s_;  // center, radius and material
+};
+
+}  // namespace rtvk

@@ -1,0 +1,104 @@
+#include "render_cpu.h"
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include "errors.h"
+#include "parallel.h"
+#include "random.h"
+#include "shading.h"
+#include "world.h"
+
+namespace rtvk {
+namespace {
+
+// A hittable that counts the rays traced through it, for `rtvk bench`.
+class counting_world final : public hittable {
+ public:
+  explicit counting_world(const hittable& inner) : inner_(inner) {}
+  bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override {
+    ++rays;
+    return inner_.hit(r, t_min, t_max, rec);
+  }
+  mutable std::uint64_t rays = 0;  // one thread's count
+
+ private:
+  const hittable& inner_;
+};
+
+}  // namespace
+
+int worker_threads(int threads) {
+  if (threads > 0) return threads;
+  return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+framebuffer render_cpu(const camera& cam, const scene& s, const render_settings& rs,
+                       const progress_callback& progress, const engine_options& engine,
+                       render_stats* stats) {
+  return render_cpu_window(cam, s, rs, whole_render(cam.image_width(), cam.image_height(), rs.spp),
+                           progress, engine, stats);
+}
+
+framebuffer render_cpu_window(const camera& cam, const scene& s, const render_settings& rs,
+                              const render_window& win, const progress_callback& progress,
+                              const engine_options& engine, render_stats* stats) {
+  const int width = cam.image_width();
+  const int height = cam.image_height();
+  check_window(win, width, height);
+  const auto build_start = std::chrono::steady_clock::now();
+  const std::unique_ptr<hittable> world = make_accelerated_world(s, engine.use_bvh);
+  const double build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
+  const std::vector<material> materials = scene_materials(s);
+  framebuffer fb(win.width, win.height);
+  std::atomic<int> next_row{0}, rows_done{0};
+  std::atomic<std::uint64_t> rays{0};
+
+  auto render_rows = [&](int worker, const std::atomic<bool>& stop) {
+    const bool reports_progress = worker == 0;
+    const counting_world counted(*world);
+    // Counting costs a virtual call per ray: only when someone asked for it.
+    const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
+    int row;
+    while (!stop.load(std::memory_order_relaxed) && !(engine.cancelled && engine.cancelled()) &&
+           (row = next_row.fetch_add(1)) < win.height) {
+      const int y = win.y + row;
+      const int j = height - 1 - y;  // the lesson counts rows from the bottom
+      for (int i = win.x; i < win.x + win.width; ++i) {
+        color sum(0, 0, 0);
+        for (int sample = win.sample_begin; sample < win.sample_end; ++sample) {
+          const random_stream rnd{rs.seed,
+                                  std::uint32_t(y) * std::uint32_t(width) + std::uint32_t(i),
+                                  std::uint32_t(sample), 0};
+          const double u = pixel_coordinate(rs.jitter ? i + rnd(dim_jitter_u) : i, width);
+          const double v = pixel_coordinate(rs.jitter ? j + rnd(dim_jitter_v) : j, height);
+          const glm::dvec2 lens = cam.lens_radius() > 0
+                                      ? random_in_unit_disk(rnd(dim_lens_a), rnd(dim_lens_b))
+                                      : glm::dvec2(0, 0);
+          sum += ray_color(cam.get_ray(u, v, lens), target, materials, s.sky, rs.max_depth, rnd);
+        }
+        fb.at(i - win.x, row) = divide(sum, win.samples());
+      }
+      const int done = rows_done.fetch_add(1) + 1;
+      if (reports_progress && progress) progress(done);
+    }
+    rays += counted.rays;
+  };
+
+  run_workers(std::min(worker_threads(engine.threads), win.height), render_rows);
+  if (rows_done.load() < win.height)
+    throw render_cancelled("stopped after " + std::to_string(rows_done.load()) + " of " +
+                           std::to_string(win.height) + " rows");
+  if (stats) {
+    stats->rays = rays.load();
+    stats->build_seconds = build_seconds;
+  }
+  return fb;
+}
+
+}  // namespace rtvk

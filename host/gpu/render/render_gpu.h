@@ -1,0 +1,60 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <vector>
+
+#include "camera.h"
+#include "context.h"
+#include "engine_options.h"
+#include "framebuffer.h"
+#include "render_settings.h"
+#include "scene.h"
+
+namespace rtvk::gpu {
+
+// A dispatch ran out of its loop budget: some pixels' samples were not computed.
+class loop_budget_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Most loop iterations one invocation (one sample of one pixel) may run on this device.
+// lavapipe stops every loop silently after 65,535 iterations in total per invocation, so rtvk
+// stops first, at 60,000, and reports it; other devices have no such cap.
+std::uint32_t default_loop_budget(const device_info& d);
+
+// How the GPU does the work: the backend-neutral options plus what only the GPU has.
+struct gpu_render_options {
+  engine_options engine;          // BVH or not, ray counting, cancellation
+  std::uint32_t loop_budget = 0;  // most loop iterations per invocation; 0: the device's
+  std::uint64_t band_bytes = 0;   // largest accumulation buffer; 0: 64 MiB (or the device's
+                                  // storage buffer limit, if smaller)
+};
+
+// Called with the number of samples per pixel finished so far; may be empty.
+using sample_progress = std::function<void(int samples_done)>;
+
+// The scene on the GPU, with the same sampling and random numbers as render_cpu: one dispatch
+// per sample accumulates into a float buffer that stays on the device, several dispatches per
+// submission, the BVH (or a linear scan) as options.engine.use_bvh says. Throws loop_budget_error,
+// naming the device and the budget, when any invocation overran.
+framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
+                       const render_settings& rs, const sample_progress& progress = {},
+                       const gpu_render_options& options = {}, render_stats* stats = nullptr);
+
+// Many views of one scene -- several cameras, the frames of an animation -- drawn together: one
+// set-up (scene buffers, BVH, pipeline), and each submission's dispatches cover every view of a
+// group (up to RTVK_MAX_VIEWS, or fewer when their sums would not fit one storage buffer), the
+// dispatch's z index picking the camera. Each view's framebuffer holds the mean of samples
+// [win.sample_begin, win.sample_end) over the window, bit for bit what the view alone gives.
+// All views must have the same image size; throws std::invalid_argument otherwise, or for a
+// window outside the image.
+std::vector<framebuffer> render_gpu_views(gpu_context& ctx, const std::vector<camera>& views,
+                                          const scene& s, const render_settings& rs,
+                                          const render_window& win,
+                                          const sample_progress& progress = {},
+                                          const gpu_render_options& options = {},
+                                          render_stats* stats = nullptr);
+
+}  // namespace rtvk::gpu

@@ -1,0 +1,65 @@
+#pragma once
+#include <glm/vec2.hpp>
+
+#include "image_size.h"
+#include "ray.h"
+
+namespace rtvk {
+
+// Where the camera stands and how its lens is set. The defaults are the lesson's pinhole camera:
+// at the origin, looking down -z, 90 degrees vertical field of view, everything in focus.
+struct camera_pose {
+  point3 lookfrom{0, 0, 0};  // eye position, scene units
+  point3 lookat{0, 0, -1};   // point the camera looks at, scene units
+  vec3 vup{0, 1, 0};         // which way is up (need not be perpendicular to the view)
+  double vfov = 90;          // vertical field of view, degrees, in (0, 180)
+  double aperture = 0;       // lens diameter, scene units; 0 is a pinhole
+  double focus_dist = 1;     // distance to the plane in perfect focus, scene units, > 0
+};
+
+// Everything a ray needs is precomputed once, as in the lesson, so get_ray is a few multiply-adds.
+// A pose and a thin lens fold into the same four vectors plus the lens basis and radius.
+class camera {
+ public:
+  // The lesson's camera. Throws std::invalid_argument for an aspect ratio that is not finite and
+  // positive, a width outside [1, max_image_side], or a derived height above max_image_side.
+  explicit camera(double aspect_ratio = 16.0 / 9.0, int image_width = 400)
+      : camera(camera_pose{}, aspect_ratio, image_width) {}
+
+  // A posed camera with a thin lens; also throws std::invalid_argument for a pose that does not
+  // define a view (lookfrom == lookat, vup parallel to the view, vfov outside (0, 180), ...).
+  camera(const camera_pose& pose, double aspect_ratio, int image_width);
+
+  // The ray through normalized image coordinates (s, t) -- (0, 0) is the lower-left corner of
+  // the viewport, (1, 1) the upper-right -- leaving the lens at `lens`, a point of the unit disk.
+  ray get_ray(double s, double t, glm::dvec2 lens = {0, 0}) const {
+    const glm::dvec2 rd = lens_radius_ * lens;
+    const vec3 offset = lens_u_ * rd.x + lens_v_ * rd.y;
+    return ray(origin_ + offset, lower_left_ + s * horizontal_ + t * vertical_ - origin_ - offset);
+  }
+
+  double aspect_ratio() const { return aspect_ratio_; }
+  int image_width() const { return image_width_; }
+  int image_height() const { return image_height_; }
+  const point3& origin() const { return origin_; }
+  const vec3& horizontal() const { return horizontal_; }
+  const vec3& vertical() const { return vertical_; }
+  const point3& lower_left() const { return lower_left_; }
+  const vec3& lens_u() const { return lens_u_; }
+  const vec3& lens_v() const { return lens_v_; }
+  double lens_radius() const { return lens_radius_; }
+
+ private:
+  double aspect_ratio_;  // image width / height
+  int image_width_;      // pixels
+  int image_height_;     // pixels, max(1, int(width / aspect))
+  point3 origin_;        // eye position, scene units
+  vec3 horizontal_;      // full viewport width as a vector, on the focus plane, scene units
+  vec3 vertical_;        // full viewport height as a vector, on the focus plane, scene units
+  point3 lower_left_;    // lower-left corner of the viewport, scene units
+  vec3 lens_u_;          // unit vector to the camera's right
+  vec3 lens_v_;          // unit vector to the camera's up
+  double lens_radius_;   // aperture / 2, scene units
+};
+
+}  // namespace rtvk

@@ -1,0 +1,24 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+
+namespace rtvk {
+
+// How a backend does the work, as opposed to what it draws: none of this changes the image.
+struct engine_options {
+  bool use_bvh = true;      // false: test every sphere for every ray (--accel none)
+  int threads = 0;          // CPU worker threads; 0: one per core
+  bool count_rays = false;  // fill render_stats::rays (costs a little on the GPU)
+  // Polled between passes (a CPU row, a GPU submission); when it returns true the render stops
+  // and throws render_cancelled. Empty: never cancelled.
+  std::function<bool()> cancelled = {};
+};
+
+// What a render did, for `rtvk bench`.
+struct render_stats {
+  std::uint64_t rays = 0;    // rays traced: camera rays plus scattered rays
+  double build_seconds = 0;  // of the render's time, building the BVH
+  int submissions = 0;       // GPU: command buffers submitted (all views of a group share each)
+};
+
+}  // namespace rtvk

@@ -1,0 +1,70 @@
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "camera.h"
+#include "camera_path.h"
+#include "material.h"
+#include "render_settings.h"
+#include "sphere.h"
+
+namespace rtvk {
+
+// The light that reaches a ray that hits nothing: a blend from the horizon color (looking
+// straight down) to the zenith color (straight up). The defaults are the lesson's sky; equal
+// colors make a uniform sky, as a white-furnace test wants.
+struct sky {
+  color horizon{1.0, 1.0, 1.0};  // linear RGB seen along -y, blending to...
+  color zenith{0.5, 0.7, 1.0};   // ...this along +y
+};
+
+struct named_camera {
+  std::string name;  // how --camera and {camera} in -o refer to it
+  camera_path path;  // where it stands at each time
+};
+
+struct named_material {
+  std::string name;  // how spheres refer to it in scene files
+  material m;        // its optics
+};
+
+// What to render, independent of the backend: the CPU builds its hittables from it (cpu/world.h),
+// the GPU packs the same spheres and materials into storage buffers (gpu/render/packing.h).
+struct scene {
+  std::string name;                                    // built-in name or the file it came from
+  std::vector<named_camera> cameras{{"default", {}}};  // at least one; the first is the
+                                                       // default; the lesson's camera unless set
+  render_settings render;                              // default image size, samples, depth, ...
+  rtvk::sky sky;                                       // what rays that escape see
+  std::vector<named_material> materials;               // spheres index into this
+  std::vector<sphere> spheres;                         // every object, in the order hits are tested
+};
+
+std::vector<material> scene_materials(const scene& s);
+
+// The first camera's path: the one a render uses unless --camera picks others.
+inline camera_path& main_camera(scene& s) {
+  return s.cameras.front().path;
+}
+inline const camera_path& main_camera(const scene& s) {
+  return s.cameras.front().path;
+}
+
+// The largest coordinate or radius a scene may hold: the GPU squares them in float, whose range
+// ends at 3.4e38, so anything near sqrt(3.4e38) = 1.8e19 would overflow there.
+inline constexpr double max_scene_coordinate = 1e18;
+
+// Throws usage_error, naming the sphere, when a sphere names a material that does not exist, or
+// has a center or radius that is not finite or beyond max_scene_coordinate, or a radius <= 0.
+void check_scene(const scene& s);
+
+// The most spheres spheres:N builds.
+inline constexpr std::uint32_t max_scene_spheres = 4'000'000;
+
+// The built-in scene of that name (seed, materials, book-final, or spheres:N); throws usage_error
+// naming the choices when there is none.
+scene builtin_scene(std::string_view name);
+std::vector<std::string> builtin_scene_names();
+
+}  // namespace rtvk
