@@ -1,0 +1,64 @@
+# cmake -DROOT=<source dir> -P check_layers.cmake
+# Fails when a source under host/ includes a project header from a layer it may not use, or
+# reaches a header by a path instead of its bare name (which would get around the per-library
+# include directories that the build uses to enforce the same rule). The map below is the one
+# docs/architecture.md draws; host/*/CMakeLists.txt link exactly these layers.
+cmake_minimum_required(VERSION 3.25)
+
+set(may_use_base "base")
+set(may_use_scene "scene;base")
+set(may_use_accel "accel;scene;base;shared")
+set(may_use_cpu "cpu;accel;scene;base;shared")
+set(may_use_image "image;scene;base")
+set(may_use_gpu/vulkan "gpu/vulkan;base")
+set(may_use_gpu/render "gpu/render;gpu/vulkan;accel;scene;base;shared")
+set(may_use_app "app;cpu;image;gpu/render;gpu/vulkan;accel;scene;base;shared")
+set(layers base scene accel cpu image gpu/vulkan gpu/render app)
+
+# Which layer owns each project header, by bare name.
+set(owners "")
+foreach(layer IN LISTS layers)
+  file(GLOB headers RELATIVE ${ROOT}/host/${layer} ${ROOT}/host/${layer}/*.h)
+  foreach(h IN LISTS headers)
+    if(DEFINED owner_${h})
+      list(APPEND problems "${h} exists in both ${owner_${h}} and ${layer}")
+    endif()
+    set(owner_${h} ${layer})
+  endforeach()
+endforeach()
+set(owner_version.h base)             # generated from host/base/version.h.in
+set(owner_shared_types.h shared)      # shaders/shared, through the rtvk_shared_types target
+
+set(checked 0)
+foreach(layer IN LISTS layers)
+  file(GLOB sources ${ROOT}/host/${layer}/*.h ${ROOT}/host/${layer}/*.cpp)
+  foreach(src IN LISTS sources)
+    math(EXPR checked "${checked} + 1")
+    file(STRINGS ${src} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+    foreach(line IN LISTS includes)
+      string(REGEX REPLACE "^[^\"]*\"([^\"]*)\".*$" "\\1" name "${line}")
+      file(RELATIVE_PATH where ${ROOT} ${src})
+      if(name MATCHES "/")
+        list(APPEND problems "${where}: #include \"${name}\": include project headers by bare name")
+      elseif(name MATCHES "_spv\\.h$")
+        if(NOT layer STREQUAL "gpu/render")
+          list(APPEND problems "${where}: #include \"${name}\": SPIR-V belongs to gpu/render")
+        endif()
+      elseif(NOT DEFINED owner_${name})
+        list(APPEND problems "${where}: #include \"${name}\": no layer has this header")
+      elseif(NOT owner_${name} IN_LIST may_use_${layer})
+        list(APPEND problems
+             "${where}: #include \"${name}\": ${layer} may not use ${owner_${name}}")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+
+if(checked LESS 50)
+  list(APPEND problems "only ${checked} sources found under ${ROOT}/host: wrong ROOT?")
+endif()
+if(problems)
+  list(JOIN problems "\n  " text)
+  message(FATAL_ERROR "layering broken:\n  ${text}")
+endif()
+message(STATUS "${checked} sources include only headers of the layers they may use")
