@@ -1,0 +1,192 @@
+#include "scene.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <memory>
+
+#include "errors.h"
+#include "format.h"
+#include "random.h"
+
+namespace rtvk {
+namespace {
+
+// The lesson's world: one sphere in front of the camera resting on a huge "ground" sphere,
+// colored by normals at one sample per pixel, as the lesson draws it.
+scene seed_scene() {
+  scene s;
+  s.name = "seed";
+  s.materials = {{"normal", material{}}};
+  s.spheres = {sphere(point3(0, 0, -1), 0.5, 0), sphere(point3(0, -100.5, -1), 100, 0)};
+  return s;
+}
+
+material lambertian(color albedo) {
+  return {material_type::lambertian, albedo, 0, 1.5};
+}
+material metal(color albedo, double fuzz) {
+  return {material_type::metal, albedo, fuzz, 1.5};
+}
+material dielectric(double ir) {
+  return {material_type::dielectric, color(1), 0, ir};
+}
+
+render_settings book_render(int width, double aspect, int spp) {
+  render_settings r;
+  r.width = width;
+  r.aspect = aspect;
+  r.spp = spp;
+  r.max_depth = 50;
+  r.gamma = 2;
+  r.jitter = true;
+  return r;
+}
+
+// The book's materials chapter: ground, a diffuse center, hollow glass on the left (an inner
+// sphere of index 1/1.5 makes the bubble, rather than the first edition's negative radius), and
+// polished metal on the right, seen through the defocus-blur chapter's camera.
+scene materials_scene() {
+  scene s;
+  s.name = "materials";
+  camera_pose& c = main_camera(s).pose;
+  c.lookfrom = point3(3, 3, 2);
+  c.lookat = point3(0, 0, -1);
+  c.vfov = 20;
+  c.aperture = 2.0;
+  c.focus_dist = glm::length(c.lookfrom - c.lookat);
+  s.render = book_render(400, 16.0 / 9.0, 100);
+  s.materials = {{"ground", lambertian(color(0.8, 0.8, 0.0))},
+                 {"center", lambertian(color(0.1, 0.2, 0.5))},
+                 {"glass", dielectric(1.5)},
+                 {"bubble", dielectric(1.0 / 1.5)},
+                 {"gold", metal(color(0.8, 0.6, 0.2), 0.0)}};
+  s.spheres = {sphere(point3(0, -100.5, -1), 100, 0), sphere(point3(0, 0, -1), 0.5, 1),
+               sphere(point3(-1, 0, -1), 0.5, 2), sphere(point3(-1, 0, -1), 0.4, 3),
+               sphere(point3(1, 0, -1), 0.5, 4)};
+  return s;
+}
+
+// The book's cover: a grid of small random spheres around three large ones. The random numbers
+// come from the counter-based generator with a fixed seed, so the scene is the same every run
+// and on every machine.
+scene book_final_scene() {
+  scene s;
+  s.name = "book-final";
+  camera_pose& c = main_camera(s).pose;
+  c.lookfrom = point3(13, 2, 3);
+  c.lookat = point3(0, 0, 0);
+  c.vfov = 20;
+  c.aperture = 0.1;
+  c.focus_dist = 10;
+  s.render = book_render(1200, 3.0 / 2.0, 500);
+
+  std::uint32_t counter = 0;
+  auto rnd = [&counter] { return double(random_float(0x5eed, counter++, 0, 0, 0)); };
+  auto add = [&s](const std::string& name, material m) {
+    s.materials.push_back({name, m});
+    return int(s.materials.size() - 1);
+  };
+
+  s.spheres.push_back(sphere(point3(0, -1000, 0), 1000, add("ground", lambertian(color(0.5)))));
+  for (int a = -11; a < 11; ++a) {
+    for (int b = -11; b < 11; ++b) {
+      const double choose_mat = rnd();
+      const double cx = a + 0.9 * rnd();
+      const point3 center(cx, 0.2, b + 0.9 * rnd());
+      if (glm::length(center - point3(4, 0.2, 0)) <= 0.9) continue;
+      const std::string name = "small_" + std::to_string(a + 11) + "_" + std::to_string(b + 11);
+      material m;
+      if (choose_mat < 0.8) {
+        const color c1(rnd(), rnd(), rnd());
+        const color c2(rnd(), rnd(), rnd());
+        m = lambertian(c1 * c2);
+      } else if (choose_mat < 0.95) {
+        const color albedo(0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd());
+        m = metal(albedo, 0.5 * rnd());
+      } else {
+        m = dielectric(1.5);
+      }
+      s.spheres.push_back(sphere(center, 0.2, add(name, m)));
+    }
+  }
+  s.spheres.push_back(sphere(point3(0, 1, 0), 1.0, add("big_glass", dielectric(1.5))));
+  s.spheres.push_back(
+      sphere(point3(-4, 1, 0), 1.0, add("big_diffuse", lambertian(color(0.4, 0.2, 0.1)))));
+  s.spheres.push_back(
+      sphere(point3(4, 1, 0), 1.0, add("big_metal", metal(color(0.7, 0.6, 0.5), 0.0))));
+  return s;
+}
+
+// N small spheres scattered over the book-final ground, for scaling runs. The area grows with N
+// (about one sphere per square unit, as in the book's grid), so what a ray sees stays alike and
+// only the BVH's depth grows. Materials come from a palette of 64 in the book's mix.
+scene spheres_scene(std::uint32_t n) {
+  scene s = book_final_scene();
+  s.name = "spheres:" + std::to_string(n);
+  s.render.spp = 10;
+  s.materials.resize(1);  // keep the ground
+  s.spheres.resize(1);
+  std::uint32_t counter = 0;
+  auto rnd = [&counter] { return double(random_float(0xba11, counter++, 0, 0, 0)); };
+  for (int k = 0; k < 64; ++k) {
+    const double choose = rnd();
+    material m;
+    if (choose < 0.8) {
+      const color c1(rnd(), rnd(), rnd()), c2(rnd(), rnd(), rnd());
+      m = lambertian(c1 * c2);
+    } else if (choose < 0.95) {
+      m = metal(color(0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd()), 0.5 * rnd());
+    } else {
+      m = dielectric(1.5);
+    }
+    s.materials.push_back({"palette_" + std::to_string(k), m});
+  }
+  const double side = std::max(22.0, std::sqrt(double(n)));
+  const double ground = 1000;  // radius of the book's ground sphere, centered at (0, -1000, 0)
+  s.spheres.reserve(n + 1);
+  const double rest = ground + 0.2;  // a center's distance from the ground's center
+  for (std::uint32_t i = 0; i < n; ++i) {
+    // Above 2,000,000 spheres the square is wider than the ground: points beyond its edge are
+    // drawn again. Up to 2,000,000 every point of the square (x^2 + z^2 <= side^2 / 2 <= 10^6)
+    // is inside it, so those scenes are as they always were.
+    double x, z;
+    do {
+      x = side * (rnd() - 0.5);
+      z = side * (rnd() - 0.5);
+    } while (x * x + z * z >= rest * rest);
+    // Resting on the ground: the center is radius + 0.2 from the ground's center.
+    const double y = std::sqrt(rest * rest - x * x - z * z) - ground;
+    s.spheres.push_back(sphere(point3(x, y, z), 0.2, 1 + int(hash32(i) % 64)));
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> builtin_scene_names() {
+  return {"seed", "materials", "book-final"};
+}
+
+scene builtin_scene(std::string_view name) {
+  if (name == "seed") return seed_scene();
+  if (name == "materials") return materials_scene();
+  if (name == "book-final") return book_final_scene();
+  if (name.rfind("spheres:", 0) == 0) {
+    const std::string_view count = name.substr(8);
+    std::uint32_t n = 0;
+    const auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
+    if (ec != std::errc() || end != count.data() + count.size() || n < 1 || n > max_scene_spheres)
+      throw usage_error("--scene: '" + std::string(name) +
+                        "': expected spheres:N with N from 1 to " +
+                        std::to_string(max_scene_spheres));
+    return spheres_scene(n);
+  }
+  std::string choices;
+  for (const auto& n : builtin_scene_names()) choices += (choices.empty() ? "" : ", ") + n;
+  throw usage_error("--scene: unknown scene '" + std::string(name) + "' (built-in: " + choices +
+                    ", spheres:N; or a .json scene file)");
+}
+
+
+}  // namespace rtvk
