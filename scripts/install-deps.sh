@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs, from Debian bookworm's archive, every package rtvk needs to build, render and test.
 # Does nothing (and needs no network) when all of them are already installed.
-#   install-deps.sh          build and render
-#   install-deps.sh --test   also what only the tests use: Slurm, for the farm job files' test
+#   install-deps.sh          build, render and package (help2man: the man page; dpkg-dev and file:
+#                            cpack -G DEB)
+#   install-deps.sh --test   also what only the tests use: Slurm, for the farm job files' test,
+#                            and man-db, to read the installed man page
 set -euo pipefail
 
 packages=(
@@ -13,9 +15,10 @@ packages=(
   mesa-vulkan-drivers vulkan-validationlayers
   clang libclang-rt-14-dev
   libopenexr-dev
+  help2man dpkg-dev file
 )
 if [ "${1:-}" = "--test" ]; then
-  packages+=(slurm-wlm)
+  packages+=(slurm-wlm man-db)
 fi
 
 missing=()

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Writes rtvk's man page, gzipped as Debian ships them: help2man on `rtvk --help`, plus a
+# COMMANDS section made from each subcommand's own --help (help2man reads only the top level)
+# and the hand-written sections of rtvk.h2m.
+#   gen-man.sh RTVK_EXECUTABLE RTVK_H2M OUTPUT.1.gz
+set -euo pipefail
+rtvk=$1 h2m=$2 out=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# The subcommands a CLI11 help text lists, one a line.
+subcommands() { awk '/^Subcommands:$/ { on = 1; next } on && /^  [^ ]/ { print $1 }'; }
+
+# One subcommand's help as roff: its description, usage, then each group of options as .TP
+# entries. CLI11 pads an option to column 30 and puts its description after it, or, when the
+# option is too wide, on the next lines, indented 30 columns.
+roff_help() {
+  awk -v cmd="$1" '
+    function esc(s) { gsub(/\\/, "\\e", s); gsub(/-/, "\\-", s); return s }
+    function para(s) { if (s ~ /^[.\x27]/) s = "\\&" s; return s }
+    function option(head, desc,    name, rest) {
+      sub(/ +$/, "", head); name = head; rest = ""
+      if (match(head, / /)) { name = substr(head, 1, RSTART - 1); rest = substr(head, RSTART) }
+      print ".TP"; print "\\fB" esc(name) "\\fR" esc(rest)
+      if (desc != "") print para(esc(desc))
+    }
+    function flush() {
+      if (pending != "") option(substr(pending, 3, 28), substr(pending, 31))
+      pending = ""
+    }
+    NR == 1 { print ".SS \"rtvk " cmd "\""; print para(esc($0)); next }
+    /^Usage: / { flush(); sub(/^Usage: /, ""); print ".PP"; print "Usage: \\fB" esc($0) "\\fR"; next }
+    /^[^ ].*:$/ { flush(); print ".PP"; print "\\fI" esc($0) "\\fR"; next }
+    /^  [^ ]/ { flush(); pending = $0; next }
+    match($0, /^ +/) && RLENGTH == 30 {  # mawk knows no /^ {30}/
+      if (pending != "") option(substr(pending, 3), "")
+      pending = ""; sub(/^ +/, ""); print para(esc($0)); next
+    }
+    END { flush() }'
+}
+
+document() {  # $1: the command path, such as "render" or "scene dump"
+  local help sub words
+  read -ra words <<<"$1"
+  help=$("$rtvk" "${words[@]}" --help)
+  roff_help "$1" <<<"$help"
+  for sub in $(subcommands <<<"$help"); do document "$1 $sub"; done
+}
+
+top=$("$rtvk" --help)
+{
+  echo "[COMMANDS]"
+  for cmd in $(subcommands <<<"$top"); do document "$cmd"; done
+} >"$work/commands.h2m"
+help2man --no-info --section=1 --name="ray tracer with a CPU reference and a Vulkan compute port" \
+  --include="$work/commands.h2m" --include="$h2m" --output="$work/rtvk.1" "$rtvk"
+gzip -9n <"$work/rtvk.1" >"$out.tmp"
+mv "$out.tmp" "$out"

@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# `cmake --install` into a fresh prefix: only rtvk's files arrive (no libraries, headers or
+# tests), the man page, docs and bash completion are there and true to the CLI, and the installed
+# rtvk renders from another folder, with the source and build trees hidden where a private mount
+# namespace can hide them, the same bytes as the build tree's rtvk.
+#   install_and_render.sh CMAKE BUILD_DIR SOURCE_DIR
+set -euo pipefail
+export LC_ALL=C  # the completion candidates are compared sorted
+cmake=$1 build=$(realpath "$2") src=$(realpath "$3")
+tmp=$(mktemp -d /tmp/rtvk-install-XXXXXX)
+trap 'rm -rf "$tmp"' EXIT
+prefix=$tmp/prefix work=$tmp/work
+mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$cmake" --install "$build" --prefix "$prefix" >"$tmp/install.log"
+cat "$tmp/install.log"
+# Every file installed is one of rtvk's: GoogleTest, the benchmarks or a library would show here.
+grep -E '^-- (Installing|Up-to-date):' "$tmp/install.log" | sed -E 's/^-- [^:]*: //' | while read -r f; do
+  case ${f#"$prefix"/} in
+    bin/rtvk | share/man/man1/rtvk.1.gz | share/bash-completion/completions/rtvk) ;;
+    share/doc/rtvk/README.md | share/doc/rtvk/docs | share/doc/rtvk/docs/*) ;;
+    *) fail "installed a file that is not rtvk's: $f" ;;
+  esac
+done
+[[ $(find "$prefix" -type f | wc -l) -ge 10 ]] || fail "too few files installed"
+
+# The binary, without a run path into the build tree.
+[[ -x $prefix/bin/rtvk ]] || fail "no bin/rtvk"
+! readelf -d "$prefix/bin/rtvk" | grep -Eq 'RPATH|RUNPATH' || fail "bin/rtvk has a run path"
+[[ $("$prefix/bin/rtvk" --version) == "rtvk "* ]] || fail "rtvk --version"
+
+# The docs, as in the source tree.
+[[ -f $prefix/share/doc/rtvk/README.md ]] || fail "no README.md in the docs"
+for f in "$src"/docs/*.md "$src"/docs/images/* "$src"/docs/farm/*; do
+  cmp "$f" "$prefix/share/doc/rtvk/docs/${f#"$src"/docs/}" || fail "docs: ${f#"$src"/} missing or different"
+done
+
+# The man page: gzipped roff that man reads, with a section for each subcommand.
+man=$prefix/share/man/man1/rtvk.1.gz
+[[ -f $man ]] || fail "no man page"
+gzip -t "$man" || fail "the man page is not gzip"
+zcat "$man" | grep -q '^\.TH RTVK "1"' || fail "the man page has no .TH line"
+for cmd in render compare devices scene bench merge; do
+  zcat "$man" | grep -qx ".SS \"rtvk $cmd\"" || fail "the man page has no section for rtvk $cmd"
+done
+if command -v man >/dev/null; then
+  MANWIDTH=80 man -l "$man" >"$tmp/man.txt" 2>"$tmp/man.err" || fail "man -l: $(cat "$tmp/man.err")"
+  grep -q -- '--gpu-timeout' "$tmp/man.txt" || fail "man -l shows no --gpu-timeout"
+  grep -q '^EXIT STATUS' "$tmp/man.txt" || fail "man -l shows no EXIT STATUS"
+fi
+
+# The bash completion, driven as bash would: every flag it offers is in that command's --help.
+completion=$prefix/share/bash-completion/completions/rtvk
+[[ -f $completion ]] || fail "no bash completion"
+rtvk=$prefix/bin/rtvk
+complete_words() {  # the words typed, the last one being completed; prints the candidates
+  bash -c 'source "$1"; shift; COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); _rtvk
+           printf "%s\n" "${COMPREPLY[@]}" | sort' _ "$completion" "$@"
+}
+expect() {  # expect WANT WORDS...: the candidates for WORDS, one line, sorted
+  local got
+  got=$(cd "$work" && complete_words "${@:2}" | xargs)
+  [[ $got == "$1" ]] || fail "completing '${*:2}': got '$got', want '$1'"
+}
+for cmd in render compare devices scene bench merge; do
+  flags=$(complete_words rtvk "$cmd" -)
+  [[ -n $flags ]] || fail "no flags completed for rtvk $cmd"
+  help=$("$rtvk" "$cmd" --help)
+  for flag in $flags; do
+    grep -Eq -- "(^|[ ,])$flag([ ,=]|$)" <<<"$help" || fail "completion offers $flag, not in rtvk $cmd --help"
+  done
+done
+# The flags the completion's fixed logic names, with the command whose help must have them.
+for pair in render:--scene render:--output render:-o bench:--json compare:--diff merge:--output; do
+  "$rtvk" "${pair%%:*}" --help | grep -Eq -- "(^|[ ,])${pair#*:}[ ,]" || fail "rtvk ${pair%%:*} has no ${pair#*:}"
+done
+touch "$work/a.json" "$work/b.png" "$work/c.exr" "$work/d.ppm"
+expect "bench compare devices merge render scene" rtvk ""
+expect "--samples --scene --seed --spp" rtvk render --s
+expect "--spp" rtvk render --scene seed --sp
+expect "auto both cpu gpu" rtvk render --backend ""
+expect "seed spheres:" rtvk render --scene s
+expect "a.json book-final materials seed spheres:" rtvk bench --scene ""
+expect "b.png d.ppm" rtvk compare ""
+expect "c.exr" rtvk merge -q ""
+expect "dump" rtvk scene d
+expect "--json" rtvk bench --js
+rm "$work"/*
+
+# The installed rtvk renders from another folder, the same bytes as the build tree's rtvk: with
+# the CPU, and through lavapipe with the GPU shaders embedded in the binary.
+lavapipe=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json
+backends=(cpu)
+if [[ -f $lavapipe ]]; then backends+=(gpu); else echo "note: no lavapipe, so no GPU render"; fi
+# Runs rtvk render in $work with the source and build trees hidden under empty mounts where a
+# private mount namespace can be had (root, or user namespaces), else just from $work.
+hide=()
+if unshare --mount true 2>/dev/null; then
+  hide=(unshare --mount)
+elif unshare --mount --map-root-user true 2>/dev/null; then
+  hide=(unshare --mount --map-root-user)
+else
+  echo "note: no mount namespace here; rendering from another folder without hiding the trees"
+fi
+render_installed() {
+  if [[ ${#hide[@]} == 0 ]]; then (cd "$work" && "$rtvk" render "$@"); return; fi
+  # shellcheck disable=SC2016 # expanded by the inner bash
+  "${hide[@]}" bash -c 'src=$1 build=$2 work=$3; shift 3
+    mount -t tmpfs none "$src" && { [[ $build == "$src"/* ]] || mount -t tmpfs none "$build"; } &&
+    [[ ! -e $src/CMakeLists.txt && ! -e $build/rtvk ]] && cd "$work" && exec "$@"' \
+    _ "$src" "$build" "$work" "$rtvk" render "$@"
+}
+for backend in "${backends[@]}"; do
+  (cd "$work" && VK_DRIVER_FILES=$lavapipe "$build/rtvk" render --scene seed --backend "$backend" -q \
+    -o "$tmp/reference.png")
+  [[ -s $tmp/reference.png ]] || fail "the build tree's rtvk wrote no image ($backend)"
+  VK_DRIVER_FILES=$lavapipe render_installed --scene seed --backend "$backend" -o seed.png \
+    || fail "the installed rtvk did not render with --backend $backend"
+  cmp "$work/seed.png" "$tmp/reference.png" || fail "the installed rtvk's $backend image differs"
+  rm "$work/seed.png" "$tmp/reference.png"
+done
+echo "PASS: installed into $prefix; ${backends[*]} renders from $work equal the build tree's" \
+  "${hide[*]:+(source and build trees hidden)}"
