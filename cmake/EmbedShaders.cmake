@@ -18,7 +18,7 @@ function(rtvk_embed_shaders)
     set(spv ${out_dir}/${name}.spv)
     set(hdr ${out_dir}/${name}_spv.h)
     add_custom_command(
-      OUTPUT ${hdr}
+      OUTPUT ${spv} ${hdr}
       COMMAND ${GLSLANG_VALIDATOR} ${flags} --depfile ${spv}.d -o ${spv} ${src}
       COMMAND ${SPIRV_VAL} --target-env vulkan1.1 ${spv}
       COMMAND ${GLSLANG_VALIDATOR} ${flags} --vn ${name}_spv -o ${hdr} ${src}

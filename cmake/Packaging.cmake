@@ -3,8 +3,8 @@ include_guard(GLOBAL)
 
 set(CPACK_PACKAGE_NAME rtvk)
 set(CPACK_PACKAGE_VENDOR "rtvk")
-set(RTVK_PACKAGE_CONTACT "rtvk maintainers <maintainers@users.noreply.h-seed-1cf87bf0.example>"
-    CACHE STRING "Maintainer field of the Debian package")
+set(RTVK_PACKAGE_CONTACT "rtvk developers <rtvk@example.org>"
+    CACHE STRING "Maintainer field of the Debian package (packagers: -DRTVK_PACKAGE_CONTACT=...)")
 set(CPACK_PACKAGE_CONTACT "${RTVK_PACKAGE_CONTACT}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
 # The control file keeps these line breaks; Debian wants its description lines under 80 columns.
