@@ -91,9 +91,10 @@ int run_bench(bench_options& o) {
   scene s = load_scene(o.scene);
   check_scene(s);
   s.cameras.resize(1);  // bench draws the scene's first camera at time 0
-  o.flags.apply(s);
-  const camera cam = o.flags.make_camera(s, main_camera(s).at(0),
-                                         "camera " + s.cameras[0].name + " of " + o.scene);
+  const scene_overrides overrides = o.flags.overrides();
+  overrides.apply(s);
+  const camera cam = overrides.make_camera(s, main_camera(s).at(0),
+                                           "camera " + s.cameras[0].name + " of " + o.scene);
   check_render_memory(cam.image_width(), cam.image_height(), 1);
   engine_options engine;
   engine.use_bvh = o.accel == "bvh";

@@ -237,7 +237,7 @@ int run_render(render_options o) {
   scene s = load_scene(o.scene);
   check_scene(s);
   render_window win;
-  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags, win);
+  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags.overrides(), win);
   const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win);
   check_render_memory(win.width, win.height,
                       int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));

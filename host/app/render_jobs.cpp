@@ -96,9 +96,9 @@ render_window parse_region(const std::string& text, const std::string& flag) {
 }
 
 std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output_pattern& output,
-                                  const scene_flags& flags, render_window& window) {
+                                  const scene_overrides& overrides, render_window& window) {
   select_cameras(s, req.cameras);
-  flags.apply(s);
+  overrides.apply(s);
   const int_range frames =
       req.frames.empty() ? int_range{0, 1} : parse_range(req.frames, "--frames", 0, 1'000'000);
   if (!(req.fps > 0)) throw usage_error("--fps: " + format_number(req.fps) + " is not > 0");
@@ -121,7 +121,7 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output
       const camera_pose pose = c.path.at(f / req.fps);
       render_job job{
           c.name, f,
-          flags.make_camera(
+          overrides.make_camera(
               s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f)),
           output.expand(c.name, f), job_fingerprint(scene_text, pose)};
       if (!outputs.insert(job.output).second)
