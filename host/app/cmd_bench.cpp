@@ -79,87 +79,107 @@ void measure(int repeat, bench_record base, Render render, std::vector<bench_rec
   }
 }
 
-int run_bench(bench_options& o) {
-  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
-  if (!o.json.empty()) {
-    const std::filesystem::path json(o.json);
-    const auto dir = json.has_parent_path() ? json.parent_path() : std::filesystem::path(".");
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec))
-      throw usage_error("--json: folder '" + dir.string() + "' of '" + o.json + "' does not exist");
-  }
-  scene s = load_scene(o.scene);
-  check_scene(s);
-  s.cameras.resize(1);  // bench draws the scene's first camera at time 0
-  o.flags.apply(s);
-  const camera cam = o.flags.make_camera(s, main_camera(s).at(0),
-                                         "camera " + s.cameras[0].name + " of " + o.scene);
-  check_render_memory(cam.image_width(), cam.image_height(), 1);
+// Refuses a --json path whose folder does not exist before any time is spent rendering.
+void check_json_folder(const std::string& path) {
+  const std::filesystem::path json(path);
+  const auto dir = json.has_parent_path() ? json.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec))
+    throw usage_error("--json: folder '" + dir.string() + "' of '" + path + "' does not exist");
+}
+
+engine_options engine_from(const bench_options& o) {
   engine_options engine;
   engine.use_bvh = o.accel == "bvh";
   engine.threads = o.threads;
   engine.count_rays = true;
   engine.cancelled = interrupt_requested();
+  return engine;
+}
 
+// What every record of the run shares: the scene and the image drawn.
+bench_record record_for(const scene& s, const camera& cam) {
   bench_record base;
   base.scene = s.name;
   base.width = cam.image_width();
   base.height = cam.image_height();
   base.spp = s.render.spp;
   base.depth = s.render.max_depth;
+  return base;
+}
+
+// Times the CPU render; `b` is the run's shared record, completed here with the CPU's fields.
+void bench_cpu(const bench_options& o, bench_record b, const camera& cam, const scene& s,
+               const engine_options& engine, std::vector<bench_record>& records) {
+  b.backend = "cpu";
+  b.device = cpu_model();
+  b.threads = worker_threads(o.threads);
+  measure(
+      o.repeat, b, [&](render_stats& st) { render_cpu(cam, s, s.render, {}, engine, &st); },
+      records);
+}
+
+// Times the GPU render, as bench_cpu. Without a Vulkan device --backend all goes on (saying so)
+// and --backend gpu fails.
+void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const scene& s,
+               const engine_options& engine, std::vector<bench_record>& records) {
+  gpu::gpu_options g;
+  g.device = o.device;
+  std::unique_ptr<gpu::gpu_context> ctx;
+  try {
+    ctx = std::make_unique<gpu::gpu_context>(g);
+  } catch (const gpu::no_device_error& e) {
+    if (o.backend == "gpu") throw;
+    std::fprintf(stderr, "rtvk: note: no Vulkan device (%s); GPU not measured\n", e.what());
+  }
+  if (!ctx) return;
+  b.backend = "gpu";
+  const auto& d = ctx->device();
+  b.device = d.name + ", driver " + d.driver_name + " " + gpu::driver_version_string(d) +
+             (d.driver_info.empty() ? "" : " (" + d.driver_info + ")");
+  measure(
+      o.repeat, b,
+      [&](render_stats& st) {
+        gpu::render_gpu(*ctx, cam, s, s.render, {}, {.engine = engine}, &st);
+      },
+      records);
+}
+
+void write_json(const std::string& path, const std::vector<bench_record>& records) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const auto& r : records)
+    out.push_back({{"scene", r.scene},
+                   {"backend", r.backend},
+                   {"device", r.device},
+                   {"threads", r.threads},
+                   {"width", r.width},
+                   {"height", r.height},
+                   {"spp", r.spp},
+                   {"depth", r.depth},
+                   {"rays", r.rays},
+                   {"seconds", r.seconds},
+                   {"build_seconds", r.build_seconds},
+                   {"mrays_per_s", r.mrays_per_s()}});
+  write_file_atomically(path, out.dump(2) + "\n");
+}
+
+int run_bench(bench_options& o) {
+  const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
+  if (!o.json.empty()) check_json_folder(o.json);
+  scene s = load_scene(o.scene);
+  check_scene(s);
+  s.cameras.resize(1);  // bench draws the scene's first camera at time 0
+  const scene_overrides overrides = o.flags.overrides();
+  overrides.apply(s);
+  const camera cam = overrides.make_camera(s, main_camera(s).at(0),
+                                           "camera " + s.cameras[0].name + " of " + o.scene);
+  check_render_memory(cam.image_width(), cam.image_height(), 1);
+  const engine_options engine = engine_from(o);
+  const bench_record base = record_for(s, cam);
   std::vector<bench_record> records;
-
-  if (o.backend == "cpu" || o.backend == "all") {
-    bench_record b = base;
-    b.backend = "cpu";
-    b.device = cpu_model();
-    b.threads = worker_threads(o.threads);
-    measure(
-        o.repeat, b, [&](render_stats& st) { render_cpu(cam, s, s.render, {}, engine, &st); },
-        records);
-  }
-  if (o.backend == "gpu" || o.backend == "all") {
-    gpu::gpu_options g;
-    g.device = o.device;
-    std::unique_ptr<gpu::gpu_context> ctx;
-    try {
-      ctx = std::make_unique<gpu::gpu_context>(g);
-    } catch (const gpu::no_device_error& e) {
-      if (o.backend == "gpu") throw;
-      std::fprintf(stderr, "rtvk: note: no Vulkan device (%s); GPU not measured\n", e.what());
-    }
-    if (ctx) {
-      bench_record b = base;
-      b.backend = "gpu";
-      const auto& d = ctx->device();
-      b.device = d.name + ", driver " + d.driver_name + " " + gpu::driver_version_string(d) +
-                 (d.driver_info.empty() ? "" : " (" + d.driver_info + ")");
-      measure(
-          o.repeat, b,
-          [&](render_stats& st) {
-            gpu::render_gpu(*ctx, cam, s, s.render, {}, {.engine = engine}, &st);
-          },
-          records);
-    }
-  }
-
-  if (!o.json.empty()) {
-    nlohmann::ordered_json out = nlohmann::ordered_json::array();
-    for (const auto& r : records)
-      out.push_back({{"scene", r.scene},
-                     {"backend", r.backend},
-                     {"device", r.device},
-                     {"threads", r.threads},
-                     {"width", r.width},
-                     {"height", r.height},
-                     {"spp", r.spp},
-                     {"depth", r.depth},
-                     {"rays", r.rays},
-                     {"seconds", r.seconds},
-                     {"build_seconds", r.build_seconds},
-                     {"mrays_per_s", r.mrays_per_s()}});
-    write_file_atomically(o.json, out.dump(2) + "\n");
-  }
+  if (o.backend == "cpu" || o.backend == "all") bench_cpu(o, base, cam, s, engine, records);
+  if (o.backend == "gpu" || o.backend == "all") bench_gpu(o, base, cam, s, engine, records);
+  if (!o.json.empty()) write_json(o.json, records);
   return 0;
 }
 

@@ -237,7 +237,7 @@ int run_render(render_options o) {
   scene s = load_scene(o.scene);
   check_scene(s);
   render_window win;
-  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags, win);
+  const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags.overrides(), win);
   const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win);
   check_render_memory(win.width, win.height,
                       int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));
@@ -257,6 +257,50 @@ int run_render(render_options o) {
   }
 }
 
+// The options that pick the images (cameras, frames, part of each) and name their files.
+void add_job_options(CLI::App& cmd, job_request& jobs) {
+  cmd.add_option("-o,--output", jobs.output,
+                 "Output image: .png, .ppm, or .exr (linear float with the sample range, for "
+                 "rtvk merge); {camera}, {frame} and {frame:04} are filled in")
+      ->required();
+  cmd.add_option("--camera", jobs.cameras,
+                 "Camera of the scene to render (repeatable), or all; default: the first")
+      ->type_name("NAME|all");
+  cmd.add_option("--frames", jobs.frames,
+                 "Animation frames A:B (A up to, not including, B) or one frame N; default 0")
+      ->type_name("A:B|N");
+  cmd.add_option("--fps", jobs.fps, "Frames per second: frame f shows time f / fps")
+      ->capture_default_str();
+  cmd.add_option("--region", jobs.region,
+                 "Render only this rectangle of the image: x,y,w,h in pixels from the top left")
+      ->type_name("X,Y,W,H");
+  cmd.add_option("--samples", jobs.samples,
+                 "Render only samples A:B of each pixel's --spp (for splitting a render)")
+      ->type_name("A:B");
+}
+
+// The options that say how to draw and write them.
+void add_engine_options(CLI::App& cmd, render_options& o) {
+  cmd.add_option("--ppm-format", o.ppm_format, "PPM flavour: P3 (ASCII) or P6 (binary)")
+      ->transform(CLI::IsMember({"P3", "P6"}, CLI::ignore_case))
+      ->capture_default_str();
+  cmd.add_option("--device", o.device,
+                 "Vulkan device: an index or part of its name (see rtvk devices)");
+  cmd.add_flag("--validate", o.validate,
+               "Enable VK_LAYER_KHRONOS_validation (also RTVK_VALIDATE=1)");
+  cmd.add_flag("-q,--quiet", o.quiet, "No summary line and no progress bar");
+  cmd.add_option("--accel", o.accel, "bvh, or none to test every sphere (same image, slower)")
+      ->check(CLI::IsMember({"bvh", "none"}))
+      ->capture_default_str();
+  cmd.add_option("--gpu-timeout", o.gpu_timeout,
+                 "Seconds one GPU submission may take before the device counts as hung")
+      ->check(CLI::Range(0.001, 86400.0))
+      ->capture_default_str();
+  cmd.add_option("--threads", o.threads, "CPU threads (0: one per core)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+}
+
 }  // namespace
 
 command_action add_render_command(CLI::App& app) {
@@ -270,43 +314,8 @@ command_action add_render_command(CLI::App& app) {
                   "both (gpu, checked against cpu)")
       ->check(CLI::IsMember({"cpu", "gpu", "auto", "both"}))
       ->capture_default_str();
-  cmd->add_option("-o,--output", o->jobs.output,
-                  "Output image: .png, .ppm, or .exr (linear float with the sample range, for "
-                  "rtvk merge); {camera}, {frame} and {frame:04} are filled in")
-      ->required();
-  cmd->add_option("--camera", o->jobs.cameras,
-                  "Camera of the scene to render (repeatable), or all; default: the first")
-      ->type_name("NAME|all");
-  cmd->add_option("--frames", o->jobs.frames,
-                  "Animation frames A:B (A up to, not including, B) or one frame N; default 0")
-      ->type_name("A:B|N");
-  cmd->add_option("--fps", o->jobs.fps, "Frames per second: frame f shows time f / fps")
-      ->capture_default_str();
-  cmd->add_option("--region", o->jobs.region,
-                  "Render only this rectangle of the image: x,y,w,h in pixels from the top left")
-      ->type_name("X,Y,W,H");
-  cmd->add_option("--samples", o->jobs.samples,
-                  "Render only samples A:B of each pixel's --spp (for splitting a render)")
-      ->type_name("A:B");
-  cmd->add_option("--ppm-format", o->ppm_format, "PPM flavour: P3 (ASCII) or P6 (binary)")
-      ->transform(CLI::IsMember({"P3", "P6"}, CLI::ignore_case))
-      ->capture_default_str();
-  cmd->add_option("--device", o->device,
-                  "Vulkan device: an index or part of its name (see rtvk devices)");
-  cmd->add_flag("--validate", o->validate,
-                "Enable VK_LAYER_KHRONOS_validation (also RTVK_VALIDATE=1)");
-  cmd->add_flag("-q,--quiet", o->quiet, "No summary line and no progress bar");
-  cmd->add_option("--accel", o->accel, "bvh, or none to test every sphere (same image, slower)")
-      ->check(CLI::IsMember({"bvh", "none"}))
-      ->capture_default_str();
-  cmd->add_option("--gpu-timeout", o->gpu_timeout,
-                  "Seconds one GPU submission may take before the device counts as hung")
-      ->check(CLI::Range(0.001, 86400.0))
-      ->capture_default_str();
-  cmd->add_option("--threads", o->threads, "CPU threads (0: one per core)")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str();
-
+  add_job_options(*cmd, o->jobs);
+  add_engine_options(*cmd, *o);
   o->flags.add_to(*cmd);
   return [o] { return run_render(*o); };
 }

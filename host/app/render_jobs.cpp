@@ -95,10 +95,11 @@ render_window parse_region(const std::string& text, const std::string& flag) {
   return {v[0], v[1], v[2], v[3], 0, 0};
 }
 
-std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output_pattern& output,
-                                  const scene_flags& flags, render_window& window) {
-  select_cameras(s, req.cameras);
-  flags.apply(s);
+namespace {
+
+// The frames asked for, checked: --fps, the number of images, and a -o that names each image
+// apart.
+int_range plan_frames(const scene& s, const job_request& req, const output_pattern& output) {
   const int_range frames =
       req.frames.empty() ? int_range{0, 1} : parse_range(req.frames, "--frames", 0, 1'000'000);
   if (!(req.fps > 0)) throw usage_error("--fps: " + format_number(req.fps) + " is not > 0");
@@ -112,7 +113,14 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output
   if (frames.end - frames.begin > 1 && !output.has_frame())
     throw usage_error("--output " + req.output + ": " + std::to_string(frames.end - frames.begin) +
                       " frames would share it; put {frame} or {frame:04} in the name");
+  return frames;
+}
 
+// One job per selected camera and frame, in that order; no two write one file, and every
+// output folder is writable.
+std::vector<render_job> make_jobs(const scene& s, const job_request& req,
+                                  const output_pattern& output, const scene_overrides& overrides,
+                                  int_range frames) {
   const std::string scene_text = scene_identity(s);
   std::vector<render_job> jobs;
   std::set<std::string> outputs;
@@ -121,7 +129,7 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output
       const camera_pose pose = c.path.at(f / req.fps);
       render_job job{
           c.name, f,
-          flags.make_camera(
+          overrides.make_camera(
               s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f)),
           output.expand(c.name, f), job_fingerprint(scene_text, pose)};
       if (!outputs.insert(job.output).second)
@@ -130,10 +138,15 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output
       jobs.push_back(std::move(job));
     }
   for (const std::string& path : outputs) check_output_path(path, "--output", true);
+  return jobs;
+}
 
-  const int width = jobs[0].cam.image_width(), height = jobs[0].cam.image_height();
-  window = req.region.empty() ? whole_render(width, height, s.render.spp)
-                              : parse_region(req.region, "--region");
+// The part of the image (--region) and of its samples (--samples) to draw, checked against
+// the image `cam` draws and the scene's samples per pixel.
+render_window plan_window(const scene& s, const job_request& req, const camera& cam) {
+  const int width = cam.image_width(), height = cam.image_height();
+  render_window window = req.region.empty() ? whole_render(width, height, s.render.spp)
+                                            : parse_region(req.region, "--region");
   if (!req.region.empty()) {
     try {
       check_window({window.x, window.y, window.width, window.height, 0, 1}, width, height);
@@ -147,6 +160,18 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output
                                               " (the samples per pixel, --spp)");
   window.sample_begin = samples.begin;
   window.sample_end = samples.end;
+  return window;
+}
+
+}  // namespace
+
+std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output_pattern& output,
+                                  const scene_overrides& overrides, render_window& window) {
+  select_cameras(s, req.cameras);
+  overrides.apply(s);
+  const int_range frames = plan_frames(s, req, output);
+  std::vector<render_job> jobs = make_jobs(s, req, output, overrides, frames);
+  window = plan_window(s, req, jobs[0].cam);
   return jobs;
 }
 

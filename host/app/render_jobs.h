@@ -6,7 +6,7 @@
 #include "output_pattern.h"
 #include "render_settings.h"
 #include "scene.h"
-#include "scene_flags.h"
+#include "scene_overrides.h"
 
 namespace rtvk {
 
@@ -44,12 +44,12 @@ struct render_job {
   std::string fingerprint;  // the scene, settings and this pose, hashed (see partial_image.h)
 };
 
-// The selected cameras (s.cameras narrowed to them, in the scene's order), the flags applied,
+// The selected cameras (s.cameras narrowed to them, in the scene's order), the overrides applied,
 // and one job per camera and frame, every output path checked. Throws usage_error naming the
 // flag and the value for an unknown camera, a range or region outside the image or its samples,
 // a -o that would make two images share a file, or an unwritable folder.
 // `output` is req.output, parsed (before the scene was loaded).
 std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output_pattern& output,
-                                  const scene_flags& flags, render_window& window);
+                                  const scene_overrides& overrides, render_window& window);
 
 }  // namespace rtvk

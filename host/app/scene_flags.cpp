@@ -1,22 +1,18 @@
 #include "scene_flags.h"
 
-#include <cmath>
+#include <optional>
 
-#include "errors.h"
-#include "format.h"
-#include "parse_values.h"
+#include "image_size.h"
+#include "render_settings.h"
 
 namespace rtvk {
 namespace {
 
-bool given(const CLI::Option* o) {
-  return o && o->count() > 0;
-}
-
-double checked(double v, bool ok, const std::string& flag, const std::string& expected) {
-  if (!ok || !std::isfinite(v))
-    throw usage_error(flag + ": " + format_number(v) + " is not " + expected);
-  return v;
+// The value when its option was given on the command line.
+template <typename T>
+std::optional<T> if_given(const CLI::Option* o, const T& value) {
+  if (o && o->count() > 0) return value;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -49,45 +45,19 @@ void scene_flags::add_to(CLI::App& cmd) {
                    ->group(group);
 }
 
-void scene_flags::apply(scene& s) const {
-  render_settings& r = s.render;
-  if (given(width_opt_)) r.width = width_;
-  if (given(aspect_opt_)) r.aspect = parse_aspect(aspect_);
-  if (given(spp_opt_)) r.spp = spp_;
-  if (given(depth_opt_)) r.max_depth = depth_;
-  if (given(seed_opt_)) r.seed = std::uint32_t(seed_);
-  const bool pose_flags = given(lookfrom_opt_) || given(lookat_opt_) || given(vup_opt_) ||
-                          given(vfov_opt_) || given(aperture_opt_) || given(focus_dist_opt_);
-  for (named_camera& cam : s.cameras) {
-    if (cam.path.motion == camera_motion::keyframes && (pose_flags || given(orbit_opt_)))
-      throw usage_error(std::string(given(orbit_opt_) ? "--orbit" : "a camera pose flag") +
-                        ": camera " + cam.name + " of " + s.name +
-                        " moves by keyframes; pick another with --camera or edit its keyframes");
-    camera_pose& c = cam.path.pose;
-    if (given(lookfrom_opt_)) c.lookfrom = parse_vec3(lookfrom_, "--lookfrom");
-    if (given(lookat_opt_)) c.lookat = parse_vec3(lookat_, "--lookat");
-    if (given(vup_opt_)) c.vup = parse_vec3(vup_, "--vup");
-    if (given(vfov_opt_))
-      c.vfov = checked(vfov_, vfov_ > 0 && vfov_ < 180, "--vfov", "in (0, 180) degrees");
-    if (given(aperture_opt_)) c.aperture = checked(aperture_, aperture_ >= 0, "--aperture", ">= 0");
-    if (given(focus_dist_opt_))
-      c.focus_dist = checked(focus_dist_, focus_dist_ > 0, "--focus-dist", "> 0");
-    if (given(orbit_opt_)) {
-      cam.path.motion = camera_motion::orbit;
-      cam.path.orbit_period = checked(orbit_, orbit_ > 0, "--orbit", "> 0 seconds");
-    }
-  }
-}
-
-camera scene_flags::make_camera(const scene& s, const camera_pose& pose,
-                                const std::string& what) const {
-  try {
-    return camera(pose, s.render.aspect, s.render.width);
-  } catch (const std::invalid_argument& e) {
-    const std::string aspect = given(aspect_opt_) ? aspect_ : format_number(s.render.aspect);
-    throw usage_error("--width " + std::to_string(s.render.width) + " / --aspect " + aspect +
-                      " / " + what + ": " + e.what());
-  }
+scene_overrides scene_flags::overrides() const {
+  return {.width = if_given(width_opt_, width_),
+          .aspect = if_given(aspect_opt_, aspect_),
+          .spp = if_given(spp_opt_, spp_),
+          .depth = if_given(depth_opt_, depth_),
+          .seed = if_given(seed_opt_, seed_),
+          .lookfrom = if_given(lookfrom_opt_, lookfrom_),
+          .lookat = if_given(lookat_opt_, lookat_),
+          .vup = if_given(vup_opt_, vup_),
+          .vfov = if_given(vfov_opt_, vfov_),
+          .aperture = if_given(aperture_opt_, aperture_),
+          .focus_dist = if_given(focus_dist_opt_, focus_dist_),
+          .orbit = if_given(orbit_opt_, orbit_)};
 }
 
 }  // namespace rtvk

@@ -2,26 +2,23 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "camera.h"
-#include "scene.h"
+#include "scene_overrides.h"
 
 namespace rtvk {
 
 // The command-line flags that override a scene's own settings (--width, --spp, --lookfrom, ...),
-// shared by `rtvk render` and `rtvk bench`. Each applies only when given.
+// shared by `rtvk render` and `rtvk bench`: registered on a command, then read back as
+// scene_overrides once the command line is parsed.
 class scene_flags {
  public:
   void add_to(CLI::App& cmd);
 
-  // The scene's settings with the given flags applied, to every camera in s.cameras (narrow
-  // them to the chosen ones first). Throws usage_error naming the flag.
-  void apply(scene& s) const;
-
-  // The camera for `pose` in the scene; an impossible combination (a height over the limit, a
-  // camera looking at itself) is a usage_error naming the flags involved and `what` (the camera).
-  camera make_camera(const scene& s, const camera_pose& pose, const std::string& what) const;
+  // The flags given, each as typed (checked when applied).
+  scene_overrides overrides() const;
 
  private:
+  // Each flag's value as CLI11 parsed it (units as in scene_overrides), then its option, which
+  // tells whether it was given.
   int width_ = 0;
   std::string aspect_;
   int spp_ = 0;

@@ -41,6 +41,77 @@ void both_children(const glm::vec3& o, const glm::vec3& inv_d, const float (&x)[
 }
 #endif
 
+// Box tests run in float; their interval is widened a little so no box holding a hit is culled.
+inline float widen_down(double t) {
+  return float(t) * (1.0f - 0x1p-20f);
+}
+inline float widen_up(double t) {
+  return float(t) * (1.0f + 0x1p-20f);
+}
+
+// The inner nodes still to visit, each with the distance at which the ray enters its box.
+struct node_stack {
+  std::uint32_t node[RTVK_BVH_STACK];  // node index
+  float entry[RTVK_BVH_STACK];         // where the ray enters the node's box
+  int top = 0;                         // entries in use
+};
+
+// Tests a leaf's spheres, keeping the nearest hit (`closest`, `best` its sphere index). Ties go
+// to the later sphere, as in a linear scan.
+inline void visit_leaf(const gpu::bvh_node& n, const std::vector<std::uint32_t>& index,
+                       const std::vector<sphere>& spheres, const ray& r, double t_min,
+                       double& closest, std::int64_t& best) {
+  for (std::uint32_t k = n.first; k < n.first + n.count; ++k) {
+    const std::uint32_t i = index[k];
+    double t;
+    if (hit_distance(spheres[i], r, t_min, closest, t) && (t < closest || i > best)) {
+      closest = t;
+      best = i;
+    }
+  }
+}
+
+// Where the ray enters each child box of inner node n, or -1 where it misses it.
+inline void child_entries(const bvh& tree, std::uint32_t node,
+                          [[maybe_unused]] const gpu::bvh_node& n, const glm::vec3& o,
+                          const glm::vec3& inv_d, float box_min, float box_max, float margin,
+                          float& t_left, float& t_right) {
+#if defined(__SSE2__)
+  const bvh::child_boxes& c = tree.children()[node];
+  both_children(o, inv_d, c.x, c.y, c.z, box_min, box_max, margin, t_left, t_right);
+#else
+  t_left = ray_box_entry(o, inv_d, tree.nodes()[node + 1], box_min, box_max, margin);
+  t_right = ray_box_entry(o, inv_d, tree.nodes()[n.first], box_min, box_max, margin);
+#endif
+}
+
+// Moves `node` to the nearer child the ray enters, remembering the other if the ray enters it
+// at all. False when the ray enters neither.
+inline bool descend(std::uint32_t left, std::uint32_t right, float t_left, float t_right,
+                    std::uint32_t& node, node_stack& stack) {
+  if (t_left >= 0 && t_right >= 0) {
+    const bool left_first = t_left <= t_right;
+    stack.node[stack.top] = left_first ? right : left;
+    stack.entry[stack.top++] = left_first ? t_right : t_left;
+    node = left_first ? left : right;
+    return true;
+  }
+  if (t_left >= 0 || t_right >= 0) {
+    node = t_left >= 0 ? left : right;
+    return true;
+  }
+  return false;
+}
+
+// Moves `node` to the next remembered node the ray can still reach before box_max (the closest
+// hit). False when none is left.
+inline bool pop_reachable(node_stack& stack, float box_max, std::uint32_t& node) {
+  while (stack.top > 0 && stack.entry[stack.top - 1] > box_max) --stack.top;
+  if (stack.top == 0) return false;
+  node = stack.node[--stack.top];
+  return true;
+}
+
 }  // namespace
 
 bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
@@ -49,56 +120,21 @@ bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) c
   if (nodes.empty()) return false;
   const glm::vec3 o(r.origin()), inv_d = safe_inverse(glm::vec3(r.direction()));
   const float margin = origin_margin(o);
-  // Box tests run in float; widen the interval a little so no box holding a hit is culled.
-  auto widen_up = [](double t) { return float(t) * (1.0f + 0x1p-20f); };
-  const float box_min = float(t_min) * (1.0f - 0x1p-20f);
-  std::uint32_t stack_node[RTVK_BVH_STACK];
-  float stack_entry[RTVK_BVH_STACK];
-  int top = 0;
+  const float box_min = widen_down(t_min);
+  node_stack stack;
   std::uint32_t node = 0;
   double closest = t_max;
   std::int64_t best = -1;  // sphere index of the hit so far
   while (true) {
     const gpu::bvh_node& n = nodes[node];
-    if (n.count > 0) {
-      for (std::uint32_t k = n.first; k < n.first + n.count; ++k) {
-        const std::uint32_t i = index[k];
-        double t;
-        // Ties go to the later sphere, as in a linear scan.
-        if (hit_distance(spheres_[i], r, t_min, closest, t) && (t < closest || i > best)) {
-          closest = t;
-          best = i;
-        }
-      }
-    } else {
-      // Visit the nearer child first; remember the other if the ray enters it at all.
-      const float box_max = widen_up(closest);
-      const std::uint32_t left = node + 1, right = n.first;
-#if defined(__SSE2__)
+    if (n.count == 0) {
       float t_left, t_right;
-      const bvh::child_boxes& c = tree_.children()[node];
-      both_children(o, inv_d, c.x, c.y, c.z, box_min, box_max, margin, t_left, t_right);
-#else
-      const float t_left = ray_box_entry(o, inv_d, nodes[left], box_min, box_max, margin);
-      const float t_right = ray_box_entry(o, inv_d, nodes[right], box_min, box_max, margin);
-#endif
-      if (t_left >= 0 && t_right >= 0) {
-        const bool left_first = t_left <= t_right;
-        stack_node[top] = left_first ? right : left;
-        stack_entry[top++] = left_first ? t_right : t_left;
-        node = left_first ? left : right;
-        continue;
-      }
-      if (t_left >= 0 || t_right >= 0) {
-        node = t_left >= 0 ? left : right;
-        continue;
-      }
+      child_entries(tree_, node, n, o, inv_d, box_min, widen_up(closest), margin, t_left, t_right);
+      if (descend(node + 1, n.first, t_left, t_right, node, stack)) continue;
+    } else {
+      visit_leaf(n, index, spheres_, r, t_min, closest, best);
     }
-    // The next remembered node the ray can still reach before the closest hit.
-    const float box_max = widen_up(closest);
-    while (top > 0 && stack_entry[top - 1] > box_max) --top;
-    if (top == 0) break;
-    node = stack_node[--top];
+    if (!pop_reachable(stack, widen_up(closest), node)) break;
   }
   if (best < 0) return false;
   record_hit(spheres_[std::size_t(best)], r, closest, rec);

@@ -30,6 +30,50 @@ class counting_world final : public hittable {
   const hittable& inner_;
 };
 
+// What every pixel of one render reads.
+struct pixel_inputs {
+  const camera& cam;                       // sets the image size and casts the rays
+  const rtvk::sky& sky;                    // what rays that escape see
+  const render_settings& rs;               // seed, jitter and bounce limit
+  const std::vector<material>& materials;  // the scene's, by sphere material index
+  const render_window& win;                // the samples to take
+};
+
+// The mean of pixel (i, y)'s samples [win.sample_begin, win.sample_end), y counted from the top.
+color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y) {
+  const int width = in.cam.image_width();
+  const int height = in.cam.image_height();
+  const int j = height - 1 - y;  // the lesson counts rows from the bottom
+  color sum(0, 0, 0);
+  for (int sample = in.win.sample_begin; sample < in.win.sample_end; ++sample) {
+    const random_stream rnd{in.rs.seed, std::uint32_t(y) * std::uint32_t(width) + std::uint32_t(i),
+                            std::uint32_t(sample), 0};
+    const double u = pixel_coordinate(in.rs.jitter ? i + rnd(dim_jitter_u) : i, width);
+    const double v = pixel_coordinate(in.rs.jitter ? j + rnd(dim_jitter_v) : j, height);
+    const glm::dvec2 lens = in.cam.lens_radius() > 0
+                                ? random_in_unit_disk(rnd(dim_lens_a), rnd(dim_lens_b))
+                                : glm::dvec2(0, 0);
+    sum += ray_color(in.cam.get_ray(u, v, lens), world, in.materials, in.sky, in.rs.max_depth, rnd);
+  }
+  return divide(sum, in.win.samples());
+}
+
+// Draws row `row` of the window (counted from the window's top) into fb.
+void draw_row(const pixel_inputs& in, const hittable& world, int row, framebuffer& fb) {
+  const int y = in.win.y + row;
+  for (int i = in.win.x; i < in.win.x + in.win.width; ++i)
+    fb.at(i - in.win.x, row) = pixel_color(in, world, i, y);
+}
+
+// The scene's world, accelerated or not, and the seconds it took to build.
+std::unique_ptr<hittable> timed_world(const scene& s, bool use_bvh, double& build_seconds) {
+  const auto build_start = std::chrono::steady_clock::now();
+  std::unique_ptr<hittable> world = make_accelerated_world(s, use_bvh);
+  build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
+  return world;
+}
+
 }  // namespace
 
 int worker_threads(int threads) {
@@ -47,18 +91,16 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
 framebuffer render_cpu_window(const camera& cam, const scene& s, const render_settings& rs,
                               const render_window& win, const progress_callback& progress,
                               const engine_options& engine, render_stats* stats) {
-  const int width = cam.image_width();
-  const int height = cam.image_height();
-  check_window(win, width, height);
-  const auto build_start = std::chrono::steady_clock::now();
-  const std::unique_ptr<hittable> world = make_accelerated_world(s, engine.use_bvh);
-  const double build_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
+  check_window(win, cam.image_width(), cam.image_height());
+  double build_seconds = 0;
+  const std::unique_ptr<hittable> world = timed_world(s, engine.use_bvh, build_seconds);
   const std::vector<material> materials = scene_materials(s);
+  const pixel_inputs in{cam, s.sky, rs, materials, win};
   framebuffer fb(win.width, win.height);
   std::atomic<int> next_row{0}, rows_done{0};
   std::atomic<std::uint64_t> rays{0};
 
+  // Each worker takes the next row not yet taken until none is left or the render is stopped.
   auto render_rows = [&](int worker, const std::atomic<bool>& stop) {
     const bool reports_progress = worker == 0;
     const counting_world counted(*world);
@@ -67,23 +109,7 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
     int row;
     while (!stop.load(std::memory_order_relaxed) && !(engine.cancelled && engine.cancelled()) &&
            (row = next_row.fetch_add(1)) < win.height) {
-      const int y = win.y + row;
-      const int j = height - 1 - y;  // the lesson counts rows from the bottom
-      for (int i = win.x; i < win.x + win.width; ++i) {
-        color sum(0, 0, 0);
-        for (int sample = win.sample_begin; sample < win.sample_end; ++sample) {
-          const random_stream rnd{rs.seed,
-                                  std::uint32_t(y) * std::uint32_t(width) + std::uint32_t(i),
-                                  std::uint32_t(sample), 0};
-          const double u = pixel_coordinate(rs.jitter ? i + rnd(dim_jitter_u) : i, width);
-          const double v = pixel_coordinate(rs.jitter ? j + rnd(dim_jitter_v) : j, height);
-          const glm::dvec2 lens = cam.lens_radius() > 0
-                                      ? random_in_unit_disk(rnd(dim_lens_a), rnd(dim_lens_b))
-                                      : glm::dvec2(0, 0);
-          sum += ray_color(cam.get_ray(u, v, lens), target, materials, s.sky, rs.max_depth, rnd);
-        }
-        fb.at(i - win.x, row) = divide(sum, win.samples());
-      }
+      draw_row(in, target, row, fb);
       const int done = rows_done.fetch_add(1) + 1;
       if (reports_progress && progress) progress(done);
     }

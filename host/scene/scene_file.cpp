@@ -253,51 +253,65 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
   return m;
 }
 
+sky read_sky(const scene_reader& r, const json& j) {
+  r.only_fields(j, "/sky", {"horizon", "zenith"});
+  sky out;
+  if (j.contains("horizon")) out.horizon = r.radiance(j["horizon"], "/sky/horizon");
+  if (j.contains("zenith")) out.zenith = r.radiance(j["zenith"], "/sky/zenith");
+  return out;
+}
+
+// Fills s.materials from /materials, in the file's order; returns each name's index there.
+std::map<std::string, int> read_materials(const scene_reader& r, const json& mats, scene& s) {
+  if (!mats.is_object())
+    r.fail("/materials", "expected an object of named materials, got " + r.type_of(mats));
+  std::map<std::string, int> index;
+  for (const auto& [key, value] : mats.items()) {
+    index[key] = int(s.materials.size());
+    s.materials.push_back({key, read_material(r, value, "/materials/" + escape_pointer(key))});
+  }
+  return index;
+}
+
+// `material_index` maps a material name to its index in the scene.
+sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
+                   const std::map<std::string, int>& material_index) {
+  r.only_fields(j, p, {"center", "radius", "material"});
+  sphere sp;
+  sp.center = r.vector3(r.required(j, p, "center"), p + "/center");
+  sp.radius = r.number(r.required(j, p, "radius"), p + "/radius");
+  if (sp.radius <= 0)
+    r.fail(p + "/radius", "expected a radius > 0, got " + format_number(sp.radius));
+  const json& m = r.required(j, p, "material");
+  if (!m.is_string()) r.fail(p + "/material", "expected a material name, got " + r.type_of(m));
+  const auto found = material_index.find(m.get<std::string>());
+  if (found == material_index.end())
+    r.fail(p + "/material", "no material named \"" + m.get<std::string>() + "\" in /materials");
+  sp.material = found->second;
+  return sp;
+}
+
+std::vector<sphere> read_spheres(const scene_reader& r, const json& root,
+                                 const std::map<std::string, int>& material_index) {
+  const json& spheres = r.required(root, "", "spheres");
+  if (!spheres.is_array()) r.fail("/spheres", "expected an array, got " + r.type_of(spheres));
+  std::vector<sphere> out;
+  out.reserve(spheres.size());
+  for (std::size_t i = 0; i < spheres.size(); ++i)
+    out.push_back(read_sphere(r, spheres[i], "/spheres/" + std::to_string(i), material_index));
+  return out;
+}
+
 scene read_scene(const scene_reader& r, const json& root, const std::string& name) {
   r.only_fields(root, "", {"camera", "cameras", "render", "sky", "materials", "spheres"});
   scene s;
   s.name = name;
   s.cameras = read_cameras(r, root);
   if (root.contains("render")) s.render = read_render(r, root["render"]);
-  if (root.contains("sky")) {
-    const json& j = root["sky"];
-    r.only_fields(j, "/sky", {"horizon", "zenith"});
-    if (j.contains("horizon")) s.sky.horizon = r.radiance(j["horizon"], "/sky/horizon");
-    if (j.contains("zenith")) s.sky.zenith = r.radiance(j["zenith"], "/sky/zenith");
-  }
-
-  std::map<std::string, int> index;
-  if (root.contains("materials")) {
-    const json& mats = root["materials"];
-    if (!mats.is_object())
-      r.fail("/materials", "expected an object of named materials, got " + r.type_of(mats));
-    for (const auto& [key, value] : mats.items()) {
-      index[key] = int(s.materials.size());
-      s.materials.push_back({key, read_material(r, value, "/materials/" + escape_pointer(key))});
-    }
-  }
-
-  const json& spheres = r.required(root, "", "spheres");
-  if (!spheres.is_array()) r.fail("/spheres", "expected an array, got " + r.type_of(spheres));
-  s.spheres.reserve(spheres.size());
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    const std::string p = "/spheres/" + std::to_string(i);
-    const json& j = spheres[i];
-    r.only_fields(j, p, {"center", "radius", "material"});
-    sphere sp;
-    sp.center = r.vector3(r.required(j, p, "center"), p + "/center");
-    sp.radius = r.number(r.required(j, p, "radius"), p + "/radius");
-    if (sp.radius <= 0)
-      r.fail(p + "/radius", "expected a radius > 0, got " + format_number(sp.radius));
-    const json& m = r.required(j, p, "material");
-    if (!m.is_string()) r.fail(p + "/material", "expected a material name, got " + r.type_of(m));
-    const auto found = index.find(m.get<std::string>());
-    if (found == index.end())
-      r.fail(p + "/material", "no material named \"" + m.get<std::string>() + "\" in /materials");
-    sp.material = found->second;
-    s.spheres.push_back(sp);
-  }
-
+  if (root.contains("sky")) s.sky = read_sky(r, root["sky"]);
+  std::map<std::string, int> material_index;
+  if (root.contains("materials")) material_index = read_materials(r, root["materials"], s);
+  s.spheres = read_spheres(r, root, material_index);
   try {
     camera(camera_pose{}, s.render.aspect, s.render.width);  // the image size, alone
   } catch (const std::invalid_argument& e) {

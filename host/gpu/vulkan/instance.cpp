@@ -59,43 +59,58 @@ bool has_extension(const char* name) {
   return false;
 }
 
-}  // namespace
-
-vulkan_instance::vulkan_instance(bool validate) : validating_(validate) {
+// Loads the loader; throws no_device_error when it is missing or knows only Vulkan 1.0.
+void require_vulkan_1_1() {
   load_vulkan();
   if (volkGetInstanceVersion() < VK_API_VERSION_1_1)
     throw no_device_error("the Vulkan loader supports only Vulkan 1.0; rtvk needs 1.1");
+}
 
-  std::vector<const char*> layers, extensions;
-  VkInstanceCreateFlags flags = 0;
+// What the instance is created with besides the application info.
+struct instance_features {
+  std::vector<const char*> layers;      // layer names to enable
+  std::vector<const char*> extensions;  // instance extension names to enable
+  VkInstanceCreateFlags flags = 0;      // VkInstanceCreateInfo::flags
+};
+
+instance_features choose_features(bool validate) {
+  instance_features f;
   // Portability drivers (MoltenVK and the like) are listed only when asked for.
   if (has_extension(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
-    extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
-    flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
+    f.extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
+    f.flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
   }
   if (validate) {
     if (!has_layer(validation_layer))
       throw std::runtime_error(std::string("validation was requested but ") + validation_layer +
                                " is not installed (apt-get install vulkan-validationlayers)");
-    layers.push_back(validation_layer);
-    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    f.layers.push_back(validation_layer);
+    f.extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   }
+  return f;
+}
 
-  VkDebugUtilsMessengerCreateInfoEXT messenger_info{
-      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-  messenger_info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                                   VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-  messenger_info.pfnUserCallback = on_message;
-  messenger_info.pUserData = &messages_;
+// Warnings and errors of every type go to on_message, which counts them in *counter.
+VkDebugUtilsMessengerCreateInfoEXT messenger_info(std::atomic<std::uint32_t>* counter) {
+  VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                         VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  info.pfnUserCallback = on_message;
+  info.pUserData = counter;
+  return info;
+}
 
+// `messenger` (validation only, else null) also covers instance creation itself.
+VkInstance create_instance(const instance_features& f,
+                           const VkDebugUtilsMessengerCreateInfoEXT* messenger) {
   // Synchronization validation too: a missing barrier is as much a bug as a bad parameter.
   const VkValidationFeatureEnableEXT enables[] = {
       VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
   VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
-  features.pNext = &messenger_info;
+  features.pNext = messenger;
   features.enabledValidationFeatureCount = 1;
   features.pEnabledValidationFeatures = enables;
 
@@ -104,29 +119,40 @@ vulkan_instance::vulkan_instance(bool validate) : validating_(validate) {
   app.pEngineName = "rtvk";
   app.apiVersion = VK_API_VERSION_1_1;
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  info.pNext = validate ? &features : nullptr;  // the messenger also covers instance creation
-  info.flags = flags;
+  info.pNext = messenger ? &features : nullptr;
+  info.flags = f.flags;
   info.pApplicationInfo = &app;
-  info.enabledLayerCount = std::uint32_t(layers.size());
-  info.ppEnabledLayerNames = layers.data();
-  info.enabledExtensionCount = std::uint32_t(extensions.size());
-  info.ppEnabledExtensionNames = extensions.data();
+  info.enabledLayerCount = std::uint32_t(f.layers.size());
+  info.ppEnabledLayerNames = f.layers.data();
+  info.enabledExtensionCount = std::uint32_t(f.extensions.size());
+  info.ppEnabledExtensionNames = f.extensions.data();
 
   VkInstance instance = VK_NULL_HANDLE;
   const VkResult r = vkCreateInstance(&info, nullptr, &instance);
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
     throw no_device_error("vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER (no Vulkan driver)");
   vk_check(r, "vkCreateInstance");
-  instance_ = unique_instance(instance);
-  volkLoadInstance(instance);
-  pin_driver_libraries();
+  return instance;
+}
 
-  if (validate) {
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-    vk_check(vkCreateDebugUtilsMessengerEXT(instance, &messenger_info, nullptr, &messenger),
-             "vkCreateDebugUtilsMessengerEXT");
-    messenger_ = unique_messenger(instance, messenger);
-  }
+unique_messenger make_messenger(VkInstance instance,
+                                const VkDebugUtilsMessengerCreateInfoEXT& info) {
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  vk_check(vkCreateDebugUtilsMessengerEXT(instance, &info, nullptr, &messenger),
+           "vkCreateDebugUtilsMessengerEXT");
+  return unique_messenger(instance, messenger);
+}
+
+}  // namespace
+
+vulkan_instance::vulkan_instance(bool validate) : validating_(validate) {
+  require_vulkan_1_1();
+  const instance_features features = choose_features(validate);
+  const VkDebugUtilsMessengerCreateInfoEXT messenger = messenger_info(&messages_);
+  instance_ = unique_instance(create_instance(features, validate ? &messenger : nullptr));
+  volkLoadInstance(instance_.get());
+  pin_driver_libraries();
+  if (validate) messenger_ = make_messenger(instance_.get(), messenger);
 }
 
 }  // namespace rtvk::gpu

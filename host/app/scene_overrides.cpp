@@ -1,0 +1,70 @@
+#include "scene_overrides.h"
+
+#include <cmath>
+
+#include "errors.h"
+#include "format.h"
+#include "parse_values.h"
+
+namespace rtvk {
+namespace {
+
+double checked(double v, bool ok, const std::string& flag, const std::string& expected) {
+  if (!ok || !std::isfinite(v))
+    throw usage_error(flag + ": " + format_number(v) + " is not " + expected);
+  return v;
+}
+
+bool moves_pose(const scene_overrides& o) {
+  return o.lookfrom || o.lookat || o.vup || o.vfov || o.aperture || o.focus_dist;
+}
+
+void apply_render(const scene_overrides& o, render_settings& r) {
+  if (o.width) r.width = *o.width;
+  if (o.aspect) r.aspect = parse_aspect(*o.aspect);
+  if (o.spp) r.spp = *o.spp;
+  if (o.depth) r.max_depth = *o.depth;
+  if (o.seed) r.seed = std::uint32_t(*o.seed);
+}
+
+void apply_pose(const scene_overrides& o, camera_pose& c) {
+  if (o.lookfrom) c.lookfrom = parse_vec3(*o.lookfrom, "--lookfrom");
+  if (o.lookat) c.lookat = parse_vec3(*o.lookat, "--lookat");
+  if (o.vup) c.vup = parse_vec3(*o.vup, "--vup");
+  if (o.vfov)
+    c.vfov = checked(*o.vfov, *o.vfov > 0 && *o.vfov < 180, "--vfov", "in (0, 180) degrees");
+  if (o.aperture) c.aperture = checked(*o.aperture, *o.aperture >= 0, "--aperture", ">= 0");
+  if (o.focus_dist) c.focus_dist = checked(*o.focus_dist, *o.focus_dist > 0, "--focus-dist", "> 0");
+}
+
+}  // namespace
+
+void scene_overrides::apply(scene& s) const {
+  apply_render(*this, s.render);
+  const bool pose_flags = moves_pose(*this);
+  for (named_camera& cam : s.cameras) {
+    // A keyframed path has no one pose to override.
+    if (cam.path.motion == camera_motion::keyframes && (pose_flags || orbit))
+      throw usage_error(std::string(orbit ? "--orbit" : "a camera pose flag") + ": camera " +
+                        cam.name + " of " + s.name +
+                        " moves by keyframes; pick another with --camera or edit its keyframes");
+    apply_pose(*this, cam.path.pose);
+    if (orbit) {
+      cam.path.motion = camera_motion::orbit;
+      cam.path.orbit_period = checked(*orbit, *orbit > 0, "--orbit", "> 0 seconds");
+    }
+  }
+}
+
+camera scene_overrides::make_camera(const scene& s, const camera_pose& pose,
+                                    const std::string& what) const {
+  try {
+    return camera(pose, s.render.aspect, s.render.width);
+  } catch (const std::invalid_argument& e) {
+    const std::string shown = aspect ? *aspect : format_number(s.render.aspect);
+    throw usage_error("--width " + std::to_string(s.render.width) + " / --aspect " + shown + " / " +
+                      what + ": " + e.what());
+  }
+}
+
+}  // namespace rtvk
