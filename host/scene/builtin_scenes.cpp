@@ -188,5 +188,4 @@ scene builtin_scene(std::string_view name) {
                     ", spheres:N; or a .json scene file)");
 }
 
-
 }  // namespace rtvk

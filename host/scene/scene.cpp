@@ -48,5 +48,4 @@ void check_scene(const scene& s) {
   }
 }
 
-
 }  // namespace rtvk
