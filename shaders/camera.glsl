@@ -1,5 +1,5 @@
-// Mirrors host/camera.h: the ray through normalized image coordinates (s, t), leaving the lens at
-// `lens`, a point of the unit disk.
+// Mirrors host/scene/camera.h: the ray through normalized image coordinates (s, t), leaving the
+// lens at `lens`, a point of the unit disk.
 #ifndef RTVK_CAMERA_GLSL
 #define RTVK_CAMERA_GLSL
 #include "ray.glsl"
@@ -11,7 +11,7 @@ ray get_ray(camera_ubo cam, float s, float t, vec2 lens) {
              cam.lower_left + s * cam.horizontal + t * cam.vertical - cam.origin - offset);
 }
 
-// Mirrors pixel_coordinate in host/render_cpu.h.
+// Mirrors pixel_coordinate in host/cpu/render_cpu.h.
 float pixel_coordinate(float x, uint n) { return n > 1u ? x / float(n - 1u) : 0.5; }
 
 #endif

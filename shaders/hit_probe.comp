@@ -1,6 +1,6 @@
 #version 450
 // Test probe: hit_distance of sphere.glsl for the host's rays, intervals and spheres, so tests can
-// feed it what a render rarely meets (degenerate rays) and compare with sphere::hit_distance.
+// feed it what a render rarely meets (degenerate rays) and compare with hit_distance(sphere, ...).
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 

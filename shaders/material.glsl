@@ -1,4 +1,5 @@
-// Mirrors host/material.cpp. Expects `materials` (gpu_material[]) declared by the including shader.
+// Mirrors host/cpu/scatter.cpp. Expects `materials` (gpu_material[]) declared by the including
+// shader.
 #ifndef RTVK_MATERIAL_GLSL
 #define RTVK_MATERIAL_GLSL
 #include "random.glsl"

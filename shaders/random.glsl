@@ -1,4 +1,4 @@
-// Mirrors host/random.h: the same 32-bit integer arithmetic, so both backends draw the same
+// Mirrors host/base/random.h: the same 32-bit integer arithmetic, so both backends draw the same
 // random numbers for the same (seed, pixel, sample, bounce, dimension).
 #ifndef RTVK_RANDOM_GLSL
 #define RTVK_RANDOM_GLSL

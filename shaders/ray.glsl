@@ -1,4 +1,4 @@
-// Mirrors host/ray.h and host/hittable.h.
+// Mirrors host/base/ray.h and host/cpu/hittable.h.
 #ifndef RTVK_RAY_GLSL
 #define RTVK_RAY_GLSL
 

@@ -1,4 +1,4 @@
-// Mirrors host/shading.cpp.
+// Mirrors host/cpu/shading.cpp.
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
 #include "material.glsl"

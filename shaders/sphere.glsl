@@ -1,10 +1,11 @@
-// Mirrors host/sphere.cpp, and the slab test of host/bvh.h. Reads no buffers: probes include it
-// alone; the world's traversal is in world.glsl.
+// Mirrors host/cpu/hittable_sphere.cpp, and the slab test of host/accel/bvh.h. Reads no buffers:
+// probes include it alone; the world's traversal is in world.glsl.
 #ifndef RTVK_SPHERE_GLSL
 #define RTVK_SPHERE_GLSL
 #include "ray.glsl"
 
-// Mirrors sphere::hit_distance: the nearest root in [t_min, t_max], if any.
+// Mirrors hit_distance(sphere, ...) in host/cpu/hittable_sphere.cpp: the nearest root in
+// [t_min, t_max], if any.
 bool hit_distance(gpu_sphere s, ray r, float t_min, float t_max, out float t) {
   t = 0.0;
   vec3 oc = r.origin - s.center;
@@ -26,7 +27,7 @@ bool hit_distance(gpu_sphere s, ray r, float t_min, float t_max, out float t) {
   return true;
 }
 
-// Mirrors sphere::record_hit.
+// Mirrors record_hit(sphere, ...).
 void record_hit(gpu_sphere s, ray r, float t, inout hit_record rec) {
   rec.t = t;
   rec.p = ray_at(r, t);
@@ -36,7 +37,8 @@ void record_hit(gpu_sphere s, ray r, float t, inout hit_record rec) {
   rec.offset = (extent + s.radius) * (1.0 / 1048576.0);  // 2^-20, as on the host
 }
 
-// Mirrors safe_inverse in host/bvh.cpp: no zero components, so no 0 * infinity in the slab test.
+// Mirrors safe_inverse in host/accel/bvh.h: no zero components, so no 0 * infinity in the slab
+// test.
 vec3 safe_inverse(vec3 d) {
   vec3 c = vec3(abs(d.x) < 1e-20 ? (d.x < 0.0 ? -1e-20 : 1e-20) : d.x,
                 abs(d.y) < 1e-20 ? (d.y < 0.0 ? -1e-20 : 1e-20) : d.y,
@@ -44,11 +46,11 @@ vec3 safe_inverse(vec3 d) {
   return 1.0 / c;
 }
 
-// Mirrors origin_margin in host/bvh.h: how far float rounding can misplace a ray from o.
+// Mirrors origin_margin in host/accel/bvh.h: how far float rounding can misplace a ray from o.
 float origin_margin(vec3 o) { return max(max(abs(o.x), abs(o.y)), abs(o.z)) * (1.0 / 1048576.0); }
 
-// Mirrors ray_box_entry in host/bvh.h: the entry distance into the box grown by `margin`, or -1
-// to cull.
+// Mirrors ray_box_entry in host/accel/bvh.h: the entry distance into the box grown by `margin`,
+// or -1 to cull.
 float ray_box_entry(vec3 o, vec3 inv_d, bvh_node n, float t_min, float t_max, float margin) {
   vec3 t0 = (n.bounds_min - margin - o) * inv_d;
   vec3 t1 = (n.bounds_max + margin - o) * inv_d;

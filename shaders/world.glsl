@@ -1,11 +1,12 @@
-// Mirrors bvh::hit (host/bvh.cpp) and hittable_list::hit. Expects `spheres` (gpu_sphere[]),
-// `bvh_nodes`, `bvh_index` and `pc` (render_push) declared by the including shader.
+// Mirrors bvh_world::hit (host/cpu/bvh_world.cpp) and hittable_list::hit. Expects `spheres`
+// (gpu_sphere[]), `bvh_nodes`, `bvh_index` and `pc` (render_push) declared by the including
+// shader.
 #ifndef RTVK_WORLD_GLSL
 #define RTVK_WORLD_GLSL
 #include "sphere.glsl"
 
-// Mirrors bvh::hit: the same nodes, the same order, ties to the later sphere, the record filled
-// once for the winner. Every node visit and sphere test counts against the loop budget.
+// Mirrors bvh_world::hit: the same nodes, the same order, ties to the later sphere, the record
+// filled once for the winner. Every node visit and sphere test counts against the loop budget.
 bool hit_bvh(ray r, float t_min, float t_max, inout hit_record rec, inout uint iterations) {
   if (pc.sphere_count == 0u) return false;
   vec3 o = r.origin;
@@ -63,7 +64,7 @@ bool hit_bvh(ray r, float t_min, float t_max, inout hit_record rec, inout uint i
   return true;
 }
 
-// The closest hit over every sphere, as hittable_list::hit (or, with pc.use_bvh, as bvh::hit).
+// The closest hit over every sphere, as hittable_list::hit (or, with pc.use_bvh, as bvh_world::hit).
 // Each iteration counts against the loop budget; over budget, the search stops and `iterations`
 // tells the caller.
 bool hit_world(ray r, float t_min, float t_max, inout hit_record rec, inout uint iterations) {

@@ -13,7 +13,7 @@
 #include "context.h"
 #include "errors.h"
 #include "interrupt.h"
-#include "memory_check.h"
+#include "render_memory.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "scene_file.h"

@@ -5,7 +5,7 @@
 
 #include "commands.h"
 #include "image_io.h"
-#include "memory_check.h"
+#include "render_memory.h"
 #include "merge.h"
 #include "partial_image.h"
 #include "quantize.h"

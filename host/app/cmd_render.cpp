@@ -16,7 +16,7 @@
 #include "image_compare.h"
 #include "image_io.h"
 #include "interrupt.h"
-#include "memory_check.h"
+#include "render_memory.h"
 #include "partial_image.h"
 #include "progress.h"
 #include "quantize.h"

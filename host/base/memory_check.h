@@ -6,13 +6,4 @@ namespace rtvk {
 // Bytes of memory the system can still hand out (MemAvailable), or 0 when unknown.
 std::uint64_t available_memory_bytes();
 
-// Host memory a render of width x height needs: the double framebuffer (24 bytes a pixel), the
-// 8-bit image (3) and its encoded copy (up to 4 for P3's text), times `renders`, plus the GPU's
-// readback band.
-std::uint64_t render_memory_bytes(int width, int height, int renders);
-
-// Refuses, before any work, a render that cannot fit: throws usage_error naming the size and the
-// memory it needs and the memory available.
-void check_render_memory(int width, int height, int renders);
-
 }  // namespace rtvk

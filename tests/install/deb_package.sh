@@ -20,13 +20,13 @@ entries() { field "$1" | tr ',' '\n' | sed -E 's/\(.*\)//; s/^ +//; s/ +$//'; }
 
 [[ $(field Package) == rtvk ]] || fail "Package is not rtvk"
 [[ $(field Section) == graphics ]] || fail "Section is not graphics"
-entries Depends | grep -qx libvulkan1 || fail "Depends lacks libvulkan1"
+grep -qx libvulkan1 <<<"$(entries Depends)" || fail "Depends lacks libvulkan1"
 # dpkg-shlibdeps ran: the libraries rtvk links (libc, libstdc++, OpenEXR) are in Depends.
 for lib in libc6 'libstdc\+\+6' 'libopenexr.*'; do
-  entries Depends | grep -Eqx "$lib" || fail "Depends lacks $lib (dpkg-shlibdeps did not run?)"
+  grep -Eqx "$lib" <<<"$(entries Depends)" || fail "Depends lacks $lib (dpkg-shlibdeps did not run?)"
 done
-entries Recommends | grep -qx mesa-vulkan-drivers || fail "Recommends lacks mesa-vulkan-drivers"
-entries Suggests | grep -qx vulkan-validationlayers || fail "Suggests lacks vulkan-validationlayers"
+grep -qx mesa-vulkan-drivers <<<"$(entries Recommends)" || fail "Recommends lacks mesa-vulkan-drivers"
+grep -qx vulkan-validationlayers <<<"$(entries Suggests)" || fail "Suggests lacks vulkan-validationlayers"
 
 dpkg-deb -c "$deb" | awk '{ print $6 }' >"$tmp/files"
 for f in ./usr/bin/rtvk ./usr/share/man/man1/rtvk.1.gz ./usr/share/bash-completion/completions/rtvk \

@@ -5,6 +5,10 @@
 #   gen-man.sh RTVK_EXECUTABLE RTVK_H2M OUTPUT.1.gz
 set -euo pipefail
 rtvk=$1 h2m=$2 out=$3
+# help2man dates the page; the last commit's date (when there is one) makes builds reproducible.
+if [[ -z ${SOURCE_DATE_EPOCH:-} ]] && date=$(git -C "$(dirname "$h2m")" log -1 --format=%ct 2>/dev/null); then
+  export SOURCE_DATE_EPOCH=$date
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

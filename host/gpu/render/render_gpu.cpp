@@ -60,8 +60,9 @@ struct work_layout {
 work_layout plan_work(const device_info& dev, const gpu_render_options& options,
                       const render_window& win, std::size_t views) {
   const VkDeviceSize row_bytes = VkDeviceSize(win.width) * 3 * sizeof(float);
-  const VkDeviceSize limit = std::min<VkDeviceSize>(
-      dev.limits.maxStorageBufferRange, options.band_bytes ? options.band_bytes : 64u << 20);
+  const VkDeviceSize limit =
+      std::min<VkDeviceSize>(dev.limits.maxStorageBufferRange,
+                             options.band_bytes ? options.band_bytes : default_band_bytes);
   const VkDeviceSize view_bytes = row_bytes * VkDeviceSize(win.height);
   if (view_bytes <= limit) {
     const VkDeviceSize fit = std::min<VkDeviceSize>(limit / view_bytes, RTVK_MAX_VIEWS);

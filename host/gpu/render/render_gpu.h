@@ -24,12 +24,15 @@ class loop_budget_error : public std::runtime_error {
 // stops first, at 60,000, and reports it; other devices have no such cap.
 std::uint32_t default_loop_budget(const device_info& d);
 
+// The largest accumulation buffer a render allocates unless told otherwise (or the device's
+// storage buffer limit, if smaller), bytes.
+inline constexpr std::uint64_t default_band_bytes = 64u << 20;
+
 // How the GPU does the work: the backend-neutral options plus what only the GPU has.
 struct gpu_render_options {
   engine_options engine;          // BVH or not, ray counting, cancellation
   std::uint32_t loop_budget = 0;  // most loop iterations per invocation; 0: the device's
-  std::uint64_t band_bytes = 0;   // largest accumulation buffer; 0: 64 MiB (or the device's
-                                  // storage buffer limit, if smaller)
+  std::uint64_t band_bytes = 0;   // largest accumulation buffer; 0: default_band_bytes
 };
 
 // Called with the number of samples per pixel finished so far; may be empty.
