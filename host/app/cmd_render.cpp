@@ -13,16 +13,17 @@
 #include "context.h"
 #include "errors.h"
 #include "format.h"
+#include "gpu_engine.h"
 #include "image_compare.h"
 #include "image_io.h"
 #include "interrupt.h"
-#include "render_memory.h"
 #include "partial_image.h"
 #include "progress.h"
 #include "quantize.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "render_jobs.h"
+#include "render_memory.h"
 #include "scene.h"
 #include "scene_file.h"
 #include "scene_flags.h"
@@ -132,15 +133,14 @@ framebuffer draw_cpu(const run_context& run, const render_job& job) {
       engine_from(run.o));
 }
 
-// One set-up and shared submissions for a group of views (cameras, frames).
+// Shared submissions for a group of views (cameras, frames) of the run's one engine.
 std::vector<framebuffer> draw_gpu(const run_context& run, gpu::gpu_context& ctx,
-                                  std::span<const render_job> jobs) {
+                                  gpu::gpu_engine& engine, std::span<const render_job> jobs) {
   progress_bar bar("rendering on the GPU", run.win.samples(), !run.o.quiet);
   std::vector<camera> views;
   for (const render_job& j : jobs) views.push_back(j.cam);
-  std::vector<framebuffer> fbs = gpu::render_gpu_views(ctx, views, run.s, run.s.render, run.win,
-                                                       [&](int samples) { bar.update(samples); },
-                                                       {.engine = engine_from(run.o)});
+  std::vector<framebuffer> fbs =
+      engine.render_views(views, run.s.render, run.win, [&](int samples) { bar.update(samples); });
   bar.finish();
   if (ctx.validation_messages() > 0)
     throw std::runtime_error("the Vulkan validation layer reported " +
@@ -186,12 +186,14 @@ int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
                   const std::vector<render_job>& jobs) {
   const std::string backend = "gpu (" + ctx.device().name + ")";
   const std::size_t group = gpu_group_size(run.win);
+  // Set up once (scene buffers, BVH, pipeline) for every group of the run.
+  gpu::gpu_engine engine(ctx, run.s, {.engine = engine_from(run.o)});
   bool all_alike = true;
   for (std::size_t first = 0; first < jobs.size(); first += group) {
     const std::span<const render_job> part(jobs.data() + first,
                                            std::min(group, jobs.size() - first));
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<framebuffer> fbs = draw_gpu(run, ctx, part);
+    const std::vector<framebuffer> fbs = draw_gpu(run, ctx, engine, part);
     const double seconds = seconds_since(start);
     for (std::size_t k = 0; k < part.size(); ++k) {
       if (run.o.backend == "both") all_alike &= check_against_cpu(run, part[k], fbs[k]);

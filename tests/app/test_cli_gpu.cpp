@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "gpu_fixture.h"
 #include "image_io.h"
@@ -143,6 +144,31 @@ TEST(CliCompare, TroubleAndSizeMismatch) {
   std::ofstream(fake_png) << "not a png";
   EXPECT_EQ(run_rtvk({"compare", a, fake_png}).status, 2);
   EXPECT_EQ(run_rtvk({"compare", a, a, "--tolerance", "300"}).status, 2);
+}
+
+TEST_F(CliGpu, BenchSetsTheEngineUpOnceAndReportsTheTimeToTheFirstSample) {
+  test::temp_dir dir;
+  const auto json = (dir.path() / "bench.json").string();
+  const auto r = run_rtvk(
+      gpu_args({"bench", "--scene", "seed", "--width", "32", "--repeat", "2", "--json", json}));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("set-up"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("first sample after"), std::string::npos) << r.out;
+  const nlohmann::json records = nlohmann::json::parse(test::slurp(json));
+  int gpu_records = 0;
+  for (const auto& rec : records) {
+    if (rec["backend"] == "cpu") {  // set up with every render: no separate figures
+      EXPECT_TRUE(rec["setup_seconds"].is_null()) << rec.dump();
+      EXPECT_TRUE(rec["first_sample_seconds"].is_null()) << rec.dump();
+      continue;
+    }
+    ++gpu_records;
+    const double setup = rec["setup_seconds"], first = rec["first_sample_seconds"];
+    EXPECT_GT(setup, 0) << rec.dump();
+    EXPECT_GT(first, setup) << "the first sample comes after the set-up: " << rec.dump();
+    EXPECT_EQ(rec["rays"], 576) << "one ray per pixel of 32 x 18: " << rec.dump();
+  }
+  EXPECT_EQ(gpu_records, 2);
 }
 
 }  // namespace

@@ -132,6 +132,10 @@ compute_pipeline::~compute_pipeline() {
   }
 }
 
+void compute_pipeline::rebind(const std::vector<buffer_binding>& bindings) {
+  write_bindings(ctx_.vk(), set_, bindings);
+}
+
 void compute_pipeline::bind(VkCommandBuffer cb) const {
   vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
   vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &set_, 0,

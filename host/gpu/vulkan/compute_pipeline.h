@@ -26,6 +26,10 @@ class compute_pipeline {
   compute_pipeline(const compute_pipeline&) = delete;
   compute_pipeline& operator=(const compute_pipeline&) = delete;
 
+  // Points the descriptor set at other buffers (same bindings, same types). Only while no
+  // submission that uses the set is in flight.
+  void rebind(const std::vector<buffer_binding>& bindings);
+
   // Binds the pipeline and its descriptor set.
   void bind(VkCommandBuffer cb) const;
   void push(VkCommandBuffer cb, const void* data, std::uint32_t bytes) const;

@@ -1,0 +1,90 @@
+// One GPU engine per run: the scene is set up once and serves every view, window, sample range
+// and settings a run asks for, each image bit for bit what a fresh set-up gives.
+#include <gtest/gtest.h>
+
+#include "gpu_engine.h"
+#include "gpu_fixture.h"
+#include "render_helpers.h"
+
+namespace rtvk {
+namespace {
+
+class GpuEngine : public test::GpuTest {};
+
+bool same_pixels(const framebuffer& a, const framebuffer& b) {
+  if (a.width() != b.width() || a.height() != b.height()) return false;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      if (a.at(x, y) != b.at(x, y)) return false;
+  return true;
+}
+
+TEST_F(GpuEngine, OneSetUpServesEveryRenderOfARunAsFreshSetUpsWould) {
+  scene s = test::small_scene("book-final", 48, 3);
+  s.render.max_depth = 8;
+  const camera book = test::scene_camera(s);
+  camera_pose side_pose = main_camera(s).pose;
+  side_pose.lookfrom = point3(-8, 3, 6);
+  const camera side(side_pose, s.render.aspect, s.render.width);
+  const int w = book.image_width(), h = book.image_height();
+  render_settings other_seed = s.render;
+  other_seed.seed = 7;
+  other_seed.jitter = !other_seed.jitter;
+  struct request {
+    std::vector<camera> views;
+    render_settings rs;
+    render_window win;
+  };
+  // Small, then larger (the targets grow), more views, a region, a sample range, other settings.
+  const std::vector<request> requests{
+      {{book}, s.render, {0, 0, 8, 4, 0, 2}},          {{book}, s.render, whole_render(w, h, 3)},
+      {{book, side}, s.render, whole_render(w, h, 3)}, {{side}, s.render, {5, 3, 20, 9, 1, 3}},
+      {{book}, other_seed, whole_render(w, h, 2)},
+  };
+  gpu::gpu_engine engine(gpu(), s);
+  EXPECT_GT(engine.setup_seconds(), 0);
+  for (std::size_t k = 0; k < requests.size(); ++k) {
+    const request& q = requests[k];
+    render_stats st;
+    const auto got = engine.render_views(q.views, q.rs, q.win, {}, &st);
+    const auto want = gpu::render_gpu_views(gpu(), q.views, s, q.rs, q.win);
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t v = 0; v < got.size(); ++v)
+      EXPECT_TRUE(same_pixels(got[v], want[v])) << "request " << k << ", view " << v;
+    EXPECT_GE(st.submissions, 1) << "request " << k;
+  }
+  // The guard: the requests really draw different pictures.
+  const auto a = engine.render_views({book}, s.render, whole_render(w, h, 3));
+  const auto b = engine.render_views({side}, s.render, whole_render(w, h, 3));
+  EXPECT_FALSE(same_pixels(a[0], b[0]));
+}
+
+// The camera inside a closed grey sphere: no path escapes, so a path runs to its depth and its
+// loop iterations grow with it (one for the bounce, one for the sphere test).
+scene inside_a_sphere() {
+  scene s;
+  s.name = "inside";
+  s.materials = {{"grey", material{material_type::lambertian, color(0.5), 0, 1.5}}};
+  s.spheres = {sphere(point3(0, 0, 0), 10, 0)};
+  s.render.width = 2;
+  s.render.aspect = 1;
+  return s;
+}
+
+TEST_F(GpuEngine, AnOverrunInOneRenderDoesNotFailTheNext) {
+  const scene s = inside_a_sphere();
+  const camera cam = test::scene_camera(s);
+  gpu::gpu_engine engine(gpu(), s, {.engine = {.use_bvh = false}, .loop_budget = 20});
+  render_settings deep = s.render;
+  deep.max_depth = 50;
+  EXPECT_THROW(engine.render_views({cam}, deep, whole_render(2, 2, 1)), gpu::loop_budget_error);
+  render_settings shallow = s.render;
+  shallow.max_depth = 2;  // a handful of iterations: within the budget
+  const auto fbs = engine.render_views({cam}, shallow, whole_render(2, 2, 1));
+  const auto fresh = gpu::render_gpu_views(gpu(), {cam}, s, shallow, whole_render(2, 2, 1), {},
+                                           {.engine = {.use_bvh = false}, .loop_budget = 20});
+  EXPECT_TRUE(same_pixels(fbs[0], fresh[0]));
+}
+
+}  // namespace
+}  // namespace rtvk
