@@ -19,6 +19,8 @@ struct render_stats {
   std::uint64_t rays = 0;    // rays traced: camera rays plus scattered rays
   double build_seconds = 0;  // of the render's time, building the BVH
   int submissions = 0;       // GPU: command buffers submitted (all views of a group share each)
+  double gpu_seconds = 0;    // GPU: device time of those submissions (timestamp queries); 0 when
+                             // the device's queue has no timestamps
 };
 
 }  // namespace rtvk

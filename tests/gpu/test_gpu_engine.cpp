@@ -2,6 +2,8 @@
 // and settings a run asks for, each image bit for bit what a fresh set-up gives.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include "gpu_engine.h"
 #include "gpu_fixture.h"
 #include "render_helpers.h"
@@ -57,6 +59,27 @@ TEST_F(GpuEngine, OneSetUpServesEveryRenderOfARunAsFreshSetUpsWould) {
   const auto a = engine.render_views({book}, s.render, whole_render(w, h, 3));
   const auto b = engine.render_views({side}, s.render, whole_render(w, h, 3));
   EXPECT_FALSE(same_pixels(a[0], b[0]));
+}
+
+TEST_F(GpuEngine, DeviceTimeIsMeasuredWithinTheRendersOwnTime) {
+  const scene s = test::small_scene("materials", 64, 4);
+  const camera cam = test::scene_camera(s);
+  gpu::gpu_engine engine(gpu(), s);
+  render_stats st;
+  const auto start = std::chrono::steady_clock::now();
+  engine.render_views({cam}, s.render, whole_render(cam.image_width(), cam.image_height(), 4), {},
+                      &st);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (gpu().device().driver_name == "llvmpipe") {  // lavapipe's queue has timestamps
+    EXPECT_GT(gpu().device().timestamp_valid_bits, 0u);
+  }
+  if (gpu().device().timestamp_valid_bits == 0) {
+    EXPECT_EQ(st.gpu_seconds, 0);
+    return;
+  }
+  EXPECT_GT(st.gpu_seconds, 0);
+  EXPECT_LE(st.gpu_seconds, wall) << "device time is part of the render's wall time";
 }
 
 // The camera inside a closed grey sphere: no path escapes, so a path runs to its depth and its

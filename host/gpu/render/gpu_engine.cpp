@@ -142,11 +142,13 @@ class band_renderer {
   // `drawn` (some band was drawn before) and `batch` (samples per submission) are the engine's:
   // they carry over from one render to the next.
   band_renderer(gpu_context& ctx, render_targets& targets, const compute_pipeline& pipeline,
-                const render_push& push, std::array<std::uint32_t, 2> wg, const render_window& win,
-                const gpu_render_options& options, bool& drawn, int& batch)
+                const device_timer& timer, const render_push& push, std::array<std::uint32_t, 2> wg,
+                const render_window& win, const gpu_render_options& options, bool& drawn,
+                int& batch)
       : ctx_(ctx),
         targets_(targets),
         pipeline_(pipeline),
+        timer_(timer),
         push_(push),
         wg_(wg),
         win_(win),
@@ -168,7 +170,10 @@ class band_renderer {
       ctx_.submit_and_wait(
           [&](VkCommandBuffer cb) { record(cb, b, done, count, done + count == samples); });
       drawn_ = true;
-      if (stats) ++stats->submissions;
+      if (stats) {
+        ++stats->submissions;
+        stats->gpu_seconds += timer_.seconds();
+      }
       check_overrun(*static_cast<const render_status*>(targets_.status.read()), push_.loop_budget,
                     ctx_.device());
       done += count;
@@ -219,6 +224,7 @@ class band_renderer {
 
   // One submission: `count` samples from sample `done` of the band, one dispatch each.
   void record(VkCommandBuffer cb, const band_pass& b, int done, int count, bool last) {
+    timer_.record_begin(cb);
     if (done == 0) {
       record_start(cb, b.group == 0 && b.band == 0);
     } else {  // the previous submission's samples are in the sums this one adds to
@@ -235,11 +241,13 @@ class band_renderer {
     if (last) record_readback(cb, b.views);
     barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
+    timer_.record_end(cb);
   }
 
   gpu_context& ctx_;
   render_targets& targets_;
   const compute_pipeline& pipeline_;
+  const device_timer& timer_;
   render_push push_;                   // band and sample fields change per pass
   std::array<std::uint32_t, 2> wg_;    // workgroup size
   const render_window& win_;           // region and sample range of every view
@@ -283,7 +291,8 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
                                 "--scene " + s.name),
               gpu_scene(ctx, s, options.engine.use_bvh))),
       targets_(std::make_unique<render_targets>(ctx, 12, 4)),
-      pipeline_(ctx, render_shader(), bindings(scene_, *targets_), sizeof(render_push), wg_) {
+      pipeline_(ctx, render_shader(), bindings(scene_, *targets_), sizeof(render_push), wg_),
+      timer_(ctx) {
   upload();
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
@@ -324,7 +333,7 @@ std::vector<framebuffer> gpu_engine::render_views(const std::vector<camera>& vie
                                         count_rays ? group_pixels * sizeof(std::uint32_t) : 4);
   // The BVH's build is the first render's: later ones reuse it.
   if (stats) *stats = render_stats{.build_seconds = drawn_ ? 0.0 : build_seconds()};
-  band_renderer bands(ctx_, targets, pipeline_,
+  band_renderer bands(ctx_, targets, pipeline_, timer_,
                       make_push(sky_, rs, win, options_, dev, count_rays, scene_.sphere_count()),
                       wg_, win, options_, drawn_, batch_);
 

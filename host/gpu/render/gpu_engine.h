@@ -9,6 +9,7 @@
 #include "compute_pipeline.h"
 #include "context.h"
 #include "device_fit.h"
+#include "device_timer.h"
 #include "framebuffer.h"
 #include "gpu_scene.h"
 #include "render_gpu.h"
@@ -52,6 +53,7 @@ class gpu_engine {
   gpu_scene scene_;                            // uploaded once
   std::unique_ptr<render_targets> targets_;    // grown on demand
   compute_pipeline pipeline_;                  // bound to scene_ and *targets_
+  device_timer timer_;                         // device time of each submission
   bool drawn_ = false;                         // some band was drawn before
   int batch_ = 1;                              // samples per submission, grows to 256
   double setup_seconds_ = 0;                   // the constructor took

@@ -67,8 +67,10 @@ device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
     d.unusable_reason = "supports only Vulkan " + version_string(props.apiVersion);
   else if (compute == families.end())
     d.unusable_reason = "has no compute queue";
-  else
+  else {
     d.compute_queue_family = std::uint32_t(compute - families.begin());
+    d.timestamp_valid_bits = compute->timestampValidBits;
+  }
   return d;
 }
 

@@ -20,6 +20,7 @@ struct device_info {
   std::uint32_t driver_version = 0;        // vendor-encoded
   std::uint32_t api_version = 0;           // highest Vulkan version the device supports
   std::uint32_t compute_queue_family = 0;  // first family with compute, when usable
+  std::uint32_t timestamp_valid_bits = 0;  // of that family's timestamps; 0: it has none
   std::uint32_t subgroup_size = 1;         // invocations that run in lockstep (a warp, a wave)
   std::string unusable_reason;             // empty when rtvk can render on it
   VkPhysicalDeviceLimits limits{};         // for workgroup and buffer sizes

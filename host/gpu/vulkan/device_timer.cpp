@@ -1,0 +1,51 @@
+#include "device_timer.h"
+
+#include "vk_error.h"
+
+namespace rtvk::gpu {
+namespace {
+
+unique_query_pool make_pool(const gpu_context& ctx) {
+  if (ctx.device().timestamp_valid_bits == 0) return {};
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  info.queryCount = 2;
+  VkQueryPool pool = VK_NULL_HANDLE;
+  vk_check(vkCreateQueryPool(ctx.vk(), &info, nullptr, &pool), "vkCreateQueryPool");
+  return unique_query_pool(ctx.vk(), pool);
+}
+
+}  // namespace
+
+device_timer::device_timer(const gpu_context& ctx)
+    : ctx_(ctx),
+      period_ns_(ctx.device().limits.timestampPeriod),
+      mask_(ctx.device().timestamp_valid_bits >= 64
+                ? ~std::uint64_t(0)
+                : (std::uint64_t(1) << ctx.device().timestamp_valid_bits) - 1),
+      pool_(make_pool(ctx)) {}
+
+device_timer::~device_timer() {
+  if (ctx_.lost()) pool_.release();  // a hung device may still write to it
+}
+
+void device_timer::record_begin(VkCommandBuffer cb) const {
+  if (!available()) return;
+  vkCmdResetQueryPool(cb, pool_.get(), 0, 2);
+  vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_.get(), 0);
+}
+
+void device_timer::record_end(VkCommandBuffer cb) const {
+  if (available()) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_.get(), 1);
+}
+
+double device_timer::seconds() const {
+  if (!available()) return 0;
+  std::uint64_t ticks[2] = {0, 0};
+  vk_check(vkGetQueryPoolResults(ctx_.vk(), pool_.get(), 0, 2, sizeof ticks, ticks, sizeof ticks[0],
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+           "vkGetQueryPoolResults");
+  return double((ticks[1] - ticks[0]) & mask_) * period_ns_ * 1e-9;
+}
+
+}  // namespace rtvk::gpu
