@@ -5,24 +5,25 @@
 #include "random.glsl"
 #include "ray.glsl"
 
-vec3 reflect_dir(vec3 v, vec3 n) { return v - 2.0 * dot(v, n) * n; }
+precise vec3 reflect_dir(vec3 v, vec3 n) { return v - 2.0 * dot3(v, n) * n; }
 
-vec3 refract_dir(vec3 uv, vec3 n, float etai_over_etat) {
-  float cos_theta = min(dot(-uv, n), 1.0);
-  vec3 r_out_perp = etai_over_etat * (uv + cos_theta * n);
-  vec3 r_out_parallel = -sqrt(abs(1.0 - dot(r_out_perp, r_out_perp))) * n;
+precise vec3 refract_dir(vec3 uv, vec3 n, float etai_over_etat) {
+  precise float cos_theta = min(dot3(-uv, n), 1.0);
+  precise vec3 r_out_perp = etai_over_etat * (uv + cos_theta * n);
+  precise vec3 r_out_parallel = -sqrt(abs(1.0 - dot3(r_out_perp, r_out_perp))) * n;
   return r_out_perp + r_out_parallel;
 }
 
-float schlick_reflectance(float cosine, float ref_idx) {
-  float r0 = (1.0 - ref_idx) / (1.0 + ref_idx);
+precise float schlick_reflectance(float cosine, float ref_idx) {
+  precise float r0 = (1.0 - ref_idx) / (1.0 + ref_idx);
   r0 = r0 * r0;
   return r0 + (1.0 - r0) * pow(1.0 - cosine, 5.0);
 }
 
-bool scatter_lambertian(gpu_material m, hit_record rec, random_stream s, out vec3 attenuation,
-                        out ray scattered) {
-  vec3 direction = rec.normal + random_unit_vector(rnd(s, dim_direction_a), rnd(s, dim_direction_b));
+bool scatter_lambertian(gpu_material m, hit_record rec, random_stream s,
+                        precise out vec3 attenuation, precise out ray scattered) {
+  precise vec3 direction =
+      rec.normal + random_unit_vector(rnd(s, dim_direction_a), rnd(s, dim_direction_b));
   const float e = 1e-8;
   if (abs(direction.x) < e && abs(direction.y) < e && abs(direction.z) < e) direction = rec.normal;
   scattered = ray(scatter_origin(rec, direction), direction);
@@ -31,25 +32,26 @@ bool scatter_lambertian(gpu_material m, hit_record rec, random_stream s, out vec
 }
 
 bool scatter_metal(gpu_material m, ray r_in, hit_record rec, random_stream s,
-                   out vec3 attenuation, out ray scattered) {
-  vec3 reflected = reflect_dir(unit_vector(r_in.direction), rec.normal);
-  vec3 fuzz = random_in_unit_sphere(rnd(s, dim_direction_a), rnd(s, dim_direction_b),
+                   precise out vec3 attenuation, precise out ray scattered) {
+  precise vec3 reflected = reflect_dir(unit_vector(r_in.direction), rec.normal);
+  precise vec3 fuzz = random_in_unit_sphere(rnd(s, dim_direction_a), rnd(s, dim_direction_b),
                                     rnd(s, dim_fuzz_radius));
-  vec3 direction = reflected + m.fuzz * fuzz;
+  precise vec3 direction = reflected + m.fuzz * fuzz;
   scattered = ray(scatter_origin(rec, direction), direction);
   attenuation = m.albedo;
-  return dot(scattered.direction, rec.normal) > 0.0;
+  precise float facing = dot3(scattered.direction, rec.normal);
+  return facing > 0.0;
 }
 
 bool scatter_dielectric(gpu_material m, ray r_in, hit_record rec, random_stream s,
-                        out vec3 attenuation, out ray scattered) {
+                        precise out vec3 attenuation, precise out ray scattered) {
   attenuation = vec3(1.0, 1.0, 1.0);
-  float refraction_ratio = rec.front_face ? (1.0 / m.ir) : m.ir;
-  vec3 unit_direction = unit_vector(r_in.direction);
-  float cos_theta = min(dot(-unit_direction, rec.normal), 1.0);
-  float sin_theta = sqrt(1.0 - cos_theta * cos_theta);
+  precise float refraction_ratio = rec.front_face ? (1.0 / m.ir) : m.ir;
+  precise vec3 unit_direction = unit_vector(r_in.direction);
+  precise float cos_theta = min(dot3(-unit_direction, rec.normal), 1.0);
+  precise float sin_theta = sqrt(1.0 - cos_theta * cos_theta);
   bool cannot_refract = refraction_ratio * sin_theta > 1.0;
-  vec3 direction =
+  precise vec3 direction =
       cannot_refract || schlick_reflectance(cos_theta, refraction_ratio) > rnd(s, dim_choice)
           ? reflect_dir(unit_direction, rec.normal)
           : refract_dir(unit_direction, rec.normal, refraction_ratio);
@@ -57,8 +59,8 @@ bool scatter_dielectric(gpu_material m, ray r_in, hit_record rec, random_stream 
   return true;
 }
 
-bool scatter(gpu_material m, ray r_in, hit_record rec, random_stream s, out vec3 attenuation,
-             out ray scattered) {
+bool scatter(gpu_material m, ray r_in, hit_record rec, random_stream s,
+             precise out vec3 attenuation, precise out ray scattered) {
   attenuation = vec3(0.0);
   scattered = r_in;
   if (m.type == RTVK_MATERIAL_LAMBERTIAN)

@@ -28,7 +28,7 @@ uint random_bits(uint seed, uint pixel, uint sample_index, uint bounce, uint dim
   return hash32(h ^ ((bounce << 4) | dim));
 }
 
-float random_float(uint seed, uint pixel, uint sample_index, uint bounce, uint dim) {
+precise float random_float(uint seed, uint pixel, uint sample_index, uint bounce, uint dim) {
   return float(random_bits(seed, pixel, sample_index, bounce, dim) >> 8) * (1.0 / 16777216.0);
 }
 
@@ -40,7 +40,7 @@ struct random_stream {
   uint bounce;
 };
 
-float rnd(random_stream s, uint dim) {
+precise float rnd(random_stream s, uint dim) {
   return random_float(s.seed, s.pixel, s.sample_index, s.bounce, dim);
 }
 
@@ -50,20 +50,20 @@ random_stream at_bounce(random_stream s, uint b) {
 
 const float pi = 3.1415926535897932385;
 
-vec3 random_unit_vector(float a, float b) {
-  float z = 1.0 - 2.0 * a;
-  float r = sqrt(max(0.0, 1.0 - z * z));
-  float phi = 2.0 * pi * b;
+precise vec3 random_unit_vector(float a, float b) {
+  precise float z = 1.0 - 2.0 * a;
+  precise float r = sqrt(max(0.0, 1.0 - z * z));
+  precise float phi = 2.0 * pi * b;
   return vec3(r * cos(phi), r * sin(phi), z);
 }
 
-vec3 random_in_unit_sphere(float a, float b, float c) {
+precise vec3 random_in_unit_sphere(float a, float b, float c) {
   return pow(c, 1.0 / 3.0) * random_unit_vector(a, b);
 }
 
-vec2 random_in_unit_disk(float a, float b) {
-  float r = sqrt(a);
-  float theta = 2.0 * pi * b;
+precise vec2 random_in_unit_disk(float a, float b) {
+  precise float r = sqrt(a);
+  precise float theta = 2.0 * pi * b;
   return vec2(r * cos(theta), r * sin(theta));
 }
 

@@ -43,15 +43,15 @@ void main() {
 
   uint j = cam.image_height - 1u - pixel.y;  // the lesson counts rows from the bottom
   random_stream s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, pc.sample_index, 0u);
-  float u = pixel_coordinate(pc.jitter != 0u ? float(pixel.x) + rnd(s, dim_jitter_u) : float(pixel.x),
-                             cam.image_width);
-  float v = pixel_coordinate(pc.jitter != 0u ? float(j) + rnd(s, dim_jitter_v) : float(j),
-                             cam.image_height);
-  vec2 lens = cam.lens_radius > 0.0 ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b))
-                                    : vec2(0.0);
+  precise float x = pc.jitter != 0u ? float(pixel.x) + rnd(s, dim_jitter_u) : float(pixel.x);
+  precise float y = pc.jitter != 0u ? float(j) + rnd(s, dim_jitter_v) : float(j);
+  precise float u = pixel_coordinate(x, cam.image_width);
+  precise float v = pixel_coordinate(y, cam.image_height);
+  precise vec2 lens =
+      cam.lens_radius > 0.0 ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b)) : vec2(0.0);
   uint iterations = 0u;
   uint rays = 0u;
-  vec3 c = ray_color(get_ray(cam, u, v, lens), s, iterations, rays);
+  precise vec3 c = ray_color(get_ray(cam, u, v, lens), s, iterations, rays);
   if (iterations > pc.loop_budget) {
     atomicAdd(status.overrun_pixels, 1u);  // the host fails the render rather than show this
     return;
@@ -61,7 +61,8 @@ void main() {
   uint index = (view * pc.band_rows + gl_GlobalInvocationID.y) * pc.region_width + gl_GlobalInvocationID.x;
   if (pc.count_rays != 0u) ray_count[index] += rays;
   uint base = 3u * index;
-  rgb[base + 0u] += c.r;
-  rgb[base + 1u] += c.g;
-  rgb[base + 2u] += c.b;
+  precise vec3 sum = vec3(rgb[base + 0u], rgb[base + 1u], rgb[base + 2u]) + c;
+  rgb[base + 0u] = sum.r;
+  rgb[base + 1u] = sum.g;
+  rgb[base + 2u] = sum.b;
 }
