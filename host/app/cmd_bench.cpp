@@ -14,6 +14,7 @@
 #include "errors.h"
 #include "gpu_engine.h"
 #include "interrupt.h"
+#include "pipeline_cache.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "render_memory.h"
@@ -154,7 +155,8 @@ void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const 
              (d.driver_info.empty() ? "" : " (" + d.driver_info + ")");
   // The engine is set up once, as a run of `rtvk render` does; the timed renders reuse it.
   const auto start = std::chrono::steady_clock::now();
-  gpu::gpu_engine gpu_scene(*ctx, s, {.engine = engine});
+  gpu::gpu_engine gpu_scene(
+      *ctx, s, {.engine = engine, .pipeline_cache_folder = gpu::default_cache_folder()});
   b.setup_seconds = gpu_scene.setup_seconds();
   b.gpu_seconds = 0;
   b.build_seconds = gpu_scene.build_seconds();

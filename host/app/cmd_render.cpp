@@ -18,6 +18,7 @@
 #include "image_io.h"
 #include "interrupt.h"
 #include "partial_image.h"
+#include "pipeline_cache.h"
 #include "progress.h"
 #include "quantize.h"
 #include "render_cpu.h"
@@ -187,7 +188,9 @@ int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
   const std::string backend = "gpu (" + ctx.device().name + ")";
   const std::size_t group = gpu_group_size(run.win);
   // Set up once (scene buffers, BVH, pipeline) for every group of the run.
-  gpu::gpu_engine engine(ctx, run.s, {.engine = engine_from(run.o)});
+  gpu::gpu_engine engine(
+      ctx, run.s,
+      {.engine = engine_from(run.o), .pipeline_cache_folder = gpu::default_cache_folder()});
   bool all_alike = true;
   for (std::size_t first = 0; first < jobs.size(); first += group) {
     const std::span<const render_job> part(jobs.data() + first,

@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <fstream>
 
 #include "gpu_engine.h"
 #include "gpu_fixture.h"
 #include "render_helpers.h"
+#include "temp_dir.h"
 
 namespace rtvk {
 namespace {
@@ -107,6 +109,66 @@ TEST_F(GpuEngine, AnOverrunInOneRenderDoesNotFailTheNext) {
   const auto fresh = gpu::render_gpu_views(gpu(), {cam}, s, shallow, whole_render(2, 2, 1), {},
                                            {.engine = {.use_bvh = false}, .loop_budget = 20});
   EXPECT_TRUE(same_pixels(fbs[0], fresh[0]));
+}
+
+gpu::gpu_render_options cached_in(const std::filesystem::path& folder) {
+  gpu::gpu_render_options o;
+  o.pipeline_cache_folder = folder;
+  return o;
+}
+
+std::vector<framebuffer> seed_views(gpu::gpu_engine& engine, const scene& s) {
+  const camera cam = test::scene_camera(s);
+  return engine.render_views({cam}, s.render,
+                             whole_render(cam.image_width(), cam.image_height(), s.render.spp));
+}
+
+TEST_F(GpuEngine, PipelinesAreKeptBetweenRunsInTheCacheFolder) {
+  test::temp_dir dir;
+  const scene s = test::small_scene("seed", 32, 1);
+  const gpu::gpu_render_options options = cached_in(dir.path());
+  gpu::gpu_engine first(gpu(), s, options);
+  EXPECT_EQ(first.cache().loaded_bytes(), 0u) << "nothing to load in a new folder";
+  ASSERT_TRUE(std::filesystem::is_regular_file(first.cache().file()));
+  EXPECT_EQ(first.cache().file().parent_path(), dir.path());
+  // At least the 32-byte header naming the device (lavapipe keeps no code in its cache: only
+  // that); a real GPU's driver adds its compiled code.
+  const auto size = std::filesystem::file_size(first.cache().file());
+  EXPECT_GE(size, 32u);
+  gpu::gpu_engine second(gpu(), s, options);
+  EXPECT_EQ(second.cache().loaded_bytes(), size) << "the second engine starts from the file";
+  EXPECT_TRUE(same_pixels(seed_views(first, s)[0], seed_views(second, s)[0]));
+}
+
+TEST_F(GpuEngine, AForeignOrBrokenCacheFileIsIgnoredAndReplaced) {
+  test::temp_dir dir;
+  const scene s = test::small_scene("seed", 32, 1);
+  const gpu::gpu_render_options options = cached_in(dir.path());
+  const std::filesystem::path file = gpu::gpu_engine(gpu(), s, options).cache().file();
+  const framebuffer want = gpu::render_gpu_views(gpu(), {test::scene_camera(s)}, s, s.render,
+                                                 whole_render(32, 18, 1))[0];
+  // Another device's header (vendor 0xdead), then bytes that are no cache at all.
+  std::vector<std::uint32_t> foreign(64, 0);
+  foreign[0] = 32, foreign[1] = 1, foreign[2] = 0xdead, foreign[3] = 0xbeef;
+  for (const std::string& bytes :
+       {std::string(reinterpret_cast<const char*>(foreign.data()), foreign.size() * 4),
+        std::string(1000, '\x5a'), std::string()}) {
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+    gpu::gpu_engine engine(gpu(), s, options);
+    EXPECT_EQ(engine.cache().loaded_bytes(), 0u) << bytes.size() << " bytes offered";
+    EXPECT_TRUE(same_pixels(seed_views(engine, s)[0], want));
+    EXPECT_GE(gpu::gpu_engine(gpu(), s, options).cache().loaded_bytes(), 32u)
+        << "the file was written anew";
+  }
+}
+
+TEST_F(GpuEngine, ACacheFolderThatCannotBeWrittenOnlyCostsTime) {
+  test::temp_dir dir;
+  std::ofstream(dir.path() / "taken") << "a file where the folder would go";
+  const scene s = test::small_scene("seed", 32, 1);
+  gpu::gpu_engine engine(gpu(), s, cached_in(dir.path() / "taken" / "rtvk"));
+  EXPECT_FALSE(engine.cache().save());
+  EXPECT_EQ(seed_views(engine, s)[0].width(), 32);
 }
 
 }  // namespace

@@ -291,8 +291,11 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
                                 "--scene " + s.name),
               gpu_scene(ctx, s, options.engine.use_bvh))),
       targets_(std::make_unique<render_targets>(ctx, 12, 4)),
-      pipeline_(ctx, render_shader(), bindings(scene_, *targets_), sizeof(render_push), wg_),
+      cache_(ctx, options.pipeline_cache_folder),
+      pipeline_(ctx, render_shader(), bindings(scene_, *targets_), sizeof(render_push), wg_,
+                cache_.get()),
       timer_(ctx) {
+  cache_.save();  // a cache that cannot be written only makes the next run slower
   upload();
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }

@@ -12,6 +12,7 @@
 #include "device_timer.h"
 #include "framebuffer.h"
 #include "gpu_scene.h"
+#include "pipeline_cache.h"
 #include "render_gpu.h"
 #include "render_settings.h"
 #include "render_targets.h"
@@ -37,6 +38,7 @@ class gpu_engine {
 
   double setup_seconds() const { return setup_seconds_; }          // the constructor, wall clock
   double build_seconds() const { return scene_.build_seconds(); }  // of which the BVH
+  const pipeline_cache& cache() const { return cache_; }
 
  private:
   void upload();
@@ -52,6 +54,7 @@ class gpu_engine {
   std::array<std::uint32_t, 2> wg_;            // workgroup size
   gpu_scene scene_;                            // uploaded once
   std::unique_ptr<render_targets> targets_;    // grown on demand
+  pipeline_cache cache_;                       // compiled code, kept between runs
   compute_pipeline pipeline_;                  // bound to scene_ and *targets_
   device_timer timer_;                         // device time of each submission
   bool drawn_ = false;                         // some band was drawn before

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <vector>
@@ -30,9 +31,11 @@ inline constexpr std::uint64_t default_band_bytes = 64u << 20;
 
 // How the GPU does the work: the backend-neutral options plus what only the GPU has.
 struct gpu_render_options {
-  engine_options engine;          // BVH or not, ray counting, cancellation
+  engine_options engine = {};     // BVH or not, ray counting, cancellation
   std::uint32_t loop_budget = 0;  // most loop iterations per invocation; 0: the device's
   std::uint64_t band_bytes = 0;   // largest accumulation buffer; 0: default_band_bytes
+  // Where compiled pipelines are kept between runs (default_cache_folder()); empty: nowhere.
+  std::filesystem::path pipeline_cache_folder = {};
 };
 
 // Called with the number of samples per pixel finished so far; may be empty.

@@ -43,7 +43,8 @@ unique_shader_module make_shader_module(VkDevice dev, std::span<const std::uint3
 // spec_constants fill specialization constant ids 0, 1, ... in order.
 unique_pipeline make_pipeline(VkDevice dev, VkPipelineLayout layout,
                               std::span<const std::uint32_t> spirv,
-                              std::span<const std::uint32_t> spec_constants) {
+                              std::span<const std::uint32_t> spec_constants,
+                              VkPipelineCache cache) {
   // Destroyed on return: a pipeline no longer needs its module once it exists.
   const unique_shader_module module = make_shader_module(dev, spirv);
   std::vector<VkSpecializationMapEntry> entries;
@@ -59,7 +60,7 @@ unique_pipeline make_pipeline(VkDevice dev, VkPipelineLayout layout,
   info.stage.pSpecializationInfo = entries.empty() ? nullptr : &spec;
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  vk_check(vkCreateComputePipelines(dev, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+  vk_check(vkCreateComputePipelines(dev, cache, 1, &info, nullptr, &pipeline),
            "vkCreateComputePipelines");
   return unique_pipeline(dev, pipeline);
 }
@@ -113,11 +114,12 @@ void write_bindings(VkDevice dev, VkDescriptorSet set,
 compute_pipeline::compute_pipeline(const gpu_context& ctx, std::span<const std::uint32_t> spirv,
                                    const std::vector<buffer_binding>& bindings,
                                    std::uint32_t push_constant_bytes,
-                                   std::span<const std::uint32_t> spec_constants)
+                                   std::span<const std::uint32_t> spec_constants,
+                                   VkPipelineCache cache)
     : ctx_(ctx),
       set_layout_(make_set_layout(ctx.vk(), bindings)),
       layout_(make_pipeline_layout(ctx.vk(), set_layout_.get(), push_constant_bytes)),
-      pipeline_(make_pipeline(ctx.vk(), layout_.get(), spirv, spec_constants)),
+      pipeline_(make_pipeline(ctx.vk(), layout_.get(), spirv, spec_constants, cache)),
       pool_(make_descriptor_pool(ctx.vk(), bindings)),
       set_(allocate_set(ctx.vk(), pool_.get(), set_layout_.get())) {
   write_bindings(ctx.vk(), set_, bindings);

@@ -17,10 +17,12 @@ struct buffer_binding {
 // A compute shader with its one descriptor set (set 0), all bindings buffers.
 class compute_pipeline {
  public:
-  // spec_constants fill specialization constant ids 0, 1, ... in order.
+  // spec_constants fill specialization constant ids 0, 1, ... in order; `cache`, when given,
+  // supplies and keeps the device's compiled code.
   compute_pipeline(const gpu_context& ctx, std::span<const std::uint32_t> spirv,
                    const std::vector<buffer_binding>& bindings, std::uint32_t push_constant_bytes,
-                   std::span<const std::uint32_t> spec_constants = {});
+                   std::span<const std::uint32_t> spec_constants = {},
+                   VkPipelineCache cache = VK_NULL_HANDLE);
 
   ~compute_pipeline();
   compute_pipeline(const compute_pipeline&) = delete;

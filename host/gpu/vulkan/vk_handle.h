@@ -79,6 +79,7 @@ using unique_descriptor_pool = device_handle<VkDescriptorPool, vkDestroyDescript
 using unique_command_pool = device_handle<VkCommandPool, vkDestroyCommandPool>;
 using unique_fence = device_handle<VkFence, vkDestroyFence>;
 using unique_query_pool = device_handle<VkQueryPool, vkDestroyQueryPool>;
+using unique_pipeline_cache = device_handle<VkPipelineCache, vkDestroyPipelineCache>;
 using unique_messenger =
     owned_handle<VkInstance, VkDebugUtilsMessengerEXT, vkDestroyDebugUtilsMessengerEXT>;
 using unique_instance = root_handle<VkInstance, vkDestroyInstance>;

@@ -1,0 +1,40 @@
+#pragma once
+#include <cstddef>
+#include <filesystem>
+
+#include "context.h"
+#include "vk_handle.h"
+
+namespace rtvk::gpu {
+
+// The device's compiled pipelines, kept in a file between runs so that a second run skips the
+// shader compiler. One file per device and driver (named after the device's pipelineCacheUUID);
+// a file that is missing, unreadable or made for another device or driver is ignored, and a
+// cache that cannot be written is only slower: neither ever fails a render.
+class pipeline_cache {
+ public:
+  // `folder` empty: an in-memory cache only.
+  pipeline_cache(const gpu_context& ctx, std::filesystem::path folder);
+  ~pipeline_cache();
+  pipeline_cache(const pipeline_cache&) = delete;
+  pipeline_cache& operator=(const pipeline_cache&) = delete;
+
+  VkPipelineCache get() const { return cache_.get(); }
+  // Writes the cache's data to its file (through a temporary file and a rename). Returns whether
+  // it did.
+  bool save() const;
+
+  const std::filesystem::path& file() const { return file_; }  // empty without a folder
+  std::size_t loaded_bytes() const { return loaded_; }         // what the file gave, 0 if none
+
+ private:
+  const gpu_context& ctx_;       // tells whether the device may still be using the cache
+  std::filesystem::path file_;   // where the data lives between runs
+  std::size_t loaded_ = 0;       // bytes of initial data accepted from file_
+  unique_pipeline_cache cache_;  // the Vulkan object
+};
+
+// Where rtvk keeps its caches: $XDG_CACHE_HOME/rtvk, else $HOME/.cache/rtvk, else nothing.
+std::filesystem::path default_cache_folder();
+
+}  // namespace rtvk::gpu
