@@ -36,6 +36,15 @@ inline scene small_scene(const std::string& name, int width, int max_spp) {
   return s;
 }
 
+// Whether two framebuffers hold the same pixels, bit for bit.
+inline bool same_pixels(const framebuffer& a, const framebuffer& b) {
+  if (a.width() != b.width() || a.height() != b.height()) return false;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      if (a.at(x, y) != b.at(x, y)) return false;
+  return true;
+}
+
 // The lesson's image: the seed scene through the lesson's camera.
 inline image_rgb8 seed_image(double aspect, int width) {
   return cpu_image(builtin_scene("seed"), camera(aspect, width));

@@ -15,14 +15,6 @@ namespace {
 
 class GpuEngine : public test::GpuTest {};
 
-bool same_pixels(const framebuffer& a, const framebuffer& b) {
-  if (a.width() != b.width() || a.height() != b.height()) return false;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x)
-      if (a.at(x, y) != b.at(x, y)) return false;
-  return true;
-}
-
 TEST_F(GpuEngine, OneSetUpServesEveryRenderOfARunAsFreshSetUpsWould) {
   scene s = test::small_scene("book-final", 48, 3);
   s.render.max_depth = 8;
@@ -54,13 +46,13 @@ TEST_F(GpuEngine, OneSetUpServesEveryRenderOfARunAsFreshSetUpsWould) {
     const auto want = gpu::render_gpu_views(gpu(), q.views, s, q.rs, q.win);
     ASSERT_EQ(got.size(), want.size());
     for (std::size_t v = 0; v < got.size(); ++v)
-      EXPECT_TRUE(same_pixels(got[v], want[v])) << "request " << k << ", view " << v;
+      EXPECT_TRUE(test::same_pixels(got[v], want[v])) << "request " << k << ", view " << v;
     EXPECT_GE(st.submissions, 1) << "request " << k;
   }
   // The guard: the requests really draw different pictures.
   const auto a = engine.render_views({book}, s.render, whole_render(w, h, 3));
   const auto b = engine.render_views({side}, s.render, whole_render(w, h, 3));
-  EXPECT_FALSE(same_pixels(a[0], b[0]));
+  EXPECT_FALSE(test::same_pixels(a[0], b[0]));
 }
 
 TEST_F(GpuEngine, DeviceTimeIsMeasuredWithinTheRendersOwnTime) {
@@ -108,7 +100,7 @@ TEST_F(GpuEngine, AnOverrunInOneRenderDoesNotFailTheNext) {
   const auto fbs = engine.render_views({cam}, shallow, whole_render(2, 2, 1));
   const auto fresh = gpu::render_gpu_views(gpu(), {cam}, s, shallow, whole_render(2, 2, 1), {},
                                            {.engine = {.use_bvh = false}, .loop_budget = 20});
-  EXPECT_TRUE(same_pixels(fbs[0], fresh[0]));
+  EXPECT_TRUE(test::same_pixels(fbs[0], fresh[0]));
 }
 
 gpu::gpu_render_options cached_in(const std::filesystem::path& folder) {
@@ -137,7 +129,7 @@ TEST_F(GpuEngine, PipelinesAreKeptBetweenRunsInTheCacheFolder) {
   EXPECT_GE(size, 32u);
   gpu::gpu_engine second(gpu(), s, options);
   EXPECT_EQ(second.cache().loaded_bytes(), size) << "the second engine starts from the file";
-  EXPECT_TRUE(same_pixels(seed_views(first, s)[0], seed_views(second, s)[0]));
+  EXPECT_TRUE(test::same_pixels(seed_views(first, s)[0], seed_views(second, s)[0]));
 }
 
 TEST_F(GpuEngine, AForeignOrBrokenCacheFileIsIgnoredAndReplaced) {
@@ -156,7 +148,7 @@ TEST_F(GpuEngine, AForeignOrBrokenCacheFileIsIgnoredAndReplaced) {
     std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
     gpu::gpu_engine engine(gpu(), s, options);
     EXPECT_EQ(engine.cache().loaded_bytes(), 0u) << bytes.size() << " bytes offered";
-    EXPECT_TRUE(same_pixels(seed_views(engine, s)[0], want));
+    EXPECT_TRUE(test::same_pixels(seed_views(engine, s)[0], want));
     EXPECT_GE(gpu::gpu_engine(gpu(), s, options).cache().loaded_bytes(), 32u)
         << "the file was written anew";
   }

@@ -36,14 +36,6 @@ std::vector<camera> cameras_at(const scene& s, double seconds) {
   return out;
 }
 
-bool same_pixels(const framebuffer& a, const framebuffer& b) {
-  if (a.width() != b.width() || a.height() != b.height()) return false;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x)
-      if (a.at(x, y) != b.at(x, y)) return false;
-  return true;
-}
-
 // Each GPU view against the CPU reference through the same camera, scene and settings, by the
 // rule `rtvk render --backend both` applies to Monte Carlo scenes (book-final's materials scatter).
 void expect_each_view_matches_the_cpu(const std::vector<framebuffer>& gpu_views,
@@ -77,7 +69,7 @@ TEST_F(MultiView, FourCamerasInOneSubmissionEachMatchTheCpuReference) {
   // The four views really differ: a GPU that drew one camera four times would fail above, and
   // this says so directly.
   for (std::size_t k = 1; k < fbs.size(); ++k)
-    EXPECT_FALSE(same_pixels(fbs[0], fbs[k])) << s.cameras[k].name;
+    EXPECT_FALSE(test::same_pixels(fbs[0], fbs[k])) << s.cameras[k].name;
 }
 
 TEST_F(MultiView, ManySamplesTakeNoMoreSubmissionsThanOneCamera) {
@@ -107,7 +99,7 @@ TEST_F(MultiView, ViewsThatDoNotFitOneBufferGoInGroupsAndStillMatch) {
     render_stats st;
     const auto fbs = gpu::render_gpu_views(gpu(), views, s, s.render, all, {}, e, &st);
     for (std::size_t k = 0; k < views.size(); ++k)
-      EXPECT_TRUE(same_pixels(fbs[k], reference[k])) << s.cameras[k].name;
+      EXPECT_TRUE(test::same_pixels(fbs[k], reference[k])) << s.cameras[k].name;
     EXPECT_GT(st.submissions, 1);
   }
 }
