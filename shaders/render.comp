@@ -6,8 +6,14 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 
-// The host picks the workgroup size from the device's limits (specialization constants 0, 1).
+// The host picks the workgroup size from the device's limits (specialization constants 0, 1), and
+// fixes the render's switches when it builds the pipeline (2 to 5), so the compiler drops the
+// code a render does not use instead of branching on it in every invocation.
 layout(local_size_x_id = 0, local_size_y_id = 1, local_size_z = 1) in;
+layout(constant_id = RTVK_SPEC_JITTER) const bool jitter = false;  // random spots in the pixel
+layout(constant_id = RTVK_SPEC_LENS) const bool any_lens = false;  // a view has an aperture
+layout(constant_id = RTVK_SPEC_USE_BVH) const bool use_bvh = true;  // else every sphere in turn
+layout(constant_id = RTVK_SPEC_COUNT_RAYS) const bool count_rays = false;  // per-pixel counts
 
 layout(std140, set = 0, binding = RTVK_BINDING_CAMERA) uniform camera_block {
   camera_ubo cams[RTVK_MAX_VIEWS];
@@ -43,12 +49,13 @@ void main() {
 
   uint j = cam.image_height - 1u - pixel.y;  // the lesson counts rows from the bottom
   random_stream s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, pc.sample_index, 0u);
-  precise float x = pc.jitter != 0u ? float(pixel.x) + rnd(s, dim_jitter_u) : float(pixel.x);
-  precise float y = pc.jitter != 0u ? float(j) + rnd(s, dim_jitter_v) : float(j);
+  precise float x = jitter ? float(pixel.x) + rnd(s, dim_jitter_u) : float(pixel.x);
+  precise float y = jitter ? float(j) + rnd(s, dim_jitter_v) : float(j);
   precise float u = pixel_coordinate(x, cam.image_width);
   precise float v = pixel_coordinate(y, cam.image_height);
-  precise vec2 lens =
-      cam.lens_radius > 0.0 ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b)) : vec2(0.0);
+  precise vec2 lens = any_lens && cam.lens_radius > 0.0
+                           ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b))
+                           : vec2(0.0);
   uint iterations = 0u;
   uint rays = 0u;
   precise vec3 c = ray_color(get_ray(cam, u, v, lens), s, iterations, rays);
@@ -59,7 +66,7 @@ void main() {
 
   // within the view's band
   uint index = (view * pc.band_rows + gl_GlobalInvocationID.y) * pc.region_width + gl_GlobalInvocationID.x;
-  if (pc.count_rays != 0u) ray_count[index] += rays;
+  if (count_rays) ray_count[index] += rays;
   uint base = 3u * index;
   precise vec3 sum = vec3(rgb[base + 0u], rgb[base + 1u], rgb[base + 2u]) + c;
   rgb[base + 0u] = sum.r;

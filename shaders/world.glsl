@@ -1,6 +1,6 @@
 // Mirrors bvh_world::hit (host/cpu/bvh_world.cpp) and hittable_list::hit. Expects `spheres`
-// (gpu_sphere[]), `bvh_nodes`, `bvh_index` and `pc` (render_push) declared by the including
-// shader.
+// (gpu_sphere[]), `bvh_nodes`, `bvh_index`, `pc` (render_push) and the specialization constant
+// `use_bvh` declared by the including shader.
 #ifndef RTVK_WORLD_GLSL
 #define RTVK_WORLD_GLSL
 #include "sphere.glsl"
@@ -64,13 +64,13 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
   return true;
 }
 
-// The closest hit over every sphere, as hittable_list::hit (or, with pc.use_bvh, as
+// The closest hit over every sphere, as hittable_list::hit (or, with use_bvh, as
 // bvh_world::hit).
 // Each iteration counts against the loop budget; over budget, the search stops and `iterations`
 // tells the caller.
 bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
                inout uint iterations) {
-  if (pc.use_bvh != 0u) return hit_bvh(r, t_min, t_max, rec, iterations);
+  if (use_bvh) return hit_bvh(r, t_min, t_max, rec, iterations);
   bool hit_anything = false;
   precise float closest_so_far = t_max;
   uint closest_sphere = 0u;

@@ -43,7 +43,7 @@ struct bench_record {
   std::uint64_t rays = 0;
   double seconds = 0;         // the whole render, BVH build included (CPU; the GPU builds it once)
   double build_seconds = 0;   // of which building the BVH
-  double setup_seconds = -1;  // GPU: setting up the engine (BVH, uploads, pipeline), once a run
+  double setup_seconds = -1;  // GPU: setting up the engine (limits, BVH, uploads), once a run
   double first_sample_seconds = -1;  // GPU: from the engine's set-up to the first sample's end
   double gpu_seconds = -1;  // GPU: device time of the render (timestamp queries); 0: unknown
   double mrays_per_s() const { return seconds > 0 ? double(rays) / seconds / 1e6 : 0; }

@@ -187,7 +187,7 @@ int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
                   const std::vector<render_job>& jobs) {
   const std::string backend = "gpu (" + ctx.device().name + ")";
   const std::size_t group = gpu_group_size(run.win);
-  // Set up once (scene buffers, BVH, pipeline) for every group of the run.
+  // Set up once (scene buffers, BVH, pipelines) for every group of the run.
   gpu::gpu_engine engine(
       ctx, run.s,
       {.engine = engine_from(run.o), .pipeline_cache_folder = gpu::default_cache_folder()});

@@ -26,6 +26,13 @@ using uint = std::uint32_t;
 #define RTVK_BINDING_BVH_INDEX 7  // storage buffer: uint[], leaf slot -> sphere index
 #define RTVK_BINDING_RAY_COUNT 8  // storage buffer: uint[], rays traced per pixel of the band
 
+// Specialization constants of render.comp (0 and 1 are the workgroup's width and height): the
+// render's switches, fixed when its pipeline is built.
+#define RTVK_SPEC_JITTER 2      // bool: random sample positions inside each pixel
+#define RTVK_SPEC_LENS 3        // bool: some view has a lens (aperture > 0)
+#define RTVK_SPEC_USE_BVH 4     // bool: traverse the BVH, else test every sphere in order
+#define RTVK_SPEC_COUNT_RAYS 5  // bool: count each pixel's rays
+
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 128 camera
 // blocks are 12 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
 #define RTVK_MAX_VIEWS 128
@@ -96,9 +103,6 @@ struct render_push {
   uint seed;          // the render's random seed
   uint max_depth;     // most scatter events per path
   uint loop_budget;   // most loop iterations one invocation may run (lavapipe stops at 65,535)
-  uint jitter;        // 1: random positions inside the pixel
-  uint use_bvh;       // 1: traverse the BVH; 0: test every sphere in order
-  uint count_rays;    // 1: add the rays each invocation traces to its pixel's counter
   uint band_y0;       // first image row of this band: the image buffers hold rows band_y0 on
   uint band_rows;     // rows in this band
   uint region_x0;     // first image column drawn
@@ -177,14 +181,11 @@ static_assert(offsetof(render_push, sample_index) == 28);
 static_assert(offsetof(render_push, seed) == 32);
 static_assert(offsetof(render_push, max_depth) == 36);
 static_assert(offsetof(render_push, loop_budget) == 40);
-static_assert(offsetof(render_push, jitter) == 44);
-static_assert(offsetof(render_push, use_bvh) == 48);
-static_assert(offsetof(render_push, count_rays) == 52);
-static_assert(offsetof(render_push, band_y0) == 56);
-static_assert(offsetof(render_push, band_rows) == 60);
-static_assert(offsetof(render_push, region_x0) == 64);
-static_assert(offsetof(render_push, region_width) == 68);
-static_assert(sizeof(render_push) == 72 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, band_y0) == 44);
+static_assert(offsetof(render_push, band_rows) == 48);
+static_assert(offsetof(render_push, region_x0) == 52);
+static_assert(offsetof(render_push, region_width) == 56);
+static_assert(sizeof(render_push) == 60 && sizeof(render_push) <= 128);
 static_assert(RTVK_MAX_VIEWS * sizeof(camera_ubo) <= 16384);
 static_assert(offsetof(bvh_node, bounds_min) == 0);
 static_assert(offsetof(bvh_node, first) == 12);

@@ -96,7 +96,7 @@ void unpack_band(const float* rgb, std::span<framebuffer> views, int first_row, 
 // The push constants every dispatch of a render shares; the band and sample fields are set for
 // each pass.
 render_push make_push(const sky& background, const render_settings& rs, const render_window& win,
-                      const gpu_render_options& options, const device_info& dev, bool count_rays,
+                      const gpu_render_options& options, const device_info& dev,
                       std::uint32_t sphere_count) {
   render_push push{};
   push.sky_horizon = vec3(background.horizon);
@@ -105,9 +105,6 @@ render_push make_push(const sky& background, const render_settings& rs, const re
   push.seed = rs.seed;
   push.max_depth = std::uint32_t(rs.max_depth);
   push.loop_budget = options.loop_budget ? options.loop_budget : default_loop_budget(dev);
-  push.jitter = rs.jitter ? 1u : 0u;
-  push.use_bvh = options.engine.use_bvh ? 1u : 0u;
-  push.count_rays = count_rays ? 1u : 0u;
   push.region_x0 = std::uint32_t(win.x);
   push.region_width = std::uint32_t(win.width);
   return push;
@@ -133,28 +130,37 @@ struct band_pass {
   std::uint32_t y0, rows;     // image rows the band covers
 };
 
+// What a band_renderer uses of its engine. `drawn` (some band was drawn before) and `batch`
+// (samples per submission) carry over from one render to the next.
+struct engine_parts {
+  gpu_context& ctx;
+  render_targets& targets;
+  const device_timer& timer;
+  std::array<std::uint32_t, 2> wg;  // workgroup size
+  const gpu_render_options& options;
+  bool& drawn;
+  int& batch;
+};
+
 // Draws bands: each in submissions of growing batches of samples that accumulate on the device,
 // the last one copying the sums back. Submissions grow from one sample until each takes about a
 // quarter second: long enough to keep the device busy, short enough for progress, interruption
 // and the fence timeout.
 class band_renderer {
  public:
-  // `drawn` (some band was drawn before) and `batch` (samples per submission) are the engine's:
-  // they carry over from one render to the next.
-  band_renderer(gpu_context& ctx, render_targets& targets, const compute_pipeline& pipeline,
-                const device_timer& timer, const render_push& push, std::array<std::uint32_t, 2> wg,
-                const render_window& win, const gpu_render_options& options, bool& drawn,
-                int& batch)
-      : ctx_(ctx),
-        targets_(targets),
+  band_renderer(const engine_parts& engine, const compute_pipeline& pipeline,
+                const render_push& push, const render_window& win, bool count_rays)
+      : ctx_(engine.ctx),
+        targets_(engine.targets),
         pipeline_(pipeline),
-        timer_(timer),
+        timer_(engine.timer),
         push_(push),
-        wg_(wg),
+        wg_(engine.wg),
         win_(win),
-        options_(options),
-        drawn_(drawn),
-        batch_(batch) {}
+        count_rays_(count_rays),
+        options_(engine.options),
+        drawn_(engine.drawn),
+        batch_(engine.batch) {}
 
   // Every sample of the band; `progress` is called with samples done over all passes.
   void draw(const band_pass& b, const sample_progress& progress, render_stats* stats) {
@@ -215,8 +221,7 @@ class band_renderer {
     const VkDeviceSize pixels = VkDeviceSize(win_.width) * push_.band_rows * views;
     const VkBufferCopy copy{0, 0, pixels * 3 * sizeof(float)};
     vkCmdCopyBuffer(cb, targets_.image.get(), targets_.readback.get(), 1, &copy);
-    const bool counted = push_.count_rays != 0;
-    const VkBufferCopy counts{0, 0, counted ? pixels * sizeof(std::uint32_t) : 4};
+    const VkBufferCopy counts{0, 0, count_rays_ ? pixels * sizeof(std::uint32_t) : 4};
     vkCmdCopyBuffer(cb, targets_.ray_counts.get(), targets_.ray_readback.get(), 1, &counts);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
@@ -251,6 +256,7 @@ class band_renderer {
   render_push push_;                   // band and sample fields change per pass
   std::array<std::uint32_t, 2> wg_;    // workgroup size
   const render_window& win_;           // region and sample range of every view
+  bool count_rays_;                    // the pixels' ray counters are read back
   const gpu_render_options& options_;  // cancellation
   bool& drawn_;                        // some band was drawn before, by this engine
   int& batch_;                         // samples per submission, grows to 256
@@ -292,10 +298,7 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
               gpu_scene(ctx, s, options.engine.use_bvh))),
       targets_(std::make_unique<render_targets>(ctx, 12, 4)),
       cache_(ctx, options.pipeline_cache_folder),
-      pipeline_(ctx, render_shader(), bindings(scene_, *targets_), sizeof(render_push), wg_,
-                cache_.get()),
       timer_(ctx) {
-  cache_.save();  // a cache that cannot be written only makes the next run slower
   upload();
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
@@ -315,8 +318,26 @@ render_targets& gpu_engine::targets_for(VkDeviceSize image_bytes, VkDeviceSize c
                     "--scene " + scene_name_);
   targets_.reset();  // no submission is in flight
   targets_ = std::make_unique<render_targets>(ctx_, image_bytes, count_bytes);
-  pipeline_.rebind(bindings(scene_, *targets_));
+  for (auto& [switches, pipeline] : pipelines_) pipeline->rebind(bindings(scene_, *targets_));
   return *targets_;
+}
+
+const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool count_rays) {
+  const std::uint32_t switches = (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u);
+  std::unique_ptr<compute_pipeline>& p = pipelines_[switches];
+  if (!p) {
+    std::uint32_t spec[6] = {};  // by constant_id
+    spec[0] = wg_[0];
+    spec[1] = wg_[1];
+    spec[RTVK_SPEC_JITTER] = jitter;
+    spec[RTVK_SPEC_LENS] = lens;
+    spec[RTVK_SPEC_USE_BVH] = options_.engine.use_bvh;
+    spec[RTVK_SPEC_COUNT_RAYS] = count_rays;
+    p = std::make_unique<compute_pipeline>(ctx_, render_shader(), bindings(scene_, *targets_),
+                                           sizeof(render_push), spec, cache_.get());
+    cache_.save();  // a cache that cannot be written only makes the next run slower
+  }
+  return *p;
 }
 
 std::vector<framebuffer> gpu_engine::render_views(const std::vector<camera>& views,
@@ -336,9 +357,12 @@ std::vector<framebuffer> gpu_engine::render_views(const std::vector<camera>& vie
                                         count_rays ? group_pixels * sizeof(std::uint32_t) : 4);
   // The BVH's build is the first render's: later ones reuse it.
   if (stats) *stats = render_stats{.build_seconds = drawn_ ? 0.0 : build_seconds()};
-  band_renderer bands(ctx_, targets, pipeline_, timer_,
-                      make_push(sky_, rs, win, options_, dev, count_rays, scene_.sphere_count()),
-                      wg_, win, options_, drawn_, batch_);
+  const bool lens =
+      std::any_of(views.begin(), views.end(), [](const camera& c) { return c.lens_radius() > 0; });
+  band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, batch_},
+                      pipeline_for(rs.jitter, lens, count_rays),
+                      make_push(sky_, rs, win, options_, dev, scene_.sphere_count()), win,
+                      count_rays);
 
   std::vector<framebuffer> out(views.size(), framebuffer{win.width, win.height});
   band_pass b{};

@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <chrono>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,14 +21,15 @@
 
 namespace rtvk::gpu {
 
-// A scene set up on one device once -- spheres, materials and BVH uploaded, the pipeline built
-// -- and then drawn as often as a run asks: every view, frame, band, region and sample range.
+// A scene set up on one device once -- spheres, materials and BVH uploaded, pipelines built on
+// first use -- and then drawn as often as a run asks: every view, frame, band, region and
+// sample range.
 // The buffers the dispatches accumulate into grow to the largest request and are kept.
 // `ctx` must outlive the engine; the scene is copied to the device and not kept.
 class gpu_engine {
  public:
   // Checks the scene's buffers against the device's limits (usage_error naming the buffer),
-  // then builds, uploads and waits for them, and builds the pipeline.
+  // then builds, uploads and waits for them.
   gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_options& options = {});
 
   // Draws `views` of the scene exactly as render_gpu_views does (same arguments, same result).
@@ -44,6 +46,8 @@ class gpu_engine {
   void upload();
   // The targets, reallocated (after checking the device's limits) when too small.
   render_targets& targets_for(VkDeviceSize image_bytes, VkDeviceSize count_bytes);
+  // The pipeline with these switches, built (through the cache) the first time it is asked for.
+  const compute_pipeline& pipeline_for(bool jitter, bool lens, bool count_rays);
 
   std::chrono::steady_clock::time_point start_;  // construction began
   gpu_context& ctx_;
@@ -55,11 +59,12 @@ class gpu_engine {
   gpu_scene scene_;                            // uploaded once
   std::unique_ptr<render_targets> targets_;    // grown on demand
   pipeline_cache cache_;                       // compiled code, kept between runs
-  compute_pipeline pipeline_;                  // bound to scene_ and *targets_
-  device_timer timer_;                         // device time of each submission
-  bool drawn_ = false;                         // some band was drawn before
-  int batch_ = 1;                              // samples per submission, grows to 256
-  double setup_seconds_ = 0;                   // the constructor took
+  // One per combination of the render's switches (specialization constants), made on first use.
+  std::map<std::uint32_t, std::unique_ptr<compute_pipeline>> pipelines_;
+  device_timer timer_;        // device time of each submission
+  bool drawn_ = false;        // some band was drawn before
+  int batch_ = 1;             // samples per submission, grows to 256
+  double setup_seconds_ = 0;  // the constructor took
 };
 
 }  // namespace rtvk::gpu
