@@ -11,6 +11,7 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "context.h"
+#include "elapsed.h"
 #include "errors.h"
 #include "gpu_engine.h"
 #include "interrupt.h"
@@ -57,10 +58,6 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 void print(const bench_record& r) {
   char setup[128];
   if (r.setup_seconds >= 0)
@@ -86,7 +83,7 @@ void measure(int repeat, const bench_record& base, Render render, std::vector<be
     const auto start = std::chrono::steady_clock::now();
     render(stats);
     bench_record r = base;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.seconds = seconds_since(start);
     r.rays = stats.rays;
     if (base.setup_seconds < 0) r.build_seconds = stats.build_seconds;  // the GPU builds it once
     if (base.gpu_seconds >= 0) r.gpu_seconds = stats.gpu_seconds;

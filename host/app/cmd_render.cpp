@@ -11,6 +11,7 @@
 #include "camera.h"
 #include "commands.h"
 #include "context.h"
+#include "elapsed.h"
 #include "errors.h"
 #include "format.h"
 #include "gpu_engine.h"
@@ -49,10 +50,6 @@ struct render_options {
   double gpu_timeout = 120;       // seconds one GPU submission may take
   scene_flags flags;              // --width, --spp, --lookfrom, ...
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 engine_options engine_from(const render_options& o) {
   engine_options e;

@@ -7,6 +7,7 @@
 #include <string>
 #include <thread>
 
+#include "elapsed.h"
 #include "errors.h"
 #include "parallel.h"
 #include "random.h"
@@ -69,8 +70,7 @@ void draw_row(const pixel_inputs& in, const hittable& world, int row, framebuffe
 std::unique_ptr<hittable> timed_world(const scene& s, bool use_bvh, double& build_seconds) {
   const auto build_start = std::chrono::steady_clock::now();
   std::unique_ptr<hittable> world = make_accelerated_world(s, use_bvh);
-  build_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
+  build_seconds = seconds_since(build_start);
   return world;
 }
 

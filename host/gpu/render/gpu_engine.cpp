@@ -6,6 +6,7 @@
 #include <span>
 
 #include "compute_pipeline.h"
+#include "elapsed.h"
 #include "errors.h"
 #include "gpu_scene.h"
 #include "packing.h"
@@ -150,17 +151,7 @@ class band_renderer {
  public:
   band_renderer(const engine_parts& engine, const compute_pipeline& pipeline,
                 const render_push& push, const render_window& win, bool count_rays)
-      : ctx_(engine.ctx),
-        targets_(engine.targets),
-        pipeline_(pipeline),
-        timer_(engine.timer),
-        push_(push),
-        wg_(engine.wg),
-        win_(win),
-        count_rays_(count_rays),
-        options_(engine.options),
-        drawn_(engine.drawn),
-        batch_(engine.batch) {}
+      : e_(engine), pipeline_(pipeline), push_(push), win_(win), count_rays_(count_rays) {}
 
   // Every sample of the band; `progress` is called with samples done over all passes.
   void draw(const band_pass& b, const sample_progress& progress, render_stats* stats) {
@@ -170,24 +161,23 @@ class band_renderer {
     const std::int64_t passes = std::int64_t(b.groups) * b.bands;
     int done = 0;
     while (done < samples) {
-      if (options_.engine.cancelled && options_.engine.cancelled()) throw cancelled(b, done);
-      const int count = std::min(batch_, samples - done);
+      if (e_.options.engine.cancelled && e_.options.engine.cancelled()) throw cancelled(b, done);
+      const int count = std::min(e_.batch, samples - done);
       const auto start = std::chrono::steady_clock::now();
-      ctx_.submit_and_wait(
+      e_.ctx.submit_and_wait(
           [&](VkCommandBuffer cb) { record(cb, b, done, count, done + count == samples); });
-      drawn_ = true;
+      e_.drawn = true;
       if (stats) {
         ++stats->submissions;
-        stats->gpu_seconds += timer_.seconds();
+        stats->gpu_seconds += e_.timer.seconds();
       }
-      check_overrun(*static_cast<const render_status*>(targets_.status.read()), push_.loop_budget,
-                    ctx_.device());
+      check_overrun(*static_cast<const render_status*>(e_.targets.status.read()), push_.loop_budget,
+                    e_.ctx.device());
       done += count;
       if (progress)
         progress(int((std::int64_t(b.group * b.bands + b.band) * samples + done) / passes));
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (seconds < 0.25) batch_ = std::min(batch_ * 2, 256);
+      const double seconds = seconds_since(start);
+      if (seconds < 0.25) e_.batch = std::min(e_.batch * 2, 256);
     }
   }
 
@@ -203,14 +193,14 @@ class band_renderer {
   // Before a band's first samples: cleared sums, and for a render's first band a cleared
   // overrun count.
   void record_start(VkCommandBuffer cb, bool first_band) const {
-    if (drawn_) {  // the previous band's shader writes and copies out of these buffers come first
+    if (e_.drawn) {  // the previous band's shader writes and copies out of these buffers come first
       barrier(cb, compute_stage | transfer_stage,
               VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT, transfer_stage,
               VK_ACCESS_TRANSFER_WRITE_BIT);
     }
-    if (first_band) vkCmdFillBuffer(cb, targets_.status.get(), 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cb, targets_.image.get(), 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cb, targets_.ray_counts.get(), 0, VK_WHOLE_SIZE, 0);
+    if (first_band) vkCmdFillBuffer(cb, e_.targets.status.get(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cb, e_.targets.image.get(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cb, e_.targets.ray_counts.get(), 0, VK_WHOLE_SIZE, 0);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
   }
 
@@ -220,16 +210,16 @@ class band_renderer {
             VK_ACCESS_TRANSFER_READ_BIT);
     const VkDeviceSize pixels = VkDeviceSize(win_.width) * push_.band_rows * views;
     const VkBufferCopy copy{0, 0, pixels * 3 * sizeof(float)};
-    vkCmdCopyBuffer(cb, targets_.image.get(), targets_.readback.get(), 1, &copy);
+    vkCmdCopyBuffer(cb, e_.targets.image.get(), e_.targets.readback.get(), 1, &copy);
     const VkBufferCopy counts{0, 0, count_rays_ ? pixels * sizeof(std::uint32_t) : 4};
-    vkCmdCopyBuffer(cb, targets_.ray_counts.get(), targets_.ray_readback.get(), 1, &counts);
+    vkCmdCopyBuffer(cb, e_.targets.ray_counts.get(), e_.targets.ray_readback.get(), 1, &counts);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
   }
 
   // One submission: `count` samples from sample `done` of the band, one dispatch each.
   void record(VkCommandBuffer cb, const band_pass& b, int done, int count, bool last) {
-    timer_.record_begin(cb);
+    e_.timer.record_begin(cb);
     if (done == 0) {
       record_start(cb, b.group == 0 && b.band == 0);
     } else {  // the previous submission's samples are in the sums this one adds to
@@ -240,26 +230,20 @@ class band_renderer {
       if (k > 0) barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
       push_.sample_index = std::uint32_t(win_.sample_begin + done + k);
       pipeline_.push(cb, &push_, sizeof push_);
-      vkCmdDispatch(cb, (push_.region_width + wg_[0] - 1) / wg_[0],
-                    (push_.band_rows + wg_[1] - 1) / wg_[1], b.views);
+      vkCmdDispatch(cb, (push_.region_width + e_.wg[0] - 1) / e_.wg[0],
+                    (push_.band_rows + e_.wg[1] - 1) / e_.wg[1], b.views);
     }
     if (last) record_readback(cb, b.views);
     barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
-    timer_.record_end(cb);
+    e_.timer.record_end(cb);
   }
 
-  gpu_context& ctx_;
-  render_targets& targets_;
+  engine_parts e_;  // the engine's context, targets, timer, options and carried-over state
   const compute_pipeline& pipeline_;
-  const device_timer& timer_;
-  render_push push_;                   // band and sample fields change per pass
-  std::array<std::uint32_t, 2> wg_;    // workgroup size
-  const render_window& win_;           // region and sample range of every view
-  bool count_rays_;                    // the pixels' ray counters are read back
-  const gpu_render_options& options_;  // cancellation
-  bool& drawn_;                        // some band was drawn before, by this engine
-  int& batch_;                         // samples per submission, grows to 256
+  render_push push_;          // band and sample fields change per pass
+  const render_window& win_;  // region and sample range of every view
+  bool count_rays_;           // the pixels' ray counters are read back
 };
 
 // A band's sums read back into each view's framebuffer, and its ray counts into the stats.
@@ -300,7 +284,7 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       cache_(ctx, options.pipeline_cache_folder),
       timer_(ctx) {
   upload();
-  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  setup_seconds_ = seconds_since(start_);
 }
 
 void gpu_engine::upload() {

@@ -3,14 +3,14 @@
 #include <chrono>
 
 #include "bvh.h"
+#include "elapsed.h"
 #include "packing.h"
 
 namespace rtvk::gpu {
 gpu_scene::timed_bvh gpu_scene::build_bvh(const scene& s, bool use_bvh) {
   const auto start = std::chrono::steady_clock::now();
   bvh tree(use_bvh ? std::span<const sphere>(s.spheres) : std::span<const sphere>());
-  return {std::move(tree),
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  return {std::move(tree), seconds_since(start)};
 }
 
 gpu_scene::gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh)

@@ -1,16 +1,17 @@
 #include "pipeline_cache.h"
 
-#include <unistd.h>
-
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
+#include "atomic_file.h"
 #include "vk_error.h"
 
 namespace rtvk::gpu {
@@ -18,9 +19,7 @@ namespace {
 
 // The device's pipelineCacheUUID in hex: a file made by another device or driver has another
 // name, so it is never offered to this one.
-std::string uuid_hex(const device_info& d) {
-  VkPhysicalDeviceProperties props{};
-  vkGetPhysicalDeviceProperties(d.handle, &props);
+std::string uuid_hex(const VkPhysicalDeviceProperties& props) {
   static const char digits[] = "0123456789abcdef";
   std::string out;
   for (std::uint8_t b : props.pipelineCacheUUID) {
@@ -32,11 +31,10 @@ std::string uuid_hex(const device_info& d) {
 
 // The file's bytes when its header (VkPipelineCacheHeaderVersionOne) names this device;
 // otherwise none. Drivers check too, but not every driver checks everything.
-std::vector<char> read_matching(const std::filesystem::path& file, const device_info& d) {
+std::vector<char> read_matching(const std::filesystem::path& file,
+                                const VkPhysicalDeviceProperties& props) {
   std::ifstream in(file, std::ios::binary);
   std::vector<char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  VkPhysicalDeviceProperties props{};
-  vkGetPhysicalDeviceProperties(d.handle, &props);
   std::uint32_t header[4] = {};
   if (data.size() < 32) return {};
   std::memcpy(header, data.data(), sizeof header);
@@ -60,8 +58,10 @@ std::filesystem::path default_cache_folder() {
 pipeline_cache::pipeline_cache(const gpu_context& ctx, std::filesystem::path folder) : ctx_(ctx) {
   std::vector<char> initial;
   if (!folder.empty()) {
-    file_ = folder / ("pipelines-" + uuid_hex(ctx.device()) + ".bin");
-    initial = read_matching(file_, ctx.device());
+    VkPhysicalDeviceProperties props{};
+    vkGetPhysicalDeviceProperties(ctx.device().handle, &props);
+    file_ = folder / ("pipelines-" + uuid_hex(props) + ".bin");
+    initial = read_matching(file_, props);
   }
   VkPipelineCacheCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
   info.initialDataSize = initial.size();
@@ -87,21 +87,12 @@ bool pipeline_cache::save() const {
   std::error_code ec;
   std::filesystem::create_directories(file_.parent_path(), ec);
   if (ec) return false;
-  // Another run may be writing the same file: each writes its own temporary, the rename is atomic.
-  const std::filesystem::path tmp =
-      file_.string() + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out.write(data.data(), std::streamsize(data.size()));
-    if (!out.flush()) {
-      std::filesystem::remove(tmp, ec);
-      return false;
-    }
+  try {  // another run may write the same file: each write is whole, the last one stays
+    write_file_atomically(file_, std::string_view(data.data(), data.size()));
+  } catch (const std::runtime_error&) {
+    return false;
   }
-  std::filesystem::rename(tmp, file_, ec);
-  if (!ec) return true;
-  std::filesystem::remove(tmp, ec);
-  return false;
+  return true;
 }
 
 }  // namespace rtvk::gpu

@@ -20,8 +20,8 @@ class pipeline_cache {
   pipeline_cache& operator=(const pipeline_cache&) = delete;
 
   VkPipelineCache get() const { return cache_.get(); }
-  // Writes the cache's data to its file (through a temporary file and a rename). Returns whether
-  // it did.
+  // Writes the cache's data to its file (write_file_atomically: never a partial file). Returns
+  // whether it did.
   bool save() const;
 
   const std::filesystem::path& file() const { return file_; }  // empty without a folder
