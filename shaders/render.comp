@@ -1,8 +1,11 @@
 #version 450
-// One invocation per pixel and view draws one sample (pc.sample_index) and adds it to the pixel's
-// sum; the host dispatches once per sample, so no invocation comes near lavapipe's loop cap.
-// The dispatch's z index is the view: every camera (or animation frame) of a group shares the
-// scene buffers and the dispatch.
+// One invocation per pixel and view traces a run of that pixel's samples, from where the pixel
+// stands (pixel_sum::samples) up to pc.sample_target, and adds them to the pixel's exact sums in
+// one write. The loop budget bounds the work one invocation does (lavapipe silently stops loops
+// at 65,535 iterations in all): an invocation that runs out keeps the samples it finished and
+// the next dispatch goes on from there; only a sample that does not fit a whole budget fails the
+// render. The dispatch's z index is the view: every camera (or animation frame) of a group shares
+// the scene buffers and the dispatch.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 
@@ -24,7 +27,7 @@ layout(std430, set = 0, binding = RTVK_BINDING_SPHERES) readonly buffer sphere_b
 layout(std430, set = 0, binding = RTVK_BINDING_MATERIALS) readonly buffer material_block {
   gpu_material materials[];
 };
-layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) buffer image_block { float rgb[]; };
+layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) buffer image_block { pixel_sum sums[]; };
 layout(std430, set = 0, binding = RTVK_BINDING_STATUS) buffer status_block { render_status status; };
 layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
   bvh_node bvh_nodes[];
@@ -32,23 +35,17 @@ layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_no
 layout(std430, set = 0, binding = RTVK_BINDING_BVH_INDEX) readonly buffer bvh_index_block {
   uint bvh_index[];
 };
-layout(std430, set = 0, binding = RTVK_BINDING_RAY_COUNT) buffer ray_count_block { uint ray_count[]; };
 layout(push_constant) uniform push_block { render_push pc; };
 
 #include "camera.glsl"
 #include "random.glsl"
 #include "shading.glsl"
 
-void main() {
-  // x from the left, y from the top of the image; the dispatch covers one band of rows of the
-  // region, for every view.
-  if (gl_GlobalInvocationID.x >= pc.region_width || gl_GlobalInvocationID.y >= pc.band_rows) return;
-  uint view = gl_GlobalInvocationID.z;
-  camera_ubo cam = cams[view];
-  uvec2 pixel = uvec2(gl_GlobalInvocationID.x + pc.region_x0, gl_GlobalInvocationID.y + pc.band_y0);
-
-  uint j = cam.image_height - 1u - pixel.y;  // the lesson counts rows from the bottom
-  random_stream s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, pc.sample_index, 0u);
+// One sample of the pixel: a ray from get_ray through a spot of the pixel (and of the lens),
+// mirroring pixel_color in host/cpu/render_cpu.cpp. `j` counts rows from the bottom.
+precise vec3 sample_color(camera_ubo cam, uvec2 pixel, uint j, uint sample_index,
+                          inout uint iterations, inout uint rays) {
+  random_stream s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, sample_index, 0u);
   precise float x = jitter ? float(pixel.x) + rnd(s, dim_jitter_u) : float(pixel.x);
   precise float y = jitter ? float(j) + rnd(s, dim_jitter_v) : float(j);
   precise float u = pixel_coordinate(x, cam.image_width);
@@ -56,20 +53,58 @@ void main() {
   precise vec2 lens = any_lens && cam.lens_radius > 0.0
                            ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b))
                            : vec2(0.0);
-  uint iterations = 0u;
-  uint rays = 0u;
-  precise vec3 c = ray_color(get_ray(cam, u, v, lens), s, iterations, rays);
-  if (iterations > pc.loop_budget) {
-    atomicAdd(status.overrun_pixels, 1u);  // the host fails the render rather than show this
-    return;
-  }
+  return ray_color(get_ray(cam, u, v, lens), s, iterations, rays);
+}
 
-  // within the view's band
+// floor(c * 2^F) as (low word, high word), exactly as to_fixed in host/base/sample_sum.h: the
+// scaling is by a power of two, floor(x / 2^32) and x - h * 2^32 are exact in float, and only
+// the bits below 2^-F are dropped. c is clamped into [0, pc.sample_limit] first.
+uvec2 to_fixed(float c) {
+  precise float x = min(max(c, 0.0), pc.sample_limit) * pc.sum_scale;
+  precise float h = floor(x * (1.0 / 4294967296.0));
+  precise float l = x - h * 4294967296.0;
+  return uvec2(uint(l), uint(h));
+}
+
+// 64-bit integer addition on (low, high) words.
+uvec2 add_fixed(uvec2 a, uvec2 b) {
+  uint carry;
+  uint low = uaddCarry(a.x, b.x, carry);
+  return uvec2(low, a.y + b.y + carry);
+}
+
+void main() {
+  // x from the left, y from the top of the image; the dispatch covers one band of rows of the
+  // region, for every view.
+  if (gl_GlobalInvocationID.x >= pc.region_width || gl_GlobalInvocationID.y >= pc.band_rows) return;
+  uint view = gl_GlobalInvocationID.z;
   uint index = (view * pc.band_rows + gl_GlobalInvocationID.y) * pc.region_width + gl_GlobalInvocationID.x;
-  if (count_rays) ray_count[index] += rays;
-  uint base = 3u * index;
-  precise vec3 sum = vec3(rgb[base + 0u], rgb[base + 1u], rgb[base + 2u]) + c;
-  rgb[base + 0u] = sum.r;
-  rgb[base + 1u] = sum.g;
-  rgb[base + 2u] = sum.b;
+  pixel_sum acc = sums[index];
+  if (acc.samples >= pc.sample_target) return;
+  camera_ubo cam = cams[view];
+  uvec2 pixel = uvec2(gl_GlobalInvocationID.x + pc.region_x0, gl_GlobalInvocationID.y + pc.band_y0);
+  uint j = cam.image_height - 1u - pixel.y;  // the lesson counts rows from the bottom
+
+  uint first = acc.samples;
+  uint iterations = 0u;
+  while (acc.samples < pc.sample_target) {
+    ++iterations;  // the sample loop counts against the budget like every other loop
+    uint rays = 0u;
+    precise vec3 c = sample_color(cam, pixel, j, pc.sample_begin + acc.samples, iterations, rays);
+    if (iterations > pc.loop_budget) break;  // this sample is dropped and drawn again later
+    acc.r = add_fixed(acc.r, to_fixed(c.r));
+    acc.g = add_fixed(acc.g, to_fixed(c.g));
+    acc.b = add_fixed(acc.b, to_fixed(c.b));
+    if (count_rays) acc.rays += rays;
+    ++acc.samples;
+  }
+  if (iterations > pc.loop_budget) {
+    if (acc.samples == first) {  // one sample needs more than a whole budget
+      atomicAdd(status.overrun_pixels, 1u);  // the host fails the render rather than show this
+      sums[index].samples = 0xffffffffu;     // and no later dispatch tries the pixel again
+      return;
+    }
+    atomicAdd(status.unfinished_pixels, 1u);  // the host dispatches again
+  }
+  sums[index] = acc;
 }

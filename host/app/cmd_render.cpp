@@ -116,6 +116,13 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
   ++*run.written;
 }
 
+// Writes an image the GPU encoded to 8 bits itself, with the same Ctrl-C rule.
+void write_job(const run_context& run, const render_job& job, const image_rgb8& img) {
+  if (pending_signal() != 0) throw render_cancelled("the render had finished");
+  write_image(img, job.output, run.enc);
+  ++*run.written;
+}
+
 void summarize(const run_context& run, const render_job& job, const std::string& backend,
                double seconds) {
   if (run.o.quiet) return;
@@ -131,20 +138,30 @@ framebuffer draw_cpu(const run_context& run, const render_job& job) {
       engine_from(run.o));
 }
 
-// Shared submissions for a group of views (cameras, frames) of the run's one engine.
-std::vector<framebuffer> draw_gpu(const run_context& run, gpu::gpu_context& ctx,
-                                  gpu::gpu_engine& engine, std::span<const render_job> jobs) {
+// Shared submissions for a group of views (cameras, frames) of the run's one engine: each view's
+// means (`encoded` false), or its 8-bit image encoded on the device.
+struct gpu_group {
+  std::vector<framebuffer> means;   // without `encoded`
+  std::vector<image_rgb8> encoded;  // with it
+};
+
+gpu_group draw_gpu(const run_context& run, gpu::gpu_context& ctx, gpu::gpu_engine& engine,
+                   std::span<const render_job> jobs, bool encoded) {
   progress_bar bar("rendering on the GPU", run.win.samples(), !run.o.quiet);
   std::vector<camera> views;
   for (const render_job& j : jobs) views.push_back(j.cam);
-  std::vector<framebuffer> fbs =
-      engine.render_views(views, run.s.render, run.win, [&](int samples) { bar.update(samples); });
+  const auto progress = [&](int samples) { bar.update(samples); };
+  gpu_group out;
+  if (encoded)
+    out.encoded = engine.render_encoded(views, run.s.render, run.win, progress);
+  else
+    out.means = engine.render_views(views, run.s.render, run.win, progress);
   bar.finish();
   if (ctx.validation_messages() > 0)
     throw std::runtime_error("the Vulkan validation layer reported " +
                              std::to_string(ctx.validation_messages()) +
                              " problem(s) (above); no image written");
-  return fbs;
+  return out;
 }
 
 // Deterministic renders (one sample, no jitter, no lens, normal shading) must agree to a level;
@@ -188,16 +205,24 @@ int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
   gpu::gpu_engine engine(
       ctx, run.s,
       {.engine = engine_from(run.o), .pipeline_cache_folder = gpu::default_cache_folder()});
+  // PNG and PPM are encoded on the device (4 bytes a pixel read back), unless the CPU's check
+  // needs the means.
+  const bool encoded = run.o.backend != "both" &&
+                       format_for_path(jobs.front().output, "--output") != file_format::exr;
   bool all_alike = true;
   for (std::size_t first = 0; first < jobs.size(); first += group) {
     const std::span<const render_job> part(jobs.data() + first,
                                            std::min(group, jobs.size() - first));
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<framebuffer> fbs = draw_gpu(run, ctx, engine, part);
+    const gpu_group drawn = draw_gpu(run, ctx, engine, part, encoded);
     const double seconds = seconds_since(start);
     for (std::size_t k = 0; k < part.size(); ++k) {
-      if (run.o.backend == "both") all_alike &= check_against_cpu(run, part[k], fbs[k]);
-      write_job(run, part[k], fbs[k]);
+      if (encoded) {
+        write_job(run, part[k], drawn.encoded[k]);
+      } else {
+        if (run.o.backend == "both") all_alike &= check_against_cpu(run, part[k], drawn.means[k]);
+        write_job(run, part[k], drawn.means[k]);
+      }
       summarize(run, part[k],
                 part.size() > 1 ? backend + ", " + std::to_string(part.size()) + " views together"
                                 : backend,

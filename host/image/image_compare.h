@@ -1,7 +1,7 @@
 #pragma once
 #include <cstdint>
 
-#include "image.h"
+#include "image_rgb8.h"
 
 namespace rtvk {
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "image.h"
+#include "image_rgb8.h"
 
 namespace rtvk {
 

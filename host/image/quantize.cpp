@@ -1,18 +1,6 @@
 #include "quantize.h"
 
-#include <cmath>
-
 namespace rtvk {
-
-namespace {
-
-double encode(double c, double gamma) {
-  if (gamma == 1) return c;
-  if (gamma == 2) return std::sqrt(c);
-  return std::pow(c, 1 / gamma);
-}
-
-}  // namespace
 
 image_rgb8 quantize(const framebuffer& fb, double gamma) {
   image_rgb8 img{fb.width(), fb.height(), {}};
@@ -20,9 +8,9 @@ image_rgb8 quantize(const framebuffer& fb, double gamma) {
   for (int y = 0; y < fb.height(); ++y) {
     for (int x = 0; x < fb.width(); ++x) {
       const color& c = fb.at(x, y);
-      img.rgb.push_back(to_byte(encode(c.r, gamma)));
-      img.rgb.push_back(to_byte(encode(c.g, gamma)));
-      img.rgb.push_back(to_byte(encode(c.b, gamma)));
+      img.rgb.push_back(to_byte(encode_gamma(c.r, gamma)));
+      img.rgb.push_back(to_byte(encode_gamma(c.g, gamma)));
+      img.rgb.push_back(to_byte(encode_gamma(c.b, gamma)));
     }
   }
   return img;

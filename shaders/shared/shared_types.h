@@ -7,31 +7,34 @@
 #ifdef __cplusplus
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 namespace rtvk::gpu {
+using uvec2 = glm::uvec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uint = std::uint32_t;
 #endif
 
 // Descriptor bindings, set 0.
-#define RTVK_BINDING_CAMERA 0     // uniform buffer: camera_ubo[RTVK_MAX_VIEWS], one per view
-#define RTVK_BINDING_SPHERES 1    // storage buffer: gpu_sphere[]
-#define RTVK_BINDING_IMAGE 2      // storage buffer: float RGB sums per pixel of one band of rows
-#define RTVK_BINDING_MATERIALS 3  // storage buffer: gpu_material[]
-#define RTVK_BINDING_STATUS 4     // storage buffer: render_status
-#define RTVK_BINDING_PROBE 5      // storage buffer: probe_io or rng_probe_entry[] (probes only)
-#define RTVK_BINDING_BVH_NODES 6  // storage buffer: bvh_node[]
-#define RTVK_BINDING_BVH_INDEX 7  // storage buffer: uint[], leaf slot -> sphere index
-#define RTVK_BINDING_RAY_COUNT 8  // storage buffer: uint[], rays traced per pixel of the band
+#define RTVK_BINDING_CAMERA 0       // uniform buffer: camera_ubo[RTVK_MAX_VIEWS], one per view
+#define RTVK_BINDING_SPHERES 1      // storage buffer: gpu_sphere[]
+#define RTVK_BINDING_IMAGE 2        // storage buffer: pixel_sum[] of one band of rows
+#define RTVK_BINDING_MATERIALS 3    // storage buffer: gpu_material[]
+#define RTVK_BINDING_STATUS 4       // storage buffer: render_status
+#define RTVK_BINDING_PROBE 5        // storage buffer: probe_io or rng_probe_entry[] (probes only)
+#define RTVK_BINDING_BVH_NODES 6    // storage buffer: bvh_node[]
+#define RTVK_BINDING_BVH_INDEX 7    // storage buffer: uint[], leaf slot -> sphere index
+#define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
+#define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
 
 // Specialization constants of render.comp (0 and 1 are the workgroup's width and height): the
 // render's switches, fixed when its pipeline is built.
 #define RTVK_SPEC_JITTER 2      // bool: random sample positions inside each pixel
 #define RTVK_SPEC_LENS 3        // bool: some view has a lens (aperture > 0)
 #define RTVK_SPEC_USE_BVH 4     // bool: traverse the BVH, else test every sphere in order
-#define RTVK_SPEC_COUNT_RAYS 5  // bool: count each pixel's rays
+#define RTVK_SPEC_COUNT_RAYS 5  // bool: count each pixel's rays (pixel_sum::rays)
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 128 camera
 // blocks are 12 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
@@ -93,28 +96,48 @@ struct bvh_node {
   uint count;       // leaf: number of spheres (> 0); interior: 0
 };
 
-// Push constants (std430): the render's settings and what changes from one dispatch (one sample
-// of every pixel) to the next.
+// Push constants (std430): the render's settings and what changes from one dispatch to the next.
+// Each dispatch brings every pixel of the band up to `sample_target` samples of the window; an
+// invocation whose loop budget runs out first keeps what it finished, and a later dispatch goes
+// on from there.
 struct render_push {
-  vec3 sky_horizon;   // linear RGB seen along -y
-  uint sphere_count;  // spheres in the storage buffer
-  vec3 sky_zenith;    // linear RGB seen along +y
-  uint sample_index;  // which sample of each pixel this dispatch draws
-  uint seed;          // the render's random seed
-  uint max_depth;     // most scatter events per path
-  uint loop_budget;   // most loop iterations one invocation may run (lavapipe stops at 65,535)
-  uint band_y0;       // first image row of this band: the image buffers hold rows band_y0 on
-  uint band_rows;     // rows in this band
-  uint region_x0;     // first image column drawn
-  uint region_width;  // columns drawn; the image buffers hold, per view, band_rows x this
+  vec3 sky_horizon;    // linear RGB seen along -y
+  uint sphere_count;   // spheres in the storage buffer
+  vec3 sky_zenith;     // linear RGB seen along +y
+  uint sample_begin;   // the window's first sample index: a pixel's k-th sample is this + k
+  uint seed;           // the render's random seed
+  uint max_depth;      // most scatter events per path
+  uint loop_budget;    // most loop iterations one invocation may run (lavapipe stops at 65,535)
+  uint band_y0;        // first image row of this band: the image buffers hold rows band_y0 on
+  uint band_rows;      // rows in this band
+  uint region_x0;      // first image column drawn
+  uint region_width;   // columns drawn; the image buffers hold, per view, band_rows x this
+  uint sample_target;  // samples of the window each pixel has after this dispatch
+  float sum_scale;     // 2^F: a sample's channel c adds floor(c * sum_scale) (sample_sum.h)
+  float sample_limit;  // largest channel value a sample adds (sum_sample_limit)
+};
+
+// std430 array element: one pixel's exact running sums, 32 bytes. Each channel is a 64-bit
+// fixed-point number, (low word, high word), of F fractional bits (sample_sum.h).
+struct pixel_sum {
+  uvec2 r;       // sum of floor(red * 2^F)
+  uvec2 g;       // green, likewise
+  uvec2 b;       // blue, likewise
+  uint samples;  // samples of the window added so far
+  uint rays;     // rays traced for them (when counted)
+};
+
+// Push constants of tonemap.comp (std430).
+struct tonemap_push {
+  uint pixels;  // pixel_sum entries to encode
 };
 
 // std430: written by the shader when something went wrong.
 struct render_status {
-  uint overrun_pixels;  // invocations that hit loop_budget (their sample was not added)
-  uint pad0;            // unused
-  uint pad1;            // unused
-  uint pad2;            // unused
+  uint overrun_pixels;     // invocations whose first sample alone overran loop_budget
+  uint unfinished_pixels;  // invocations that stopped short of sample_target (counted per pass)
+  uint pad1;               // unused
+  uint pad2;               // unused
 };
 
 // std430, read and written by probe.comp: the host fills uv, the shader fills the rest.
@@ -177,7 +200,7 @@ static_assert(sizeof(gpu_material) == 32);
 static_assert(offsetof(render_push, sky_horizon) == 0);
 static_assert(offsetof(render_push, sphere_count) == 12);
 static_assert(offsetof(render_push, sky_zenith) == 16);
-static_assert(offsetof(render_push, sample_index) == 28);
+static_assert(offsetof(render_push, sample_begin) == 28);
 static_assert(offsetof(render_push, seed) == 32);
 static_assert(offsetof(render_push, max_depth) == 36);
 static_assert(offsetof(render_push, loop_budget) == 40);
@@ -185,7 +208,18 @@ static_assert(offsetof(render_push, band_y0) == 44);
 static_assert(offsetof(render_push, band_rows) == 48);
 static_assert(offsetof(render_push, region_x0) == 52);
 static_assert(offsetof(render_push, region_width) == 56);
-static_assert(sizeof(render_push) == 60 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, sample_target) == 60);
+static_assert(offsetof(render_push, sum_scale) == 64);
+static_assert(offsetof(render_push, sample_limit) == 68);
+static_assert(sizeof(render_push) == 72 && sizeof(render_push) <= 128);
+static_assert(offsetof(pixel_sum, r) == 0);
+static_assert(offsetof(pixel_sum, g) == 8);
+static_assert(offsetof(pixel_sum, b) == 16);
+static_assert(offsetof(pixel_sum, samples) == 24);
+static_assert(offsetof(pixel_sum, rays) == 28);
+static_assert(sizeof(pixel_sum) == 32);
+static_assert(sizeof(tonemap_push) == 4);
+static_assert(offsetof(render_status, unfinished_pixels) == 4);
 static_assert(RTVK_MAX_VIEWS * sizeof(camera_ubo) <= 16384);
 static_assert(offsetof(bvh_node, bounds_min) == 0);
 static_assert(offsetof(bvh_node, first) == 12);

@@ -69,14 +69,20 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
       {"render_push",
        {sizeof(gpu::render_push),
         {RTVK_MEMBER(render_push, sky_horizon), RTVK_MEMBER(render_push, sphere_count),
-         RTVK_MEMBER(render_push, sky_zenith), RTVK_MEMBER(render_push, sample_index),
+         RTVK_MEMBER(render_push, sky_zenith), RTVK_MEMBER(render_push, sample_begin),
          RTVK_MEMBER(render_push, seed), RTVK_MEMBER(render_push, max_depth),
          RTVK_MEMBER(render_push, loop_budget), RTVK_MEMBER(render_push, band_y0),
          RTVK_MEMBER(render_push, band_rows), RTVK_MEMBER(render_push, region_x0),
-         RTVK_MEMBER(render_push, region_width)}}},
+         RTVK_MEMBER(render_push, region_width), RTVK_MEMBER(render_push, sample_target),
+         RTVK_MEMBER(render_push, sum_scale), RTVK_MEMBER(render_push, sample_limit)}}},
+      {"pixel_sum",
+       {sizeof(gpu::pixel_sum),
+        {RTVK_MEMBER(pixel_sum, r), RTVK_MEMBER(pixel_sum, g), RTVK_MEMBER(pixel_sum, b),
+         RTVK_MEMBER(pixel_sum, samples), RTVK_MEMBER(pixel_sum, rays)}}},
+      {"tonemap_push", {sizeof(gpu::tonemap_push), {RTVK_MEMBER(tonemap_push, pixels)}}},
       {"render_status",
        {sizeof(gpu::render_status),
-        {RTVK_MEMBER(render_status, overrun_pixels), RTVK_MEMBER(render_status, pad0),
+        {RTVK_MEMBER(render_status, overrun_pixels), RTVK_MEMBER(render_status, unfinished_pixels),
          RTVK_MEMBER(render_status, pad1), RTVK_MEMBER(render_status, pad2)}}},
       {"probe_io",
        {sizeof(gpu::probe_io),
@@ -213,6 +219,7 @@ class struct_walker {
 TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
   const std::vector<std::pair<std::string, std::span<const std::uint32_t>>> shaders = {
       {"render.comp", gpu::render_shader()},
+      {"tonemap.comp", gpu::tonemap_shader()},
       {"probe.comp", gpu::probe_shader()},
       {"rng_probe.comp", gpu::rng_probe_shader()},
       {"hit_probe.comp", gpu::hit_probe_shader()}};
@@ -266,11 +273,11 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
     }
   }
   // Coverage cannot shrink unnoticed: every shared struct is checked in some shader, and the
-  // push constants (render.comp's) are among the blocks walked.
+  // push constants (render.comp's and tonemap.comp's) are among the blocks walked.
   for (const auto& [name, layout] : cpp_layouts())
     EXPECT_GT(checked[name], 0) << name << " was found in no shader's buffers or push constants";
-  EXPECT_GE(blocks, 13) << "uniform, storage and push-constant blocks walked";
-  EXPECT_EQ(push_blocks, 1) << "push-constant blocks walked";
+  EXPECT_GE(blocks, 16) << "uniform, storage and push-constant blocks walked";
+  EXPECT_EQ(push_blocks, 2) << "push-constant blocks walked";
 }
 
 // --- The camera on the GPU ---------------------------------------------------------------------

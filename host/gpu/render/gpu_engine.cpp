@@ -2,15 +2,22 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <deque>
 #include <span>
+#include <thread>
 
 #include "compute_pipeline.h"
 #include "elapsed.h"
 #include "errors.h"
 #include "gpu_scene.h"
 #include "packing.h"
+#include "parallel.h"
 #include "render_targets.h"
+#include "sample_sum.h"
 #include "shaders.h"
 
 namespace rtvk::gpu {
@@ -55,7 +62,7 @@ struct work_layout {
 
 work_layout plan_work(const device_info& dev, const gpu_render_options& options,
                       const render_window& win, std::size_t views) {
-  const VkDeviceSize row_bytes = VkDeviceSize(win.width) * 3 * sizeof(float);
+  const VkDeviceSize row_bytes = VkDeviceSize(win.width) * sizeof(pixel_sum);
   const VkDeviceSize limit =
       std::min<VkDeviceSize>(dev.limits.maxStorageBufferRange,
                              options.band_bytes ? options.band_bytes : default_band_bytes);
@@ -75,7 +82,7 @@ void check_views(const std::vector<camera>& views, const render_window& win) {
   check_window(win, views[0].image_width(), views[0].image_height());
 }
 
-// Fails the render when any invocation ran out of its loop budget.
+// Fails the render when any invocation ran out of its loop budget on a single sample.
 void check_overrun(const render_status& st, std::uint32_t budget, const device_info& dev) {
   if (st.overrun_pixels > 0)
     throw loop_budget_error(std::to_string(st.overrun_pixels) + " pixel samples needed more than " +
@@ -84,43 +91,50 @@ void check_overrun(const render_status& st, std::uint32_t budget, const device_i
                             "writes no image): lower --depth or use fewer spheres");
 }
 
-// The readback of one band -- for each view in turn, `rows` rows of sums -- divided into means
-// and placed at row `first_row` of each view's framebuffer.
-void unpack_band(const float* rgb, std::span<framebuffer> views, int first_row, int rows,
-                 int samples) {
-  for (framebuffer& fb : views)
-    for (int row = first_row; row < first_row + rows; ++row)
-      for (int x = 0; x < fb.width(); ++x, rgb += 3)
-        fb.at(x, row) = divide(color(rgb[0], rgb[1], rgb[2]), samples);
+// The brightest channel value a path can bring back: the sky's (every attenuation is at most 1),
+// or the normal material's 1.
+double brightest(const sky& background) {
+  double most = 1;
+  for (int k = 0; k < 3; ++k) most = std::max({most, background.horizon[k], background.zenith[k]});
+  return most;
 }
 
-// The push constants every dispatch of a render shares; the band and sample fields are set for
+// The push constants every dispatch of a render shares; the band and target fields are set for
 // each pass.
 render_push make_push(const sky& background, const render_settings& rs, const render_window& win,
                       const gpu_render_options& options, const device_info& dev,
-                      std::uint32_t sphere_count) {
+                      std::uint32_t sphere_count, int exponent) {
   render_push push{};
   push.sky_horizon = vec3(background.horizon);
   push.sky_zenith = vec3(background.zenith);
   push.sphere_count = sphere_count;
+  push.sample_begin = std::uint32_t(win.sample_begin);
   push.seed = rs.seed;
   push.max_depth = std::uint32_t(rs.max_depth);
   push.loop_budget = options.loop_budget ? options.loop_budget : default_loop_budget(dev);
   push.region_x0 = std::uint32_t(win.x);
   push.region_width = std::uint32_t(win.width);
+  push.sum_scale = std::ldexp(1.0f, exponent);
+  push.sample_limit = float(sum_sample_limit(exponent));
   return push;
 }
 
 // Every buffer the render shader reads or writes, by binding.
-std::vector<buffer_binding> bindings(const gpu_scene& g, const render_targets& t) {
+std::vector<buffer_binding> render_bindings(const gpu_scene& g, const render_targets& t) {
   return {{RTVK_BINDING_CAMERA, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, t.cameras.get()},
           {RTVK_BINDING_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.spheres()},
           {RTVK_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.materials()},
-          {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.image.get()},
+          {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.sums.get()},
           {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.status.get()},
           {RTVK_BINDING_BVH_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.nodes()},
-          {RTVK_BINDING_BVH_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.index()},
-          {RTVK_BINDING_RAY_COUNT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.ray_counts.get()}};
+          {RTVK_BINDING_BVH_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.index()}};
+}
+
+// What tonemap.comp reads and writes.
+std::vector<buffer_binding> tonemap_bindings(const render_targets& t) {
+  return {{RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.sums.get()},
+          {RTVK_BINDING_BYTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.bytes.get()},
+          {RTVK_BINDING_THRESHOLDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.thresholds.get()}};
 }
 
 // Where one band is in the whole render, for progress and messages.
@@ -129,10 +143,12 @@ struct band_pass {
   std::uint32_t band, bands;  // band of the group, of how many
   std::uint32_t views;        // views in the group (the dispatch's z size)
   std::uint32_t y0, rows;     // image rows the band covers
+  VkDeviceSize pixels() const { return VkDeviceSize(views) * rows; }  // times the width
 };
 
-// What a band_renderer uses of its engine. `drawn` (some band was drawn before) and `batch`
-// (samples per submission) carry over from one render to the next.
+// What a band_renderer uses of its engine. `drawn` (some band was drawn before), `batch`
+// (samples per submission) and `per_dispatch` (samples per dispatch) carry over from one render
+// to the next.
 struct engine_parts {
   gpu_context& ctx;
   render_targets& targets;
@@ -140,49 +156,72 @@ struct engine_parts {
   std::array<std::uint32_t, 2> wg;  // workgroup size
   const gpu_render_options& options;
   bool& drawn;
-  int& batch;
+  std::uint32_t& batch;
+  std::uint32_t& per_dispatch;
 };
 
-// Draws bands: each in submissions of growing batches of samples that accumulate on the device,
-// the last one copying the sums back. Submissions grow from one sample until each takes about a
-// quarter second: long enough to keep the device busy, short enough for progress, interruption
-// and the fence timeout.
+// A submission in flight: what it asked of the pixels, and when.
+struct in_flight {
+  std::uint64_t ticket;                          // gpu_context::submit's
+  std::uint32_t target;                          // samples every pixel has once it is done...
+  bool complete;                                 // ...unless some are unfinished (final target)
+  std::uint32_t dispatches;                      // it recorded
+  std::chrono::steady_clock::time_point queued;  // when it was submitted
+};
+
+// Draws bands. Each submission brings every pixel up by `batch` samples, in dispatches of
+// `per_dispatch` samples each; two submissions are in flight at once, so the device starts the
+// next while the host waits for the last. Both sizes grow from one: submissions until each takes
+// about a tenth of a second (long enough to keep the device busy, short enough for progress,
+// interruption and the fence timeout), dispatches until each takes a few milliseconds of device
+// time. Pixels whose loop budget ran out go on in the next dispatch; once the last target is
+// asked for, the renderer waits, and submits again until no pixel is unfinished. The last
+// submission of a band ends with its readback (sums, or bytes encoded by tonemap_pipeline).
 class band_renderer {
  public:
   band_renderer(const engine_parts& engine, const compute_pipeline& pipeline,
-                const render_push& push, const render_window& win, bool count_rays)
-      : e_(engine), pipeline_(pipeline), push_(push), win_(win), count_rays_(count_rays) {}
+                const compute_pipeline* tonemap, const render_push& push, const render_window& win)
+      : e_(engine), pipeline_(pipeline), tonemap_(tonemap), push_(push), win_(win) {}
 
   // Every sample of the band; `progress` is called with samples done over all passes.
   void draw(const band_pass& b, const sample_progress& progress, render_stats* stats) {
     push_.band_y0 = b.y0;
     push_.band_rows = b.rows;
-    const int samples = win_.samples();
-    const std::int64_t passes = std::int64_t(b.groups) * b.bands;
-    int done = 0;
-    while (done < samples) {
-      if (e_.options.engine.cancelled && e_.options.engine.cancelled()) throw cancelled(b, done);
-      const int count = std::min(e_.batch, samples - done);
-      const auto start = std::chrono::steady_clock::now();
-      e_.ctx.submit_and_wait(
-          [&](VkCommandBuffer cb) { record(cb, b, done, count, done + count == samples); });
-      e_.drawn = true;
-      if (stats) {
-        ++stats->submissions;
-        stats->gpu_seconds += e_.timer.seconds();
+    const std::uint32_t samples = std::uint32_t(win_.samples());
+    std::deque<in_flight> pending;
+    std::uint32_t target = 0;        // asked of every pixel so far
+    std::uint32_t final_passes = 0;  // completed submissions asking for the last target
+    bool first = true;
+    for (;;) {
+      if (e_.options.engine.cancelled && e_.options.engine.cancelled()) {
+        e_.ctx.wait_all();
+        throw cancelled(b, target);
       }
-      check_overrun(*static_cast<const render_status*>(e_.targets.status.read()), push_.loop_budget,
-                    e_.ctx.device());
-      done += count;
-      if (progress)
-        progress(int((std::int64_t(b.group * b.bands + b.band) * samples + done) / passes));
-      const double seconds = seconds_since(start);
-      if (seconds < 0.25) e_.batch = std::min(e_.batch * 2, 256);
+      const std::uint32_t from = target;
+      target = std::min(samples, target + e_.batch);
+      pending.push_back(submit(b, first, from, target, target == samples));
+      first = false;
+      // Wait for the oldest while the newest runs; at the last target, for all of them.
+      while (!pending.empty() &&
+             (pending.size() == gpu_context::submission_slots || target == samples)) {
+        const in_flight done = pending.front();
+        pending.pop_front();
+        finish(done, stats);
+        if (progress) progress(progress_value(b, done.target));
+        if (done.complete && unfinished() == 0) return;
+        // Each pass at the last target moves every unfinished pixel on by a sample at least (one
+        // that cannot is an overrun): more passes than samples would mean none moves any more.
+        if (done.complete && ++final_passes > samples)
+          throw std::runtime_error(
+              "the GPU render stopped advancing: " + std::to_string(unfinished()) +
+              " pixels still unfinished after " + std::to_string(final_passes) + " passes on " +
+              e_.ctx.device().name);
+      }
     }
   }
 
  private:
-  render_cancelled cancelled(const band_pass& b, int done) const {
+  render_cancelled cancelled(const band_pass& b, std::uint32_t done) const {
     return render_cancelled("stopped after " + std::to_string(done) + " of " +
                             std::to_string(win_.samples()) + " samples per pixel of band " +
                             std::to_string(b.band + 1) + " of " + std::to_string(b.bands) +
@@ -190,73 +229,130 @@ class band_renderer {
                             std::to_string(b.groups));
   }
 
+  int progress_value(const band_pass& b, std::uint32_t target) const {
+    const std::int64_t passes = std::int64_t(b.groups) * b.bands;
+    return int((std::int64_t(b.group * b.bands + b.band) * win_.samples() + target) / passes);
+  }
+
+  std::uint32_t unfinished() {
+    return static_cast<const render_status*>(e_.targets.status.read())->unfinished_pixels;
+  }
+
+  in_flight submit(const band_pass& b, bool first, std::uint32_t from, std::uint32_t to,
+                   bool last) {
+    const std::uint32_t step = std::max(1u, e_.per_dispatch);
+    const std::uint32_t dispatches = std::max(1u, (to - from + step - 1) / step);
+    const std::uint64_t ticket =
+        e_.ctx.submit([&](VkCommandBuffer cb) { record(cb, b, first, from, to, step, last); });
+    e_.drawn = true;
+    return {ticket, to, last, dispatches, std::chrono::steady_clock::now()};
+  }
+
+  // After the submission is done: device time, overruns, and the sizes of the next ones.
+  void finish(const in_flight& f, render_stats* stats) {
+    e_.ctx.wait(f.ticket);
+    const double device_seconds = e_.timer.seconds(f.ticket);
+    const double wall = seconds_since(f.queued);
+    if (stats) {
+      ++stats->submissions;
+      stats->gpu_seconds += device_seconds;
+    }
+    check_overrun(*static_cast<const render_status*>(e_.targets.status.read()), push_.loop_budget,
+                  e_.ctx.device());
+    if (e_.options.samples_per_dispatch || e_.options.samples_per_submission) {
+      e_.per_dispatch = std::max(1u, e_.options.samples_per_dispatch);
+      e_.batch = std::max(e_.per_dispatch, e_.options.samples_per_submission);
+      return;
+    }
+    const double per_dispatch = (e_.timer.available() ? device_seconds : wall) / f.dispatches;
+    if (per_dispatch < 0.004 && e_.per_dispatch < (1u << 20)) e_.per_dispatch *= 2;
+    if (per_dispatch > 0.016 && e_.per_dispatch > 1) e_.per_dispatch /= 2;
+    if (wall < 0.1 && e_.batch < (1u << 20)) e_.batch *= 2;
+    if (wall > 0.4 && e_.batch > 1) e_.batch /= 2;
+    e_.batch = std::min(std::max(e_.batch, e_.per_dispatch), e_.per_dispatch * 256);
+  }
+
   // Before a band's first samples: cleared sums, and for a render's first band a cleared
   // overrun count.
   void record_start(VkCommandBuffer cb, bool first_band) const {
     if (e_.drawn) {  // the previous band's shader writes and copies out of these buffers come first
       barrier(cb, compute_stage | transfer_stage,
-              VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT, transfer_stage,
-              VK_ACCESS_TRANSFER_WRITE_BIT);
+              VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
+              transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
     }
     if (first_band) vkCmdFillBuffer(cb, e_.targets.status.get(), 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cb, e_.targets.image.get(), 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cb, e_.targets.ray_counts.get(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cb, e_.targets.sums.get(), 0, VK_WHOLE_SIZE, 0);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
   }
 
-  // After a band's last samples: the sums and ray counters copied to host-visible memory.
-  void record_readback(VkCommandBuffer cb, std::uint32_t views) const {
-    barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
-            VK_ACCESS_TRANSFER_READ_BIT);
-    const VkDeviceSize pixels = VkDeviceSize(win_.width) * push_.band_rows * views;
-    const VkBufferCopy copy{0, 0, pixels * 3 * sizeof(float)};
-    vkCmdCopyBuffer(cb, e_.targets.image.get(), e_.targets.readback.get(), 1, &copy);
-    const VkBufferCopy counts{0, 0, count_rays_ ? pixels * sizeof(std::uint32_t) : 4};
-    vkCmdCopyBuffer(cb, e_.targets.ray_counts.get(), e_.targets.ray_readback.get(), 1, &counts);
+  // After a band's last samples: the sums, or the bytes tonemap.comp makes of them, copied to
+  // host-visible memory.
+  void record_readback(VkCommandBuffer cb, const band_pass& b) const {
+    const VkDeviceSize pixels = VkDeviceSize(win_.width) * b.pixels();
+    barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage | transfer_stage,
+            VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferCopy copy{0, 0, pixels * sizeof(pixel_sum)};
+    VkBuffer from = e_.targets.sums.get();
+    if (tonemap_) {
+      tonemap_->bind(cb);
+      const tonemap_push tp{std::uint32_t(pixels)};
+      tonemap_->push(cb, &tp, sizeof tp);
+      vkCmdDispatch(cb, std::uint32_t((pixels + 63) / 64), 1, 1);
+      barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
+              VK_ACCESS_TRANSFER_READ_BIT);
+      copy.size = pixels * 4;
+      from = e_.targets.bytes.get();
+    }
+    vkCmdCopyBuffer(cb, from, e_.targets.readback.get(), 1, &copy);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
   }
 
-  // One submission: `count` samples from sample `done` of the band, one dispatch each.
-  void record(VkCommandBuffer cb, const band_pass& b, int done, int count, bool last) {
-    e_.timer.record_begin(cb);
-    if (done == 0) {
+  // One submission: dispatches bringing every pixel from `from` up to `to` samples, `step` at a
+  // time. When `to` is the band's last target, the unfinished count is cleared before the last
+  // dispatch (so it counts only that one) and the readback follows.
+  void record(VkCommandBuffer cb, const band_pass& b, bool first, std::uint32_t from,
+              std::uint32_t to, std::uint32_t step, bool last) {
+    const std::uint64_t ticket = e_.ctx.next_ticket();
+    e_.timer.record_begin(cb, ticket);
+    if (first) {
       record_start(cb, b.group == 0 && b.band == 0);
     } else {  // the previous submission's samples are in the sums this one adds to
-      barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
+      barrier(cb, compute_stage | transfer_stage,
+              VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT, compute_stage, shader_rw);
     }
-    pipeline_.bind(cb);
-    for (int k = 0; k < count; ++k) {
-      if (k > 0) barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
-      push_.sample_index = std::uint32_t(win_.sample_begin + done + k);
+    std::uint32_t t = from;
+    bool first_dispatch = true;
+    do {
+      t = std::min(to, t + step);
+      if (!first_dispatch)  // it goes on from the sums the one before left
+        barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage, shader_rw);
+      first_dispatch = false;
+      if (last && t == to) {
+        barrier(cb, compute_stage, shader_rw, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
+        vkCmdFillBuffer(cb, e_.targets.status.get(), offsetof(render_status, unfinished_pixels),
+                        sizeof(std::uint32_t), 0);
+        barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
+      }
+      pipeline_.bind(cb);
+      push_.sample_target = t;
       pipeline_.push(cb, &push_, sizeof push_);
       vkCmdDispatch(cb, (push_.region_width + e_.wg[0] - 1) / e_.wg[0],
                     (push_.band_rows + e_.wg[1] - 1) / e_.wg[1], b.views);
-    }
-    if (last) record_readback(cb, b.views);
-    barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+    } while (t < to);
+    if (last) record_readback(cb, b);
+    barrier(cb, compute_stage | transfer_stage,
+            VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
-    e_.timer.record_end(cb);
+    e_.timer.record_end(cb, ticket);
   }
 
   engine_parts e_;  // the engine's context, targets, timer, options and carried-over state
   const compute_pipeline& pipeline_;
-  render_push push_;          // band and sample fields change per pass
-  const render_window& win_;  // region and sample range of every view
-  bool count_rays_;           // the pixels' ray counters are read back
+  const compute_pipeline* tonemap_;  // encodes the readback to bytes; null: sums
+  render_push push_;                 // band and target fields change per dispatch
+  const render_window& win_;         // region and sample range of every view
 };
-
-// A band's sums read back into each view's framebuffer, and its ray counts into the stats.
-void read_band(render_targets& t, const band_pass& b, const render_window& win,
-               std::span<framebuffer> views, bool count_rays, render_stats* stats) {
-  if (stats && count_rays) {
-    const auto* counts = static_cast<const std::uint32_t*>(t.ray_readback.read());
-    const std::size_t n = std::size_t(win.width) * b.rows * b.views;
-    for (std::size_t i = 0; i < n; ++i) stats->rays += counts[i];
-  }
-  unpack_band(static_cast<const float*>(t.readback.read()), views, int(b.y0) - win.y, int(b.rows),
-              win.samples());
-}
 
 // The camera block for views [first, first + count).
 void write_cameras(gpu_buffer& cameras, const std::vector<camera>& views, std::size_t first,
@@ -264,6 +360,15 @@ void write_cameras(gpu_buffer& cameras, const std::vector<camera>& views, std::s
   std::vector<camera_ubo> ubos(RTVK_MAX_VIEWS);
   for (std::uint32_t v = 0; v < count; ++v) ubos[v] = to_ubo(views[first + v]);
   cameras.write(ubos.data(), ubos.size() * sizeof(camera_ubo));  // no submission is in flight
+}
+
+// Runs body(row) for rows [0, rows) on every core: readback conversion should not leave all but
+// one idle.
+void for_rows(int rows, const std::function<void(int row)>& body) {
+  const int workers = std::clamp(int(std::thread::hardware_concurrency()), 1, std::max(rows, 1));
+  run_workers(workers, [&](int worker, const std::atomic<bool>& stop) {
+    for (int row = worker; row < rows && !stop; row += workers) body(row);
+  });
 }
 
 }  // namespace
@@ -277,12 +382,13 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       scene_buffers_(gpu_scene::buffers(s, options.engine.use_bvh)),
       wg_(workgroup_size(ctx.device())),
       // The limits first, with the smallest targets: larger ones are checked when asked for.
-      scene_((check_device_fits(ctx, render_targets::buffers(scene_buffers_, 12, 4),
-                                "--scene " + s.name),
-              gpu_scene(ctx, s, options.engine.use_bvh))),
-      targets_(std::make_unique<render_targets>(ctx, 12, 4)),
+      scene_(
+          (check_device_fits(ctx, render_targets::buffers(scene_buffers_, 1), "--scene " + s.name),
+           gpu_scene(ctx, s, options.engine.use_bvh))),
+      targets_(std::make_unique<render_targets>(ctx, 1)),
       cache_(ctx, options.pipeline_cache_folder),
-      timer_(ctx) {
+      timer_(ctx),
+      exponent_(rtvk::sum_exponent(brightest(s.sky))) {
   upload();
   setup_seconds_ = seconds_since(start_);
 }
@@ -295,15 +401,21 @@ void gpu_engine::upload() {
   });
 }
 
-render_targets& gpu_engine::targets_for(VkDeviceSize image_bytes, VkDeviceSize count_bytes) {
-  if (targets_->image.size() >= image_bytes && targets_->ray_counts.size() >= count_bytes)
-    return *targets_;
-  check_device_fits(ctx_, render_targets::buffers(scene_buffers_, image_bytes, count_bytes),
+render_targets& gpu_engine::targets_for(VkDeviceSize pixels) {
+  if (targets_->pixels >= pixels) return *targets_;
+  check_device_fits(ctx_, render_targets::buffers(scene_buffers_, pixels),
                     "--scene " + scene_name_);
   targets_.reset();  // no submission is in flight
-  targets_ = std::make_unique<render_targets>(ctx_, image_bytes, count_bytes);
-  for (auto& [switches, pipeline] : pipelines_) pipeline->rebind(bindings(scene_, *targets_));
+  targets_ = std::make_unique<render_targets>(ctx_, pixels);
+  thresholds_gamma_ = 0;
+  rebind_all();
   return *targets_;
+}
+
+void gpu_engine::rebind_all() {
+  for (auto& [switches, pipeline] : pipelines_)
+    pipeline->rebind(render_bindings(scene_, *targets_));
+  if (tonemap_) tonemap_->rebind(tonemap_bindings(*targets_));
 }
 
 const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool count_rays) {
@@ -317,38 +429,95 @@ const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool co
     spec[RTVK_SPEC_LENS] = lens;
     spec[RTVK_SPEC_USE_BVH] = options_.engine.use_bvh;
     spec[RTVK_SPEC_COUNT_RAYS] = count_rays;
-    p = std::make_unique<compute_pipeline>(ctx_, render_shader(), bindings(scene_, *targets_),
-                                           sizeof(render_push), spec, cache_.get());
+    p = std::make_unique<compute_pipeline>(ctx_, render_shader(),
+                                           render_bindings(scene_, *targets_), sizeof(render_push),
+                                           spec, cache_.get());
     cache_.save();  // a cache that cannot be written only makes the next run slower
   }
   return *p;
 }
 
-std::vector<framebuffer> gpu_engine::render_views(const std::vector<camera>& views,
-                                                  const render_settings& rs,
-                                                  const render_window& win,
-                                                  const sample_progress& progress,
-                                                  render_stats* stats) {
+const compute_pipeline& gpu_engine::tonemap_pipeline() {
+  if (!tonemap_) {
+    tonemap_ = std::make_unique<compute_pipeline>(ctx_, tonemap_shader(),
+                                                  tonemap_bindings(*targets_), sizeof(tonemap_push),
+                                                  std::span<const std::uint32_t>{}, cache_.get());
+    cache_.save();
+  }
+  return *tonemap_;
+}
+
+void gpu_engine::write_thresholds(double gamma) {
+  if (thresholds_gamma_ == gamma) return;
+  const byte_thresholds t = make_byte_thresholds(gamma, exponent_);
+  std::vector<uvec2> words(t.size());
+  for (std::size_t k = 0; k < t.size(); ++k)
+    words[k] = uvec2(std::uint32_t(t[k]), std::uint32_t(t[k] >> 32));
+  targets_->thresholds.write(words.data(), words.size() * sizeof(uvec2));  // nothing in flight
+  thresholds_gamma_ = gamma;
+}
+
+std::vector<std::uint32_t> gpu_engine::encode_sums(const std::vector<pixel_sum>& sums,
+                                                   double gamma) {
+  if (sums.empty()) return {};
+  render_targets& t = targets_for(sums.size());
+  const compute_pipeline& tonemap = tonemap_pipeline();
+  write_thresholds(gamma);
+  const VkDeviceSize bytes = sums.size() * sizeof(pixel_sum);
+  gpu_buffer staging(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, memory_use::upload);
+  staging.write(sums.data(), bytes);
+  ctx_.submit_and_wait([&](VkCommandBuffer cb) {
+    if (drawn_)
+      barrier(cb, compute_stage | transfer_stage, shader_rw | VK_ACCESS_TRANSFER_READ_BIT,
+              transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
+    const VkBufferCopy in{0, 0, bytes};
+    vkCmdCopyBuffer(cb, staging.get(), t.sums.get(), 1, &in);
+    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
+    tonemap.bind(cb);
+    const tonemap_push tp{std::uint32_t(sums.size())};
+    tonemap.push(cb, &tp, sizeof tp);
+    vkCmdDispatch(cb, std::uint32_t((sums.size() + 63) / 64), 1, 1);
+    barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
+            VK_ACCESS_TRANSFER_READ_BIT);
+    const VkBufferCopy out{0, 0, sums.size() * 4};
+    vkCmdCopyBuffer(cb, t.bytes.get(), t.readback.get(), 1, &out);
+    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+            VK_ACCESS_HOST_READ_BIT);
+  });
+  drawn_ = true;
+  const auto* rgba = static_cast<const std::uint32_t*>(t.readback.read());
+  return std::vector<std::uint32_t>(rgba, rgba + sums.size());
+}
+
+void gpu_engine::draw(const std::vector<camera>& views, const render_settings& rs,
+                      const render_window& win, readback_kind kind, const sample_progress& progress,
+                      render_stats* stats, const band_sink& sink) {
   check_views(views, win);
   const device_info& dev = ctx_.device();
   const work_layout layout = plan_work(dev, options_, win, views.size());
-  const VkDeviceSize group_pixels =
-      VkDeviceSize(win.width) * layout.band_rows * layout.views_per_group;
+  render_targets& targets =
+      targets_for(VkDeviceSize(win.width) * layout.band_rows * layout.views_per_group);
   // One 32-bit counter per pixel: it holds at most spp * max_depth rays.
   const bool count_rays = options_.engine.count_rays &&
                           std::uint64_t(win.samples()) * std::uint64_t(rs.max_depth) < (1ull << 32);
-  render_targets& targets = targets_for(group_pixels * 3 * sizeof(float),
-                                        count_rays ? group_pixels * sizeof(std::uint32_t) : 4);
+  const compute_pipeline* tonemap = nullptr;
+  if (kind == readback_kind::bytes) {
+    tonemap = &tonemap_pipeline();
+    write_thresholds(rs.gamma);
+  }
   // The BVH's build is the first render's: later ones reuse it.
   if (stats) *stats = render_stats{.build_seconds = drawn_ ? 0.0 : build_seconds()};
   const bool lens =
       std::any_of(views.begin(), views.end(), [](const camera& c) { return c.lens_radius() > 0; });
-  band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, batch_},
-                      pipeline_for(rs.jitter, lens, count_rays),
-                      make_push(sky_, rs, win, options_, dev, scene_.sphere_count()), win,
-                      count_rays);
+  if (options_.samples_per_dispatch || options_.samples_per_submission) {
+    per_dispatch_ = std::max(1u, options_.samples_per_dispatch);
+    batch_ = std::max(per_dispatch_, options_.samples_per_submission);
+  }
+  band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, batch_, per_dispatch_},
+                      pipeline_for(rs.jitter, lens, count_rays), tonemap,
+                      make_push(sky_, rs, win, options_, dev, scene_.sphere_count(), exponent_),
+                      win);
 
-  std::vector<framebuffer> out(views.size(), framebuffer{win.width, win.height});
   band_pass b{};
   b.bands = (std::uint32_t(win.height) + layout.band_rows - 1) / layout.band_rows;
   b.groups = (views.size() + layout.views_per_group - 1) / layout.views_per_group;
@@ -360,10 +529,85 @@ std::vector<framebuffer> gpu_engine::render_views(const std::vector<camera>& vie
     for (b.band = 0; b.band < b.bands; ++b.band) {
       b.y0 = std::uint32_t(win.y) + b.band * layout.band_rows;
       b.rows = std::min(layout.band_rows, std::uint32_t(win.height) - b.band * layout.band_rows);
-      bands.draw(b, progress, stats);
-      read_band(targets, b, win, std::span(out).subspan(first_view, b.views), count_rays, stats);
+      try {
+        bands.draw(b, progress, stats);
+      } catch (...) {
+        ctx_.wait_all();  // the other submission in flight still uses the targets
+        throw;
+      }
+      const void* data = targets.readback.read();
+      if (stats && count_rays) {
+        const auto* sums = static_cast<const pixel_sum*>(data);
+        const std::size_t n = std::size_t(win.width) * b.pixels();
+        for (std::size_t i = 0; i < n; ++i) stats->rays += sums[i].rays;
+      }
+      sink(first_view, b.views, int(b.y0) - win.y, int(b.rows), data);
     }
   }
+}
+
+std::vector<framebuffer> gpu_engine::render_views(const std::vector<camera>& views,
+                                                  const render_settings& rs,
+                                                  const render_window& win,
+                                                  const sample_progress& progress,
+                                                  render_stats* stats) {
+  std::vector<framebuffer> out(views.size(), framebuffer{win.width, win.height});
+  const int f = exponent_;
+  draw(views, rs, win, readback_kind::sums, progress, stats,
+       [&](std::size_t first, std::uint32_t count, int row0, int rows, const void* data) {
+         const auto* sums = static_cast<const pixel_sum*>(data);
+         for_rows(int(count) * rows, [&](int r) {
+           framebuffer& fb = out[first + std::size_t(r / rows)];
+           const pixel_sum* p = sums + std::size_t(r) * std::size_t(win.width);
+           const int y = row0 + r % rows;
+           for (int x = 0; x < win.width; ++x, ++p) {
+             const auto word = [](uvec2 w) { return std::uint64_t(w.y) << 32 | w.x; };
+             fb.at(x, y) =
+                 color(sum_mean(word(p->r), p->samples, f), sum_mean(word(p->g), p->samples, f),
+                       sum_mean(word(p->b), p->samples, f));
+           }
+         });
+       });
+  return out;
+}
+
+std::vector<image_rgb8> gpu_engine::render_encoded(const std::vector<camera>& views,
+                                                   const render_settings& rs,
+                                                   const render_window& win,
+                                                   const sample_progress& progress,
+                                                   render_stats* stats) {
+  std::vector<image_rgb8> out(
+      views.size(),
+      image_rgb8{win.width, win.height,
+                 std::vector<std::uint8_t>(std::size_t(win.width) * std::size_t(win.height) * 3)});
+  draw(views, rs, win, readback_kind::bytes, progress, stats,
+       [&](std::size_t first, std::uint32_t count, int row0, int rows, const void* data) {
+         const auto* rgba = static_cast<const std::uint8_t*>(data);
+         for_rows(int(count) * rows, [&](int r) {
+           image_rgb8& img = out[first + std::size_t(r / rows)];
+           const std::uint8_t* from = rgba + std::size_t(r) * std::size_t(win.width) * 4;
+           std::uint8_t* to = img.rgb.data() + std::size_t(row0 + r % rows) * win.width * 3;
+           for (int x = 0; x < win.width; ++x, from += 4, to += 3) std::copy(from, from + 3, to);
+         });
+       });
+  return out;
+}
+
+std::vector<sum_image> gpu_engine::render_sums(const std::vector<camera>& views,
+                                               const render_settings& rs, const render_window& win,
+                                               const sample_progress& progress,
+                                               render_stats* stats) {
+  std::vector<sum_image> out(
+      views.size(), sum_image{win.width, win.height, exponent_,
+                              std::vector<pixel_sum>(std::size_t(win.width) * win.height)});
+  draw(views, rs, win, readback_kind::sums, progress, stats,
+       [&](std::size_t first, std::uint32_t count, int row0, int rows, const void* data) {
+         const auto* sums = static_cast<const pixel_sum*>(data);
+         const std::size_t w = std::size_t(win.width);
+         for (std::uint32_t v = 0; v < count; ++v)
+           std::copy(sums + v * rows * w, sums + (v + 1) * rows * w,
+                     out[first + v].pixels.begin() + std::ptrdiff_t(row0 * w));
+       });
   return out;
 }
 

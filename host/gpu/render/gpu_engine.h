@@ -1,11 +1,13 @@
 #pragma once
 #include <array>
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "byte_encoding.h"
 #include "camera.h"
 #include "compute_pipeline.h"
 #include "context.h"
@@ -13,6 +15,7 @@
 #include "device_timer.h"
 #include "framebuffer.h"
 #include "gpu_scene.h"
+#include "image_rgb8.h"
 #include "pipeline_cache.h"
 #include "render_gpu.h"
 #include "render_settings.h"
@@ -21,9 +24,20 @@
 
 namespace rtvk::gpu {
 
+// A render's exact per-pixel sums as the device left them: the mean of a channel is
+// sum_mean(sum, samples, exponent) (sample_sum.h). For encoders and for tests.
+struct sum_image {
+  int width = 0, height = 0;      // pixels of the window
+  int exponent = 0;               // F: fractional bits of the sums
+  std::vector<pixel_sum> pixels;  // row-major from the window's top
+};
+
 // A scene set up on one device once -- spheres, materials and BVH uploaded, pipelines built on
 // first use -- and then drawn as often as a run asks: every view, frame, band, region and
 // sample range.
+// Each invocation traces a run of its pixel's samples and adds them to exact fixed-point sums,
+// so the result does not depend on how samples are batched into dispatches or submissions: on
+// one device, the same scene, camera, window and samples give the same bits, however drawn.
 // The buffers the dispatches accumulate into grow to the largest request and are kept.
 // `ctx` must outlive the engine; the scene is copied to the device and not kept.
 class gpu_engine {
@@ -31,23 +45,58 @@ class gpu_engine {
   // Checks the scene's buffers against the device's limits (usage_error naming the buffer),
   // then builds, uploads and waits for them.
   gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_options& options = {});
+  // Waits for whatever is still in flight (after an error, a submission may be) before any
+  // buffer or pipeline it uses goes.
+  ~gpu_engine() { ctx_.wait_all(); }
+  gpu_engine(const gpu_engine&) = delete;
+  gpu_engine& operator=(const gpu_engine&) = delete;
 
-  // Draws `views` of the scene exactly as render_gpu_views does (same arguments, same result).
+  // Draws `views` of the scene exactly as render_gpu_views does (same arguments, same result):
+  // each pixel's mean, in double.
   std::vector<framebuffer> render_views(const std::vector<camera>& views, const render_settings& rs,
                                         const render_window& win,
                                         const sample_progress& progress = {},
                                         render_stats* stats = nullptr);
+  // The same render encoded to 8 bits on the device (tonemap.comp, with rs.gamma): bit for bit
+  // encode_sum of render_sums' sums, and 4 bytes a pixel read back instead of 32.
+  std::vector<image_rgb8> render_encoded(const std::vector<camera>& views,
+                                         const render_settings& rs, const render_window& win,
+                                         const sample_progress& progress = {},
+                                         render_stats* stats = nullptr);
+  // The same render's sums, as the device holds them.
+  std::vector<sum_image> render_sums(const std::vector<camera>& views, const render_settings& rs,
+                                     const render_window& win, const sample_progress& progress = {},
+                                     render_stats* stats = nullptr);
 
-  double setup_seconds() const { return setup_seconds_; }          // the constructor, wall clock
+  // tonemap.comp run on the given sums with this gamma: RGBA8 per pixel (red in the low byte).
+  // For tests of the encoding at its edges, where a render's sums rarely fall.
+  std::vector<std::uint32_t> encode_sums(const std::vector<pixel_sum>& sums, double gamma);
+
+  int sum_exponent() const { return exponent_; }           // F of every render of this scene
+  double setup_seconds() const { return setup_seconds_; }  // the constructor, wall clock
   double build_seconds() const { return scene_.build_seconds(); }  // of which the BVH
   const pipeline_cache& cache() const { return cache_; }
 
  private:
+  // What a render reads back: each band's sums, or its bytes encoded on the device.
+  enum class readback_kind { sums, bytes };
+  // Called for each band once its readback is in host memory: the band's first view (index into
+  // the render's views), views, first row (from the window's top) and rows, and the data (for
+  // each view in turn, rows x window width pixel_sum or RGBA8).
+  using band_sink = std::function<void(std::size_t first_view, std::uint32_t views, int row,
+                                       int rows, const void* data)>;
+  void draw(const std::vector<camera>& views, const render_settings& rs, const render_window& win,
+            readback_kind kind, const sample_progress& progress, render_stats* stats,
+            const band_sink& sink);
+
   void upload();
   // The targets, reallocated (after checking the device's limits) when too small.
-  render_targets& targets_for(VkDeviceSize image_bytes, VkDeviceSize count_bytes);
+  render_targets& targets_for(VkDeviceSize pixels);
   // The pipeline with these switches, built (through the cache) the first time it is asked for.
   const compute_pipeline& pipeline_for(bool jitter, bool lens, bool count_rays);
+  const compute_pipeline& tonemap_pipeline();
+  void rebind_all();
+  void write_thresholds(double gamma);
 
   std::chrono::steady_clock::time_point start_;  // construction began
   gpu_context& ctx_;
@@ -61,10 +110,14 @@ class gpu_engine {
   pipeline_cache cache_;                       // compiled code, kept between runs
   // One per combination of the render's switches (specialization constants), made on first use.
   std::map<std::uint32_t, std::unique_ptr<compute_pipeline>> pipelines_;
-  device_timer timer_;        // device time of each submission
-  bool drawn_ = false;        // some band was drawn before
-  int batch_ = 1;             // samples per submission, grows to 256
-  double setup_seconds_ = 0;  // the constructor took
+  std::unique_ptr<compute_pipeline> tonemap_;  // made on first use
+  device_timer timer_;                         // device time of each submission
+  int exponent_;                               // F of the sums (sample_sum.h)
+  double thresholds_gamma_ = 0;                // the thresholds buffer holds this gamma's; 0: none
+  bool drawn_ = false;                         // some band was drawn before
+  std::uint32_t batch_ = 1;         // samples per submission: grows while submissions are short
+  std::uint32_t per_dispatch_ = 1;  // samples per dispatch: grows while dispatches are short
+  double setup_seconds_ = 0;        // the constructor took
 };
 
 }  // namespace rtvk::gpu

@@ -34,6 +34,9 @@ struct gpu_render_options {
   engine_options engine = {};     // BVH or not, ray counting, cancellation
   std::uint32_t loop_budget = 0;  // most loop iterations per invocation; 0: the device's
   std::uint64_t band_bytes = 0;   // largest accumulation buffer; 0: default_band_bytes
+  // Samples per dispatch and per submission; 0: adapted to the measured times (tests fix them).
+  std::uint32_t samples_per_dispatch = 0;
+  std::uint32_t samples_per_submission = 0;
   // Where compiled pipelines are kept between runs (default_cache_folder()); empty: nowhere.
   std::filesystem::path pipeline_cache_folder = {};
 };
@@ -41,10 +44,11 @@ struct gpu_render_options {
 // Called with the number of samples per pixel finished so far; may be empty.
 using sample_progress = std::function<void(int samples_done)>;
 
-// The scene on the GPU, with the same sampling and random numbers as render_cpu: one dispatch
-// per sample accumulates into a float buffer that stays on the device, several dispatches per
-// submission, the BVH (or a linear scan) as options.engine.use_bvh says. Throws loop_budget_error,
-// naming the device and the budget, when any invocation overran.
+// The scene on the GPU, with the same sampling and random numbers as render_cpu: each
+// invocation traces a run of its pixel's samples and adds them to exact fixed-point sums that
+// stay on the device (sample_sum.h), the BVH (or a linear scan) as options.engine.use_bvh says.
+// Throws loop_budget_error, naming the device and the budget, when a single sample needs more
+// than the loop budget.
 framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
                        const render_settings& rs, const sample_progress& progress = {},
                        const gpu_render_options& options = {}, render_stats* stats = nullptr);

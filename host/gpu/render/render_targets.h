@@ -8,24 +8,26 @@
 
 namespace rtvk::gpu {
 
-// Where one group of views draws a band of rows: the camera block, the float sums the dispatches
-// accumulate into, the per-pixel ray counters, the status block that reports loop-budget
-// overruns, and host-visible copies to read the sums and counters back.
+// Where one group of views draws a band of rows: the camera block, the exact sums the
+// dispatches accumulate into (pixel_sum), the 8-bit pixels tonemap.comp encodes them to and the
+// thresholds it encodes with, the status block that reports loop-budget overruns and unfinished
+// pixels, and a host-visible copy to read sums or bytes back.
 struct render_targets {
-  // `image_bytes`: the largest band's sums; `count_bytes`: its ray counters (4 when not counted).
-  render_targets(const gpu_context& ctx, VkDeviceSize image_bytes, VkDeviceSize count_bytes);
+  // `pixels`: the largest band's pixels over all its views.
+  render_targets(const gpu_context& ctx, VkDeviceSize pixels);
 
   // The buffers a render allocates, the scene's in between, in the order check_device_fits
   // reports them.
   static std::vector<buffer_request> buffers(const std::vector<buffer_request>& scene_buffers,
-                                             VkDeviceSize image_bytes, VkDeviceSize count_bytes);
+                                             VkDeviceSize pixels);
 
-  gpu_buffer cameras;       // camera_ubo per view of the group (uniform)
-  gpu_buffer ray_counts;    // one counter per pixel (storage)
-  gpu_buffer ray_readback;  // ray_counts, copied back
-  gpu_buffer image;         // RGB float sums per pixel (storage)
-  gpu_buffer readback;      // image, copied back
-  gpu_buffer status;        // render_status (storage, host-visible)
+  VkDeviceSize pixels;    // what the buffers hold
+  gpu_buffer cameras;     // camera_ubo per view of the group (uniform)
+  gpu_buffer sums;        // pixel_sum per pixel (storage)
+  gpu_buffer bytes;       // RGBA8 per pixel (storage)
+  gpu_buffer thresholds;  // byte_thresholds as uvec2[256] (storage, written by the host)
+  gpu_buffer readback;    // sums or bytes, copied back
+  gpu_buffer status;      // render_status (storage, host-visible)
 };
 
 }  // namespace rtvk::gpu

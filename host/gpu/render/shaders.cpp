@@ -7,11 +7,15 @@
 #include "probe_spv.h"
 #include "render_spv.h"
 #include "rng_probe_spv.h"
+#include "tonemap_spv.h"
 
 namespace rtvk::gpu {
 
 std::span<const std::uint32_t> render_shader() {
   return render_spv;
+}
+std::span<const std::uint32_t> tonemap_shader() {
+  return tonemap_spv;
 }
 std::span<const std::uint32_t> probe_shader() {
   return probe_spv;

@@ -1,5 +1,6 @@
 #include "context.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "format.h"
@@ -8,30 +9,6 @@
 
 namespace rtvk::gpu {
 namespace {
-
-// A command buffer freed back to its pool when it goes out of scope.
-class scoped_command_buffer {
- public:
-  scoped_command_buffer(VkDevice device, VkCommandPool pool) : device_(device), pool_(pool) {
-    VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    info.commandPool = pool;
-    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    info.commandBufferCount = 1;
-    vk_check(vkAllocateCommandBuffers(device, &info, &cb_), "vkAllocateCommandBuffers");
-  }
-  ~scoped_command_buffer() {
-    if (cb_) vkFreeCommandBuffers(device_, pool_, 1, &cb_);
-  }
-  scoped_command_buffer(const scoped_command_buffer&) = delete;
-  scoped_command_buffer& operator=(const scoped_command_buffer&) = delete;
-  VkCommandBuffer get() const { return cb_; }
-  void release() { cb_ = VK_NULL_HANDLE; }
-
- private:
-  VkDevice device_;
-  VkCommandPool pool_;
-  VkCommandBuffer cb_ = VK_NULL_HANDLE;
-};
 
 template <typename T>
 void cap(T& value, T most) {
@@ -79,23 +56,31 @@ gpu_context::gpu_context(const gpu_options& options)
   vkGetDeviceQueue(device, d.compute_queue_family, 0, &queue_);
 
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  pool_info.flags =
+      VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool_info.queueFamilyIndex = d.compute_queue_family;
   VkCommandPool pool = VK_NULL_HANDLE;
   vk_check(vkCreateCommandPool(device, &pool_info, nullptr, &pool), "vkCreateCommandPool");
   pool_ = unique_command_pool(device, pool);
 
-  VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence fence = VK_NULL_HANDLE;
-  vk_check(vkCreateFence(device, &fence_info, nullptr, &fence), "vkCreateFence");
-  fence_ = unique_fence(device, fence);
+  for (slot& s : slots_) {
+    VkCommandBufferAllocateInfo cb_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    cb_info.commandPool = pool;
+    cb_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cb_info.commandBufferCount = 1;
+    vk_check(vkAllocateCommandBuffers(device, &cb_info, &s.cb), "vkAllocateCommandBuffers");
+    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence = VK_NULL_HANDLE;
+    vk_check(vkCreateFence(device, &fence_info, nullptr, &fence), "vkCreateFence");
+    s.fence = unique_fence(device, fence);
+  }
 }
 
 gpu_context::~gpu_context() {
   if (lost_) {
     // Work may still be pending on a hung device: destroying it could block or crash, and the
     // process is about to report the failure anyway. Leak rather than hang.
-    fence_.release();
+    for (slot& s : slots_) s.fence.release();
     pool_.release();
     device_.release();
     instance_.abandon();
@@ -121,35 +106,64 @@ bool gpu_context::memory_type_has(std::uint32_t type, VkMemoryPropertyFlags flag
 }
 
 void gpu_context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {
+  wait(submit(record));
+}
+
+std::uint64_t gpu_context::submit(const std::function<void(VkCommandBuffer)>& record) {
   if (lost_) throw std::runtime_error("the Vulkan device " + device().name + " is unusable");
-  scoped_command_buffer cb(device_.get(), pool_.get());
+  const std::uint64_t ticket = submitted_ + 1;
+  slot& s = slots_[ticket % submission_slots];
+  if (s.ticket != 0) wait(s.ticket);  // its command buffer and fence are about to be reused
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vk_check(vkBeginCommandBuffer(cb.get(), &begin), "vkBeginCommandBuffer");
-  record(cb.get());
-  vk_check(vkEndCommandBuffer(cb.get()), "vkEndCommandBuffer");
+  vk_check(vkBeginCommandBuffer(s.cb, &begin), "vkBeginCommandBuffer");
+  record(s.cb);
+  vk_check(vkEndCommandBuffer(s.cb), "vkEndCommandBuffer");
 
-  const VkFence fence = fence_.get();
+  const VkFence fence = s.fence.get();
   vk_check(vkResetFences(device_.get(), 1, &fence), "vkResetFences");
-  VkCommandBuffer handle = cb.get();
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &handle;
-  VkResult r = vkQueueSubmit(queue_, 1, &submit, fence);
-  if (r == VK_SUCCESS) {
-    const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(options_.fence_timeout);
-    r = vkWaitForFences(device_.get(), 1, &fence, VK_TRUE, std::uint64_t(ns.count()));
-    if (r == VK_SUCCESS) return;
-    lost_ = true;
-    cb.release();  // still pending: it must not be freed
-    throw vk_error(
-        "vkWaitForFences", r,
-        "device " + device().name +
-            (r == VK_TIMEOUT ? ", no answer after " + format_number(double(ns.count()) / 1e9) + " s"
-                             : ""));
+  submit.pCommandBuffers = &s.cb;
+  const VkResult r = vkQueueSubmit(queue_, 1, &submit, fence);
+  if (r != VK_SUCCESS) {
+    if (r == VK_ERROR_DEVICE_LOST) lost_ = true;
+    throw vk_error("vkQueueSubmit", r, "device " + device().name);
   }
-  if (r == VK_ERROR_DEVICE_LOST) lost_ = true;
-  throw vk_error("vkQueueSubmit", r, "device " + device().name);
+  submitted_ = s.ticket = ticket;
+  return ticket;
+}
+
+void gpu_context::wait(std::uint64_t ticket) {
+  if (ticket <= completed_) return;
+  if (lost_) throw std::runtime_error("the Vulkan device " + device().name + " is unusable");
+  // Submissions on one queue complete in order, so waiting for the oldest first loses nothing.
+  for (std::uint64_t t = completed_ + 1; t <= ticket; ++t) {
+    slot& s = slots_[t % submission_slots];
+    if (s.ticket != t) continue;  // never submitted (a failed submit) or already reused
+    const VkFence fence = s.fence.get();
+    const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(options_.fence_timeout);
+    const VkResult r =
+        vkWaitForFences(device_.get(), 1, &fence, VK_TRUE, std::uint64_t(ns.count()));
+    if (r != VK_SUCCESS) {
+      lost_ = true;  // its command buffer is still pending: the pool is leaked, not destroyed
+      throw vk_error("vkWaitForFences", r,
+                     "device " + device().name +
+                         (r == VK_TIMEOUT ? ", no answer after " +
+                                                format_number(double(ns.count()) / 1e9) + " s"
+                                          : ""));
+    }
+    completed_ = t;
+  }
+  completed_ = std::max(completed_, ticket);
+}
+
+void gpu_context::wait_all() noexcept {
+  if (lost_ || submitted_ == completed_) return;
+  try {
+    wait(submitted_);
+  } catch (...) {  // lost_ is set: the owners give their handles up
+  }
 }
 
 }  // namespace rtvk::gpu

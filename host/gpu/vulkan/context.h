@@ -54,6 +54,20 @@ class gpu_context {
   // timeout, or a lost device, throws vk_error naming the device; the context is then unusable.
   void submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
 
+  // Submissions in flight together: up to `submission_slots` recorded and queued before the host
+  // waits for the oldest, so the device has the next one while the host reads the last one.
+  // Tickets count submissions from 1; a ticket's slot is (ticket % submission_slots), and its
+  // command buffer is reused by the submission `submission_slots` later.
+  static constexpr std::uint64_t submission_slots = 2;
+  // Records and submits; first waits for the submission that last used the slot, if any.
+  std::uint64_t submit(const std::function<void(VkCommandBuffer)>& record);
+  // The ticket the next submit() returns (for recording per-slot queries).
+  std::uint64_t next_ticket() const { return submitted_ + 1; }
+  // Waits for submission `ticket` and every one before it, as submit_and_wait does.
+  void wait(std::uint64_t ticket);
+  // Waits for everything submitted (no timeout error is thrown; for clean-up on error paths).
+  void wait_all() noexcept;
+
  private:
   gpu_options options_;                        // as given
   vulkan_instance instance_;                   // destroyed last
@@ -62,9 +76,16 @@ class gpu_context {
   VkPhysicalDeviceMemoryProperties memory_{};  // of the chosen device
   unique_device device_;                       // logical device
   VkQueue queue_ = VK_NULL_HANDLE;             // first queue of the compute family
-  unique_command_pool pool_;                   // command buffers for submit_and_wait
-  unique_fence fence_;                         // signalled by each submission
-  bool lost_ = false;                          // a wait timed out or the device was lost
+  unique_command_pool pool_;                   // command buffers for submissions
+  struct slot {
+    VkCommandBuffer cb = VK_NULL_HANDLE;  // freed with pool_
+    unique_fence fence;                   // signalled when its submission completes
+    std::uint64_t ticket = 0;             // the submission it holds; 0: none
+  };
+  slot slots_[submission_slots];  // ring of submissions
+  std::uint64_t submitted_ = 0;   // tickets handed out
+  std::uint64_t completed_ = 0;   // every ticket up to this one is known complete
+  bool lost_ = false;             // a wait timed out or the device was lost
 };
 
 }  // namespace rtvk::gpu

@@ -9,7 +9,7 @@ unique_query_pool make_pool(const gpu_context& ctx) {
   if (ctx.device().timestamp_valid_bits == 0) return {};
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  info.queryCount = 2;
+  info.queryCount = 2 * gpu_context::submission_slots;
   VkQueryPool pool = VK_NULL_HANDLE;
   vk_check(vkCreateQueryPool(ctx.vk(), &info, nullptr, &pool), "vkCreateQueryPool");
   return unique_query_pool(ctx.vk(), pool);
@@ -29,22 +29,31 @@ device_timer::~device_timer() {
   if (ctx_.lost()) pool_.release();  // a hung device may still write to it
 }
 
-void device_timer::record_begin(VkCommandBuffer cb) const {
+namespace {
+std::uint32_t first_query(std::uint64_t ticket) {
+  return std::uint32_t(2 * (ticket % gpu_context::submission_slots));
+}
+}  // namespace
+
+void device_timer::record_begin(VkCommandBuffer cb, std::uint64_t ticket) const {
   if (!available()) return;
-  vkCmdResetQueryPool(cb, pool_.get(), 0, 2);
-  vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_.get(), 0);
+  vkCmdResetQueryPool(cb, pool_.get(), first_query(ticket), 2);
+  vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_.get(), first_query(ticket));
 }
 
-void device_timer::record_end(VkCommandBuffer cb) const {
-  if (available()) vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_.get(), 1);
+void device_timer::record_end(VkCommandBuffer cb, std::uint64_t ticket) const {
+  if (available())
+    vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_.get(),
+                        first_query(ticket) + 1);
 }
 
-double device_timer::seconds() const {
+double device_timer::seconds(std::uint64_t ticket) const {
   if (!available()) return 0;
   std::uint64_t ticks[2] = {0, 0};
-  vk_check(vkGetQueryPoolResults(ctx_.vk(), pool_.get(), 0, 2, sizeof ticks, ticks, sizeof ticks[0],
-                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-           "vkGetQueryPoolResults");
+  vk_check(
+      vkGetQueryPoolResults(ctx_.vk(), pool_.get(), first_query(ticket), 2, sizeof ticks, ticks,
+                            sizeof ticks[0], VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+      "vkGetQueryPoolResults");
   return double((ticks[1] - ticks[0]) & mask_) * period_ns_ * 1e-9;
 }
 

@@ -1,0 +1,53 @@
+#version 450
+// One invocation per pixel turns the pixel's exact sums into 8-bit RGBA, bit for bit what
+// encode_sum (host/base/byte_encoding.cpp) gives on the host: integer comparisons against the
+// render's thresholds, no float rounding that could differ between devices. A render then reads
+// back 4 bytes a pixel instead of 32, and a window can show the same bytes.
+#extension GL_GOOGLE_include_directive : require
+#include "shared_types.h"
+
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) readonly buffer image_block {
+  pixel_sum sums[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_BYTES) writeonly buffer byte_block { uint rgba[]; };
+layout(std430, set = 0, binding = RTVK_BINDING_THRESHOLDS) readonly buffer threshold_block {
+  uvec2 thresholds[256];  // (low word, high word) of byte_thresholds
+};
+layout(push_constant) uniform push_block { tonemap_push pc; };
+
+// sum >= thresholds[k] * samples, in 64-bit integers made of (low, high) words. The product
+// fits 64 bits: thresholds are at most 2^42 and samples at most 2^20.
+bool at_least(uvec2 sum, uint k, uint samples) {
+  uvec2 t = thresholds[k];
+  uint high, low;
+  umulExtended(t.x, samples, high, low);
+  high += t.y * samples;
+  return sum.y > high || (sum.y == high && sum.x >= low);
+}
+
+// Mirrors encode_sum: the largest k with sum >= thresholds[k] * samples.
+uint encode_sum(uvec2 sum, uint samples) {
+  if (samples == 0u) return 0u;
+  uint lo = 0u;
+  uint hi = 255u;
+  while (lo < hi) {
+    uint mid = (lo + hi + 1u) / 2u;
+    if (at_least(sum, mid, samples))
+      lo = mid;
+    else
+      hi = mid - 1u;
+  }
+  return lo;
+}
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= pc.pixels) return;
+  pixel_sum p = sums[i];
+  uint r = encode_sum(p.r, p.samples);
+  uint g = encode_sum(p.g, p.samples);
+  uint b = encode_sum(p.b, p.samples);
+  rgba[i] = r | (g << 8) | (b << 16) | (255u << 24);
+}
