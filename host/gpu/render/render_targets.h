@@ -21,13 +21,20 @@ struct render_targets {
   static std::vector<buffer_request> buffers(const std::vector<buffer_request>& scene_buffers,
                                              VkDeviceSize pixels);
 
-  VkDeviceSize pixels;    // what the buffers hold
-  gpu_buffer cameras;     // camera_ubo per view of the group (uniform)
-  gpu_buffer sums;        // pixel_sum per pixel (storage)
-  gpu_buffer bytes;       // RGBA8 per pixel (storage)
-  gpu_buffer thresholds;  // byte_thresholds as uvec2[256] (storage, written by the host)
-  gpu_buffer readback;    // sums or bytes, copied back
-  gpu_buffer status;      // render_status (storage, host-visible)
+  VkDeviceSize pixels;  // what the buffers hold
+
+ private:
+  buffer_set device_;  // sums, bytes
+  buffer_set upload_;  // cameras, thresholds
+  buffer_set host_;    // readback, status
+
+ public:
+  gpu_buffer& cameras;     // camera_ubo per view of the group (uniform)
+  gpu_buffer& sums;        // pixel_sum per pixel (storage)
+  gpu_buffer& bytes;       // RGBA8 per pixel (storage)
+  gpu_buffer& thresholds;  // byte_thresholds as uvec2[256] (storage, written by the host)
+  gpu_buffer& readback;    // sums or bytes, copied back
+  gpu_buffer& status;      // render_status (storage, host-visible)
 };
 
 }  // namespace rtvk::gpu

@@ -1,5 +1,8 @@
 #pragma once
 #include <cstddef>
+#include <memory>
+#include <span>
+#include <vector>
 
 #include "context.h"
 #include "vk_handle.h"
@@ -12,7 +15,11 @@ enum class memory_use {
   readback,      // written by the device, read by the host (host-visible, cached if possible)
 };
 
-// A buffer with its own memory allocation, persistently mapped unless device-local.
+// The memory type a buffer of `use` lives in, among those `type_bits` allows.
+std::uint32_t memory_type_for(const gpu_context& ctx, std::uint32_t type_bits, memory_use use);
+
+// A buffer, persistently mapped unless device-local: with its own memory allocation, or placed
+// in a buffer_set's.
 class gpu_buffer {
  public:
   gpu_buffer(const gpu_context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, memory_use use);
@@ -29,14 +36,48 @@ class gpu_buffer {
   const void* read();
 
  private:
+  friend class buffer_set;
+  // A buffer bound into memory `shared` (owned by a buffer_set) at `offset`; `mapped` is the
+  // host address of that offset, or null.
+  gpu_buffer(const gpu_context& ctx, unique_buffer buffer, VkDeviceSize size, VkDeviceMemory shared,
+             VkDeviceSize offset, void* mapped, bool coherent);
+  VkMappedMemoryRange range() const;
+
   // Destroyed in reverse order: the buffer, then its memory (which unmaps it).
   const gpu_context& ctx_;  // tells whether the device may still be using the buffer
   VkDevice device_;         // owner of both handles
   VkDeviceSize size_;       // bytes
-  unique_memory memory_;    // the allocation
-  unique_buffer buffer_;    // bound to memory_ at offset 0
-  void* mapped_ = nullptr;  // host address of memory_, when host-visible
+  unique_memory memory_;    // its own allocation; empty when placed in a buffer_set's
+  VkDeviceMemory bound_ = VK_NULL_HANDLE;  // the memory it is bound to (memory_'s or a set's)
+  VkDeviceSize offset_ = 0;                // where in bound_
+  unique_buffer buffer_;                   // bound to bound_ at offset_
+  void* mapped_ = nullptr;  // host address of the buffer's first byte, when host-visible
   bool coherent_ = true;    // false: flush and invalidate by hand
+};
+
+// What a buffer_set holds: one buffer's size and usage.
+struct buffer_spec {
+  VkDeviceSize size;         // bytes
+  VkBufferUsageFlags usage;  // what it is bound and copied as
+};
+
+// Several buffers of one memory use in one memory allocation, each at an offset its alignment
+// (and, for host-visible memory, the device's flush granularity) allows: a render's dozen buffers
+// cost a handful of allocations, not one each. The buffers go before the memory.
+class buffer_set {
+ public:
+  buffer_set(const gpu_context& ctx, memory_use use, std::span<const buffer_spec> specs);
+  ~buffer_set();
+  buffer_set(const buffer_set&) = delete;
+  buffer_set& operator=(const buffer_set&) = delete;
+
+  gpu_buffer& operator[](std::size_t i) { return *buffers_[i]; }
+  const gpu_buffer& operator[](std::size_t i) const { return *buffers_[i]; }
+
+ private:
+  const gpu_context& ctx_;                            // tells whether the device may use it
+  unique_memory memory_;                              // the one allocation
+  std::vector<std::unique_ptr<gpu_buffer>> buffers_;  // in spec order
 };
 
 }  // namespace rtvk::gpu

@@ -34,19 +34,35 @@ void check_device_fits(const gpu_context& ctx, const std::vector<buffer_request>
   const device_info& dev = ctx.device();
   const std::string device = "device '" + dev.name + "'";
   std::map<std::uint32_t, VkDeviceSize> per_heap;
+  // Each allocation: its size and what it holds, for messages.
+  struct allocation {
+    VkDeviceSize bytes = 0;
+    std::string what;
+  };
+  std::vector<allocation> allocations;
+  std::map<int, std::size_t> shared;  // allocation number -> index into allocations
   for (const buffer_request& b : buffers) {
     if (b.storage && b.bytes > dev.limits.maxStorageBufferRange)
       throw usage_error(subject + ": " + b.what + " needs " + format_bytes(b.bytes) +
                         " in one storage buffer; " + device + " allows " +
                         format_bytes(dev.limits.maxStorageBufferRange));
-    if (dev.max_allocation_size != 0 && b.bytes > dev.max_allocation_size)
-      throw usage_error(subject + ": " + b.what + " needs " + format_bytes(b.bytes) +
-                        " in one memory allocation; " + device + " allows " +
-                        format_bytes(dev.max_allocation_size));
     per_heap[heap_for(ctx, b.use)] += b.bytes;
+    if (b.allocation < 0 || !shared.count(b.allocation)) {
+      if (b.allocation >= 0) shared[b.allocation] = allocations.size();
+      allocations.push_back({0, b.what});
+    } else {
+      allocations[shared[b.allocation]].what += " and " + b.what;
+    }
+    allocations[b.allocation < 0 ? allocations.size() - 1 : shared[b.allocation]].bytes += b.bytes;
   }
-  if (buffers.size() > dev.limits.maxMemoryAllocationCount)
-    throw usage_error(subject + ": the render needs " + std::to_string(buffers.size()) +
+  for (const allocation& a : allocations)
+    if (dev.max_allocation_size != 0 && a.bytes > dev.max_allocation_size)
+      throw usage_error(subject + ": " + a.what + " need" +
+                        (a.what.find(" and ") != std::string::npos ? "" : "s") + " " +
+                        format_bytes(a.bytes) + " in one memory allocation; " + device +
+                        " allows " + format_bytes(dev.max_allocation_size));
+  if (allocations.size() > dev.limits.maxMemoryAllocationCount)
+    throw usage_error(subject + ": the render needs " + std::to_string(allocations.size()) +
                       " memory allocations; " + device + " allows " +
                       std::to_string(dev.limits.maxMemoryAllocationCount));
   for (const auto& [heap, bytes] : per_heap) {
