@@ -29,9 +29,6 @@ layout(std430, set = 0, binding = RTVK_BINDING_STATUS) buffer status_block { ren
 layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
   bvh_node bvh_nodes[];
 };
-layout(std430, set = 0, binding = RTVK_BINDING_BVH_INDEX) readonly buffer bvh_index_block {
-  uint bvh_index[];
-};
 layout(std430, set = 0, binding = RTVK_BINDING_RAY_COUNT) buffer ray_count_block { uint ray_count[]; };
 layout(push_constant) uniform push_block { render_push pc; };
 

@@ -119,7 +119,6 @@ std::vector<buffer_binding> bindings(const gpu_scene& g, const render_targets& t
           {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.image.get()},
           {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.status.get()},
           {RTVK_BINDING_BVH_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.nodes()},
-          {RTVK_BINDING_BVH_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.index()},
           {RTVK_BINDING_RAY_COUNT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.ray_counts.get()}};
 }
 

@@ -34,8 +34,9 @@ struct device_array {
 };
 
 // The scene on the device: its spheres and materials in the shared header's layout, and the BVH
-// over the spheres (an empty one when the render tests every sphere). Filled on the host when
-// made; the copies to the device are recorded into the first submission.
+// over the spheres (an empty one when the render tests every sphere). With the BVH the spheres
+// are stored in its leaf order, each with its scene index; without it, in scene order. Filled on
+// the host when made; the copies to the device are recorded into the first submission.
 class gpu_scene {
  public:
   gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh);
@@ -50,7 +51,6 @@ class gpu_scene {
   VkBuffer spheres() const { return spheres_.buffer.get(); }
   VkBuffer materials() const { return materials_.buffer.get(); }
   VkBuffer nodes() const { return nodes_.buffer.get(); }
-  VkBuffer index() const { return index_.buffer.get(); }
 
  private:
   struct timed_bvh {
@@ -60,11 +60,10 @@ class gpu_scene {
   static timed_bvh build_bvh(const scene& s, bool use_bvh);
   gpu_scene(const gpu_context& ctx, const scene& s, const timed_bvh& tree);
 
-  device_array<gpu_sphere> spheres_;      // in scene order
+  device_array<gpu_sphere> spheres_;      // in the BVH's leaf order, or scene order without it
   device_array<gpu_material> materials_;  // in scene order
   double build_seconds_;                  // building the BVH took
-  device_array<bvh_node> nodes_;          // the BVH, depth first
-  device_array<std::uint32_t> index_;     // leaf slot -> sphere
+  device_array<bvh_node> nodes_;          // the BVH's interior nodes, depth first
 };
 
 }  // namespace rtvk::gpu
