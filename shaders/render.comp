@@ -13,8 +13,8 @@
 // fixes the render's switches when it builds the pipeline (2 to 5), so the compiler drops the
 // code a render does not use instead of branching on it in every invocation.
 layout(local_size_x_id = 0, local_size_y_id = 1, local_size_z = 1) in;
-layout(constant_id = RTVK_SPEC_JITTER) const bool jitter = false;  // random spots in the pixel
-layout(constant_id = RTVK_SPEC_LENS) const bool any_lens = false;  // a view has an aperture
+layout(constant_id = RTVK_SPEC_JITTER) const bool jitter = false;   // random spots in the pixel
+layout(constant_id = RTVK_SPEC_LENS) const bool any_lens = false;   // a view has an aperture
 layout(constant_id = RTVK_SPEC_USE_BVH) const bool use_bvh = true;  // else every sphere in turn
 layout(constant_id = RTVK_SPEC_COUNT_RAYS) const bool count_rays = false;  // per-pixel counts
 
@@ -27,15 +27,18 @@ layout(std430, set = 0, binding = RTVK_BINDING_SPHERES) readonly buffer sphere_b
 layout(std430, set = 0, binding = RTVK_BINDING_MATERIALS) readonly buffer material_block {
   gpu_material materials[];
 };
-layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) buffer image_block { pixel_sum sums[]; };
-layout(std430, set = 0, binding = RTVK_BINDING_STATUS) buffer status_block { render_status status; };
+layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) buffer image_block {
+  pixel_sum sums[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_STATUS) buffer status_block {
+  render_status status;
+};
 layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
   bvh_node bvh_nodes[];
 };
-layout(std430, set = 0, binding = RTVK_BINDING_BVH_INDEX) readonly buffer bvh_index_block {
-  uint bvh_index[];
+layout(push_constant) uniform push_block {
+  render_push pc;
 };
-layout(push_constant) uniform push_block { render_push pc; };
 
 #include "camera.glsl"
 #include "random.glsl"
@@ -51,8 +54,8 @@ precise vec3 sample_color(camera_ubo cam, uvec2 pixel, uint j, uint sample_index
   precise float u = pixel_coordinate(x, cam.image_width);
   precise float v = pixel_coordinate(y, cam.image_height);
   precise vec2 lens = any_lens && cam.lens_radius > 0.0
-                           ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b))
-                           : vec2(0.0);
+                          ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b))
+                          : vec2(0.0);
   return ray_color(get_ray(cam, u, v, lens), s, iterations, rays);
 }
 
@@ -78,7 +81,8 @@ void main() {
   // region, for every view.
   if (gl_GlobalInvocationID.x >= pc.region_width || gl_GlobalInvocationID.y >= pc.band_rows) return;
   uint view = gl_GlobalInvocationID.z;
-  uint index = (view * pc.band_rows + gl_GlobalInvocationID.y) * pc.region_width + gl_GlobalInvocationID.x;
+  uint index =
+      (view * pc.band_rows + gl_GlobalInvocationID.y) * pc.region_width + gl_GlobalInvocationID.x;
   pixel_sum acc = sums[index];
   if (acc.samples >= pc.sample_target) return;
   camera_ubo cam = cams[view];
@@ -99,7 +103,7 @@ void main() {
     ++acc.samples;
   }
   if (iterations > pc.loop_budget) {
-    if (acc.samples == first) {  // one sample needs more than a whole budget
+    if (acc.samples == first) {              // one sample needs more than a whole budget
       atomicAdd(status.overrun_pixels, 1u);  // the host fails the render rather than show this
       sums[index].samples = 0xffffffffu;     // and no later dispatch tries the pixel again
       return;

@@ -52,17 +52,22 @@ precise float origin_margin(vec3 o) {
   return max(max(abs(o.x), abs(o.y)), abs(o.z)) * (1.0 / 1048576.0);
 }
 
-// Mirrors ray_box_entry in host/accel/bvh.h: the entry distance into the box grown by `margin`,
-// or -1 to cull.
-precise float ray_box_entry(vec3 o, vec3 inv_d, bvh_node n, float t_min, float t_max,
-                            float margin) {
-  precise vec3 t0 = (n.bounds_min - margin - o) * inv_d;
-  precise vec3 t1 = (n.bounds_max + margin - o) * inv_d;
-  precise vec3 near = min(t0, t1);
-  precise vec3 far = max(t0, t1);
-  precise float enter = max(max(near.x, near.y), max(near.z, t_min));
-  precise float leave = min(min(far.x, far.y), min(far.z, t_max));
-  return enter <= leave ? enter : -1.0;
+// Mirrors child_entries in host/cpu/bvh_world.cpp (ray_box_entry in host/accel/bvh.h, for both
+// children at once): where the ray enters each child's box of n grown by `margin` -- x for the
+// left child, y for the right -- or -1 to cull. Lanes as in bvh_node: (left min, right min,
+// left max, right max).
+precise vec2 child_entries(vec3 o, vec3 inv_d, bvh_node n, float t_min, float t_max,
+                           float margin) {
+  precise vec4 grow = vec4(-margin, -margin, margin, margin);  // mins down, maxes up
+  precise vec4 tx = (n.x + grow - o.x) * inv_d.x;
+  precise vec4 ty = (n.y + grow - o.y) * inv_d.y;
+  precise vec4 tz = (n.z + grow - o.z) * inv_d.z;
+  precise vec2 near_x = min(tx.xy, tx.zw), far_x = max(tx.xy, tx.zw);
+  precise vec2 near_y = min(ty.xy, ty.zw), far_y = max(ty.xy, ty.zw);
+  precise vec2 near_z = min(tz.xy, tz.zw), far_z = max(tz.xy, tz.zw);
+  precise vec2 enter = max(max(near_x, near_y), max(near_z, vec2(t_min)));
+  precise vec2 leave = min(min(far_x, far_y), min(far_z, vec2(t_max)));
+  return vec2(enter.x <= leave.x ? enter.x : -1.0, enter.y <= leave.y ? enter.y : -1.0);
 }
 
 #endif

@@ -1,66 +1,86 @@
 // Mirrors bvh_world::hit (host/cpu/bvh_world.cpp) and hittable_list::hit. Expects `spheres`
-// (gpu_sphere[]), `bvh_nodes`, `bvh_index`, `pc` (render_push) and the specialization constant
-// `use_bvh` declared by the including shader.
+// (gpu_sphere[]: in the BVH's leaf order with use_bvh, else in scene order), `bvh_nodes`, `pc`
+// (render_push) and the specialization constant `use_bvh` declared by the including shader.
 #ifndef RTVK_WORLD_GLSL
 #define RTVK_WORLD_GLSL
 #include "sphere.glsl"
 
+// Mirrors visit_leaf in host/cpu/bvh_world.cpp: tests spheres first .. first + count - 1, keeping
+// the nearest hit (`closest`; `best` its scene index, `best_slot` its slot). Ties go to the later
+// sphere in the scene. False when the loop budget ran out.
+bool visit_leaf(uint first, uint count, ray r, float t_min, precise inout float closest,
+                inout int best, inout uint best_slot, inout uint iterations) {
+  for (uint k = first; k < first + count; ++k) {
+    if (++iterations > pc.loop_budget) return false;
+    precise float t;
+    int i = int(spheres[k].scene_index);
+    if (hit_distance(spheres[k], r, t_min, closest, t) && (t < closest || i > best)) {
+      closest = t;
+      best = i;
+      best_slot = k;
+    }
+  }
+  return true;
+}
+
+// A remembered child on the stack: x its node index or first sphere slot, y its entry distance's
+// bits with the top bit, the float's sign bit (entry distances are never below 0), set for a
+// leaf, which holds RTVK_BVH_LEAF spheres.
+const uint stack_leaf = 0x80000000u;
+
 // Mirrors bvh_world::hit: the same nodes, the same order, ties to the later sphere, the record
-// filled once for the winner. Every node visit and sphere test counts against the loop budget.
+// filled once for the winner. One node fetch brings both children's boxes and references. Every
+// node visit and sphere test counts against the loop budget.
 bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inout uint iterations) {
   if (pc.sphere_count == 0u) return false;
   precise vec3 o = r.origin;
   precise vec3 inv_d = safe_inverse(r.direction);
   precise float margin = origin_margin(o);
   precise float box_min = t_min * (1.0 - 1.0 / 1048576.0);
-  uint stack_node[RTVK_BVH_STACK];
-  float stack_entry[RTVK_BVH_STACK];
+  uvec2 stack[RTVK_BVH_STACK];
   int top = 0;
-  uint node = 0u;
+  uint next = 0u;        // the child to visit: node index, or first sphere slot
+  uint next_count = 0u;  // 0 for an interior node, else the leaf's spheres
   precise float closest = t_max;
   int best = -1;
+  uint best_slot = 0u;
   while (true) {
     if (++iterations > pc.loop_budget) return false;
-    bvh_node n = bvh_nodes[node];
-    if (n.count > 0u) {
-      for (uint k = n.first; k < n.first + n.count; ++k) {
-        if (++iterations > pc.loop_budget) return false;
-        uint i = bvh_index[k];
-        precise float t;
-        if (hit_distance(spheres[i], r, t_min, closest, t) && (t < closest || int(i) > best)) {
-          closest = t;
-          best = int(i);
-        }
-      }
-    } else {
+    if (next_count == 0u) {
+      bvh_node n = bvh_nodes[next];
       precise float box_max = closest * (1.0 + 1.0 / 1048576.0);
-      uint left = node + 1u;
-      uint right = n.first;
-      precise float t_left = ray_box_entry(o, inv_d, bvh_nodes[left], box_min, box_max, margin);
-      precise float t_right = ray_box_entry(o, inv_d, bvh_nodes[right], box_min, box_max, margin);
-      if (t_left >= 0.0 && t_right >= 0.0) {
-        bool left_first = t_left <= t_right;
-        stack_node[top] = left_first ? right : left;
-        stack_entry[top] = left_first ? t_right : t_left;
-        ++top;
-        node = left_first ? left : right;
+      precise vec2 t = child_entries(o, inv_d, n, box_min, box_max, margin);
+      // Nearer first: a is the nearer child when the ray enters both.
+      uint a = t.x <= t.y ? 0u : 1u;
+      uint b = 1u - a;
+      if (t[a] >= 0.0 && t[b] >= 0.0) {
+        uint leaf = n.count[b] > 0u ? stack_leaf : 0u;  // over the sign bit of a -0 entry too
+        stack[top++] = uvec2(n.first[b], (floatBitsToUint(t[b]) & ~stack_leaf) | leaf);
+        next = n.first[a];
+        next_count = n.count[a];
         continue;
       }
-      if (t_left >= 0.0 || t_right >= 0.0) {
-        node = t_left >= 0.0 ? left : right;
+      if (t[a] >= 0.0 || t[b] >= 0.0) {
+        uint c = t[a] >= 0.0 ? a : b;
+        next = n.first[c];
+        next_count = n.count[c];
         continue;
       }
+    } else if (!visit_leaf(next, next_count, r, t_min, closest, best, best_slot, iterations)) {
+      return false;
     }
     precise float box_max = closest * (1.0 + 1.0 / 1048576.0);
-    while (top > 0 && stack_entry[top - 1] > box_max) {
+    while (top > 0 && uintBitsToFloat(stack[top - 1].y & ~stack_leaf) > box_max) {
       if (++iterations > pc.loop_budget) return false;
       --top;
     }
     if (top == 0) break;
-    node = stack_node[--top];
+    --top;
+    next = stack[top].x;
+    next_count = (stack[top].y & stack_leaf) != 0u ? uint(RTVK_BVH_LEAF) : 0u;
   }
   if (best < 0) return false;
-  record_hit(spheres[best], r, closest, rec);
+  record_hit(spheres[best_slot], r, closest, rec);
   return true;
 }
 

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace rtvk {
 namespace {
@@ -32,63 +34,110 @@ struct prim {
 };
 
 constexpr int bins = 16;
-constexpr double traversal_cost = 1.0;  // relative to one sphere test
 
-// Float corners that contain the double box, with a margin for the float slab test on the GPU.
-void store_bounds(const box& b, gpu::bvh_node& n) {
+// Float corners that contain the double box, with a margin for the float slab test: lane c
+// (0 left, 1 right) of the node's min lanes and lane c + 2 of its max lanes.
+void store_bounds(const box& b, gpu::bvh_node& n, int c) {
   const glm::dvec3 extent = glm::abs(b.lo) + glm::abs(b.hi) + (b.hi - b.lo);
   const double pad = 0x1p-18 * std::max({extent.x, extent.y, extent.z, 1e-30});
+  glm::vec4* const axes[3] = {&n.x, &n.y, &n.z};
   for (int k = 0; k < 3; ++k) {
-    n.bounds_min[k] = std::nextafter(float(b.lo[k] - pad), -INFINITY);
-    n.bounds_max[k] = std::nextafter(float(b.hi[k] + pad), INFINITY);
+    (*axes[k])[c] = std::nextafter(float(b.lo[k] - pad), -INFINITY);
+    (*axes[k])[c + 2] = std::nextafter(float(b.hi[k] + pad), INFINITY);
   }
+}
+
+// Interior levels a subtree over `count` spheres needs at least: ceil(log2(leaves)) for
+// ceil(count / max_leaf) leaves; 0 for a leaf.
+int levels_needed(std::size_t count) {
+  const std::size_t leaves = (count + std::size_t(bvh::max_leaf) - 1) / std::size_t(bvh::max_leaf);
+  int levels = 0;
+  while (leaves > 1 && (std::size_t(1) << levels) < leaves) ++levels;
+  return levels;
 }
 
 class builder {
  public:
   builder(std::vector<prim>& prims, std::vector<gpu::bvh_node>& nodes,
-          std::vector<std::uint32_t>& index)
-      : prims_(prims), nodes_(nodes), index_(index) {}
+          std::vector<std::uint32_t>& order)
+      : prims_(prims), nodes_(nodes), order_(order) {}
 
-  // Builds the subtree over prims_[begin, end), `depth` levels below the root.
-  void build(std::size_t begin, std::size_t end, int depth) {
-    const std::size_t at = nodes_.size();
+  // Builds the interior node over prims_[begin, end) (more than max_leaf spheres), `depth`
+  // levels below the root (the root is 1), and below it its subtrees; returns its index. Takes
+  // levels_needed(end - begin) <= max_depth - depth + 1: its children then fit as well.
+  std::uint32_t build(std::size_t begin, std::size_t end, int depth) {
+    const std::uint32_t at = std::uint32_t(nodes_.size());
     nodes_.push_back({});
-    box bounds, centroids;
-    for (std::size_t i = begin; i < end; ++i) {
-      bounds.grow(prims_[i].bounds);
-      centroids.grow(prims_[i].centroid);
-    }
-    store_bounds(bounds, nodes_[at]);
-    const std::size_t count = end - begin;
-    std::size_t mid = count > std::size_t(bvh::max_leaf) && depth < bvh::max_depth
-                          ? split(begin, end, bounds, centroids)
-                          : begin;
-    if (mid == begin || mid == end) {
-      if (count > std::size_t(bvh::max_leaf) && depth < bvh::max_depth) {
-        mid = begin + count / 2;  // no useful split (e.g. equal centers): halve by order
-      } else {
-        make_leaf(at, begin, end);
-        return;
-      }
-    }
-    build(begin, mid, depth + 1);
-    nodes_[at].first = std::uint32_t(nodes_.size());
-    nodes_[at].count = 0;
-    build(mid, end, depth + 1);
+    depth_ = std::max(depth_, depth);
+    box centroids;
+    for (std::size_t i = begin; i < end; ++i) centroids.grow(prims_[i].centroid);
+    std::size_t mid = split(begin, end, centroids);
+    // The depth bound: both sides must fit in the levels left below this node. A median split
+    // always does (each half needs one level less than the whole); SAH on skewed input (sizes
+    // or places growing geometrically) may not, and would chain thousands of levels.
+    const int left = bvh::max_depth - depth;
+    if (mid == begin || mid == end || levels_needed(mid - begin) > left ||
+        levels_needed(end - mid) > left)
+      mid = median(begin, end, centroids);
+    child(at, 0, begin, mid, depth);
+    child(at, 1, mid, end, depth);
+    return at;
   }
+
+  // A root for max_leaf spheres or fewer: both children are the same leaf.
+  void build_leaf_root(std::size_t begin, std::size_t end) {
+    nodes_.push_back({});
+    depth_ = 1;
+    const box b = bounds(begin, end);
+    store_bounds(b, nodes_[0], 0);
+    store_bounds(b, nodes_[0], 1);
+    nodes_[0].first = gpu::uvec2(std::uint32_t(order_.size()));
+    nodes_[0].count = gpu::uvec2(std::uint32_t(end - begin));
+    for (std::size_t i = begin; i < end; ++i) order_.push_back(prims_[i].sphere);
+  }
+
+  int depth() const { return depth_; }
 
  private:
-  void make_leaf(std::size_t at, std::size_t begin, std::size_t end) {
-    nodes_[at].first = std::uint32_t(index_.size());
-    nodes_[at].count = std::uint32_t(end - begin);
-    for (std::size_t i = begin; i < end; ++i) index_.push_back(prims_[i].sphere);
+  box bounds(std::size_t begin, std::size_t end) const {
+    box b;
+    for (std::size_t i = begin; i < end; ++i) b.grow(prims_[i].bounds);
+    return b;
   }
 
-  // The binned SAH split over all three axes; returns the partition point, or `begin` when
-  // keeping a leaf is cheaper (only allowed for small counts, checked by the caller).
-  std::size_t split(std::size_t begin, std::size_t end, const box& bounds, const box& centroids) {
+  // Child c of node `at`: the spheres prims_[begin, end), a leaf or an interior node.
+  void child(std::uint32_t at, int c, std::size_t begin, std::size_t end, int depth) {
+    store_bounds(bounds(begin, end), nodes_[at], c);
     const std::size_t count = end - begin;
+    if (count <= std::size_t(bvh::max_leaf)) {
+      nodes_[at].first[c] = std::uint32_t(order_.size());
+      nodes_[at].count[c] = std::uint32_t(count);
+      for (std::size_t i = begin; i < end; ++i) order_.push_back(prims_[i].sphere);
+      return;
+    }
+    const std::uint32_t node = build(begin, end, depth + 1);
+    nodes_[at].first[c] = node;
+    nodes_[at].count[c] = 0;
+  }
+
+  // Halves the spheres by count, at the median centroid along the axis where the centroids
+  // spread most (by order when they all coincide).
+  std::size_t median(std::size_t begin, std::size_t end, const box& centroids) {
+    const glm::dvec3 extent = centroids.hi - centroids.lo;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
+                     : extent.y >= extent.z                       ? 1
+                                                                  : 2;
+    const std::size_t mid = begin + (end - begin) / 2;
+    std::nth_element(prims_.begin() + std::ptrdiff_t(begin), prims_.begin() + std::ptrdiff_t(mid),
+                     prims_.begin() + std::ptrdiff_t(end), [axis](const prim& a, const prim& b) {
+                       return a.centroid[axis] < b.centroid[axis];
+                     });
+    return mid;
+  }
+
+  // The binned SAH split over all three axes; returns the partition point, or `begin` when no
+  // bin boundary separates the centroids.
+  std::size_t split(std::size_t begin, std::size_t end, const box& centroids) {
     double best_cost = std::numeric_limits<double>::infinity();
     int best_axis = -1, best_bin = 0;
     for (int axis = 0; axis < 3; ++axis) {
@@ -128,9 +177,6 @@ class builder {
       }
     }
     if (best_axis < 0) return begin;
-    const double leaf_cost = double(count);
-    const double split_cost = traversal_cost + best_cost / bounds.area();
-    if (split_cost >= leaf_cost && count <= std::size_t(bvh::max_leaf)) return begin;
     const double lo = centroids.lo[best_axis], extent = centroids.hi[best_axis] - lo;
     const auto middle = std::partition(
         prims_.begin() + std::ptrdiff_t(begin), prims_.begin() + std::ptrdiff_t(end),
@@ -144,13 +190,17 @@ class builder {
 
   std::vector<prim>& prims_;
   std::vector<gpu::bvh_node>& nodes_;
-  std::vector<std::uint32_t>& index_;
+  std::vector<std::uint32_t>& order_;
+  int depth_ = 0;  // deepest interior level built
 };
 
 }  // namespace
 
 bvh::bvh(std::span<const sphere> spheres) {
   if (spheres.empty()) return;
+  if (levels_needed(spheres.size()) > max_depth)
+    throw std::length_error(std::to_string(spheres.size()) + " spheres are more than a BVH of " +
+                            std::to_string(max_depth) + " levels holds");
   std::vector<prim> prims;
   prims.reserve(spheres.size());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
@@ -158,18 +208,14 @@ bvh::bvh(std::span<const sphere> spheres) {
     const glm::dvec3 r(std::abs(s.radius));
     prims.push_back({box{s.center - r, s.center + r}, s.center, std::uint32_t(i)});
   }
-  nodes_.reserve(2 * spheres.size() / std::size_t(max_leaf) + 1);
-  index_.reserve(spheres.size());
-  builder(prims, nodes_, index_).build(0, prims.size(), 1);
-  children_.resize(nodes_.size());
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    if (nodes_[i].count > 0) continue;
-    const gpu::bvh_node& l = nodes_[i + 1];
-    const gpu::bvh_node& r = nodes_[nodes_[i].first];
-    children_[i] = {{l.bounds_min.x, r.bounds_min.x, l.bounds_max.x, r.bounds_max.x},
-                    {l.bounds_min.y, r.bounds_min.y, l.bounds_max.y, r.bounds_max.y},
-                    {l.bounds_min.z, r.bounds_min.z, l.bounds_max.z, r.bounds_max.z}};
-  }
+  nodes_.reserve(spheres.size());  // a binary tree over N >= 2 leaves has N - 1 interior nodes
+  order_.reserve(spheres.size());
+  builder b(prims, nodes_, order_);
+  if (spheres.size() <= std::size_t(max_leaf))
+    b.build_leaf_root(0, prims.size());
+  else
+    b.build(0, prims.size(), 1);
+  depth_ = b.depth();
 }
 
 }  // namespace rtvk

@@ -13,33 +13,39 @@
 namespace rtvk {
 
 // A bounding volume hierarchy over spheres, built with binned SAH and flattened depth first into
-// one node array (gpu::bvh_node, from the header shared with the shaders). Both backends traverse
-// the very same arrays: the CPU in cpu/bvh_world.h, the shader in shaders/world.glsl. Leaves
-// refer to spheres by their index in the scene, so hits can be kept identical to a linear scan.
+// one array of interior nodes (gpu::bvh_node, from the header shared with the shaders), each
+// holding both children's boxes and references; leaves live in their parents. Both backends
+// traverse the very same array: the CPU in cpu/bvh_world.h, the shader in shaders/world.glsl.
+// Leaves refer to sphere slots, the spheres in leaf order; order() gives each slot's index in
+// the scene, so hits can be kept identical to a linear scan.
 class bvh {
  public:
+  // Throws std::length_error for more spheres than a tree of max_depth levels holds.
   explicit bvh(std::span<const sphere> spheres);
 
-  // An interior node's two child boxes, per axis: (left min, right min, left max, right max),
-  // so that a traversal can test both children in one pass of 4-wide float operations.
-  struct child_boxes {
-    float x[4];
-    float y[4];
-    float z[4];
-  };
-
+  // Interior nodes, node 0 the root; none when there are no spheres. One sphere makes a root
+  // whose two children are the same leaf.
   const std::vector<gpu::bvh_node>& nodes() const { return nodes_; }
-  const std::vector<std::uint32_t>& index() const { return index_; }
-  const std::vector<child_boxes>& children() const { return children_; }
+  // Leaf slot -> index into the scene's spheres; every sphere has exactly one slot.
+  const std::vector<std::uint32_t>& order() const { return order_; }
+  // Interior levels on the longest path from the root (the root alone: 1; no spheres: 0).
+  int depth() const { return depth_; }
 
-  // Most spheres in one leaf; the tree never exceeds this depth (the GPU's stack fits it).
-  static constexpr int max_leaf = 1;
-  static constexpr int max_depth = RTVK_BVH_STACK - 2;
+  // Most spheres in one leaf. Every leaf holds exactly one: the shader's traversal stack
+  // (shaders/world.glsl) marks a remembered child as a leaf by one bit and takes it to hold one
+  // sphere; a larger max_leaf needs room there for the count.
+  static constexpr int max_leaf = RTVK_BVH_LEAF;
+  static_assert(max_leaf == 1, "world.glsl's stack holds no leaf sizes");
+  // Most interior levels: a traversal remembers at most one child per interior level on its
+  // path, so RTVK_BVH_STACK stack entries always suffice. SAH splits that would need more levels
+  // below them than are left give way to median splits, which fit up to max_leaf * 2^max_depth
+  // spheres.
+  static constexpr int max_depth = RTVK_BVH_STACK;
 
  private:
-  std::vector<gpu::bvh_node> nodes_;   // node 0 is the root (absent when there are no spheres)
-  std::vector<std::uint32_t> index_;   // leaf slot -> index into the scene's spheres
-  std::vector<child_boxes> children_;  // per node; meaningful for interior nodes
+  std::vector<gpu::bvh_node> nodes_;  // depth first, node 0 the root
+  std::vector<std::uint32_t> order_;  // leaf slot -> index into the scene's spheres
+  int depth_ = 0;                     // interior levels
 };
 
 // 1 / d per component, with zero components replaced by a tiny signed value so that the slab
@@ -62,15 +68,18 @@ inline float origin_margin(const glm::vec3& o) {
 }
 
 // The slab test both backends use, in float on both: does the ray (origin o, inverse direction
-// inv_d) enter the box, grown by `margin` on every side, before t_max and leave it after t_min?
-// Returns the entry distance, or a negative value to cull. Node boxes are padded for float
-// rounding when they are built; `margin` (origin_margin) covers the ray's side.
+// inv_d) enter child `c` (0 left, 1 right) of node n, its box grown by `margin` on every side,
+// before t_max and leave it after t_min? Returns the entry distance, or a negative value to cull.
+// Node boxes are padded for float rounding when they are built; `margin` (origin_margin) covers
+// the ray's side. The CPU's SSE test of both children (cpu/bvh_world.cpp) and the shader's vec4
+// test do the same float operations, lane by lane.
 inline float ray_box_entry(const glm::vec3& o, const glm::vec3& inv_d, const gpu::bvh_node& n,
-                           float t_min, float t_max, float margin) {
+                           int c, float t_min, float t_max, float margin) {
+  const glm::vec4* const axes[3] = {&n.x, &n.y, &n.z};
   float enter = t_min, leave = t_max;
   for (int k = 0; k < 3; ++k) {
-    const float t0 = (n.bounds_min[k] - margin - o[k]) * inv_d[k];
-    const float t1 = (n.bounds_max[k] + margin - o[k]) * inv_d[k];
+    const float t0 = ((*axes[k])[c] - margin - o[k]) * inv_d[k];
+    const float t1 = ((*axes[k])[c + 2] + margin - o[k]) * inv_d[k];
     enter = std::max(enter, std::min(t0, t1));
     leave = std::min(leave, std::max(t0, t1));
   }

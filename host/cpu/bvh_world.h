@@ -8,19 +8,19 @@
 namespace rtvk {
 
 // The scene's spheres behind a BVH (accel/bvh.h): hits are identical to a linear scan over the
-// spheres in order -- the nearest root wins, and on an exact tie the later sphere, as in
-// hittable_list.
+// spheres in order -- the nearest root wins, and on an exact tie the later sphere in the scene,
+// as in hittable_list.
 class bvh_world final : public hittable {
  public:
-  explicit bvh_world(std::vector<sphere> spheres) : spheres_(std::move(spheres)), tree_(spheres_) {}
+  explicit bvh_world(const std::vector<sphere>& spheres);
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
 
   const bvh& tree() const { return tree_; }
 
  private:
-  std::vector<sphere> spheres_;  // in scene order
-  bvh tree_;                     // over spheres_
+  bvh tree_;                     // over the scene's spheres
+  std::vector<sphere> spheres_;  // in the tree's leaf order: slot k is scene sphere order()[k]
 };
 
 }  // namespace rtvk

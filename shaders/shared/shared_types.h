@@ -15,17 +15,19 @@ using uvec2 = glm::uvec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uint = std::uint32_t;
+using uvec2 = glm::uvec2;
 #endif
 
 // Descriptor bindings, set 0.
-#define RTVK_BINDING_CAMERA 0       // uniform buffer: camera_ubo[RTVK_MAX_VIEWS], one per view
-#define RTVK_BINDING_SPHERES 1      // storage buffer: gpu_sphere[]
-#define RTVK_BINDING_IMAGE 2        // storage buffer: pixel_sum[] of one band of rows
-#define RTVK_BINDING_MATERIALS 3    // storage buffer: gpu_material[]
-#define RTVK_BINDING_STATUS 4       // storage buffer: render_status
-#define RTVK_BINDING_PROBE 5        // storage buffer: probe_io or rng_probe_entry[] (probes only)
-#define RTVK_BINDING_BVH_NODES 6    // storage buffer: bvh_node[]
-#define RTVK_BINDING_BVH_INDEX 7    // storage buffer: uint[], leaf slot -> sphere index
+#define RTVK_BINDING_CAMERA 0     // uniform buffer: camera_ubo[RTVK_MAX_VIEWS], one per view
+#define RTVK_BINDING_SPHERES 1    // storage buffer: gpu_sphere[], in the BVH's leaf order
+#define RTVK_BINDING_IMAGE 2      // storage buffer: pixel_sum[] of one band of rows
+#define RTVK_BINDING_MATERIALS 3  // storage buffer: gpu_material[]
+#define RTVK_BINDING_STATUS 4     // storage buffer: render_status
+#define RTVK_BINDING_PROBE 5      // storage buffer: probe_io or rng_probe_entry[] (probes only)
+#define RTVK_BINDING_BVH_NODES \
+  6                                 // storage buffer: bvh_node[]
+                                    // 7, 8: unused (the BVH's leaf index, the ray counters)
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
 
@@ -40,7 +42,12 @@ using uint = std::uint32_t;
 // blocks are 12 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
 #define RTVK_MAX_VIEWS 128
 
-#define RTVK_BVH_STACK 64  // traversal stack entries; the builder keeps the tree shallower
+// Traversal stack entries. The BVH builder keeps every tree at most this many interior levels
+// deep (bvh::max_depth), and a traversal remembers at most one child per level on its path; that
+// depth holds up to 2^RTVK_BVH_STACK spheres.
+#define RTVK_BVH_STACK 32
+// Spheres in one BVH leaf (bvh::max_leaf): exactly this many, as the shader's stack takes it.
+#define RTVK_BVH_LEAF 1
 
 #define RTVK_PROBE_POINTS 5  // (u, v) pairs probe.comp turns into rays
 
@@ -66,14 +73,15 @@ struct camera_ubo {
   uint pad2;          // unused
 };
 
-// std430 array element: 32 bytes.
+// std430 array element: 32 bytes. With the BVH the buffer holds the spheres in its leaf order,
+// else in scene order.
 struct gpu_sphere {
-  vec3 center;    // scene units
-  float radius;   // scene units, > 0
-  uint material;  // index into the materials buffer
-  uint pad0;      // unused
-  uint pad1;      // unused
-  uint pad2;      // unused
+  vec3 center;       // scene units
+  float radius;      // scene units, > 0
+  uint material;     // index into the materials buffer
+  uint scene_index;  // the sphere's index in the scene: exact ties go to the later one
+  uint pad1;         // unused
+  uint pad2;         // unused
 };
 
 // std430 array element: 32 bytes.
@@ -86,14 +94,18 @@ struct gpu_material {
   uint pad1;    // unused
 };
 
-// std430 array element: one node of the bounding volume hierarchy, 32 bytes. Nodes are stored
-// depth first: an interior node's left child follows it, `first` is its right child. A leaf's
-// spheres are bvh_index[first .. first + count).
+// std430 array element: one interior node of the bounding volume hierarchy, 64 bytes, holding
+// both children: their boxes per axis as four lanes (left min, right min, left max, right max),
+// so that one pass of 4-wide operations tests both, and for each child c (0 left, 1 right) a
+// reference. count[c] = 0: an interior node, bvh_nodes[first[c]]; else a leaf, the spheres
+// first[c] .. first[c] + count[c] - 1 of the sphere buffer (stored in leaf order). Node 0 is the
+// root; nodes are stored depth first.
 struct bvh_node {
-  vec3 bounds_min;  // box corner, scene units (rounded outward)
-  uint first;       // leaf: first slot in the index array; interior: right child's node index
-  vec3 bounds_max;  // box corner, scene units (rounded outward)
-  uint count;       // leaf: number of spheres (> 0); interior: 0
+  vec4 x;       // children's box corners on x, scene units (rounded outward)
+  vec4 y;       // on y
+  vec4 z;       // on z
+  uvec2 first;  // per child: interior node index, or the leaf's first sphere slot
+  uvec2 count;  // per child: 0 for an interior node, else the leaf's spheres (> 0)
 };
 
 // Push constants (std430): the render's settings and what changes from one dispatch to the next.
@@ -191,6 +203,7 @@ static_assert(sizeof(camera_ubo) == 96);
 static_assert(offsetof(gpu_sphere, center) == 0);
 static_assert(offsetof(gpu_sphere, radius) == 12);
 static_assert(offsetof(gpu_sphere, material) == 16);
+static_assert(offsetof(gpu_sphere, scene_index) == 20);
 static_assert(sizeof(gpu_sphere) == 32);
 static_assert(offsetof(gpu_material, albedo) == 0);
 static_assert(offsetof(gpu_material, type) == 12);
@@ -221,11 +234,12 @@ static_assert(sizeof(pixel_sum) == 32);
 static_assert(sizeof(tonemap_push) == 4);
 static_assert(offsetof(render_status, unfinished_pixels) == 4);
 static_assert(RTVK_MAX_VIEWS * sizeof(camera_ubo) <= 16384);
-static_assert(offsetof(bvh_node, bounds_min) == 0);
-static_assert(offsetof(bvh_node, first) == 12);
-static_assert(offsetof(bvh_node, bounds_max) == 16);
-static_assert(offsetof(bvh_node, count) == 28);
-static_assert(sizeof(bvh_node) == 32);
+static_assert(offsetof(bvh_node, x) == 0);
+static_assert(offsetof(bvh_node, y) == 16);
+static_assert(offsetof(bvh_node, z) == 32);
+static_assert(offsetof(bvh_node, first) == 48);
+static_assert(offsetof(bvh_node, count) == 56);
+static_assert(sizeof(bvh_node) == 64);
 static_assert(sizeof(render_status) == 16);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
 static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);

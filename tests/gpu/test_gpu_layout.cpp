@@ -55,7 +55,7 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
       {"gpu_sphere",
        {sizeof(gpu::gpu_sphere),
         {RTVK_MEMBER(gpu_sphere, center), RTVK_MEMBER(gpu_sphere, radius),
-         RTVK_MEMBER(gpu_sphere, material), RTVK_MEMBER(gpu_sphere, pad0),
+         RTVK_MEMBER(gpu_sphere, material), RTVK_MEMBER(gpu_sphere, scene_index),
          RTVK_MEMBER(gpu_sphere, pad1), RTVK_MEMBER(gpu_sphere, pad2)}}},
       {"gpu_material",
        {sizeof(gpu::gpu_material),
@@ -64,8 +64,8 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
          RTVK_MEMBER(gpu_material, pad0), RTVK_MEMBER(gpu_material, pad1)}}},
       {"bvh_node",
        {sizeof(gpu::bvh_node),
-        {RTVK_MEMBER(bvh_node, bounds_min), RTVK_MEMBER(bvh_node, first),
-         RTVK_MEMBER(bvh_node, bounds_max), RTVK_MEMBER(bvh_node, count)}}},
+        {RTVK_MEMBER(bvh_node, x), RTVK_MEMBER(bvh_node, y), RTVK_MEMBER(bvh_node, z),
+         RTVK_MEMBER(bvh_node, first), RTVK_MEMBER(bvh_node, count)}}},
       {"render_push",
        {sizeof(gpu::render_push),
         {RTVK_MEMBER(render_push, sky_horizon), RTVK_MEMBER(render_push, sphere_count),
@@ -276,7 +276,7 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
   // push constants (render.comp's and tonemap.comp's) are among the blocks walked.
   for (const auto& [name, layout] : cpp_layouts())
     EXPECT_GT(checked[name], 0) << name << " was found in no shader's buffers or push constants";
-  EXPECT_GE(blocks, 16) << "uniform, storage and push-constant blocks walked";
+  EXPECT_GE(blocks, 15) << "uniform, storage and push-constant blocks walked";
   EXPECT_EQ(push_blocks, 2) << "push-constant blocks walked";
 }
 

@@ -40,10 +40,11 @@ scene two_thousand_spheres() {
 }
 
 TEST_F(GpuLimits, AStorageBufferAboveTheRangeIsRefused) {
-  // 2000 spheres and the ground: 4001 BVH nodes of 32 bytes, 128,032 bytes in one storage buffer.
+  // 2000 spheres and the ground: 2000 interior BVH nodes of 64 bytes, 128,000 bytes in one
+  // storage buffer.
   const std::string refused = render_with(two_thousand_spheres(), {.storage_range = 100 << 10});
   EXPECT_EQ(refused,
-            "--scene spheres:2000: the BVH needs 125.031 KiB in one storage buffer; "
+            "--scene spheres:2000: the BVH needs 125 KiB in one storage buffer; "
             "device '" +
                 gpu().device().name + "' allows 100 KiB");
 }
@@ -51,11 +52,18 @@ TEST_F(GpuLimits, AStorageBufferAboveTheRangeIsRefused) {
 TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
   const scene s = two_thousand_spheres();
   EXPECT_EQ(render_with(s, {.storage_range = 200 << 10}), "") << "everything fits 200 KiB";
-  EXPECT_NE(render_with(s, {.allocation_size = 100 << 10})
-                .find("the BVH's upload copy needs 125.031 KiB in one memory allocation"),
+  // The scene's upload copies share one allocation: 2001 spheres (62.5 KiB), the materials
+  // 1999 BVH nodes (125 KiB).
+  EXPECT_NE(render_with(s, {.allocation_size = 150 << 10})
+                .find("the spheres' upload copy and the materials' upload copy and the BVH's "
+                      "upload copy need 189.562 KiB in one memory allocation"),
             std::string::npos);
+  EXPECT_EQ(render_with(s, {.allocation_size = 200 << 10}), "");
+  // Five allocations in all: the scene's upload copies and arrays, the targets' device-local,
+  // upload and readback buffers.
+  EXPECT_EQ(render_with(s, {.allocations = 5}), "");
   EXPECT_NE(
-      render_with(s, {.allocations = 10}).find("the render needs 14 memory allocations; device '"),
+      render_with(s, {.allocations = 4}).find("the render needs 5 memory allocations; device '"),
       std::string::npos);
   EXPECT_NE(render_with(s, {.heap_size = 256 << 10}).find("of memory heap 0; device '"),
             std::string::npos);

@@ -1,5 +1,6 @@
 #include "gpu_scene.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "bvh.h"
@@ -7,47 +8,77 @@
 #include "packing.h"
 
 namespace rtvk::gpu {
-gpu_scene::timed_bvh gpu_scene::build_bvh(const scene& s, bool use_bvh) {
+namespace {
+
+// A buffer cannot be empty: an empty array still takes one element.
+template <typename T>
+VkDeviceSize bytes_of(const std::vector<T>& v) {
+  return std::max<std::size_t>(v.size(), 1) * sizeof(T);
+}
+
+std::vector<buffer_spec> with_usage(std::vector<buffer_spec> specs, VkBufferUsageFlags usage) {
+  for (buffer_spec& b : specs) b.usage = usage;
+  return specs;
+}
+
+template <typename T>
+void write_array(gpu_buffer& b, const std::vector<T>& v) {
+  if (!v.empty()) b.write(v.data(), v.size() * sizeof(T));
+}
+
+// Allocation numbers for check_device_fits (the render targets' sets use others).
+enum : int { staging_set = 1, array_set };
+
+}  // namespace
+
+gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   const auto start = std::chrono::steady_clock::now();
-  bvh tree(use_bvh ? std::span<const sphere>(s.spheres) : std::span<const sphere>());
-  return {std::move(tree), seconds_since(start)};
+  const bvh tree(use_bvh ? std::span<const sphere>(s.spheres) : std::span<const sphere>());
+  const double seconds = seconds_since(start);
+  return {to_gpu_spheres(s, tree.order()), to_gpu_materials(s), tree.nodes(), seconds};
 }
 
 gpu_scene::gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh)
-    : gpu_scene(ctx, s, build_bvh(s, use_bvh)) {}
+    : gpu_scene(ctx, build(s, use_bvh)) {}
 
-gpu_scene::gpu_scene(const gpu_context& ctx, const scene& s, const timed_bvh& tree)
-    : spheres_(ctx, to_gpu_spheres(s)),
-      materials_(ctx, to_gpu_materials(s)),
-      build_seconds_(tree.seconds),
-      nodes_(ctx, tree.tree.nodes()),
-      index_(ctx, tree.tree.index()) {}
+gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
+    : sphere_count_(std::uint32_t(a.spheres.size())),
+      build_seconds_(a.build_seconds),
+      staging_specs_{{bytes_of(a.spheres), VK_BUFFER_USAGE_TRANSFER_SRC_BIT},
+                     {bytes_of(a.materials), VK_BUFFER_USAGE_TRANSFER_SRC_BIT},
+                     {bytes_of(a.nodes), VK_BUFFER_USAGE_TRANSFER_SRC_BIT}},
+      staging_(ctx, memory_use::upload, staging_specs_),
+      arrays_(ctx, memory_use::device_local,
+              with_usage(staging_specs_,
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT)) {
+  write_array(staging_[0], a.spheres);
+  write_array(staging_[1], a.materials);
+  write_array(staging_[2], a.nodes);
+}
 
 std::vector<buffer_request> gpu_scene::buffers(const scene& s, bool use_bvh) {
-  // The BVH at its largest: 2N - 1 nodes for N spheres (a binary tree with at most N leaves).
+  // The BVH at its largest: N - 1 interior nodes for N >= 2 spheres (one per leaf but one), the
+  // root alone for one.
   const VkDeviceSize n = s.spheres.size();
   const VkDeviceSize spheres = std::max<VkDeviceSize>(n, 1) * sizeof(gpu_sphere);
   const VkDeviceSize materials =
       std::max<VkDeviceSize>(s.materials.size(), 1) * sizeof(gpu_material);
   const bool tree = use_bvh && n > 0;
-  const VkDeviceSize nodes = (tree ? 2 * n - 1 : 1) * sizeof(bvh_node);
-  const VkDeviceSize index = (tree ? n : 1) * sizeof(std::uint32_t);
+  const VkDeviceSize nodes = (tree ? std::max<VkDeviceSize>(n - 1, 1) : 1) * sizeof(bvh_node);
   using u = memory_use;
-  return {{"the spheres' upload copy", spheres, false, u::upload},
-          {"the sphere array", spheres, true, u::device_local},
-          {"the materials' upload copy", materials, false, u::upload},
-          {"the material array", materials, true, u::device_local},
-          {"the BVH's upload copy", nodes, false, u::upload},
-          {"the BVH", nodes, true, u::device_local},
-          {"the BVH index's upload copy", index, false, u::upload},
-          {"the BVH index", index, true, u::device_local}};
+  return {{"the spheres' upload copy", spheres, false, u::upload, staging_set},
+          {"the sphere array", spheres, true, u::device_local, array_set},
+          {"the materials' upload copy", materials, false, u::upload, staging_set},
+          {"the material array", materials, true, u::device_local, array_set},
+          {"the BVH's upload copy", nodes, false, u::upload, staging_set},
+          {"the BVH", nodes, true, u::device_local, array_set}};
 }
 
 void gpu_scene::record_upload(VkCommandBuffer cb) const {
-  spheres_.record_upload(cb);
-  materials_.record_upload(cb);
-  nodes_.record_upload(cb);
-  index_.record_upload(cb);
+  for (std::size_t i = 0; i < staging_specs_.size(); ++i) {
+    const VkBufferCopy copy{0, 0, staging_specs_[i].size};
+    vkCmdCopyBuffer(cb, staging_[i].get(), arrays_[i].get(), 1, &copy);
+  }
 }
 
 }  // namespace rtvk::gpu

@@ -11,31 +11,11 @@
 
 namespace rtvk::gpu {
 
-// A storage buffer filled from host data through a staging copy recorded into a command buffer.
-template <typename T>
-struct device_array {
-  device_array(const gpu_context& ctx, std::vector<T> data)
-      : count(data.size()),
-        bytes((data.empty() ? 1 : data.size()) * sizeof(T)),
-        staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, memory_use::upload),
-        buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-               memory_use::device_local) {
-    if (data.empty()) data.resize(1);  // a buffer cannot be empty; `count` says 0
-    staging.write(data.data(), bytes);
-  }
-  void record_upload(VkCommandBuffer cb) const {
-    const VkBufferCopy copy{0, 0, bytes};
-    vkCmdCopyBuffer(cb, staging.get(), buffer.get(), 1, &copy);
-  }
-  std::size_t count;   // elements the scene has
-  VkDeviceSize bytes;  // buffer size
-  gpu_buffer staging;  // host copy
-  gpu_buffer buffer;   // what the shader reads
-};
-
 // The scene on the device: its spheres and materials in the shared header's layout, and the BVH
-// over the spheres (an empty one when the render tests every sphere). Filled on the host when
-// made; the copies to the device are recorded into the first submission.
+// over the spheres (an empty one when the render tests every sphere). With the BVH the spheres
+// are stored in its leaf order, each with its scene index; without it, in scene order. Filled on
+// the host when made, in two memory allocations (the upload copies, the device-local arrays);
+// the copies to the device are recorded into the first submission.
 class gpu_scene {
  public:
   gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh);
@@ -45,26 +25,28 @@ class gpu_scene {
 
   void record_upload(VkCommandBuffer cb) const;
 
-  std::uint32_t sphere_count() const { return std::uint32_t(spheres_.count); }
+  std::uint32_t sphere_count() const { return sphere_count_; }
   double build_seconds() const { return build_seconds_; }
-  VkBuffer spheres() const { return spheres_.buffer.get(); }
-  VkBuffer materials() const { return materials_.buffer.get(); }
-  VkBuffer nodes() const { return nodes_.buffer.get(); }
-  VkBuffer index() const { return index_.buffer.get(); }
+  VkBuffer spheres() const { return arrays_[0].get(); }
+  VkBuffer materials() const { return arrays_[1].get(); }
+  VkBuffer nodes() const { return arrays_[2].get(); }
 
  private:
-  struct timed_bvh {
-    bvh tree;        // over the scene's spheres, or empty
-    double seconds;  // its build took
+  // What goes to the device, made on the host.
+  struct host_arrays {
+    std::vector<gpu_sphere> spheres;      // in the BVH's leaf order, or scene order without it
+    std::vector<gpu_material> materials;  // in scene order
+    std::vector<bvh_node> nodes;          // the BVH's interior nodes, depth first
+    double build_seconds;                 // building the BVH took
   };
-  static timed_bvh build_bvh(const scene& s, bool use_bvh);
-  gpu_scene(const gpu_context& ctx, const scene& s, const timed_bvh& tree);
+  static host_arrays build(const scene& s, bool use_bvh);
+  gpu_scene(const gpu_context& ctx, const host_arrays& a);
 
-  device_array<gpu_sphere> spheres_;      // in scene order
-  device_array<gpu_material> materials_;  // in scene order
-  double build_seconds_;                  // building the BVH took
-  device_array<bvh_node> nodes_;          // the BVH, depth first
-  device_array<std::uint32_t> index_;     // leaf slot -> sphere
+  std::uint32_t sphere_count_;              // spheres the scene has
+  double build_seconds_;                    // building the BVH took
+  std::vector<buffer_spec> staging_specs_;  // spheres, materials, nodes: sizes for the copies
+  buffer_set staging_;                      // host copies
+  buffer_set arrays_;                       // what the shader reads
 };
 
 }  // namespace rtvk::gpu

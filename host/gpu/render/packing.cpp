@@ -16,11 +16,17 @@ camera_ubo to_ubo(const camera& cam) {
   return u;
 }
 
-std::vector<gpu_sphere> to_gpu_spheres(const scene& s) {
+std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint32_t> order) {
   std::vector<gpu_sphere> out;
   out.reserve(s.spheres.size());
-  for (const sphere& sp : s.spheres)
-    out.push_back({vec3(sp.center), float(sp.radius), uint(sp.material), 0, 0, 0});
+  const auto add = [&](std::uint32_t i) {
+    const sphere& sp = s.spheres[i];
+    out.push_back({vec3(sp.center), float(sp.radius), uint(sp.material), i, 0, 0});
+  };
+  if (order.empty())
+    for (std::size_t i = 0; i < s.spheres.size(); ++i) add(std::uint32_t(i));
+  else
+    for (const std::uint32_t i : order) add(i);
   return out;
 }
 

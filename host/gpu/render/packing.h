@@ -1,4 +1,6 @@
 #pragma once
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "camera.h"
@@ -10,8 +12,10 @@ namespace rtvk::gpu {
 // The camera's precomputed vectors and lens, rounded to float, and the image size.
 camera_ubo to_ubo(const camera& cam);
 
-// The scene's spheres and materials, in order, rounded to float.
-std::vector<gpu_sphere> to_gpu_spheres(const scene& s);
+// The scene's spheres, rounded to float, each with its scene index: in the order `order` gives
+// (slot -> scene index, bvh::order()), or in scene order when it is empty.
+std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint32_t> order = {});
+// The scene's materials, in order, rounded to float.
 std::vector<gpu_material> to_gpu_materials(const scene& s);
 
 }  // namespace rtvk::gpu
