@@ -28,9 +28,13 @@ bool visit_leaf(uint first, uint count, ray r, float t_min, precise inout float 
 // leaf, which holds RTVK_BVH_LEAF spheres.
 const uint stack_leaf = 0x80000000u;
 
-// Mirrors bvh_world::hit: the same nodes, the same order, ties to the later sphere, the record
-// filled once for the winner. One node fetch brings both children's boxes and references. Every
-// node visit and sphere test counts against the loop budget.
+// Mirrors bvh_world::hit: the same nodes in the same order, the same skipped entries, ties to the
+// later sphere, the record filled once for the winner. One node fetch brings both children's
+// boxes and references. The loop is flat -- each trip visits one node or leaf, or drops one
+// remembered child that is now behind the closest hit -- so the invocations of a SIMD group
+// (lavapipe's 8 lanes, a warp) step together instead of waiting for each other in nested loops;
+// each trip counts one iteration against the loop budget, as each visit and each drop does on
+// the host's side of the mirror.
 bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inout uint iterations) {
   if (pc.sphere_count == 0u) return false;
   precise vec3 o = r.origin;
@@ -39,16 +43,20 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
   precise float box_min = t_min * (1.0 - 1.0 / 1048576.0);
   uvec2 stack[RTVK_BVH_STACK];
   int top = 0;
-  uint next = 0u;        // the child to visit: node index, or first sphere slot
-  uint next_count = 0u;  // 0 for an interior node, else the leaf's spheres
+  uint next = 0u;           // the child to visit: node index, or first sphere slot
+  uint next_count = 0u;     // 0 for an interior node, else the leaf's spheres
+  float next_entry = 0.0;   // where the ray enters it (the root: 0, always visited)
   precise float closest = t_max;
   int best = -1;
   uint best_slot = 0u;
   while (true) {
     if (++iterations > pc.loop_budget) return false;
-    if (next_count == 0u) {
+    precise float box_max = closest * (1.0 + 1.0 / 1048576.0);
+    bool pop = true;
+    if (next_entry > box_max) {
+      // remembered before a closer hit was found: dropped unvisited
+    } else if (next_count == 0u) {
       bvh_node n = bvh_nodes[next];
-      precise float box_max = closest * (1.0 + 1.0 / 1048576.0);
       precise vec2 t = child_entries(o, inv_d, n, box_min, box_max, margin);
       // Nearer first: a is the nearer child when the ray enters both.
       uint a = t.x <= t.y ? 0u : 1u;
@@ -56,28 +64,36 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
       if (t[a] >= 0.0 && t[b] >= 0.0) {
         uint leaf = n.count[b] > 0u ? stack_leaf : 0u;  // over the sign bit of a -0 entry too
         stack[top++] = uvec2(n.first[b], (floatBitsToUint(t[b]) & ~stack_leaf) | leaf);
-        next = n.first[a];
-        next_count = n.count[a];
-        continue;
       }
       if (t[a] >= 0.0 || t[b] >= 0.0) {
         uint c = t[a] >= 0.0 ? a : b;
         next = n.first[c];
         next_count = n.count[c];
-        continue;
+        next_entry = 0.0;  // entered now, before any closer hit can be found
+        pop = false;
       }
-    } else if (!visit_leaf(next, next_count, r, t_min, closest, best, best_slot, iterations)) {
-      return false;
+    } else {
+#if RTVK_BVH_LEAF == 1
+      ++iterations;  // the sphere test, as visit_leaf counts it
+      precise float t;
+      int i = int(spheres[next].scene_index);
+      if (hit_distance(spheres[next], r, t_min, closest, t) && (t < closest || i > best)) {
+        closest = t;
+        best = i;
+        best_slot = next;
+      }
+      if (iterations > pc.loop_budget) return false;
+#else
+      if (!visit_leaf(next, next_count, r, t_min, closest, best, best_slot, iterations))
+        return false;
+#endif
     }
-    precise float box_max = closest * (1.0 + 1.0 / 1048576.0);
-    while (top > 0 && uintBitsToFloat(stack[top - 1].y & ~stack_leaf) > box_max) {
-      if (++iterations > pc.loop_budget) return false;
-      --top;
-    }
+    if (!pop) continue;
     if (top == 0) break;
     --top;
     next = stack[top].x;
     next_count = (stack[top].y & stack_leaf) != 0u ? uint(RTVK_BVH_LEAF) : 0u;
+    next_entry = uintBitsToFloat(stack[top].y & ~stack_leaf);
   }
   if (best < 0) return false;
   record_hit(spheres[best_slot], r, closest, rec);
