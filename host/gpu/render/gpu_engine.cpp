@@ -496,8 +496,9 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
   const work_layout layout = plan_work(dev, options_, win, views.size());
   render_targets& targets =
       targets_for(VkDeviceSize(win.width) * layout.band_rows * layout.views_per_group);
-  // One 32-bit counter per pixel: it holds at most spp * max_depth rays.
-  const bool count_rays = options_.engine.count_rays &&
+  // One 32-bit counter per pixel: it holds at most spp * max_depth rays. Read back with the sums
+  // only (an encoded render reads back bytes).
+  const bool count_rays = options_.engine.count_rays && kind == readback_kind::sums &&
                           std::uint64_t(win.samples()) * std::uint64_t(rs.max_depth) < (1ull << 32);
   const compute_pipeline* tonemap = nullptr;
   if (kind == readback_kind::bytes) {
