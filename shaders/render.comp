@@ -1,8 +1,9 @@
 #version 450
 // One invocation per pixel and view traces a run of that pixel's samples, from where the pixel
-// stands (pixel_sum::samples) up to pc.sample_target, and adds them to the pixel's exact sums in
-// one write. The loop budget bounds the work one invocation does (lavapipe silently stops loops
-// at 65,535 iterations in all): an invocation that runs out keeps the samples it finished and
+// stands (pixel_sum::samples) up to pc.sample_target, path after path without waiting for the
+// other invocations' paths, and adds them to the pixel's exact sums in one write. The loop budget
+// bounds the work one invocation does (lavapipe silently stops loops at 65,535 iterations in
+// all): an invocation that runs out keeps the samples it finished and
 // the next dispatch goes on from there; only a sample that does not fit a whole budget fails the
 // render. The dispatch's z index is the view: every camera (or animation frame) of a group shares
 // the scene buffers and the dispatch.
@@ -44,11 +45,11 @@ layout(push_constant) uniform push_block {
 #include "random.glsl"
 #include "shading.glsl"
 
-// One sample of the pixel: a ray from get_ray through a spot of the pixel (and of the lens),
-// mirroring pixel_color in host/cpu/render_cpu.cpp. `j` counts rows from the bottom.
-precise vec3 sample_color(camera_ubo cam, uvec2 pixel, uint j, uint sample_index,
-                          inout uint iterations, inout uint rays) {
-  random_stream s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, sample_index, 0u);
+// The first ray of one sample of the pixel, through a spot of the pixel (and of the lens), and
+// the sample's random numbers: mirrors pixel_color in host/cpu/render_cpu.cpp. `j` counts rows
+// from the bottom.
+ray sample_ray(camera_ubo cam, uvec2 pixel, uint j, uint sample_index, out random_stream s) {
+  s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, sample_index, 0u);
   precise float x = jitter ? float(pixel.x) + rnd(s, dim_jitter_u) : float(pixel.x);
   precise float y = jitter ? float(j) + rnd(s, dim_jitter_v) : float(j);
   precise float u = pixel_coordinate(x, cam.image_width);
@@ -56,7 +57,7 @@ precise vec3 sample_color(camera_ubo cam, uvec2 pixel, uint j, uint sample_index
   precise vec2 lens = any_lens && cam.lens_radius > 0.0
                           ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b))
                           : vec2(0.0);
-  return ray_color(get_ray(cam, u, v, lens), s, iterations, rays);
+  return get_ray(cam, u, v, lens);
 }
 
 // floor(c * 2^F) as (low word, high word), exactly as to_fixed in host/base/sample_sum.h: the
@@ -76,6 +77,15 @@ uvec2 add_fixed(uvec2 a, uvec2 b) {
   return uvec2(low, a.y + b.y + carry);
 }
 
+// Adds one sample's color (and its rays, when counted) to the pixel's sums.
+void add_sample(inout pixel_sum acc, vec3 c, uint rays) {
+  acc.r = add_fixed(acc.r, to_fixed(c.r));
+  acc.g = add_fixed(acc.g, to_fixed(c.g));
+  acc.b = add_fixed(acc.b, to_fixed(c.b));
+  if (count_rays) acc.rays += rays;
+  ++acc.samples;
+}
+
 void main() {
   // x from the left, y from the top of the image; the dispatch covers one band of rows of the
   // region, for every view.
@@ -89,18 +99,23 @@ void main() {
   uvec2 pixel = uvec2(gl_GlobalInvocationID.x + pc.region_x0, gl_GlobalInvocationID.y + pc.band_y0);
   uint j = cam.image_height - 1u - pixel.y;  // the lesson counts rows from the bottom
 
+  // ray_color's loop, one bounce per trip, over all the samples: a path that ends is added and
+  // the next sample's path starts on the next trip, so an invocation whose path ended early does
+  // not idle while the others of its SIMD group (lavapipe's 8 lanes, a warp) bounce on.
   uint first = acc.samples;
   uint iterations = 0u;
-  while (acc.samples < pc.sample_target) {
-    ++iterations;  // the sample loop counts against the budget like every other loop
-    uint rays = 0u;
-    precise vec3 c = sample_color(cam, pixel, j, pc.sample_begin + acc.samples, iterations, rays);
-    if (iterations > pc.loop_budget) break;  // this sample is dropped and drawn again later
-    acc.r = add_fixed(acc.r, to_fixed(c.r));
-    acc.g = add_fixed(acc.g, to_fixed(c.g));
-    acc.b = add_fixed(acc.b, to_fixed(c.b));
-    if (count_rays) acc.rays += rays;
-    ++acc.samples;
+  uint rays = 0u;  // of the path in flight
+  random_stream s;
+  path_state p = start_path(sample_ray(cam, pixel, j, pc.sample_begin + acc.samples, s), s);
+  while (true) {
+    precise vec3 c;
+    bool ended = ray_color_step(p, c, iterations, rays);
+    if (iterations > pc.loop_budget) break;  // the path in flight is dropped and drawn again
+    if (!ended) continue;
+    add_sample(acc, c, rays);
+    rays = 0u;
+    if (acc.samples >= pc.sample_target) break;
+    p = start_path(sample_ray(cam, pixel, j, pc.sample_begin + acc.samples, s), s);
   }
   if (iterations > pc.loop_budget) {
     if (acc.samples == first) {              // one sample needs more than a whole budget

@@ -13,25 +13,51 @@ precise vec3 sky_color(vec3 d) {
   return (1.0 - t) * pc.sky_horizon + t * pc.sky_zenith;
 }
 
-precise vec3 ray_color(ray r, random_stream s, inout uint iterations, inout uint rays) {
-  precise vec3 throughput = vec3(1.0, 1.0, 1.0);
-  for (uint depth = 0u; depth < pc.max_depth; ++depth) {
-    if (++iterations > pc.loop_budget) return vec3(0.0);
-    ++rays;
-    hit_record rec;
-    if (!hit_world(r, t_min, max_float, rec, iterations)) {
-      if (iterations > pc.loop_budget) return vec3(0.0);
-      return throughput * sky_color(r.direction);
-    }
-    gpu_material m = materials[rec.material];
-    if (m.type == RTVK_MATERIAL_NORMAL) return throughput * (0.5 * (rec.normal + vec3(1.0, 1.0, 1.0)));
-    precise vec3 attenuation;
-    precise ray scattered;
-    if (!scatter(m, r, rec, at_bounce(s, depth + 1u), attenuation, scattered)) return vec3(0.0);
-    throughput *= attenuation;
-    r = scattered;
+// ray_color's loop variables: a path in flight, so the loop can be taken one bounce at a time.
+struct path_state {
+  ray r;                    // the ray about to be traced
+  precise vec3 throughput;  // product of the attenuations so far
+  uint depth;               // bounces so far
+  random_stream s;          // the path's random numbers (pixel, sample)
+};
+
+path_state start_path(ray r, random_stream s) { return path_state(r, vec3(1.0), 0u, s); }
+
+// One trip through ray_color's loop: traces p.r and either ends the path, its color in `c`, or
+// scatters it for the next trip. Over the loop budget the path ends black and `iterations` tells
+// the caller.
+bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint iterations,
+                    inout uint rays) {
+  c = vec3(0.0);
+  if (++iterations > pc.loop_budget) return true;
+  if (p.depth >= pc.max_depth) return true;
+  ++rays;
+  hit_record rec;
+  if (!hit_world(p.r, t_min, max_float, rec, iterations)) {
+    if (iterations <= pc.loop_budget) c = p.throughput * sky_color(p.r.direction);
+    return true;
   }
-  return vec3(0.0);
+  gpu_material m = materials[rec.material];
+  if (m.type == RTVK_MATERIAL_NORMAL) {
+    c = p.throughput * (0.5 * (rec.normal + vec3(1.0, 1.0, 1.0)));
+    return true;
+  }
+  precise vec3 attenuation;
+  precise ray scattered;
+  if (!scatter(m, p.r, rec, at_bounce(p.s, p.depth + 1u), attenuation, scattered)) return true;
+  p.throughput *= attenuation;
+  p.r = scattered;
+  ++p.depth;
+  return false;
+}
+
+// The color a ray brings back (host/cpu/shading.cpp): ray_color_step until the path ends.
+precise vec3 ray_color(ray r, random_stream s, inout uint iterations, inout uint rays) {
+  path_state p = start_path(r, s);
+  precise vec3 c;
+  while (!ray_color_step(p, c, iterations, rays)) {
+  }
+  return c;
 }
 
 #endif

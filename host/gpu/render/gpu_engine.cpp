@@ -52,6 +52,26 @@ constexpr VkAccessFlags shader_rw = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER
 
 namespace {
 
+// How long dispatches and submissions should take, by kind of device. A GPU wants dispatches of a
+// few milliseconds (a display may be waiting, and long shaders risk a driver's watchdog) and
+// submissions short enough for progress and Ctrl-C. On a CPU device (lavapipe) nothing waits on
+// a dispatch, and an invocation tracing more of its samples keeps its SIMD lanes busier (a lane
+// whose path ends starts its next sample while the others bounce), so dispatches may take a
+// quarter second and, from 8 samples a pixel on, bands are kept small enough that one dispatch
+// can take all of a band's samples: about 2^18 pixel samples a band (2^15 pixels at least).
+// With fewer samples there is little to gain, and many views in one dispatch (an animation's
+// frames) do better: one band, one wait and one readback for all of them.
+struct pacing {
+  double dispatch_grow, dispatch_shrink;      // seconds of device time per dispatch
+  double submission_grow, submission_shrink;  // seconds of wall time per submission
+  bool small_bands;                           // bands sized to the sample count, as above
+};
+
+pacing pacing_for(const device_info& dev) {
+  if (dev.type == VK_PHYSICAL_DEVICE_TYPE_CPU) return {0.25, 1.0, 0.5, 2.0, true};
+  return {0.004, 0.016, 0.1, 0.4, false};
+}
+
 // How the views and rows of a render are grouped so that one group's sums fit one storage
 // buffer (and a bounded share of device memory): many views of a small region at once, or one
 // view in bands of whole rows when a single view is too large.
@@ -63,9 +83,13 @@ struct work_layout {
 work_layout plan_work(const device_info& dev, const gpu_render_options& options,
                       const render_window& win, std::size_t views) {
   const VkDeviceSize row_bytes = VkDeviceSize(win.width) * sizeof(pixel_sum);
-  const VkDeviceSize limit =
-      std::min<VkDeviceSize>(dev.limits.maxStorageBufferRange,
-                             options.band_bytes ? options.band_bytes : default_band_bytes);
+  const VkDeviceSize paced =
+      pacing_for(dev).small_bands && win.samples() >= 8
+          ? std::max<VkDeviceSize>(1u << 15, (1u << 18) / VkDeviceSize(win.samples())) *
+                sizeof(pixel_sum)
+          : default_band_bytes;
+  const VkDeviceSize limit = std::min<VkDeviceSize>(
+      dev.limits.maxStorageBufferRange, options.band_bytes ? options.band_bytes : paced);
   const VkDeviceSize view_bytes = row_bytes * VkDeviceSize(win.height);
   if (view_bytes <= limit) {
     const VkDeviceSize fit = std::min<VkDeviceSize>(limit / view_bytes, RTVK_MAX_VIEWS);
@@ -170,12 +194,13 @@ struct in_flight {
 
 // Draws bands. Each submission brings every pixel up by `batch` samples, in dispatches of
 // `per_dispatch` samples each; two submissions are in flight at once, so the device starts the
-// next while the host waits for the last. Both sizes grow from one: submissions until each takes
-// about a tenth of a second (long enough to keep the device busy, short enough for progress,
-// interruption and the fence timeout), dispatches until each takes a few milliseconds of device
-// time. Pixels whose loop budget ran out go on in the next dispatch; once the last target is
-// asked for, the renderer waits, and submits again until no pixel is unfinished. The last
-// submission of a band ends with its readback (sums, or bytes encoded by tonemap_pipeline).
+// next while the host waits for the last. Both sizes grow from one to what pacing_for asks of the
+// device: on a GPU, submissions of about a tenth of a second (long enough to keep the device
+// busy, short enough for progress, interruption and the fence timeout) and dispatches of a few
+// milliseconds of device time. Pixels whose loop budget ran out go on in the next dispatch; once
+// the last target is asked for, the renderer waits, and submits again until no pixel is unfinished.
+// The last submission of a band ends with its readback (sums, or bytes encoded by
+// tonemap_pipeline).
 class band_renderer {
  public:
   band_renderer(const engine_parts& engine, const compute_pipeline& pipeline,
@@ -263,11 +288,15 @@ class band_renderer {
       e_.batch = std::max(e_.per_dispatch, e_.options.samples_per_submission);
       return;
     }
+    const pacing p = pacing_for(e_.ctx.device());
     const double per_dispatch = (e_.timer.available() ? device_seconds : wall) / f.dispatches;
-    if (per_dispatch < 0.004 && e_.per_dispatch < (1u << 20)) e_.per_dispatch *= 2;
-    if (per_dispatch > 0.016 && e_.per_dispatch > 1) e_.per_dispatch /= 2;
-    if (wall < 0.1 && e_.batch < (1u << 20)) e_.batch *= 2;
-    if (wall > 0.4 && e_.batch > 1) e_.batch /= 2;
+    if (per_dispatch < p.dispatch_grow && e_.per_dispatch < (1u << 20)) e_.per_dispatch *= 2;
+    if (per_dispatch > p.dispatch_shrink && e_.per_dispatch > 1) e_.per_dispatch /= 2;
+    // Device time where there is a timer: the wall time includes waiting behind the other
+    // submission in flight.
+    const double submission = e_.timer.available() ? device_seconds : wall;
+    if (submission < p.submission_grow && e_.batch < (1u << 20)) e_.batch *= 2;
+    if (submission > p.submission_shrink && e_.batch > 1) e_.batch /= 2;
     e_.batch = std::min(std::max(e_.batch, e_.per_dispatch), e_.per_dispatch * 256);
   }
 
