@@ -62,9 +62,10 @@ ray sample_ray(camera_ubo cam, uvec2 pixel, uint j, uint sample_index, out rando
 
 // floor(c * 2^F) as (low word, high word), exactly as to_fixed in host/base/sample_sum.h: the
 // scaling is by a power of two, floor(x / 2^32) and x - h * 2^32 are exact in float, and only
-// the bits below 2^-F are dropped. c is clamped into [0, pc.sample_limit] first.
+// the bits below 2^-F are dropped. c is clamped into [0, pc.sample_limit] first (NaN to 0: a
+// comparison with NaN is false, where min and max may pass it through).
 uvec2 to_fixed(float c) {
-  precise float x = min(max(c, 0.0), pc.sample_limit) * pc.sum_scale;
+  precise float x = (c > 0.0 ? min(c, pc.sample_limit) : 0.0) * pc.sum_scale;
   precise float h = floor(x * (1.0 / 4294967296.0));
   precise float l = x - h * 4294967296.0;
   return uvec2(uint(l), uint(h));

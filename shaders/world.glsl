@@ -5,20 +5,26 @@
 #define RTVK_WORLD_GLSL
 #include "sphere.glsl"
 
-// Mirrors visit_leaf in host/cpu/bvh_world.cpp: tests spheres first .. first + count - 1, keeping
-// the nearest hit (`closest`; `best` its scene index, `best_slot` its slot). Ties go to the later
-// sphere in the scene. False when the loop budget ran out.
+// Tests the sphere in slot k, keeping the nearest hit (`closest`; `best` its scene index,
+// `best_slot` its slot). Ties go to the later sphere in the scene.
+void test_sphere(uint k, ray r, float t_min, precise inout float closest, inout int best,
+                 inout uint best_slot) {
+  precise float t;
+  int i = int(spheres[k].scene_index);
+  if (hit_distance(spheres[k], r, t_min, closest, t) && (t < closest || i > best)) {
+    closest = t;
+    best = i;
+    best_slot = k;
+  }
+}
+
+// Mirrors visit_leaf in host/cpu/bvh_world.cpp: tests spheres first .. first + count - 1. False
+// when the loop budget ran out.
 bool visit_leaf(uint first, uint count, ray r, float t_min, precise inout float closest,
                 inout int best, inout uint best_slot, inout uint iterations) {
   for (uint k = first; k < first + count; ++k) {
     if (++iterations > pc.loop_budget) return false;
-    precise float t;
-    int i = int(spheres[k].scene_index);
-    if (hit_distance(spheres[k], r, t_min, closest, t) && (t < closest || i > best)) {
-      closest = t;
-      best = i;
-      best_slot = k;
-    }
+    test_sphere(k, r, t_min, closest, best, best_slot);
   }
   return true;
 }
@@ -74,15 +80,9 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
       }
     } else {
 #if RTVK_BVH_LEAF == 1
-      ++iterations;  // the sphere test, as visit_leaf counts it
-      precise float t;
-      int i = int(spheres[next].scene_index);
-      if (hit_distance(spheres[next], r, t_min, closest, t) && (t < closest || i > best)) {
-        closest = t;
-        best = i;
-        best_slot = next;
-      }
-      if (iterations > pc.loop_budget) return false;
+      // One sphere: visit_leaf without its loop.
+      if (++iterations > pc.loop_budget) return false;
+      test_sphere(next, r, t_min, closest, best, best_slot);
 #else
       if (!visit_leaf(next, next_count, r, t_min, closest, best, best_slot, iterations))
         return false;

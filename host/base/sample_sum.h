@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -24,10 +25,12 @@ inline double sum_sample_limit(int exponent) {
   return std::ldexp(1.0, 63 - max_sum_samples_log2 - exponent);
 }
 
-// One sample channel as the shader converts it (to_fixed in render.comp): floor(c * 2^F).
+// One sample channel as the shader converts it (to_fixed in render.comp): floor(c * 2^F), after
+// clamping c into [0, sum_sample_limit(F)] (NaN to 0).
 inline std::uint64_t to_fixed(float c, int exponent) {
-  const double x = std::ldexp(double(c), exponent);
-  return x > 0 ? std::uint64_t(std::floor(x)) : 0;
+  if (!(c > 0)) return 0;
+  const double x = std::ldexp(std::min(double(c), sum_sample_limit(exponent)), exponent);
+  return std::uint64_t(std::floor(x));
 }
 
 // The mean of `samples` samples whose fixed-point sum is `sum`.

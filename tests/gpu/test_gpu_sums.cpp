@@ -150,6 +150,30 @@ TEST_F(GpuSums, TheDevicesEncodingIsTheHostsAtEveryThreshold) {
   }
 }
 
+TEST_F(GpuSums, EncodingSpreadsOverRowsOfWorkgroupsWhenOneRowWouldPassTheLimit) {
+  gpu::gpu_options o;
+  o.device = test::test_device();
+  o.validate = true;
+  o.caps.workgroup_count = 3;  // 1000 sums are 16 workgroups of 64: six rows of three
+  gpu::gpu_context ctx(o);
+  const scene s = test::small_scene("seed", 8, 1);
+  gpu::gpu_engine engine(ctx, s);
+  const byte_thresholds t = make_byte_thresholds(2, engine.sum_exponent());
+  std::vector<gpu::pixel_sum> sums;
+  for (std::uint32_t i = 0; i < 1000; ++i) {
+    const std::uint64_t v = std::uint64_t(i) << 32;  // means from 0 to about 2^-10 * 1000
+    sums.push_back({gpu::uvec2(0, std::uint32_t(v >> 32)), gpu::uvec2(0, 0),
+                    gpu::uvec2(0, std::uint32_t(v >> 32)), 1, 0});
+  }
+  const std::vector<std::uint32_t> rgba = engine.encode_sums(sums, 2);
+  ASSERT_EQ(rgba.size(), sums.size());
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    const std::uint32_t byte = encode_sum(word(sums[i].r), 1, t);
+    ASSERT_EQ(rgba[i], byte | byte << 16 | 0xffu << 24) << "sum " << i;
+  }
+  EXPECT_EQ(ctx.validation_messages(), 0u);
+}
+
 TEST_F(GpuSums, AMillionSamplesOfTheSeedImageAreTheCpusWithinOneLevel) {
   // Every sample of a seed pixel is the same (no jitter), so a float running sum drifts: 192
   // instead of 193 at 262,144 samples, 4 to 5 levels at 2^20. Exact sums do not.

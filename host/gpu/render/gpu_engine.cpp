@@ -160,6 +160,19 @@ std::vector<buffer_binding> tonemap_bindings(const render_targets& t) {
           {RTVK_BINDING_THRESHOLDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.thresholds.get()}};
 }
 
+// tonemap.comp over `pixels` sums: 64 a workgroup, in rows of workgroups within the device's
+// workgroup count limit.
+void record_tonemap(VkCommandBuffer cb, const compute_pipeline& tonemap, VkDeviceSize pixels,
+                    const device_info& dev) {
+  tonemap.bind(cb);
+  const tonemap_push tp{std::uint32_t(pixels)};
+  tonemap.push(cb, &tp, sizeof tp);
+  const VkDeviceSize groups = (pixels + 63) / 64;
+  if (groups == 0) return;
+  const VkDeviceSize row = std::min<VkDeviceSize>(groups, dev.limits.maxComputeWorkGroupCount[0]);
+  vkCmdDispatch(cb, std::uint32_t(row), std::uint32_t((groups + row - 1) / row), 1);
+}
+
 // Where one band is in the whole render, for progress and messages.
 struct band_pass {
   std::size_t group, groups;  // view group, of how many
@@ -305,7 +318,7 @@ class band_renderer {
   void record_start(VkCommandBuffer cb, bool first_band) const {
     if (e_.drawn) {  // the previous band's shader writes and copies out of these buffers come first
       barrier(cb, compute_stage | transfer_stage,
-              VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
+              shader_rw | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
               transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
     }
     if (first_band) vkCmdFillBuffer(cb, e_.targets.status.get(), 0, VK_WHOLE_SIZE, 0);
@@ -322,10 +335,7 @@ class band_renderer {
     VkBufferCopy copy{0, 0, pixels * sizeof(pixel_sum)};
     VkBuffer from = e_.targets.sums.get();
     if (tonemap_) {
-      tonemap_->bind(cb);
-      const tonemap_push tp{std::uint32_t(pixels)};
-      tonemap_->push(cb, &tp, sizeof tp);
-      vkCmdDispatch(cb, std::uint32_t((pixels + 63) / 64), 1, 1);
+      record_tonemap(cb, *tonemap_, pixels, e_.ctx.device());
       barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
               VK_ACCESS_TRANSFER_READ_BIT);
       copy.size = pixels * 4;
@@ -345,9 +355,12 @@ class band_renderer {
     e_.timer.record_begin(cb, ticket);
     if (first) {
       record_start(cb, b.group == 0 && b.band == 0);
-    } else {  // the previous submission's samples are in the sums this one adds to
-      barrier(cb, compute_stage | transfer_stage,
-              VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT, compute_stage, shader_rw);
+    } else {  // the previous submission's samples are in the sums this one adds to (and a
+              // catch-up pass copies into the readback again)
+      barrier(
+          cb, compute_stage | transfer_stage,
+          VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
+          compute_stage | transfer_stage, shader_rw | VK_ACCESS_TRANSFER_WRITE_BIT);
     }
     std::uint32_t t = from;
     bool first_dispatch = true;
@@ -433,9 +446,15 @@ render_targets& gpu_engine::targets_for(VkDeviceSize pixels) {
   if (targets_->pixels >= pixels) return *targets_;
   check_device_fits(ctx_, render_targets::buffers(scene_buffers_, pixels),
                     "--scene " + scene_name_);
-  targets_.reset();  // no submission is in flight
-  targets_ = std::make_unique<render_targets>(ctx_, pixels);
+  targets_.reset();  // no submission is in flight; the old ones go first to make room
   thresholds_gamma_ = 0;
+  try {
+    targets_ = std::make_unique<render_targets>(ctx_, pixels);
+  } catch (...) {  // the engine stays usable for smaller renders
+    targets_ = std::make_unique<render_targets>(ctx_, 1);
+    rebind_all();
+    throw;
+  }
   rebind_all();
   return *targets_;
 }
@@ -496,15 +515,13 @@ std::vector<std::uint32_t> gpu_engine::encode_sums(const std::vector<pixel_sum>&
   staging.write(sums.data(), bytes);
   ctx_.submit_and_wait([&](VkCommandBuffer cb) {
     if (drawn_)
-      barrier(cb, compute_stage | transfer_stage, shader_rw | VK_ACCESS_TRANSFER_READ_BIT,
+      barrier(cb, compute_stage | transfer_stage,
+              shader_rw | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
               transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
     const VkBufferCopy in{0, 0, bytes};
     vkCmdCopyBuffer(cb, staging.get(), t.sums.get(), 1, &in);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
-    tonemap.bind(cb);
-    const tonemap_push tp{std::uint32_t(sums.size())};
-    tonemap.push(cb, &tp, sizeof tp);
-    vkCmdDispatch(cb, std::uint32_t((sums.size() + 63) / 64), 1, 1);
+    record_tonemap(cb, tonemap, sums.size(), ctx_.device());
     barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
             VK_ACCESS_TRANSFER_READ_BIT);
     const VkBufferCopy out{0, 0, sums.size() * 4};

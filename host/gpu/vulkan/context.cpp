@@ -20,6 +20,7 @@ void apply_caps(const device_limit_caps& caps, device_info& d,
   cap<VkDeviceSize>(d.max_allocation_size, caps.allocation_size);
   cap<std::uint32_t>(d.limits.maxStorageBufferRange, std::uint32_t(caps.storage_range));
   cap<std::uint32_t>(d.limits.maxMemoryAllocationCount, caps.allocations);
+  cap<std::uint32_t>(d.limits.maxComputeWorkGroupCount[0], caps.workgroup_count);
   for (std::uint32_t h = 0; h < memory.memoryHeapCount; ++h)
     cap<VkDeviceSize>(memory.memoryHeaps[h].size, caps.heap_size);
 }
@@ -117,8 +118,13 @@ std::uint64_t gpu_context::submit(const std::function<void(VkCommandBuffer)>& re
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vk_check(vkBeginCommandBuffer(s.cb, &begin), "vkBeginCommandBuffer");
-  record(s.cb);
-  vk_check(vkEndCommandBuffer(s.cb), "vkEndCommandBuffer");
+  try {
+    record(s.cb);
+    vk_check(vkEndCommandBuffer(s.cb), "vkEndCommandBuffer");
+  } catch (...) {  // back to the initial state, so the slot can be recorded again
+    vkResetCommandBuffer(s.cb, 0);
+    throw;
+  }
 
   const VkFence fence = s.fence.get();
   vk_check(vkResetFences(device_.get(), 1, &fence), "vkResetFences");

@@ -14,10 +14,11 @@ namespace rtvk::gpu {
 
 // Limits lower than the device's own, for tests that prove a limit is checked (0: the device's).
 struct device_limit_caps {
-  VkDeviceSize storage_range = 0;    // maxStorageBufferRange, bytes
-  VkDeviceSize allocation_size = 0;  // maxMemoryAllocationSize, bytes
-  std::uint32_t allocations = 0;     // maxMemoryAllocationCount
-  VkDeviceSize heap_size = 0;        // every memory heap's size, bytes
+  VkDeviceSize storage_range = 0;     // maxStorageBufferRange, bytes
+  VkDeviceSize allocation_size = 0;   // maxMemoryAllocationSize, bytes
+  std::uint32_t allocations = 0;      // maxMemoryAllocationCount
+  VkDeviceSize heap_size = 0;         // every memory heap's size, bytes
+  std::uint32_t workgroup_count = 0;  // maxComputeWorkGroupCount[0]
 };
 
 struct gpu_options {

@@ -1,5 +1,7 @@
 #include "device_timer.h"
 
+#include <algorithm>
+
 #include "vk_error.h"
 
 namespace rtvk::gpu {
@@ -54,7 +56,13 @@ double device_timer::seconds(std::uint64_t ticket) const {
       vkGetQueryPoolResults(ctx_.vk(), pool_.get(), first_query(ticket), 2, sizeof ticks, ticks,
                             sizeof ticks[0], VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
       "vkGetQueryPoolResults");
-  return double((ticks[1] - ticks[0]) & mask_) * period_ns_ * 1e-9;
+  // A submission's first timestamp is written as soon as it reaches the queue, which may be while
+  // the one before it still runs: its time starts when that one ended, so overlapping
+  // submissions are not counted twice.
+  const std::uint64_t elapsed = (ticks[1] - ticks[0]) & mask_;
+  const std::uint64_t since_last = (ticks[1] - last_end_) & mask_;
+  last_end_ = ticks[1];
+  return double(std::min(elapsed, since_last)) * period_ns_ * 1e-9;
 }
 
 }  // namespace rtvk::gpu

@@ -21,14 +21,16 @@ class device_timer {
   // For submission `ticket` (gpu_context::next_ticket while recording it).
   void record_begin(VkCommandBuffer cb, std::uint64_t ticket) const;  // first in the buffer
   void record_end(VkCommandBuffer cb, std::uint64_t ticket) const;    // last in the buffer
-  // Seconds between the two, once submission `ticket` has completed and before its slot is
-  // reused; 0 when not available.
+  // Seconds between the two -- or from the end of the submission read before, where the two
+  // overlapped -- once submission `ticket` has completed and before its slot is reused; read in
+  // ticket order. 0 when not available.
   double seconds(std::uint64_t ticket) const;
 
  private:
-  const gpu_context& ctx_;  // tells whether the device may still be using the pool
-  double period_ns_;        // nanoseconds per timestamp tick
-  std::uint64_t mask_;      // the bits a timestamp holds
+  const gpu_context& ctx_;              // tells whether the device may still be using the pool
+  double period_ns_;                    // nanoseconds per timestamp tick
+  std::uint64_t mask_;                  // the bits a timestamp holds
+  mutable std::uint64_t last_end_ = 0;  // the last timestamp read, ticks
   unique_query_pool pool_;  // two queries per slot; empty when the queue has no timestamps
 };
 
