@@ -2,6 +2,7 @@
 // random numbers for the same (seed, pixel, sample, bounce, dimension).
 #ifndef RTVK_RANDOM_GLSL
 #define RTVK_RANDOM_GLSL
+#include "ray.glsl"
 
 const uint dim_jitter_u = 0u;
 const uint dim_jitter_v = 1u;
@@ -47,8 +48,6 @@ precise float rnd(random_stream s, uint dim) {
 random_stream at_bounce(random_stream s, uint b) {
   return random_stream(s.seed, s.pixel, s.sample_index, b);
 }
-
-const float pi = 3.1415926535897932385;
 
 precise vec3 random_unit_vector(float a, float b) {
   precise float z = 1.0 - 2.0 * a;

@@ -2,6 +2,8 @@
 #ifndef RTVK_RAY_GLSL
 #define RTVK_RAY_GLSL
 
+const float pi = 3.1415926535897932385;
+
 struct ray {
   precise vec3 origin;     // where the ray starts, scene units
   precise vec3 direction;  // not normalized

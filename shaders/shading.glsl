@@ -31,6 +31,7 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   c = vec3(0.0);
   if (++iterations > pc.loop_budget) return true;
   if (p.depth >= pc.max_depth) return true;
+  if (p.r.direction == vec3(0.0)) return true;  // the camera gives no ray here: black
   ++rays;
   hit_record rec;
   if (!hit_world(p.r, t_min, max_float, rec, iterations)) {

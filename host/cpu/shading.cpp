@@ -16,6 +16,8 @@ color sky_color(const vec3& d, const sky& background) {
 color ray_color(const ray& r_in, const hittable& world, std::span<const material> materials,
                 const sky& background, int max_depth, const random_stream& rnd) {
   const double infinity = std::numeric_limits<double>::infinity();
+  // A camera gives no ray (a zero direction) where its model sees nothing: black.
+  if (r_in.direction() == vec3(0, 0, 0)) return color(0, 0, 0);
   ray r = r_in;
   color throughput(1.0, 1.0, 1.0);
   for (int depth = 0; depth < max_depth; ++depth) {

@@ -42,6 +42,15 @@ void check_pose(const camera_pose& p) {
   if (!(p.focus_dist > 0) || !std::isfinite(p.focus_dist))
     throw std::invalid_argument("focus distance must be finite and > 0, got " +
                                 format_number(p.focus_dist));
+  if (!(p.fisheye_fov > 0 && p.fisheye_fov <= 360))
+    throw std::invalid_argument("fisheye field of view must be in (0, 360] degrees, got " +
+                                format_number(p.fisheye_fov));
+  const bool has_lens =
+      p.projection == projection::perspective || p.projection == projection::orthographic;
+  if (p.aperture > 0 && !has_lens)
+    throw std::invalid_argument("the " + std::string(projection_name(p.projection)) +
+                                " projection has no lens: aperture must be 0, got " +
+                                format_number(p.aperture));
   if (glm::length(p.lookfrom - p.lookat) == 0)
     throw std::invalid_argument("lookfrom and lookat are the same point");
   if (glm::length(glm::cross(p.vup, p.lookfrom - p.lookat)) == 0)
@@ -55,7 +64,57 @@ double tan_half_angle(double vfov_degrees) {
   return std::tan(vfov_degrees * 3.1415926535897932385 / 180.0 / 2.0);
 }
 
+constexpr double pi = 3.1415926535897932385;
+
+struct named_projection {
+  projection model;
+  std::string_view name;
+};
+constexpr named_projection projections[] = {
+    {projection::perspective, "perspective"},
+    {projection::orthographic, "orthographic"},
+    {projection::equirectangular, "equirectangular"},
+    {projection::fisheye_equidistant, "fisheye-equidistant"},
+    {projection::fisheye_equisolid, "fisheye-equisolid"},
+};
+
 }  // namespace
+
+std::string_view projection_name(projection p) {
+  for (const named_projection& n : projections)
+    if (n.model == p) return n.name;
+  return "unknown";
+}
+
+std::optional<projection> projection_from_name(std::string_view name) {
+  for (const named_projection& n : projections)
+    if (n.name == name) return n.model;
+  return std::nullopt;
+}
+
+std::string projection_names() {
+  std::string out;
+  for (const named_projection& n : projections) out += (out.empty() ? "" : ", ") + std::string(n.name);
+  return out;
+}
+
+vec3 camera::panoramic_direction(double s, double t) const {
+  if (projection_ == projection::equirectangular) {
+    const double phi = (s - 0.5) * 2 * pi;  // longitude, 0 straight ahead, + to the right
+    const double theta = (t - 0.5) * pi;    // latitude, + up
+    return std::cos(theta) * (std::sin(phi) * lens_u_ - std::cos(phi) * axis_w_) +
+           std::sin(theta) * lens_v_;
+  }
+  // Fisheye: a circle that touches the top and bottom edges.
+  const double x = (2 * s - 1) * aspect_ratio_, y = 2 * t - 1;
+  const double r = std::sqrt(x * x + y * y);
+  if (r > 1) return vec3(0, 0, 0);  // outside the lens: no ray
+  if (r == 0) return -axis_w_;
+  const double theta = projection_ == projection::fisheye_equidistant
+                           ? r * fisheye_fov_ / 2
+                           : 2 * std::asin(r * std::sin(fisheye_fov_ / 4));
+  return std::cos(theta) * -axis_w_ + std::sin(theta) * (x / r * lens_u_ + y / r * lens_v_);
+}
 
 camera::camera(const camera_pose& pose, double aspect_ratio, int image_width)
     : aspect_ratio_(aspect_ratio),
@@ -76,6 +135,10 @@ camera::camera(const camera_pose& pose, double aspect_ratio, int image_width)
   lens_u_ = u;
   lens_v_ = v;
   lens_radius_ = pose.aperture / 2;
+  projection_ = pose.projection;
+  axis_w_ = w;
+  focus_dist_ = pose.focus_dist;
+  fisheye_fov_ = pose.fisheye_fov * pi / 180;
 }
 
 }  // namespace rtvk

@@ -1,10 +1,28 @@
 #pragma once
+#include <optional>
+#include <string>
+#include <string_view>
+
 #include <glm/vec2.hpp>
 
 #include "image_size.h"
 #include "ray.h"
 
 namespace rtvk {
+
+// How directions map onto the image (docs/camera.md has each model's formula and a picture).
+enum class projection {
+  perspective,          // the lesson's pinhole (and thin lens) camera
+  orthographic,         // parallel rays along -w from the perspective viewport on the focus plane
+  equirectangular,      // the full sphere: longitude across, latitude up (2:1 for square pixels)
+  fisheye_equidistant,  // a round image; the angle from the axis grows with the radius
+  fisheye_equisolid,    // a round image of equal solid angle per area
+};
+
+// "perspective", "orthographic", "equirectangular", "fisheye-equidistant", "fisheye-equisolid".
+std::string_view projection_name(projection p);
+std::optional<projection> projection_from_name(std::string_view name);
+std::string projection_names();  // all of them, comma-separated, for messages and --help
 
 // Where the camera stands and how its lens is set. The defaults are the lesson's pinhole camera:
 // at the origin, looking down -z, 90 degrees vertical field of view, everything in focus.
@@ -15,6 +33,8 @@ struct camera_pose {
   double vfov = 90;          // vertical field of view, degrees, in (0, 180)
   double aperture = 0;       // lens diameter, scene units; 0 is a pinhole
   double focus_dist = 1;     // distance to the plane in perfect focus, scene units, > 0
+  rtvk::projection projection = rtvk::projection::perspective;  // how directions map to pixels
+  double fisheye_fov = 180;  // the fisheye models' field of view across the circle, degrees
 };
 
 // Everything a ray needs is precomputed once, as in the lesson, so get_ray is a few multiply-adds.
@@ -27,17 +47,33 @@ class camera {
       : camera(camera_pose{}, aspect_ratio, image_width) {}
 
   // A posed camera with a thin lens; also throws std::invalid_argument for a pose that does not
-  // define a view (lookfrom == lookat, vup parallel to the view, vfov outside (0, 180), ...).
+  // define a view (lookfrom == lookat, vup parallel to the view, vfov outside (0, 180), a fisheye
+  // field of view outside (0, 360], an aperture with a model that has no lens, ...).
   camera(const camera_pose& pose, double aspect_ratio, int image_width);
 
   // The ray through normalized image coordinates (s, t) -- (0, 0) is the lower-left corner of
   // the viewport, (1, 1) the upper-right -- leaving the lens at `lens`, a point of the unit disk.
+  // Where the model sees nothing (outside a fisheye's circle) the direction is zero: no ray,
+  // and the renderers draw the pixel black.
   ray get_ray(double s, double t, glm::dvec2 lens = {0, 0}) const {
     const glm::dvec2 rd = lens_radius_ * lens;
     const vec3 offset = lens_u_ * rd.x + lens_v_ * rd.y;
-    return ray(origin_ + offset, lower_left_ + s * horizontal_ + t * vertical_ - origin_ - offset);
+    switch (projection_) {
+      case projection::perspective:
+        return ray(origin_ + offset,
+                   lower_left_ + s * horizontal_ + t * vertical_ - origin_ - offset);
+      case projection::orthographic: {
+        const point3 on_focus_plane = lower_left_ + s * horizontal_ + t * vertical_;
+        const point3 from = on_focus_plane + focus_dist_ * axis_w_ + offset;
+        return ray(from, on_focus_plane - from);
+      }
+      default:
+        return ray(origin_, panoramic_direction(s, t));
+    }
   }
 
+  // The direction get_ray gives at (s, t) for the equirectangular and fisheye models (no lens).
+  vec3 panoramic_direction(double s, double t) const;
   double aspect_ratio() const { return aspect_ratio_; }
   int image_width() const { return image_width_; }
   int image_height() const { return image_height_; }
@@ -48,6 +84,10 @@ class camera {
   const vec3& lens_u() const { return lens_u_; }
   const vec3& lens_v() const { return lens_v_; }
   double lens_radius() const { return lens_radius_; }
+  rtvk::projection projection() const { return projection_; }
+  const vec3& axis_w() const { return axis_w_; }
+  double focus_dist() const { return focus_dist_; }
+  double fisheye_fov() const { return fisheye_fov_; }  // radians
 
  private:
   double aspect_ratio_;  // image width / height
@@ -60,6 +100,10 @@ class camera {
   vec3 lens_u_;          // unit vector to the camera's right
   vec3 lens_v_;          // unit vector to the camera's up
   double lens_radius_;   // aperture / 2, scene units
+  rtvk::projection projection_;  // the model get_ray follows
+  vec3 axis_w_;                  // unit vector backwards, away from what the camera looks at
+  double focus_dist_;            // distance to the plane in perfect focus, scene units
+  double fisheye_fov_;           // fisheye field of view across the circle, radians
 };
 
 }  // namespace rtvk

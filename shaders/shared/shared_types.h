@@ -37,7 +37,7 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_COUNT_RAYS 5  // bool: count each pixel's rays (pixel_sum::rays)
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 128 camera
-// blocks are 12 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
+// blocks are 14 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
 #define RTVK_MAX_VIEWS 128
 
 // Traversal stack entries. The BVH builder keeps every tree at most this many interior levels
@@ -55,6 +55,13 @@ using uvec2 = glm::uvec2;
 #define RTVK_MATERIAL_METAL 2
 #define RTVK_MATERIAL_DIELECTRIC 3
 
+// Camera models, as rtvk::projection (host/scene/camera.h).
+#define RTVK_PROJECTION_PERSPECTIVE 0
+#define RTVK_PROJECTION_ORTHOGRAPHIC 1
+#define RTVK_PROJECTION_EQUIRECTANGULAR 2
+#define RTVK_PROJECTION_FISHEYE_EQUIDISTANT 3
+#define RTVK_PROJECTION_FISHEYE_EQUISOLID 4
+
 // std140. Each vec3 takes a 16-byte slot; the scalar after it packs into the slot's last 4 bytes.
 struct camera_ubo {
   vec3 origin;        // eye position, scene units
@@ -64,11 +71,13 @@ struct camera_ubo {
   vec3 vertical;      // full viewport height as a vector, scene units
   float lens_radius;  // aperture / 2, scene units
   vec3 lower_left;    // lower-left corner of the viewport, scene units
-  uint pad0;          // unused
+  uint projection;    // RTVK_PROJECTION_*
   vec3 lens_u;        // unit vector to the camera's right
-  uint pad1;          // unused
+  float aspect;       // image width / height
   vec3 lens_v;        // unit vector to the camera's up
-  uint pad2;          // unused
+  float fisheye_fov;  // fisheye field of view across the circle, radians
+  vec3 axis_w;        // unit vector backwards, away from what the camera looks at
+  float focus_dist;   // distance to the plane in perfect focus, scene units
 };
 
 // std430 array element: 32 bytes. With the BVH the buffer holds the spheres in its leaf order,
@@ -192,12 +201,14 @@ static_assert(offsetof(camera_ubo, image_height) == 28);
 static_assert(offsetof(camera_ubo, vertical) == 32);
 static_assert(offsetof(camera_ubo, lens_radius) == 44);
 static_assert(offsetof(camera_ubo, lower_left) == 48);
-static_assert(offsetof(camera_ubo, pad0) == 60);
+static_assert(offsetof(camera_ubo, projection) == 60);
 static_assert(offsetof(camera_ubo, lens_u) == 64);
-static_assert(offsetof(camera_ubo, pad1) == 76);
+static_assert(offsetof(camera_ubo, aspect) == 76);
 static_assert(offsetof(camera_ubo, lens_v) == 80);
-static_assert(offsetof(camera_ubo, pad2) == 92);
-static_assert(sizeof(camera_ubo) == 96);
+static_assert(offsetof(camera_ubo, fisheye_fov) == 92);
+static_assert(offsetof(camera_ubo, axis_w) == 96);
+static_assert(offsetof(camera_ubo, focus_dist) == 108);
+static_assert(sizeof(camera_ubo) == 112);
 static_assert(offsetof(gpu_sphere, center) == 0);
 static_assert(offsetof(gpu_sphere, radius) == 12);
 static_assert(offsetof(gpu_sphere, material) == 16);

@@ -2,6 +2,12 @@
 
 namespace rtvk::gpu {
 
+static_assert(int(projection::perspective) == RTVK_PROJECTION_PERSPECTIVE);
+static_assert(int(projection::orthographic) == RTVK_PROJECTION_ORTHOGRAPHIC);
+static_assert(int(projection::equirectangular) == RTVK_PROJECTION_EQUIRECTANGULAR);
+static_assert(int(projection::fisheye_equidistant) == RTVK_PROJECTION_FISHEYE_EQUIDISTANT);
+static_assert(int(projection::fisheye_equisolid) == RTVK_PROJECTION_FISHEYE_EQUISOLID);
+
 camera_ubo to_ubo(const camera& cam) {
   camera_ubo u{};
   u.origin = vec3(cam.origin());
@@ -11,6 +17,11 @@ camera_ubo to_ubo(const camera& cam) {
   u.lens_u = vec3(cam.lens_u());
   u.lens_v = vec3(cam.lens_v());
   u.lens_radius = float(cam.lens_radius());
+  u.projection = uint(cam.projection());
+  u.aspect = float(cam.aspect_ratio());
+  u.fisheye_fov = float(cam.fisheye_fov());
+  u.axis_w = vec3(cam.axis_w());
+  u.focus_dist = float(cam.focus_dist());
   u.image_width = uint(cam.image_width());
   u.image_height = uint(cam.image_height());
   return u;
