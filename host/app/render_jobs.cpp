@@ -60,7 +60,14 @@ std::string job_fingerprint(const std::string& scene_text, const camera_pose& p)
                 "%.17g %.17g %.17g|%.17g %.17g %.17g|%.17g %.17g %.17g|%.17g %.17g %.17g",
                 p.lookfrom.x, p.lookfrom.y, p.lookfrom.z, p.lookat.x, p.lookat.y, p.lookat.z,
                 p.vup.x, p.vup.y, p.vup.z, p.vfov, p.aperture, p.focus_dist);
-  return fingerprint_of(scene_text + pose);
+  // The model only where it is not the lesson's, so perspective pieces keep their fingerprints.
+  std::string model;
+  if (p.projection != projection::perspective || p.fisheye_fov != camera_pose{}.fisheye_fov) {
+    char fov[64];
+    std::snprintf(fov, sizeof fov, " %.17g", p.fisheye_fov);
+    model = "|" + std::string(projection_name(p.projection)) + fov;
+  }
+  return fingerprint_of(scene_text + pose + model);
 }
 
 }  // namespace

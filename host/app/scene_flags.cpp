@@ -39,6 +39,16 @@ void scene_flags::add_to(CLI::App& cmd) {
   aperture_opt_ =
       cmd.add_option("--aperture", aperture_, "Lens diameter (0: pinhole)")->group(group);
   focus_dist_opt_ = cmd.add_option("--focus-dist", focus_dist_, "Distance in focus")->group(group);
+  projection_opt_ =
+      cmd.add_option("--projection", projection_,
+                     "Camera model: " + projection_names() +
+                         " (equirectangular: the full sphere, square pixels at --aspect 2:1; "
+                         "fisheye: a round image touching the top and bottom edges)")
+          ->group(group);
+  fisheye_fov_opt_ = cmd.add_option("--fisheye-fov", fisheye_fov_,
+                                    "Fisheye field of view across the circle, degrees, in "
+                                    "(0, 360] (default 180)")
+                         ->group(group);
   orbit_opt_ = cmd.add_option("--orbit", orbit_,
                               "Turn the camera about the up axis through its look-at point, one "
                               "turn in this many seconds (the built-in orbit path)")
@@ -57,6 +67,8 @@ scene_overrides scene_flags::overrides() const {
           .vfov = if_given(vfov_opt_, vfov_),
           .aperture = if_given(aperture_opt_, aperture_),
           .focus_dist = if_given(focus_dist_opt_, focus_dist_),
+          .projection = if_given(projection_opt_, projection_),
+          .fisheye_fov = if_given(fisheye_fov_opt_, fisheye_fov_),
           .orbit = if_given(orbit_opt_, orbit_)};
 }
 

@@ -25,7 +25,8 @@ class scene_flags {
   int depth_ = 0;
   long long seed_ = 0;
   std::string lookfrom_, lookat_, vup_;
-  double vfov_ = 0, aperture_ = 0, focus_dist_ = 0, orbit_ = 0;
+  double vfov_ = 0, aperture_ = 0, focus_dist_ = 0, orbit_ = 0, fisheye_fov_ = 0;
+  std::string projection_;
   CLI::Option* width_opt_ = nullptr;
   CLI::Option* aspect_opt_ = nullptr;
   CLI::Option* spp_opt_ = nullptr;
@@ -38,6 +39,8 @@ class scene_flags {
   CLI::Option* aperture_opt_ = nullptr;
   CLI::Option* focus_dist_opt_ = nullptr;
   CLI::Option* orbit_opt_ = nullptr;
+  CLI::Option* projection_opt_ = nullptr;
+  CLI::Option* fisheye_fov_opt_ = nullptr;
 };
 
 }  // namespace rtvk

@@ -37,6 +37,20 @@ void apply_pose(const scene_overrides& o, camera_pose& c) {
   if (o.focus_dist) c.focus_dist = checked(*o.focus_dist, *o.focus_dist > 0, "--focus-dist", "> 0");
 }
 
+// The camera model: not a move, so it applies to every pose of a path, keyframes included.
+void apply_model(const scene_overrides& o, camera_pose& c) {
+  if (o.projection) {
+    const std::optional<projection> p = projection_from_name(*o.projection);
+    if (!p)
+      throw usage_error("--projection " + *o.projection + ": not a projection; expected one of " +
+                        projection_names());
+    c.projection = *p;
+  }
+  if (o.fisheye_fov)
+    c.fisheye_fov = checked(*o.fisheye_fov, *o.fisheye_fov > 0 && *o.fisheye_fov <= 360,
+                            "--fisheye-fov", "in (0, 360] degrees");
+}
+
 }  // namespace
 
 void scene_overrides::apply(scene& s) const {
@@ -49,6 +63,8 @@ void scene_overrides::apply(scene& s) const {
                         cam.name + " of " + s.name +
                         " moves by keyframes; pick another with --camera or edit its keyframes");
     apply_pose(*this, cam.path.pose);
+    apply_model(*this, cam.path.pose);
+    for (camera_keyframe& k : cam.path.keyframes) apply_model(*this, k.pose);
     if (orbit) {
       cam.path.motion = camera_motion::orbit;
       cam.path.orbit_period = checked(*orbit, *orbit > 0, "--orbit", "> 0 seconds");

@@ -11,18 +11,20 @@ namespace rtvk {
 // `rtvk render` and `rtvk bench`. Each applies only when given; values are as typed, checked
 // when applied, and the messages name the flags. scene_flags fills it from the command line.
 struct scene_overrides {
-  std::optional<int> width;             // image width, pixels
-  std::optional<std::string> aspect;    // aspect ratio as typed, W:H or a decimal
-  std::optional<int> spp;               // samples per pixel
-  std::optional<int> depth;             // most bounces per path
-  std::optional<long long> seed;        // random seed, 0 to 2^32 - 1
-  std::optional<std::string> lookfrom;  // camera position as typed, x,y,z
-  std::optional<std::string> lookat;    // point looked at as typed, x,y,z
-  std::optional<std::string> vup;       // up direction as typed, x,y,z
-  std::optional<double> vfov;           // vertical field of view, degrees
-  std::optional<double> aperture;       // lens diameter, scene units (0: pinhole)
-  std::optional<double> focus_dist;     // distance in focus, scene units
-  std::optional<double> orbit;          // seconds per turn of the built-in orbit path
+  std::optional<int> width;               // image width, pixels
+  std::optional<std::string> aspect;      // aspect ratio as typed, W:H or a decimal
+  std::optional<int> spp;                 // samples per pixel
+  std::optional<int> depth;               // most bounces per path
+  std::optional<long long> seed;          // random seed, 0 to 2^32 - 1
+  std::optional<std::string> lookfrom;    // camera position as typed, x,y,z
+  std::optional<std::string> lookat;      // point looked at as typed, x,y,z
+  std::optional<std::string> vup;         // up direction as typed, x,y,z
+  std::optional<double> vfov;             // vertical field of view, degrees
+  std::optional<double> aperture;         // lens diameter, scene units (0: pinhole)
+  std::optional<double> focus_dist;       // distance in focus, scene units
+  std::optional<std::string> projection;  // camera model, by name (projection_from_name)
+  std::optional<double> fisheye_fov;      // fisheye field of view, degrees
+  std::optional<double> orbit;            // seconds per turn of the built-in orbit path
 
   // The scene's settings with the overrides applied, to every camera in s.cameras (narrow them
   // to the chosen ones first). Throws usage_error naming the flag.

@@ -48,6 +48,8 @@ camera_pose between(const camera_pose& a, const camera_pose& b, double f) {
   p.vfov = glm::mix(a.vfov, b.vfov, f);
   p.aperture = glm::mix(a.aperture, b.aperture, f);
   p.focus_dist = glm::mix(a.focus_dist, b.focus_dist, f);
+  p.projection = a.projection;  // a model is not interpolated: the earlier keyframe's holds
+  p.fisheye_fov = glm::mix(a.fisheye_fov, b.fisheye_fov, f);
   return p;
 }
 

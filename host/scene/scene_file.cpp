@@ -106,8 +106,8 @@ std::string escape_pointer(const std::string& key) {
   return out;
 }
 
-const std::set<std::string> pose_fields = {"lookfrom", "lookat",   "vup",
-                                           "vfov",     "aperture", "focus_dist"};
+const std::set<std::string> pose_fields = {"lookfrom", "lookat",     "vup",        "vfov",
+                                           "aperture", "focus_dist", "projection", "fisheye_fov"};
 
 // The pose fields of `j` over the defaults; the caller has checked which fields may appear.
 camera_pose read_pose(const scene_reader& r, const json& j, const std::string& p) {
@@ -118,6 +118,17 @@ camera_pose read_pose(const scene_reader& r, const json& j, const std::string& p
   if (j.contains("vfov")) c.vfov = r.number(j["vfov"], p + "/vfov");
   if (j.contains("aperture")) c.aperture = r.number(j["aperture"], p + "/aperture");
   if (j.contains("focus_dist")) c.focus_dist = r.number(j["focus_dist"], p + "/focus_dist");
+  if (j.contains("projection")) {
+    const json& m = j["projection"];
+    if (!m.is_string())
+      r.fail(p + "/projection", "expected a projection name, got " + r.type_of(m));
+    const std::optional<projection> model = projection_from_name(m.get<std::string>());
+    if (!model)
+      r.fail(p + "/projection", "unknown projection \"" + m.get<std::string>() +
+                                    "\"; expected one of " + projection_names());
+    c.projection = *model;
+  }
+  if (j.contains("fisheye_fov")) c.fisheye_fov = r.number(j["fisheye_fov"], p + "/fisheye_fov");
   return c;
 }
 
@@ -325,9 +336,14 @@ json vec_json(const vec3& v) {
 }
 
 json pose_json(const camera_pose& c) {
-  return {{"lookfrom", vec_json(c.lookfrom)}, {"lookat", vec_json(c.lookat)},
-          {"vup", vec_json(c.vup)},           {"vfov", c.vfov},
-          {"aperture", c.aperture},           {"focus_dist", c.focus_dist}};
+  json j = {{"lookfrom", vec_json(c.lookfrom)}, {"lookat", vec_json(c.lookat)},
+            {"vup", vec_json(c.vup)},           {"vfov", c.vfov},
+            {"aperture", c.aperture},           {"focus_dist", c.focus_dist}};
+  // The lesson's model is left unsaid, so scenes without projections dump as they always did.
+  if (c.projection != projection::perspective)
+    j["projection"] = std::string(projection_name(c.projection));
+  if (c.fisheye_fov != camera_pose{}.fisheye_fov) j["fisheye_fov"] = c.fisheye_fov;
+  return j;
 }
 
 json camera_json(const camera_path& path) {

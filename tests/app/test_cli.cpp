@@ -80,6 +80,10 @@ TEST(Cli, BadInputExits2WithAMessageAndNoFile) {
       {{"--aspect", "0.000001"}, "--aspect", "0.000001"},
       {{"--scene", "nope"}, "--scene", "nope"},
       {{"--backend", "quantum"}, "--backend", "quantum"},
+      {{"--projection", "fisheye"}, "--projection", "fisheye"},
+      {{"--fisheye-fov", "400"}, "--fisheye-fov", "400"},
+      {{"--fisheye-fov", "0"}, "--fisheye-fov", "0"},
+      {{"--projection", "equirectangular", "--aperture", "0.5"}, "aperture", "0.5"},
   };
   test::temp_dir dir;
   const fs::path out = dir.path() / "out.png";

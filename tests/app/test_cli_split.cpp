@@ -181,5 +181,25 @@ TEST(CliSplit, BadRequestsExit2WithoutFiles) {
   }
 }
 
+TEST(CliSplit, PiecesOfOtherProjectionsDoNotMerge) {
+  test::temp_dir dir;
+  const auto at = [&](const std::string& f) { return (dir.path() / f).string(); };
+  const auto piece = [&](const std::string& model, const std::string& samples,
+                         const std::string& out) {
+    return run_rtvk({"render", "--scene", "materials", "--width", "32", "--spp", "4", "--backend",
+                     "cpu", "--projection", model, "--aperture", "0", "--samples", samples, "-o",
+                     at(out), "-q"})
+        .status;
+  };
+  ASSERT_EQ(piece("fisheye-equidistant", "0:2", "a.exr"), 0);
+  ASSERT_EQ(piece("fisheye-equidistant", "2:4", "b.exr"), 0);
+  ASSERT_EQ(piece("equirectangular", "2:4", "c.exr"), 0);
+  EXPECT_EQ(run_rtvk({"merge", at("a.exr"), at("b.exr"), "-o", at("ab.png")}).status, 0);
+  const auto mixed = run_rtvk({"merge", at("a.exr"), at("c.exr"), "-o", at("ac.png")});
+  EXPECT_EQ(mixed.status, 2) << mixed.err;
+  EXPECT_NE(mixed.err.find("fingerprint"), std::string::npos) << mixed.err;
+  EXPECT_FALSE(fs::exists(at("ac.png")));
+}
+
 }  // namespace
 }  // namespace rtvk

@@ -95,6 +95,16 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
       {R"({"render":{"aspect":"16:0"},"spheres":[]})",
        "/render/aspect: invalid aspect ratio '16:0'"},
       {R"({"camera":{"vfov":200},"spheres":[]})", "/camera: vertical field of view"},
+      {R"({"camera":{"projection":"fish"},"spheres":[]})",
+       "/camera/projection: unknown projection \"fish\"; expected one of perspective"},
+      {R"({"camera":{"projection":3},"spheres":[]})",
+       "/camera/projection: expected a projection name, got a number"},
+      {R"({"camera":{"fisheye_fov":400},"spheres":[]})",
+       "/camera: fisheye field of view must be in (0, 360] degrees, got 400"},
+      {R"({"camera":{"projection":"equirectangular","aperture":0.2},"spheres":[]})",
+       "/camera: the equirectangular projection has no lens: aperture must be 0, got 0.2"},
+      {R"({"cameras":{"k":{"keyframes":[{"time":0},{"time":1,"projection":"x"}]}},"spheres":[]})",
+       "/cameras/k/keyframes/1/projection: unknown projection"},
       {R"({"camera":{"lookat":[0,0,0]},"spheres":[]})", "/camera: lookfrom and lookat"},
       {R"({"sky":{"zenith":[0,-1,0]},"spheres":[]})", "/sky/zenith/1"},
       {R"({"camera":{},"cameras":{"a":{}},"spheres":[]})", "/cameras: a scene has either"},
@@ -148,6 +158,26 @@ TEST(SceneFile, NamedCamerasWithPathsRoundTrip) {
   EXPECT_NE(dumped.find("\"cameras\""), std::string::npos);
   // One camera named "default" is written the old way, so older files read back unchanged.
   EXPECT_NE(dump_scene_json(builtin_scene("seed")).find("\"camera\""), std::string::npos);
+}
+
+TEST(SceneFile, ProjectionsRoundTripAndPerspectiveStaysUnsaid) {
+  const std::string text = R"({
+    "cameras": {
+      "pano": {"lookfrom": [0, 1, 0], "projection": "equirectangular"},
+      "fish": {"keyframes": [{"time": 0, "projection": "fisheye-equisolid", "fisheye_fov": 200},
+                             {"time": 1, "projection": "fisheye-equisolid"}]},
+      "flat": {"projection": "orthographic", "aperture": 0.1}
+    },
+    "spheres": []})";
+  const scene s = parse_scene_json(text, "proj.json");
+  EXPECT_EQ(s.cameras[0].path.pose.projection, projection::equirectangular);
+  EXPECT_EQ(s.cameras[1].path.keyframes[0].pose.fisheye_fov, 200);
+  EXPECT_EQ(s.cameras[1].path.keyframes[1].pose.fisheye_fov, 180);  // the default
+  EXPECT_EQ(s.cameras[2].path.pose.projection, projection::orthographic);
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "again.json")), dumped);
+  EXPECT_NE(dumped.find("\"fisheye-equisolid\""), std::string::npos);
+  EXPECT_EQ(dump_scene_json(builtin_scene("book-final")).find("projection"), std::string::npos);
 }
 
 TEST(SceneFile, MissingEmptyAndFolderFiles) {
