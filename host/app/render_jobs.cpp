@@ -10,7 +10,6 @@
 #include "image_io.h"
 #include "partial_image.h"
 #include "render_cpu.h"
-#include "scene_file.h"
 
 namespace rtvk {
 namespace {
@@ -43,15 +42,27 @@ void select_cameras(scene& s, const std::vector<std::string>& asked) {
   });
 }
 
-// What identifies the image a job draws, whatever machine draws it: the scene as a file would
-// hold it, without its cameras and with the sample count left out (pieces of one render may come
-// from runs with different --spp as long as their sample ranges do not overlap), then the job's
-// pose. The scene part is the same for every job of a run: dumped once.
+// Appends each value's bytes (fields one by one: no struct padding).
+template <typename... T>
+void append_bytes(std::string& out, const T&... values) {
+  (out.append(reinterpret_cast<const char*>(&values), sizeof values), ...);
+}
+
+// What identifies the image a job draws, whatever machine draws it: every number of the scene that
+// changes a pixel -- render settings but the sample count (pieces of one render may come from
+// runs with different --spp as long as their sample ranges do not overlap), the sky, the
+// materials, the spheres -- as their binary values, then the job's pose. Bytes, not the scene's
+// JSON text: formatting a million spheres as text took longer than rendering them small. The
+// scene part is the same for every job of a run: made once, and only for pieces (.exr).
 std::string scene_identity(const scene& s) {
-  scene rest = s;
-  rest.cameras.clear();
-  rest.render.spp = 1;
-  return dump_scene_json(rest);
+  std::string out = "rtvk scene identity 2|";
+  const render_settings& r = s.render;
+  append_bytes(out, r.width, r.aspect, r.max_depth, r.seed, r.gamma, r.jitter);
+  append_bytes(out, s.sky.horizon, s.sky.zenith);
+  for (const named_material& m : s.materials)
+    append_bytes(out, m.m.type, m.m.albedo, m.m.fuzz, m.m.ir);
+  for (const sphere& sp : s.spheres) append_bytes(out, sp.center, sp.radius, sp.material);
+  return out;
 }
 
 std::string job_fingerprint(const std::string& scene_text, const camera_pose& p) {
@@ -128,7 +139,10 @@ int_range plan_frames(const scene& s, const job_request& req, const output_patte
 std::vector<render_job> make_jobs(const scene& s, const job_request& req,
                                   const output_pattern& output, const scene_overrides& overrides,
                                   int_range frames) {
-  const std::string scene_text = scene_identity(s);
+  // Only pieces for `rtvk merge` carry a fingerprint.
+  const bool pieces = format_for_path(output.expand(s.cameras.front().name, frames.begin),
+                                      "--output") == file_format::exr;
+  const std::string scene_text = pieces ? scene_identity(s) : std::string();
   std::vector<render_job> jobs;
   std::set<std::string> outputs;
   for (const named_camera& c : s.cameras)
@@ -138,7 +152,7 @@ std::vector<render_job> make_jobs(const scene& s, const job_request& req,
           c.name, f,
           overrides.make_camera(
               s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f)),
-          output.expand(c.name, f), job_fingerprint(scene_text, pose)};
+          output.expand(c.name, f), pieces ? job_fingerprint(scene_text, pose) : std::string()};
       if (!outputs.insert(job.output).second)
         throw usage_error("--output " + req.output + ": two images would be written to " +
                           job.output);

@@ -41,7 +41,7 @@ struct render_job {
   int frame = 0;            // animation frame number
   camera cam;               // posed for the frame's time
   std::string output;       // the -o path with placeholders filled in
-  std::string fingerprint;  // the scene, settings and this pose, hashed (see partial_image.h)
+  std::string fingerprint;  // the scene, settings and pose, hashed (partial_image.h); .exr only
 };
 
 // The selected cameras (s.cameras narrowed to them, in the scene's order), the overrides applied,

@@ -201,5 +201,37 @@ TEST(CliSplit, PiecesOfOtherProjectionsDoNotMerge) {
   EXPECT_FALSE(fs::exists(at("ac.png")));
 }
 
+TEST(CliSplit, PiecesOfOtherScenesOrSettingsDoNotMerge) {
+  test::temp_dir dir;
+  const auto at = [&](const std::string& f) { return (dir.path() / f).string(); };
+  const auto piece = [&](const std::string& scene, const std::string& samples,
+                         const std::string& out, std::vector<std::string> more = {}) {
+    std::vector<std::string> args{"render", "--scene", scene,       "--width", "24",
+                                  "--spp",  "2",       "--backend", "cpu",     "--samples",
+                                  samples,  "-o",      at(out),     "-q"};
+    args.insert(args.end(), more.begin(), more.end());
+    return run_rtvk(args).status;
+  };
+  const auto merges = [&](const std::string& a, const std::string& b) {
+    const auto r = run_rtvk({"merge", at(a), at(b), "-o", at("m.png")});
+    EXPECT_TRUE(r.status == 0 || r.err.find("fingerprint") != std::string::npos) << r.err;
+    return r.status == 0;
+  };
+  std::ofstream(at("one.json")) << R"({"spheres": [{"center": [0, 0, -1], "radius": 0.5,
+      "material": "m"}], "materials": {"m": {"type": "normal"}}})";
+  std::ofstream(at("moved.json")) << R"({"spheres": [{"center": [0, 0, -1.0000001],
+      "radius": 0.5, "material": "m"}], "materials": {"m": {"type": "normal"}}})";
+  ASSERT_EQ(piece("spheres:50", "0:1", "a.exr"), 0);
+  ASSERT_EQ(piece("spheres:50", "1:2", "b.exr"), 0);
+  ASSERT_EQ(piece("spheres:51", "1:2", "c.exr"), 0);
+  ASSERT_EQ(piece("spheres:50", "1:2", "d.exr", {"--seed", "7"}), 0);
+  ASSERT_EQ(piece(at("one.json"), "0:1", "e.exr"), 0);
+  ASSERT_EQ(piece(at("moved.json"), "1:2", "f.exr"), 0);
+  EXPECT_TRUE(merges("a.exr", "b.exr"));
+  EXPECT_FALSE(merges("a.exr", "c.exr")) << "another sphere";
+  EXPECT_FALSE(merges("a.exr", "d.exr")) << "another seed";
+  EXPECT_FALSE(merges("e.exr", "f.exr")) << "a sphere moved by 1e-7";
+}
+
 }  // namespace
 }  // namespace rtvk
