@@ -94,7 +94,8 @@ std::optional<projection> projection_from_name(std::string_view name) {
 
 std::string projection_names() {
   std::string out;
-  for (const named_projection& n : projections) out += (out.empty() ? "" : ", ") + std::string(n.name);
+  for (const named_projection& n : projections)
+    out += (out.empty() ? "" : ", ") + std::string(n.name);
   return out;
 }
 
