@@ -23,9 +23,10 @@ struct path_state {
 
 path_state start_path(ray r, random_stream s) { return path_state(r, vec3(1.0), 0u, s); }
 
-// One trip through ray_color's loop: traces p.r and either ends the path, its color in `c`, or
-// scatters it for the next trip. Over the loop budget the path ends black and `iterations` tells
-// the caller.
+// One trip through ray_color's loop (host/cpu/shading.cpp); render.comp holds the loop itself,
+// over all of an invocation's samples, so a lane whose path ended starts its next sample at once.
+// Traces p.r and either ends the path, its color in `c`, or scatters it for the next trip. Over
+// the loop budget the path ends black and `iterations` tells the caller.
 bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint iterations,
                     inout uint rays) {
   c = vec3(0.0);
@@ -50,15 +51,6 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   p.r = scattered;
   ++p.depth;
   return false;
-}
-
-// The color a ray brings back (host/cpu/shading.cpp): ray_color_step until the path ends.
-precise vec3 ray_color(ray r, random_stream s, inout uint iterations, inout uint rays) {
-  path_state p = start_path(r, s);
-  precise vec3 c;
-  while (!ray_color_step(p, c, iterations, rays)) {
-  }
-  return c;
 }
 
 #endif
