@@ -17,7 +17,9 @@ precise vec3 refract_dir(vec3 uv, vec3 n, float etai_over_etat) {
 precise float schlick_reflectance(float cosine, float ref_idx) {
   precise float r0 = (1.0 - ref_idx) / (1.0 + ref_idx);
   r0 = r0 * r0;
-  return r0 + (1.0 - r0) * pow(1.0 - cosine, 5.0);
+  precise float x = 1.0 - cosine;
+  precise float x2 = x * x;
+  return r0 + (1.0 - r0) * (x2 * x2 * x);
 }
 
 bool scatter_lambertian(gpu_material m, hit_record rec, random_stream s,

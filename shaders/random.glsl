@@ -49,11 +49,32 @@ random_stream at_bounce(random_stream s, uint b) {
   return random_stream(s.seed, s.pixel, s.sample_index, b);
 }
 
+// turn_cos_sin of host/base/random.h: (cos, sin) of 2 pi b from the same polynomials.
+precise vec2 turn_cos_sin(float b) {
+  int q = int(4.0 * b + 0.5);
+  precise float theta = (4.0 * b - float(q)) * (pi / 2.0);
+  precise float t2 = theta * theta;
+  precise float t4 = t2 * t2;
+  precise float t8 = t4 * t4;
+  // Estrin's scheme: independent pairs, a short chain of dependent multiplies.
+  precise float s = theta * ((1.0 + t2 * (-1.0 / 6.0)) + t4 * (1.0 / 120.0 + t2 * (-1.0 / 5040.0)) +
+                      t8 * ((1.0 / 362880.0 + t2 * (-1.0 / 39916800.0)) +
+                            t4 * (1.0 / 6227020800.0 + t2 * (-1.0 / 1307674368000.0))));
+  precise float c = (1.0 + t2 * (-1.0 / 2.0)) + t4 * (1.0 / 24.0 + t2 * (-1.0 / 720.0)) +
+             t8 * ((1.0 / 40320.0 + t2 * (-1.0 / 3628800.0)) +
+                   t4 * (1.0 / 479001600.0 + t2 * (-1.0 / 87178291200.0))) +
+             t8 * t8 * (1.0 / 20922789888000.0);
+  // Turned by q quarter turns without a branch (a random quadrant would mispredict it most
+  // times): the 0-or-1 factors keep the values exact.
+  precise float odd = float(q & 1), even = 1.0 - odd, half_turn = 1.0 - float(q & 2);
+  return vec2(half_turn * (c * even - s * odd), half_turn * (s * even + c * odd));
+}
+
 precise vec3 random_unit_vector(float a, float b) {
   precise float z = 1.0 - 2.0 * a;
   precise float r = sqrt(max(0.0, 1.0 - z * z));
-  precise float phi = 2.0 * pi * b;
-  return vec3(r * cos(phi), r * sin(phi), z);
+  precise vec2 phi = turn_cos_sin(b);
+  return vec3(r * phi.x, r * phi.y, z);
 }
 
 precise vec3 random_in_unit_sphere(float a, float b, float c) {
@@ -61,9 +82,7 @@ precise vec3 random_in_unit_sphere(float a, float b, float c) {
 }
 
 precise vec2 random_in_unit_disk(float a, float b) {
-  precise float r = sqrt(a);
-  precise float theta = 2.0 * pi * b;
-  return vec2(r * cos(theta), r * sin(theta));
+  return sqrt(a) * turn_cos_sin(b);
 }
 
 #endif

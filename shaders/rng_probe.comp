@@ -15,4 +15,7 @@ void main() {
   rng_probe_entry e = entries[i];
   entries[i].bits = random_bits(0x5eedu, e.pixel, e.sample_index, e.bounce, e.dim);
   entries[i].value = random_float(0x5eedu, e.pixel, e.sample_index, e.bounce, e.dim);
+  vec2 turn = turn_cos_sin(entries[i].value);
+  entries[i].turn_cos = turn.x;
+  entries[i].turn_sin = turn.y;
 }

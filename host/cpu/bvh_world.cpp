@@ -1,9 +1,11 @@
 #include "bvh_world.h"
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
+#include <xmmintrin.h>
 #endif
 
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 
 #include "hittable_sphere.h"
@@ -11,35 +13,63 @@
 namespace rtvk {
 namespace {
 
-// The slab test of ray_box_entry for both children of n at once: t[0] is where the ray enters
-// the left child's box, t[1] the right's, or -1 where it misses it. Same float operations, same
-// results, as ray_box_entry for each child, which is the fallback without SSE.
-inline void child_entries(const gpu::bvh_node& n, const glm::vec3& o, const glm::vec3& inv_d,
-                          float t_min, float t_max, float margin, float (&t)[2]) {
+// What every box test of one ray needs, in float, prepared once per ray: for each axis, which
+// of a wide node's corner arrays the ray meets first (lo when it travels up the axis, else hi),
+// and the origin moved by origin_margin (accel/bvh.h) so that every box is tested grown by it.
+struct ray_slabs {
+  int near[3], far[3];  // per axis: offset of the near and far corner arrays in a wide_node
+  float o_near[3];      // per axis: the origin, minus the margin where the near corner is hi ...
+  float o_far[3];       // ... and plus it where the far corner is lo
+  float inv[3];         // inverse direction (safe_inverse)
+
+  explicit ray_slabs(const ray& r) {
+    const glm::vec3 o(r.origin()), inv_d = safe_inverse(glm::vec3(r.direction()));
+    const float margin = origin_margin(o);
+    constexpr int lo = offsetof(wide_node, lo) / sizeof(float),
+                  hi = offsetof(wide_node, hi) / sizeof(float);
+    for (int k = 0; k < 3; ++k) {
+      const bool up = inv_d[k] >= 0;
+      near[k] = (up ? lo : hi) + 4 * k;
+      far[k] = (up ? hi : lo) + 4 * k;
+      o_near[k] = up ? o[k] + margin : o[k] - margin;
+      o_far[k] = up ? o[k] - margin : o[k] + margin;
+      inv[k] = inv_d[k];
+    }
+  }
+};
+
+// The slab test of all four children of n at once: t[c] is where the ray enters child c's box
+// between t_min and t_max; the result has bit c set for each child whose box it enters there.
+// (corner - (o -+ margin)) * inv differs from ray_box_entry's ((corner -+ margin) - o) * inv by
+// an ulp of |o| at most, well inside the margin, so no box holding a hit is culled.
+inline unsigned child_entries(const wide_node& n, const ray_slabs& r, float t_min, float t_max,
+                              float (&t)[4]) {
+  const float* const corners = &n.lo[0][0];
 #if defined(__SSE2__)
-  const __m128 grow = _mm_setr_ps(-margin, -margin, margin, margin);  // mins down, maxes up
-  const auto axis = [&](const gpu::vec4& v, float origin, float inv, __m128& near, __m128& far) {
-    const __m128 corner = _mm_add_ps(_mm_loadu_ps(&v[0]), grow);
-    const __m128 d = _mm_mul_ps(_mm_sub_ps(corner, _mm_set1_ps(origin)), _mm_set1_ps(inv));
-    const __m128 swapped =
-        _mm_shuffle_ps(d, d, _MM_SHUFFLE(1, 0, 3, 2));  // min lanes <-> max lanes
-    near = _mm_min_ps(d, swapped);
-    far = _mm_max_ps(d, swapped);
-  };
-  __m128 nx, fx, ny, fy, nz, fz;
-  axis(n.x, o.x, inv_d.x, nx, fx);
-  axis(n.y, o.y, inv_d.y, ny, fy);
-  axis(n.z, o.z, inv_d.z, nz, fz);
-  const __m128 enter = _mm_max_ps(_mm_max_ps(_mm_set1_ps(t_min), nx), _mm_max_ps(ny, nz));
-  const __m128 leave = _mm_min_ps(_mm_min_ps(_mm_set1_ps(t_max), fx), _mm_min_ps(fy, fz));
-  alignas(16) float e[4], l[4];
-  _mm_store_ps(e, enter);
-  _mm_store_ps(l, leave);
-  t[0] = e[0] <= l[0] ? e[0] : -1.0f;
-  t[1] = e[1] <= l[1] ? e[1] : -1.0f;
+  __m128 enter = _mm_set1_ps(t_min), leave = _mm_set1_ps(t_max);
+  for (int k = 0; k < 3; ++k) {
+    const __m128 inv = _mm_set1_ps(r.inv[k]);
+    const __m128 t0 =
+        _mm_mul_ps(_mm_sub_ps(_mm_load_ps(corners + r.near[k]), _mm_set1_ps(r.o_near[k])), inv);
+    const __m128 t1 =
+        _mm_mul_ps(_mm_sub_ps(_mm_load_ps(corners + r.far[k]), _mm_set1_ps(r.o_far[k])), inv);
+    enter = _mm_max_ps(enter, t0);
+    leave = _mm_min_ps(leave, t1);
+  }
+  _mm_storeu_ps(t, enter);
+  return unsigned(_mm_movemask_ps(_mm_cmple_ps(enter, leave))) & n.lanes;
 #else
-  t[0] = ray_box_entry(o, inv_d, n, 0, t_min, t_max, margin);
-  t[1] = ray_box_entry(o, inv_d, n, 1, t_min, t_max, margin);
+  unsigned mask = 0;
+  for (int c = 0; c < 4; ++c) {
+    float enter = t_min, leave = t_max;
+    for (int k = 0; k < 3; ++k) {
+      enter = std::max(enter, (corners[r.near[k] + c] - r.o_near[k]) * r.inv[k]);
+      leave = std::min(leave, (corners[r.far[k] + c] - r.o_far[k]) * r.inv[k]);
+    }
+    t[c] = enter;
+    if (enter <= leave) mask |= 1u << c;
+  }
+  return mask & n.lanes;
 #endif
 }
 
@@ -51,21 +81,13 @@ inline float widen_up(double t) {
   return float(t) * (1.0f + 0x1p-20f);
 }
 
-// A child of some node: an interior node (count 0, `first` its index) or a leaf.
-struct child_ref {
-  std::uint32_t first;  // node index, or the leaf's first sphere slot
-  std::uint32_t count;  // 0, or the leaf's spheres
-};
-
-// The children still to visit, each with the distance at which the ray enters its box: children
-// of the interior nodes on the path from the root, one per node at most, and the builder keeps
-// that path at most bvh::max_depth nodes long.
+// The children still to visit, each with the distance at which the ray enters its box: at most
+// three per node on the path from the root, which is at most bvh::max_depth nodes long.
 struct node_stack {
-  child_ref ref[RTVK_BVH_STACK];  // the child
-  float entry[RTVK_BVH_STACK];    // where the ray enters its box
-  int top = 0;                    // entries in use
+  std::uint32_t node[wide_bvh::max_stack];  // the child: wide_node::child
+  float entry[wide_bvh::max_stack];         // where the ray enters its box
+  int top = 0;                              // entries in use
 };
-static_assert(bvh::max_depth <= RTVK_BVH_STACK);
 
 // The search's state: the nearest hit so far, and its sphere.
 struct nearest {
@@ -74,72 +96,82 @@ struct nearest {
   std::uint32_t slot = 0;   // and its leaf slot
 };
 
-// Tests a leaf's spheres, slots first .. first + count - 1, keeping the nearest hit. Ties go to
-// the later sphere in the scene, as in a linear scan.
-inline void visit_leaf(std::uint32_t first, std::uint32_t count, const std::vector<sphere>& spheres,
-                       const std::vector<std::uint32_t>& order, const ray& r, double t_min,
-                       nearest& best) {
-  for (std::uint32_t k = first; k < first + count; ++k) {
-    const std::int64_t i = order[k];
-    double t;
-    if (hit_distance(spheres[k], r, t_min, best.t, t) && (t < best.t || i > best.scene)) {
-      best.t = t;
-      best.scene = i;
-      best.slot = k;
-    }
+// Tests the sphere in leaf slot k, keeping the nearest hit. Ties go to the later sphere in the
+// scene, as in a linear scan, so the order of the tests never matters.
+inline void visit_sphere(std::uint32_t k, const std::vector<sphere>& spheres,
+                         const std::vector<std::uint32_t>& order, const ray& r, double t_min,
+                         nearest& best) {
+  const std::int64_t i = order[k];
+  double t;
+  if (hit_distance(spheres[k], r, t_min, best.t, t) && (t < best.t || i > best.scene)) {
+    best.t = t;
+    best.scene = i;
+    best.slot = k;
   }
 }
 
-// Moves `node` to the next remembered node the ray can still reach before box_max (the closest
-// hit). False when none is left.
-inline bool pop_reachable(node_stack& stack, float box_max, child_ref& next) {
+// Takes the next remembered node the ray can still reach before box_max (the closest hit).
+// False when none is left.
+inline bool pop_reachable(node_stack& stack, float box_max, std::uint32_t& next) {
   while (stack.top > 0 && stack.entry[stack.top - 1] > box_max) --stack.top;
   if (stack.top == 0) return false;
-  next = stack.ref[--stack.top];
+  next = stack.node[--stack.top];
+  return true;
+}
+
+// Of the children in `entered` (entered at t[c]), goes on into the nearest and remembers the
+// others, farthest deepest, so they come off the stack front to back. False when none.
+inline bool descend(const wide_node& n, unsigned entered, const float (&t)[4], node_stack& stack,
+                    std::uint32_t& next) {
+  if (entered == 0) return false;
+  if ((entered & (entered - 1)) == 0) {  // one child: no order to find
+    next = n.child[std::countr_zero(entered)];
+    return true;
+  }
+  int lane[4], k = 0;
+  for (; entered; entered &= entered - 1) {
+    const int c = std::countr_zero(entered);
+    int at = k++;
+    for (; at > 0 && t[lane[at - 1]] < t[c]; --at) lane[at] = lane[at - 1];  // far to near
+    lane[at] = c;
+  }
+  if (k == 0) return false;
+  for (int j = 0; j < k - 1; ++j) {
+    stack.node[stack.top] = n.child[lane[j]];
+    stack.entry[stack.top++] = t[lane[j]];
+  }
+  next = n.child[lane[k - 1]];
   return true;
 }
 
 }  // namespace
 
-bvh_world::bvh_world(const std::vector<sphere>& spheres) : tree_(spheres) {
+bvh_world::bvh_world(const std::vector<sphere>& spheres) : tree_(spheres), wide_(tree_) {
   spheres_.reserve(spheres.size());
   for (const std::uint32_t i : tree_.order()) spheres_.push_back(spheres[i]);
 }
 
-// At each interior node both children's boxes are tested at once; the ray goes on into the
-// nearer child it enters, remembering the farther with its entry distance when it enters both.
-// A leaf's spheres are tested when it is reached; remembered children behind the closest hit so
-// far are dropped. shaders/world.glsl (hit_bvh) takes the same steps.
+// At each wide node all four children's boxes are tested at once; the ray goes on into the
+// nearest child it enters before the closest hit so far (a wide node, or a leaf whose sphere is
+// then tested) and remembers the others with their entry distances. Remembered children behind
+// the closest hit are dropped when they come up.
 bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
-  const std::vector<gpu::bvh_node>& nodes = tree_.nodes();
+  const std::vector<wide_node>& nodes = wide_.nodes();
   const std::vector<std::uint32_t>& order = tree_.order();
   if (nodes.empty()) return false;
-  const glm::vec3 o(r.origin()), inv_d = safe_inverse(glm::vec3(r.direction()));
-  const float margin = origin_margin(o);
+  const ray_slabs slabs(r);
   const float box_min = widen_down(t_min);
   node_stack stack;
-  child_ref next{0, 0};  // the root
+  std::uint32_t next = 0;  // the root
   nearest best{t_max};
   while (true) {
-    if (next.count == 0) {
-      const gpu::bvh_node& n = nodes[next.first];
-      float t[2];
-      child_entries(n, o, inv_d, box_min, widen_up(best.t), margin, t);
-      // Nearer first: a is the nearer child when the ray enters both.
-      const int a = t[0] <= t[1] ? 0 : 1, b = 1 - a;
-      if (t[a] >= 0 && t[b] >= 0) {
-        stack.ref[stack.top] = {n.first[b], n.count[b]};
-        stack.entry[stack.top++] = t[b];
-        next = {n.first[a], n.count[a]};
-        continue;
-      }
-      if (t[a] >= 0 || t[b] >= 0) {
-        const int c = t[a] >= 0 ? a : b;
-        next = {n.first[c], n.count[c]};
-        continue;
-      }
+    if (next & wide_node::leaf_bit) {
+      visit_sphere(next & ~wide_node::leaf_bit, spheres_, order, r, t_min, best);
     } else {
-      visit_leaf(next.first, next.count, spheres_, order, r, t_min, best);
+      const wide_node& n = nodes[next];
+      float t[4];
+      const unsigned entered = child_entries(n, slabs, box_min, widen_up(best.t), t);
+      if (descend(n, entered, t, stack, next)) continue;
     }
     if (!pop_reachable(stack, widen_up(best.t), next)) break;
   }

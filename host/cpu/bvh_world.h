@@ -4,6 +4,7 @@
 #include "bvh.h"
 #include "hittable.h"
 #include "sphere.h"
+#include "wide_bvh.h"
 
 namespace rtvk {
 
@@ -19,7 +20,8 @@ class bvh_world final : public hittable {
   const bvh& tree() const { return tree_; }
 
  private:
-  bvh tree_;                     // over the scene's spheres
+  bvh tree_;                     // over the scene's spheres (the GPU's tree)
+  wide_bvh wide_;                // the same tree collapsed four wide: what the CPU traverses
   std::vector<sphere> spheres_;  // in the tree's leaf order: slot k is scene sphere order()[k]
 };
 

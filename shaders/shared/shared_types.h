@@ -174,8 +174,8 @@ struct rng_probe_entry {
   uint dim;           // counter: dimension
   uint bits;          // random_bits(seed 0x5eed, ...)
   float value;        // random_float(seed 0x5eed, ...)
-  uint pad0;          // unused
-  uint pad1;          // unused
+  float turn_cos;     // turn_cos_sin(value).x: cos(2 pi value)
+  float turn_sin;     // turn_cos_sin(value).y: sin(2 pi value)
 };
 
 // std430 array element for hit_probe.comp: the host fills a ray, an interval and a sphere; the

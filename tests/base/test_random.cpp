@@ -66,5 +66,22 @@ TEST(Random, DirectionSamplers) {
   EXPECT_LT(glm::length(mean), 0.03);  // no preferred direction
 }
 
+// The directions' angles come from polynomials, not libm: they must be cos and sin of 2 pi b to
+// double precision everywhere in [0, 1), quarter-turn boundaries and both ends included (every
+// random number is a multiple of 2^-24, so all of them are checked at the boundaries' sides).
+TEST(Random, TurnCosSinIsCosAndSinOfTheTurnToDoublePrecision) {
+  double worst = 0;
+  const auto check = [&](double b) {
+    const glm::dvec2 cs = turn_cos_sin(b);
+    worst = std::max(
+        {worst, std::abs(cs.x - std::cos(2 * pi * b)), std::abs(cs.y - std::sin(2 * pi * b))});
+  };
+  for (std::uint32_t k = 0; k < (1u << 24); k += 97) check(k * 0x1p-24);
+  for (const double edge : {0.0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.0})
+    for (int d = -8; d <= 8; ++d)
+      if (edge + d * 0x1p-24 >= 0 && edge + d * 0x1p-24 < 1) check(edge + d * 0x1p-24);
+  EXPECT_LE(worst, 1e-15);  // 2 pi b itself rounds by ~4e-16 in the reference
+}
+
 }  // namespace
 }  // namespace rtvk

@@ -94,7 +94,7 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
         {RTVK_MEMBER(rng_probe_entry, pixel), RTVK_MEMBER(rng_probe_entry, sample_index),
          RTVK_MEMBER(rng_probe_entry, bounce), RTVK_MEMBER(rng_probe_entry, dim),
          RTVK_MEMBER(rng_probe_entry, bits), RTVK_MEMBER(rng_probe_entry, value),
-         RTVK_MEMBER(rng_probe_entry, pad0), RTVK_MEMBER(rng_probe_entry, pad1)}}},
+         RTVK_MEMBER(rng_probe_entry, turn_cos), RTVK_MEMBER(rng_probe_entry, turn_sin)}}},
       {"hit_probe_entry",
        {sizeof(gpu::hit_probe_entry),
         {RTVK_MEMBER(hit_probe_entry, origin), RTVK_MEMBER(hit_probe_entry, t_min),
