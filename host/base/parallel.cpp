@@ -1,71 +1,32 @@
 #include "parallel.h"
 
 #include <algorithm>
-#include <exception>
-#include <mutex>
-#include <stdexcept>
-#include <string>
-#include <vector>
+
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/partitioner.h>
+#include <oneapi/tbb/task_arena.h>
 
 namespace rtvk {
-namespace {
 
-// The first exception of any worker, and the flag that asks the others to stop.
-class first_error {
- public:
-  void record(std::exception_ptr e) {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    if (!error_) error_ = std::move(e);
-    stop_.store(true);
-  }
-  const std::atomic<bool>& stop() const { return stop_; }
-  void rethrow_if_any() const {
-    if (error_) std::rethrow_exception(error_);
-  }
-
- private:
-  std::mutex mutex_;
-  std::exception_ptr error_;       // the first one recorded
-  std::atomic<bool> stop_{false};  // set with the first error
-};
-
-std::string what_of(std::exception_ptr e) {
-  try {
-    std::rethrow_exception(std::move(e));
-  } catch (const std::exception& x) {
-    return x.what();
-  } catch (...) {
-    return "unknown error";
-  }
-}
-
-}  // namespace
-
-void run_workers(int workers, const worker_function& work, const thread_starter& start) {
-  first_error error;
-  auto guarded = [&](int worker) {
-    try {
-      work(worker, error.stop());
-    } catch (...) {
-      error.record(std::current_exception());
-    }
-  };
-  std::vector<std::thread> helpers;
-  helpers.reserve(std::size_t(std::max(0, workers - 1)));  // no reallocation while threads run
-  for (int w = 1; w < workers && !error.stop().load(); ++w) {
-    try {
-      std::function<void()> body = [&guarded, w] { guarded(w); };
-      helpers.push_back(start ? start(std::move(body)) : std::thread(std::move(body)));
-    } catch (...) {  // out of threads (std::system_error) or memory: stop, and say which one
-      error.record(std::make_exception_ptr(
-          std::runtime_error("starting CPU worker thread " + std::to_string(w + 1) + " of " +
-                             std::to_string(workers) + ": " + what_of(std::current_exception()))));
-    }
-  }
-  guarded(0);
-  for (std::thread& t : helpers)
-    if (t.joinable()) t.join();
-  error.rethrow_if_any();
+void parallel_for(std::size_t count, int threads, std::size_t grain, const chunk_function& body) {
+  if (count == 0) return;
+  // An arena of the asked-for size: --threads caps rtvk's concurrency, not TBB's global pool.
+  // More threads than cores are allowed when asked for (TBB would otherwise refuse, with a
+  // warning on stderr).
+  const int cores = tbb::this_task_arena::max_concurrency();
+  const tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
+                                  std::size_t(std::max(threads, cores)));
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    // simple_partitioner: chunks of at most `grain`, so progress and cancellation stay fine
+    // grained however many threads there are.
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, count, std::max<std::size_t>(grain, 1)),
+        [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); },
+        tbb::simple_partitioner());
+  });
 }
 
 }  // namespace rtvk

@@ -59,13 +59,6 @@ color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y) {
   return divide(sum, in.win.samples());
 }
 
-// Draws row `row` of the window (counted from the window's top) into fb.
-void draw_row(const pixel_inputs& in, const hittable& world, int row, framebuffer& fb) {
-  const int y = in.win.y + row;
-  for (int i = in.win.x; i < in.win.x + in.win.width; ++i)
-    fb.at(i - in.win.x, row) = pixel_color(in, world, i, y);
-}
-
 // The scene's world, accelerated or not, and the seconds it took to build.
 std::unique_ptr<hittable> timed_world(const scene& s, bool use_bvh, double& build_seconds) {
   const auto build_start = std::chrono::steady_clock::now();
@@ -97,28 +90,30 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
   const std::vector<material> materials = scene_materials(s);
   const pixel_inputs in{cam, s.sky, rs, materials, win};
   framebuffer fb(win.width, win.height);
-  std::atomic<int> next_row{0}, rows_done{0};
+  const std::size_t width = std::size_t(win.width), pixels = width * std::size_t(win.height);
+  std::atomic<std::size_t> pixels_done{0};
   std::atomic<std::uint64_t> rays{0};
+  const std::thread::id caller = std::this_thread::get_id();
 
-  // Each worker takes the next row not yet taken until none is left or the render is stopped.
-  auto render_rows = [&](int worker, const std::atomic<bool>& stop) {
-    const bool reports_progress = worker == 0;
-    const counting_world counted(*world);
-    // Counting costs a virtual call per ray: only when someone asked for it.
-    const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
-    int row;
-    while (!stop.load(std::memory_order_relaxed) && !(engine.cancelled && engine.cancelled()) &&
-           (row = next_row.fetch_add(1)) < win.height) {
-      draw_row(in, target, row, fb);
-      const int done = rows_done.fetch_add(1) + 1;
-      if (reports_progress && progress) progress(done);
-    }
-    rays += counted.rays;
-  };
-
-  run_workers(std::min(worker_threads(engine.threads), win.height), render_rows);
-  if (rows_done.load() < win.height)
-    throw render_cancelled("stopped after " + std::to_string(rows_done.load()) + " of " +
+  // Chunks of a few hundred pixels in reading order: enough work to amortize a task, small
+  // enough that every thread stays busy to the end and progress moves smoothly.
+  parallel_for(
+      pixels, worker_threads(engine.threads), 256, [&](std::size_t begin, std::size_t end) {
+        if (engine.cancelled && engine.cancelled()) return;  // the rows left stay undone
+        const counting_world counted(*world);
+        // Counting costs a virtual call per ray: only when someone asked for it.
+        const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
+        for (std::size_t p = begin; p < end; ++p) {
+          const int row = int(p / width), column = int(p % width);
+          fb.at(column, row) = pixel_color(in, target, win.x + column, win.y + row);
+        }
+        rays += counted.rays;
+        const std::size_t done = pixels_done.fetch_add(end - begin) + (end - begin);
+        // The progress bar is drawn by the calling thread only, which works on chunks too.
+        if (progress && std::this_thread::get_id() == caller) progress(int(done / width));
+      });
+  if (pixels_done.load() < pixels)
+    throw render_cancelled("stopped after " + std::to_string(pixels_done.load() / width) + " of " +
                            std::to_string(win.height) + " rows");
   if (stats) {
     stats->rays = rays.load();

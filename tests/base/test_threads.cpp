@@ -1,14 +1,16 @@
-// The CPU renderer's worker threads: an error in any of them reaches the caller (never
-// std::terminate), and the interrupt flag they poll is shared without a data race. Built into
-// the ThreadSanitizer test program too, where a race fails the test.
+// The CPU renderer's parallel loop: every item once, no more threads than asked for, an error in
+// any chunk reaches the caller (never std::terminate); and the interrupt flag worker threads poll
+// is shared without a data race, checked in the ThreadSanitizer test program too.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <mutex>
+#include <set>
 #include <stdexcept>
-#include <system_error>
 #include <thread>
+#include <vector>
 
 #include "errors.h"
 #include "interrupt.h"
@@ -30,75 +32,71 @@ bool wait_until(Done done) {
   return true;
 }
 
-TEST(RunWorkers, EveryWorkerRunsOnce) {
-  std::atomic<int> mask{0};
-  run_workers(5, [&](int w, const std::atomic<bool>&) { mask.fetch_or(1 << w); });
-  EXPECT_EQ(mask.load(), 0b11111);
+#if !defined(RTVK_WITHOUT_TBB)
+TEST(ParallelFor, EveryItemRunsOnceInChunksOfAtMostTheGrain) {
+  std::vector<std::atomic<int>> runs(10007);
+  std::atomic<bool> oversized{false};
+  parallel_for(runs.size(), 4, 64, [&](std::size_t begin, std::size_t end) {
+    if (end - begin > 64 || end <= begin) oversized = true;
+    for (std::size_t i = begin; i < end; ++i) ++runs[i];
+  });
+  EXPECT_FALSE(oversized.load());
+  for (std::size_t i = 0; i < runs.size(); ++i) ASSERT_EQ(runs[i].load(), 1) << "item " << i;
 }
 
-TEST(RunWorkers, AWorkersErrorStopsTheOthersAndIsRethrownOnTheCaller) {
-  std::atomic<int> started{0}, finished{0};
+TEST(ParallelFor, NoMoreThreadsThanAskedFor) {
+  for (const int threads : {1, 2, 3}) {
+    std::atomic<int> running{0}, most{0};
+    std::mutex seen_mutex;
+    std::set<std::thread::id> seen;
+    parallel_for(48, threads, 1, [&](std::size_t, std::size_t) {
+      const int now = ++running;
+      for (int m = most.load(); now > m && !most.compare_exchange_weak(m, now);) {
+      }
+      {
+        const std::lock_guard<std::mutex> lock(seen_mutex);
+        seen.insert(std::this_thread::get_id());
+      }
+      std::this_thread::sleep_for(1ms);
+      --running;
+    });
+    EXPECT_LE(most.load(), threads);
+    EXPECT_LE(int(seen.size()), threads);
+    if (threads == 1) {
+      EXPECT_EQ(*seen.begin(), std::this_thread::get_id());  // the caller's own
+    }
+  }
+}
+
+TEST(ParallelFor, AChunksErrorCancelsTheRestAndIsRethrownOnTheCallerWithItsType) {
+  std::atomic<int> ran{0};
   try {
-    run_workers(4, [&](int w, const std::atomic<bool>& stop) {
-      ++started;
-      if (w == 1) throw usage_error("worker 1 failed");
-      EXPECT_TRUE(wait_until([&] { return stop.load(); })) << "worker " << w << " never stopped";
-      ++finished;
+    parallel_for(20000, 2, 1, [&](std::size_t begin, std::size_t) {
+      ++ran;
+      if (begin == 0) throw usage_error("chunk 0 failed");
+      std::this_thread::sleep_for(50us);
     });
     ADD_FAILURE() << "no exception";
   } catch (const usage_error& e) {  // its own type: the CLI maps it to its own exit status
-    EXPECT_STREQ(e.what(), "worker 1 failed");
+    EXPECT_STREQ(e.what(), "chunk 0 failed");
   }
-  // Helpers not yet started when worker 1 failed are never started; every one that was, and the
-  // caller, stopped and was joined before the rethrow.
-  EXPECT_GE(started.load(), 2);
-  EXPECT_EQ(finished.load(), started.load() - 1);
+  EXPECT_LT(ran.load(), 10000) << "chunks not yet started when one failed still ran";
 }
 
-TEST(RunWorkers, OnlyTheFirstErrorIsRethrown) {
-  EXPECT_THROW(run_workers(3,
-                           [&](int w, const std::atomic<bool>& stop) {
-                             if (w == 0) {  // fails only after a helper's error is recorded
-                               EXPECT_TRUE(wait_until([&] { return stop.load(); }));
-                               throw std::logic_error("late");
-                             }
-                             throw std::runtime_error("early");
-                           }),
-               std::runtime_error);
-}
-
-TEST(RunWorkers, AThreadThatCannotStartIsAnErrorOnceTheStartedOnesStop) {
-  std::atomic<int> finished{0};
-  int starts = 0;
-  const thread_starter out_of_threads = [&](std::function<void()> body) {
-    if (++starts == 2)
-      throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again));
-    return std::thread(std::move(body));
-  };
-  try {
-    run_workers(
-        4,
-        [&](int w, const std::atomic<bool>& stop) {
-          EXPECT_TRUE(wait_until([&] { return stop.load(); })) << "worker " << w;
-          ++finished;
-        },
-        out_of_threads);
-    ADD_FAILURE() << "no exception";
-  } catch (const std::runtime_error& e) {
-    EXPECT_STREQ(e.what(), "starting CPU worker thread 3 of 4: Resource temporarily unavailable");
-  }
-  EXPECT_EQ(starts, 2) << "no thread is started after one failed";
-  EXPECT_EQ(finished.load(), 2) << "worker 1 and the caller ran, stopped and were joined";
-}
+#endif
 
 TEST(InterruptFlag, WorkerThreadsSeeASignalTheMainThreadReceives) {
   const interrupt_guard guard;
   std::atomic<int> saw{0};
-  run_workers(4, [&](int w, const std::atomic<bool>&) {
-    if (w == 0) std::raise(SIGINT);  // the handler runs on this thread; the others poll
-    EXPECT_TRUE(wait_until([] { return pending_signal() == SIGINT; })) << "worker " << w;
+  const auto wait_for_signal = [&] {
+    EXPECT_TRUE(wait_until([] { return pending_signal() == SIGINT; }));
     ++saw;
-  });
+  };
+  std::vector<std::thread> workers;
+  for (int w = 0; w < 3; ++w) workers.emplace_back(wait_for_signal);
+  std::raise(SIGINT);  // the handler runs on this thread; the others poll
+  wait_for_signal();
+  for (std::thread& t : workers) t.join();
   EXPECT_EQ(saw.load(), 4);
 }
 

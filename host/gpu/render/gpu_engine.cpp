@@ -406,9 +406,8 @@ void write_cameras(gpu_buffer& cameras, const std::vector<camera>& views, std::s
 // Runs body(row) for rows [0, rows) on every core: readback conversion should not leave all but
 // one idle.
 void for_rows(int rows, const std::function<void(int row)>& body) {
-  const int workers = std::clamp(int(std::thread::hardware_concurrency()), 1, std::max(rows, 1));
-  run_workers(workers, [&](int worker, const std::atomic<bool>& stop) {
-    for (int row = worker; row < rows && !stop; row += workers) body(row);
+  parallel_for(std::size_t(std::max(rows, 0)), 0, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t row = begin; row < end; ++row) body(int(row));
   });
 }
 
