@@ -2,48 +2,97 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_invoke.h>
+#include <oneapi/tbb/parallel_reduce.h>
+
+#include "parallel.h"
+#include "uninitialized_allocator.h"
 
 namespace rtvk {
 namespace {
 
-struct box {
-  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
-  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
-  void grow(const box& b) {
-    lo = glm::min(lo, b.lo);
-    hi = glm::max(hi, b.hi);
+// A box in float, rounded outward from the spheres' double boxes, so unions stay exact and
+// conservative.
+// Four floats in one SIMD register (GCC and Clang vector extension): x, y, z and an unused w.
+using float4 = float __attribute__((vector_size(16)));
+inline float4 min4(float4 a, float4 b) {
+  return a < b ? a : b;
+}
+inline float4 max4(float4 a, float4 b) {
+  return a > b ? a : b;
+}
+inline float4 splat4(float v) {
+  return float4{v, v, v, v};
+}
+
+struct fbox {
+  float4 lo = splat4(std::numeric_limits<float>::infinity());
+  float4 hi = splat4(-std::numeric_limits<float>::infinity());
+  void grow(float4 l, float4 h) {
+    lo = min4(lo, l);
+    hi = max4(hi, h);
   }
-  void grow(const glm::dvec3& p) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  double area() const {
-    const glm::dvec3 e = hi - lo;
-    return e.x < 0 ? 0 : 2 * (e.x * e.y + e.y * e.z + e.z * e.x);
+  void grow(const fbox& b) { grow(b.lo, b.hi); }
+  void grow(float4 p) { grow(p, p); }
+  double half_area() const {
+    const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
+    return x < 0 ? 0 : x * y + y * z + z * x;
   }
 };
 
+// One sphere as the builder sees it.
 struct prim {
-  box bounds;            // the sphere's box
-  glm::dvec3 centroid;   // its center
+  float4 lo, hi;         // the sphere's box, rounded outward to float (w: 0)
   std::uint32_t sphere;  // index into the scene's spheres
+  float4 centroid() const { return (lo + hi) * 0.5f; }
+};
+
+using prim_vector = uninitialized_vector<prim>;
+
+// What the builder knows of a range of prims before splitting it.
+struct range_info {
+  fbox bounds;     // of the spheres' boxes
+  fbox centroids;  // of their centroids
 };
 
 constexpr int bins = 16;
+// Ranges larger than this build their two halves as parallel tasks, and larger than
+// `parallel_bins` bin their prims in parallel chunks.
+constexpr std::size_t parallel_subtree = 4096;
+constexpr std::size_t parallel_bins = 1 << 16;
+// Ranges of at most this many prims try every split point instead of binning.
+constexpr std::size_t small_range = 12;
 
-// Float corners that contain the double box, with a margin for the float slab test: lane c
-// (0 left, 1 right) of the node's min lanes and lane c + 2 of its max lanes.
-void store_bounds(const box& b, gpu::bvh_node& n, int c) {
-  const glm::dvec3 extent = glm::abs(b.lo) + glm::abs(b.hi) + (b.hi - b.lo);
-  const double pad = 0x1p-18 * std::max({extent.x, extent.y, extent.z, 1e-30});
+// The float next to x towards -infinity / +infinity (std::nextafter without the libm call).
+float next_down(float x) {
+  if (!(x > -INFINITY) || x != x) return x;
+  if (x == 0) return -std::numeric_limits<float>::denorm_min();
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
+  return std::bit_cast<float>(x > 0 ? bits - 1 : bits + 1);
+}
+float next_up(float x) {
+  return -next_down(-x);
+}
+
+// Float corners that contain the box, with a margin for the float slab test: lane c (0 left,
+// 1 right) of the node's min lanes and lane c + 2 of its max lanes. The margin, 2^-18 of the
+// box's largest coordinate and extent, is computed in float: corner - margin rounds to nearest
+// and next_down then steps below it, so the stored corner is never inside the exact one.
+void store_bounds(const fbox& f, gpu::bvh_node& n, int c) {
+  const float4 extent = (f.lo < 0 ? -f.lo : f.lo) + (f.hi < 0 ? -f.hi : f.hi) + (f.hi - f.lo);
+  const float pad = 0x1p-18f * std::max({extent[0], extent[1], extent[2], 1e-30f});
   glm::vec4* const axes[3] = {&n.x, &n.y, &n.z};
   for (int k = 0; k < 3; ++k) {
-    (*axes[k])[c] = std::nextafter(float(b.lo[k] - pad), -INFINITY);
-    (*axes[k])[c + 2] = std::nextafter(float(b.hi[k] + pad), INFINITY);
+    (*axes[k])[c] = next_down(f.lo[k] - pad);
+    (*axes[k])[c + 2] = next_up(f.hi[k] + pad);
   }
 }
 
@@ -56,166 +105,306 @@ int levels_needed(std::size_t count) {
   return levels;
 }
 
+// The bins of one range along one axis: each prim lands, by its centroid, in one bin.
+struct bin_set {
+  fbox box[bins];                  // the prims' boxes
+  std::uint32_t count[bins] = {};  // and their number
+
+  void add(const bin_set& o) {
+    for (int b = 0; b < bins; ++b) {
+      box[b].grow(o.box[b]);
+      count[b] += o.count[b];
+    }
+  }
+};
+
+// Which bin of `axis` a centroid falls in, for centroids spanning [lo, lo + extent).
+struct binning {
+  float4 lo;     // centroid bounds' low corner
+  float4 scale;  // bins / extent per axis (0 where the centroids do not spread)
+  explicit binning(const fbox& centroids) : lo(centroids.lo), scale(splat4(0)) {
+    const float4 extent = centroids.hi - centroids.lo;
+    for (int k = 0; k < 3; ++k) scale[k] = extent[k] > 0 ? float(bins) / extent[k] : 0.0f;
+  }
+  int bin(float4 c, int axis) const {
+    return std::clamp(int((c[axis] - lo[axis]) * scale[axis]), 0, bins - 1);
+  }
+};
+
 class builder {
  public:
-  builder(std::vector<prim>& prims, std::vector<gpu::bvh_node>& nodes,
-          std::vector<std::uint32_t>& order)
+  builder(prim_vector& prims, std::vector<gpu::bvh_node>& nodes, std::vector<std::uint32_t>& order)
       : prims_(prims), nodes_(nodes), order_(order) {}
 
-  // Builds the interior node over prims_[begin, end) (more than max_leaf spheres), `depth`
-  // levels below the root (the root is 1), and below it its subtrees; returns its index. Takes
-  // levels_needed(end - begin) <= max_depth - depth + 1: its children then fit as well.
-  std::uint32_t build(std::size_t begin, std::size_t end, int depth) {
-    const std::uint32_t at = std::uint32_t(nodes_.size());
-    nodes_.push_back({});
-    depth_ = std::max(depth_, depth);
-    box centroids;
-    for (std::size_t i = begin; i < end; ++i) centroids.grow(prims_[i].centroid);
-    std::size_t mid = split(begin, end, centroids);
-    // The depth bound: both sides must fit in the levels left below this node. A median split
-    // always does (each half needs one level less than the whole); SAH on skewed input (sizes
-    // or places growing geometrically) may not, and would chain thousands of levels.
-    const int left = bvh::max_depth - depth;
-    if (mid == begin || mid == end || levels_needed(mid - begin) > left ||
-        levels_needed(end - mid) > left)
-      mid = median(begin, end, centroids);
-    child(at, 0, begin, mid, depth);
-    child(at, 1, mid, end, depth);
-    return at;
+  // Fills interior node `at` over prims_[begin, end) (more than max_leaf spheres), `depth` levels
+  // below the root (the root is 1), and its subtrees; returns the deepest level built. Node
+  // positions follow from the ranges alone (a subtree over n > 1 spheres has n - 1 interior
+  // nodes, stored depth first; leaf slots are prim positions), so subtrees built in parallel land
+  // exactly where a sequential build puts them. Takes levels_needed(end - begin) <= max_depth -
+  // depth + 1: its children then fit as well.
+  int build(std::uint32_t at, std::size_t begin, std::size_t end, const range_info& info,
+            int depth) {
+    range_info left, right;
+    const std::size_t mid = split(begin, end, info, depth, left, right);
+    const std::uint32_t left_nodes = mid - begin > 1 ? std::uint32_t(mid - begin - 1) : 0;
+    int below[2] = {depth, depth};
+    const auto left_child = [&] { below[0] = child(at, 0, begin, mid, left, at + 1, depth); };
+    const auto right_child = [&] {
+      below[1] = child(at, 1, mid, end, right, at + 1 + left_nodes, depth);
+    };
+    if (end - begin > parallel_subtree) {
+      tbb::parallel_invoke(left_child, right_child);
+    } else {
+      left_child();
+      right_child();
+    }
+    return std::max(below[0], below[1]);
   }
 
   // A root for max_leaf spheres or fewer: both children are the same leaf.
-  void build_leaf_root(std::size_t begin, std::size_t end) {
-    nodes_.push_back({});
-    depth_ = 1;
-    const box b = bounds(begin, end);
-    store_bounds(b, nodes_[0], 0);
-    store_bounds(b, nodes_[0], 1);
-    nodes_[0].first = gpu::uvec2(std::uint32_t(order_.size()));
-    nodes_[0].count = gpu::uvec2(std::uint32_t(end - begin));
-    for (std::size_t i = begin; i < end; ++i) order_.push_back(prims_[i].sphere);
+  void build_leaf_root(const range_info& info) {
+    store_bounds(info.bounds, nodes_[0], 0);
+    store_bounds(info.bounds, nodes_[0], 1);
+    nodes_[0].first = gpu::uvec2(0);
+    nodes_[0].count = gpu::uvec2(std::uint32_t(prims_.size()));
+    for (std::size_t i = 0; i < prims_.size(); ++i) order_[i] = prims_[i].sphere;
   }
-
-  int depth() const { return depth_; }
 
  private:
-  box bounds(std::size_t begin, std::size_t end) const {
-    box b;
-    for (std::size_t i = begin; i < end; ++i) b.grow(prims_[i].bounds);
-    return b;
-  }
-
-  // Child c of node `at`: the spheres prims_[begin, end), a leaf or an interior node.
-  void child(std::uint32_t at, int c, std::size_t begin, std::size_t end, int depth) {
-    store_bounds(bounds(begin, end), nodes_[at], c);
-    const std::size_t count = end - begin;
-    if (count <= std::size_t(bvh::max_leaf)) {
-      nodes_[at].first[c] = std::uint32_t(order_.size());
-      nodes_[at].count[c] = std::uint32_t(count);
-      for (std::size_t i = begin; i < end; ++i) order_.push_back(prims_[i].sphere);
-      return;
+  // Child c of node `at`: the spheres prims_[begin, end), a leaf or the interior node `node`.
+  int child(std::uint32_t at, int c, std::size_t begin, std::size_t end, const range_info& info,
+            std::uint32_t node, int depth) {
+    store_bounds(info.bounds, nodes_[at], c);
+    if (end - begin <= std::size_t(bvh::max_leaf)) {
+      nodes_[at].first[c] = std::uint32_t(begin);
+      nodes_[at].count[c] = std::uint32_t(end - begin);
+      for (std::size_t i = begin; i < end; ++i) order_[i] = prims_[i].sphere;
+      return depth;
     }
-    const std::uint32_t node = build(begin, end, depth + 1);
     nodes_[at].first[c] = node;
     nodes_[at].count[c] = 0;
+    return build(node, begin, end, info, depth + 1);
+  }
+
+  // Partitions prims_[begin, end) for node `depth` levels down, returning the partition point
+  // and both sides' range_info: binned SAH, or a median split when SAH separates nothing or
+  // would need more levels on one side than are left (on skewed input, sizes or places growing
+  // geometrically, it would chain thousands of levels; a median split always fits).
+  std::size_t split(std::size_t begin, std::size_t end, const range_info& info, int depth,
+                    range_info& left, range_info& right) {
+    const int levels_left = bvh::max_depth - depth;
+    if (end - begin <= small_range) {
+      const std::size_t mid = sweep_split(begin, end, info, left, right);
+      if (levels_needed(mid - begin) <= levels_left && levels_needed(end - mid) <= levels_left)
+        return mid;
+      return median(begin, end, info, left, right);
+    }
+    // Binned along the axis where the centroids spread most: a third of the work of binning
+    // all three, for trees that trace within a few percent as fast (docs/benchmarks.md).
+    const binning where(info.centroids);
+    const int axis = widest_axis(info.centroids);
+    int last_left_bin = -1;
+    best_sah(bin_prims(begin, end, where, axis), last_left_bin);
+    if (last_left_bin >= 0) {
+      // The bins' boundary as a coordinate: lo + hi < 2 * boundary is centroid < boundary
+      // without the bin arithmetic (a prim on the boundary may go either way, which only moves
+      // the split by that prim: the sides' bounds are gathered from the prims themselves).
+      const float twice_boundary =
+          2.0f * (where.lo[axis] + float(last_left_bin + 1) / where.scale[axis]);
+      const std::size_t mid = partition(
+          begin, end, [&](const prim& p) { return p.lo[axis] + p.hi[axis] < twice_boundary; }, left,
+          right);
+      if (mid != begin && mid != end && levels_needed(mid - begin) <= levels_left &&
+          levels_needed(end - mid) <= levels_left)
+        return mid;
+    }
+    return median(begin, end, info, left, right);
+  }
+
+  // Exact SAH for a few prims (binning them would cost more than the node is worth): sorted
+  // along the axis where their centroids spread most, every split point is tried.
+  std::size_t sweep_split(std::size_t begin, std::size_t end, const range_info& info,
+                          range_info& left, range_info& right) {
+    const std::size_t n = end - begin;
+    const int axis = widest_axis(info.centroids);
+    prim* const p = prims_.data() + begin;
+    for (std::size_t i = 1; i < n; ++i)  // insertion sort: n is small
+      for (std::size_t j = i; j > 0 && p[j].centroid()[axis] < p[j - 1].centroid()[axis]; --j)
+        std::swap(p[j], p[j - 1]);
+    double right_area[small_range] = {};
+    fbox acc;
+    for (std::size_t i = n - 1; i > 0; --i) {
+      acc.grow(p[i].lo, p[i].hi);
+      right_area[i] = acc.half_area();
+    }
+    fbox prefix;
+    double best_cost = std::numeric_limits<double>::infinity();
+    std::size_t best = 1;
+    for (std::size_t i = 1; i < n; ++i) {  // left: p[0, i)
+      prefix.grow(p[i - 1].lo, p[i - 1].hi);
+      const double cost = prefix.half_area() * double(i) + right_area[i] * double(n - i);
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = i;
+      }
+    }
+    left = right = {};
+    for (std::size_t i = 0; i < best; ++i) grow(left, p[i]);
+    for (std::size_t i = best; i < n; ++i) grow(right, p[i]);
+    return begin + best;
+  }
+
+  static int widest_axis(const fbox& centroids) {
+    const float4 e = centroids.hi - centroids.lo;
+    return e[0] >= e[1] && e[0] >= e[2] ? 0 : e[1] >= e[2] ? 1 : 2;
+  }
+
+  bin_set bin_prims(std::size_t begin, std::size_t end, const binning& where, int axis) const {
+    const auto bin_range = [&](std::size_t from, std::size_t to, bin_set& set) {
+      for (std::size_t i = from; i < to; ++i) {
+        const prim& p = prims_[i];
+        const int b = where.bin(p.centroid(), axis);
+        set.box[b].grow(p.lo, p.hi);
+        ++set.count[b];
+      }
+    };
+    if (end - begin <= parallel_bins) {
+      bin_set set;
+      bin_range(begin, end, set);
+      return set;
+    }
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(begin, end, parallel_bins / 4), bin_set{},
+        [&](const tbb::blocked_range<std::size_t>& r, bin_set set) {
+          bin_range(r.begin(), r.end(), set);
+          return set;
+        },
+        [](bin_set a, const bin_set& b) {
+          a.add(b);
+          return a;
+        });
+  }
+
+  // The cheapest split of the bins by the surface area heuristic; last_left_bin stays -1 when
+  // no bin boundary has prims on both sides.
+  static void best_sah(const bin_set& set, int& last_left_bin) {
+    double best_cost = std::numeric_limits<double>::infinity();
+    // Sweep from the right to know each suffix's area and count.
+    double right_area[bins] = {};
+    std::size_t right_count[bins] = {};
+    fbox acc;
+    std::size_t n = 0;
+    for (int b = bins - 1; b > 0; --b) {
+      acc.grow(set.box[b]);
+      n += set.count[b];
+      right_area[b] = acc.half_area();
+      right_count[b] = n;
+    }
+    fbox left;
+    std::size_t left_n = 0;
+    for (int b = 0; b < bins - 1; ++b) {
+      left.grow(set.box[b]);
+      left_n += set.count[b];
+      if (left_n == 0 || right_count[b + 1] == 0) continue;
+      const double cost =
+          left.half_area() * double(left_n) + right_area[b + 1] * double(right_count[b + 1]);
+      if (cost < best_cost) {
+        best_cost = cost;
+        last_left_bin = b;
+      }
+    }
+  }
+
+  // Moves the prims for which goes_left holds to the front; gathers both sides' bounds on the way.
+  template <typename Pred>
+  std::size_t partition(std::size_t begin, std::size_t end, Pred goes_left, range_info& left,
+                        range_info& right) {
+    left = right = {};
+    std::size_t i = begin, j = end;
+    while (true) {
+      while (i < j && goes_left(prims_[i])) grow(left, prims_[i++]);
+      while (i < j && !goes_left(prims_[j - 1])) grow(right, prims_[--j]);
+      if (i >= j) break;
+      std::swap(prims_[i], prims_[j - 1]);
+    }
+    return i;
+  }
+
+  static void grow(range_info& info, const prim& p) {
+    info.bounds.grow(p.lo, p.hi);
+    info.centroids.grow(p.centroid());
   }
 
   // Halves the spheres by count, at the median centroid along the axis where the centroids
   // spread most (by order when they all coincide).
-  std::size_t median(std::size_t begin, std::size_t end, const box& centroids) {
-    const glm::dvec3 extent = centroids.hi - centroids.lo;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
-                     : extent.y >= extent.z                       ? 1
-                                                                  : 2;
+  std::size_t median(std::size_t begin, std::size_t end, const range_info& info, range_info& left,
+                     range_info& right) {
+    const int axis = widest_axis(info.centroids);
     const std::size_t mid = begin + (end - begin) / 2;
     std::nth_element(prims_.begin() + std::ptrdiff_t(begin), prims_.begin() + std::ptrdiff_t(mid),
                      prims_.begin() + std::ptrdiff_t(end), [axis](const prim& a, const prim& b) {
-                       return a.centroid[axis] < b.centroid[axis];
+                       return a.centroid()[axis] < b.centroid()[axis];
                      });
+    left = right = {};
+    for (std::size_t i = begin; i < mid; ++i) grow(left, prims_[i]);
+    for (std::size_t i = mid; i < end; ++i) grow(right, prims_[i]);
     return mid;
   }
 
-  // The binned SAH split over all three axes; returns the partition point, or `begin` when no
-  // bin boundary separates the centroids.
-  std::size_t split(std::size_t begin, std::size_t end, const box& centroids) {
-    double best_cost = std::numeric_limits<double>::infinity();
-    int best_axis = -1, best_bin = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-      const double lo = centroids.lo[axis], extent = centroids.hi[axis] - lo;
-      if (!(extent > 0)) continue;
-      std::array<box, bins> bin_box;
-      std::array<std::size_t, bins> bin_count{};
-      for (std::size_t i = begin; i < end; ++i) {
-        const int b = bin_of(prims_[i].centroid[axis], lo, extent);
-        bin_box[std::size_t(b)].grow(prims_[i].bounds);
-        ++bin_count[std::size_t(b)];
-      }
-      // Sweep from the right to know each suffix's area and count.
-      std::array<double, bins> right_area{};
-      std::array<std::size_t, bins> right_count{};
-      box acc;
-      std::size_t n = 0;
-      for (int b = bins - 1; b > 0; --b) {
-        acc.grow(bin_box[std::size_t(b)]);
-        n += bin_count[std::size_t(b)];
-        right_area[std::size_t(b)] = acc.area();
-        right_count[std::size_t(b)] = n;
-      }
-      box left;
-      std::size_t left_n = 0;
-      for (int b = 0; b < bins - 1; ++b) {
-        left.grow(bin_box[std::size_t(b)]);
-        left_n += bin_count[std::size_t(b)];
-        const std::size_t r = std::size_t(b) + 1;
-        if (left_n == 0 || right_count[r] == 0) continue;
-        const double cost = left.area() * double(left_n) + right_area[r] * double(right_count[r]);
-        if (cost < best_cost) {
-          best_cost = cost;
-          best_axis = axis;
-          best_bin = b;
-        }
-      }
-    }
-    if (best_axis < 0) return begin;
-    const double lo = centroids.lo[best_axis], extent = centroids.hi[best_axis] - lo;
-    const auto middle = std::partition(
-        prims_.begin() + std::ptrdiff_t(begin), prims_.begin() + std::ptrdiff_t(end),
-        [&](const prim& p) { return bin_of(p.centroid[best_axis], lo, extent) <= best_bin; });
-    return std::size_t(middle - prims_.begin());
-  }
-
-  static int bin_of(double c, double lo, double extent) {
-    return std::min(bins - 1, int(double(bins) * (c - lo) / extent));
-  }
-
-  std::vector<prim>& prims_;
+  prim_vector& prims_;
   std::vector<gpu::bvh_node>& nodes_;
   std::vector<std::uint32_t>& order_;
-  int depth_ = 0;  // deepest interior level built
 };
+
+// The spheres as prims, their boxes rounded outward to float, and the whole range's info.
+range_info make_prims(std::span<const sphere> spheres, prim_vector& prims) {
+  prims.resize(spheres.size());
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, spheres.size(), 4096), range_info{},
+      [&](const tbb::blocked_range<std::size_t>& r, range_info info) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+          const sphere& s = spheres[i];
+          const glm::dvec3 radius(std::abs(s.radius));
+          prim& p = prims[i];
+          p.lo = p.hi = splat4(0);
+          for (int k = 0; k < 3; ++k) {
+            p.lo[k] = next_down(float(s.center[k] - radius[k]));
+            p.hi[k] = next_up(float(s.center[k] + radius[k]));
+          }
+          p.sphere = std::uint32_t(i);
+          info.bounds.grow(p.lo, p.hi);
+          info.centroids.grow(p.centroid());
+        }
+        return info;
+      },
+      [](range_info a, const range_info& b) {
+        a.bounds.grow(b.bounds);
+        a.centroids.grow(b.centroids);
+        return a;
+      });
+}
 
 }  // namespace
 
-bvh::bvh(std::span<const sphere> spheres) {
+bvh::bvh(std::span<const sphere> spheres, int threads) {
   if (spheres.empty()) return;
   if (levels_needed(spheres.size()) > max_depth)
     throw std::length_error(std::to_string(spheres.size()) + " spheres are more than a BVH of " +
                             std::to_string(max_depth) + " levels holds");
-  std::vector<prim> prims;
-  prims.reserve(spheres.size());
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    const sphere& s = spheres[i];
-    const glm::dvec3 r(std::abs(s.radius));
-    prims.push_back({box{s.center - r, s.center + r}, s.center, std::uint32_t(i)});
-  }
-  nodes_.reserve(spheres.size());  // a binary tree over N >= 2 leaves has N - 1 interior nodes
-  order_.reserve(spheres.size());
-  builder b(prims, nodes_, order_);
-  if (spheres.size() <= std::size_t(max_leaf))
-    b.build_leaf_root(0, prims.size());
-  else
-    b.build(0, prims.size(), 1);
-  depth_ = b.depth();
+  run_in_arena(threads, [&] {
+    prim_vector prims;
+    const range_info all = make_prims(spheres, prims);
+    // A binary tree over N >= 2 one-sphere leaves has N - 1 interior nodes; one sphere, a root.
+    nodes_.resize(std::max<std::size_t>(spheres.size() - 1, 1));
+    order_.resize(spheres.size());
+    builder b(prims, nodes_, order_);
+    if (spheres.size() <= std::size_t(max_leaf)) {
+      b.build_leaf_root(all);
+      depth_ = 1;
+    } else {
+      depth_ = b.build(0, 0, prims.size(), all, 1);
+    }
+  });
 }
 
 }  // namespace rtvk

@@ -10,8 +10,7 @@
 
 namespace rtvk {
 
-void parallel_for(std::size_t count, int threads, std::size_t grain, const chunk_function& body) {
-  if (count == 0) return;
+void run_in_arena(int threads, const std::function<void()>& f) {
   // An arena of the asked-for size: --threads caps rtvk's concurrency, not TBB's global pool.
   // More threads than cores are allowed when asked for (TBB would otherwise refuse, with a
   // warning on stderr).
@@ -19,7 +18,12 @@ void parallel_for(std::size_t count, int threads, std::size_t grain, const chunk
   const tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
                                   std::size_t(std::max(threads, cores)));
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
+  arena.execute(f);
+}
+
+void parallel_for(std::size_t count, int threads, std::size_t grain, const chunk_function& body) {
+  if (count == 0) return;
+  run_in_arena(threads, [&] {
     // simple_partitioner: chunks of at most `grain`, so progress and cancellation stay fine
     // grained however many threads there are.
     tbb::parallel_for(

@@ -16,4 +16,7 @@ using chunk_function = std::function<void(std::size_t begin, std::size_t end)>;
 // message, never std::terminate.
 void parallel_for(std::size_t count, int threads, std::size_t grain, const chunk_function& body);
 
+// Runs f, and any oneTBB algorithm it starts, on at most `threads` threads (0: one per core).
+void run_in_arena(int threads, const std::function<void()>& f);
+
 }  // namespace rtvk

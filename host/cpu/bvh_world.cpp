@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "hittable_sphere.h"
+#include "parallel.h"
 
 namespace rtvk {
 namespace {
@@ -146,9 +147,13 @@ inline bool descend(const wide_node& n, unsigned entered, const float (&t)[4], n
 
 }  // namespace
 
-bvh_world::bvh_world(const std::vector<sphere>& spheres) : tree_(spheres), wide_(tree_) {
-  spheres_.reserve(spheres.size());
-  for (const std::uint32_t i : tree_.order()) spheres_.push_back(spheres[i]);
+bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads)
+    : tree_(spheres, threads), wide_(tree_) {
+  spheres_.resize(spheres.size());
+  const std::vector<std::uint32_t>& order = tree_.order();
+  parallel_for(spheres.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) spheres_[k] = spheres[order[k]];
+  });
 }
 
 // At each wide node all four children's boxes are tested at once; the ray goes on into the

@@ -13,7 +13,8 @@ namespace rtvk {
 // as in hittable_list.
 class bvh_world final : public hittable {
  public:
-  explicit bvh_world(const std::vector<sphere>& spheres);
+  // Built on `threads` threads (0: one per core).
+  explicit bvh_world(const std::vector<sphere>& spheres, int threads = 0);
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
 

@@ -60,9 +60,10 @@ color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y) {
 }
 
 // The scene's world, accelerated or not, and the seconds it took to build.
-std::unique_ptr<hittable> timed_world(const scene& s, bool use_bvh, double& build_seconds) {
+std::unique_ptr<hittable> timed_world(const scene& s, const engine_options& engine,
+                                      double& build_seconds) {
   const auto build_start = std::chrono::steady_clock::now();
-  std::unique_ptr<hittable> world = make_accelerated_world(s, use_bvh);
+  std::unique_ptr<hittable> world = make_accelerated_world(s, engine.use_bvh, engine.threads);
   build_seconds = seconds_since(build_start);
   return world;
 }
@@ -86,7 +87,7 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
                               const engine_options& engine, render_stats* stats) {
   check_window(win, cam.image_width(), cam.image_height());
   double build_seconds = 0;
-  const std::unique_ptr<hittable> world = timed_world(s, engine.use_bvh, build_seconds);
+  const std::unique_ptr<hittable> world = timed_world(s, engine, build_seconds);
   const std::vector<material> materials = scene_materials(s);
   const pixel_inputs in{cam, s.sky, rs, materials, win};
   framebuffer fb(win.width, win.height);

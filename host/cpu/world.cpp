@@ -11,8 +11,8 @@ hittable_list make_world(const scene& s) {
   return world;
 }
 
-std::unique_ptr<hittable> make_accelerated_world(const scene& s, bool use_bvh) {
-  if (use_bvh) return std::make_unique<bvh_world>(s.spheres);
+std::unique_ptr<hittable> make_accelerated_world(const scene& s, bool use_bvh, int threads) {
+  if (use_bvh) return std::make_unique<bvh_world>(s.spheres, threads);
   return std::make_unique<hittable_list>(make_world(s));
 }
 

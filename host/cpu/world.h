@@ -11,6 +11,6 @@ hittable_list make_world(const scene& s);
 
 // The world the rays are traced against: the lesson's hittable_list, or the BVH over the same
 // spheres in the same order (identical hits, faster).
-std::unique_ptr<hittable> make_accelerated_world(const scene& s, bool use_bvh);
+std::unique_ptr<hittable> make_accelerated_world(const scene& s, bool use_bvh, int threads = 0);
 
 }  // namespace rtvk

@@ -2,6 +2,7 @@
 // float, so they have to be conservative wherever the ray starts, including far from the boxes.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <random>
 
 #include "bvh_world.h"
@@ -171,6 +172,37 @@ scene far_camera_scene(double distance) {
 
 bool has_spheres(const image_rgb8& img) {
   return std::count(img.rgb.begin(), img.rgb.end(), img.rgb[0]) != std::ptrdiff_t(img.rgb.size());
+}
+
+// The build runs subtrees and large ranges' binning as parallel tasks; node positions follow
+// from the ranges alone, so the tree must be the same bytes however many threads build it. And
+// it must be a tree: children after their parents, every sphere in exactly one leaf, each leaf's
+// box around its sphere.
+TEST(BvhBuild, TheTreeIsTheSameOnOneThreadAndOnManyAndHoldsEverySphere) {
+  std::mt19937_64 rng(1000000);
+  const std::vector<sphere> spheres = scattered_spheres(rng, 150000);  // past every threshold
+  const bvh one(spheres, 1), many(spheres, 4);
+  ASSERT_EQ(one.nodes().size(), spheres.size() - 1);
+  ASSERT_EQ(many.nodes().size(), one.nodes().size());
+  EXPECT_EQ(std::memcmp(one.nodes().data(), many.nodes().data(),
+                        one.nodes().size() * sizeof(gpu::bvh_node)),
+            0);
+  EXPECT_EQ(one.order(), many.order());
+  EXPECT_EQ(one.depth(), many.depth());
+  std::vector<int> slot_uses(spheres.size());
+  EXPECT_EQ(walk_depth(many, 0, slot_uses), many.depth());
+  EXPECT_EQ(std::count(slot_uses.begin(), slot_uses.end(), 1), std::ptrdiff_t(spheres.size()));
+  int outside = 0;
+  for (const gpu::bvh_node& n : many.nodes())
+    for (int c = 0; c < 2; ++c) {
+      if (n.count[c] == 0) continue;
+      const sphere& s = spheres[many.order()[n.first[c]]];
+      const gpu::vec4* const axes[3] = {&n.x, &n.y, &n.z};
+      for (int k = 0; k < 3; ++k)
+        outside += !(double((*axes[k])[c]) <= s.center[k] - s.radius &&
+                     s.center[k] + s.radius <= double((*axes[k])[c + 2]));
+    }
+  EXPECT_EQ(outside, 0) << "leaf boxes that do not hold their sphere";
 }
 
 TEST(BvhProperty, ACameraFarAwaySeesTheSameThroughTheBvhOnTheCpu) {
