@@ -25,6 +25,7 @@ static_assert(sizeof(wide_node) == 128);
 // The binary tree collapsed into wide nodes, node 0 the root, depth first.
 class wide_bvh {
  public:
+  wide_bvh() = default;  // no spheres
   explicit wide_bvh(const bvh& tree);
 
   const std::vector<wide_node>& nodes() const { return nodes_; }

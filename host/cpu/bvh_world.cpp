@@ -147,12 +147,15 @@ inline bool descend(const wide_node& n, unsigned entered, const float (&t)[4], n
 
 }  // namespace
 
-bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads)
-    : tree_(spheres, threads), wide_(tree_) {
+bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads) {
+  {
+    const bvh tree(spheres, threads);
+    wide_ = wide_bvh(tree);
+    order_ = tree.order();
+  }  // the binary tree is freed before the spheres are copied: a lower peak
   spheres_.resize(spheres.size());
-  const std::vector<std::uint32_t>& order = tree_.order();
   parallel_for(spheres.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) spheres_[k] = spheres[order[k]];
+    for (std::size_t k = begin; k < end; ++k) spheres_[k] = spheres[order_[k]];
   });
 }
 
@@ -162,7 +165,7 @@ bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads)
 // the closest hit are dropped when they come up.
 bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
   const std::vector<wide_node>& nodes = wide_.nodes();
-  const std::vector<std::uint32_t>& order = tree_.order();
+  const std::vector<std::uint32_t>& order = order_;
   if (nodes.empty()) return false;
   const ray_slabs slabs(r);
   const float box_min = widen_down(t_min);

@@ -18,12 +18,11 @@ class bvh_world final : public hittable {
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
 
-  const bvh& tree() const { return tree_; }
-
  private:
-  bvh tree_;                     // over the scene's spheres (the GPU's tree)
-  wide_bvh wide_;                // the same tree collapsed four wide: what the CPU traverses
-  std::vector<sphere> spheres_;  // in the tree's leaf order: slot k is scene sphere order()[k]
+  // The binary tree (the GPU's) is built, collapsed and dropped: the CPU keeps only these.
+  std::vector<std::uint32_t> order_;  // leaf slot -> index into the scene's spheres
+  wide_bvh wide_;                     // the tree collapsed four wide: what the CPU traverses
+  std::vector<sphere> spheres_;       // in leaf order: slot k is scene sphere order_[k]
 };
 
 }  // namespace rtvk
