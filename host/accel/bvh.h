@@ -14,8 +14,9 @@ namespace rtvk {
 
 // A bounding volume hierarchy over spheres, built with binned SAH and flattened depth first into
 // one array of interior nodes (gpu::bvh_node, from the header shared with the shaders), each
-// holding both children's boxes and references; leaves live in their parents. Both backends
-// traverse the very same array: the CPU in cpu/bvh_world.h, the shader in shaders/world.glsl.
+// holding both children's boxes and references; leaves live in their parents. The shader
+// traverses this array (shaders/world.glsl); the CPU the same tree collapsed four wide
+// (wide_bvh.h, cpu/bvh_world.h).
 // Leaves refer to sphere slots, the spheres in leaf order; order() gives each slot's index in
 // the scene, so hits can be kept identical to a linear scan.
 class bvh {
