@@ -4,12 +4,13 @@
 #   install-deps.sh          build, render and package (help2man: the man page; dpkg-dev and file:
 #                            cpack -G DEB)
 #   install-deps.sh --test   also what only the tests use: Slurm, for the farm job files' test,
-#                            and man-db, to read the installed man page
+#                            man-db, to read the installed man page, and Xvfb, an X server
+#                            without a screen for rtvk view's window
 set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libglm-dev libcli11-dev libstb-dev nlohmann-json3-dev libtbb-dev
+  libglm-dev libcli11-dev libstb-dev nlohmann-json3-dev libtbb-dev libglfw3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libvulkan-dev libvulkan-volk-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev
   mesa-vulkan-drivers vulkan-validationlayers
@@ -18,7 +19,7 @@ packages=(
   help2man dpkg-dev file
 )
 if [ "${1:-}" = "--test" ]; then
-  packages+=(slurm-wlm man-db)
+  packages+=(slurm-wlm man-db xvfb)
 fi
 
 missing=()

@@ -26,6 +26,7 @@ int run_cli(int argc, char** argv) {
       {"render", add_render_command(app)},   {"compare", add_compare_command(app)},
       {"devices", add_devices_command(app)}, {"scene", add_scene_command(app)},
       {"bench", add_bench_command(app)},     {"merge", add_merge_command(app)},
+      {"view", add_view_command(app)},
   };
 
   try {

@@ -14,5 +14,6 @@ command_action add_devices_command(CLI::App& app);
 command_action add_scene_command(CLI::App& app);
 command_action add_bench_command(CLI::App& app);
 command_action add_merge_command(CLI::App& app);
+command_action add_view_command(CLI::App& app);
 
 }  // namespace rtvk

@@ -47,7 +47,7 @@ man=$prefix/share/man/man1/rtvk.1.gz
 gzip -t "$man" || fail "the man page is not gzip"
 zcat "$man" >"$tmp/man.roff"
 grep -q '^\.TH RTVK "1"' "$tmp/man.roff" || fail "the man page has no .TH line"
-for cmd in render compare devices scene bench merge; do
+for cmd in render compare devices scene bench merge view; do
   grep -qx ".SS \"rtvk $cmd\"" "$tmp/man.roff" || fail "the man page has no section for rtvk $cmd"
 done
 if ! command -v man >/dev/null; then
@@ -71,7 +71,7 @@ expect() {  # expect WANT WORDS...: the candidates for WORDS, one line, sorted
   got=$(cd "$work" && complete_words "${@:2}" | xargs)
   [[ $got == "$1" ]] || fail "completing '${*:2}': got '$got', want '$1'"
 }
-for cmd in render compare devices scene bench merge; do
+for cmd in render compare devices scene bench merge view; do
   flags=$(complete_words rtvk "$cmd" -)
   [[ -n $flags ]] || fail "no flags completed for rtvk $cmd"
   help=$("$rtvk" "$cmd" --help)
@@ -85,7 +85,7 @@ for pair in render:--scene render:--output render:-o bench:--json compare:--diff
   grep -Eq -- "(^|[ ,])${pair#*:}[ ,]" <<<"$help" || fail "rtvk ${pair%%:*} has no ${pair#*:}"
 done
 touch "$work/a.json" "$work/b.png" "$work/c.exr" "$work/d.ppm"
-expect "bench compare devices merge render scene" rtvk ""
+expect "bench compare devices merge render scene view" rtvk ""
 expect "--samples --scene --seed --spp" rtvk render --s
 expect "--spp" rtvk render --scene seed --sp
 expect "auto both cpu gpu" rtvk render --backend ""

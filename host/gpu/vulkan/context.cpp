@@ -28,10 +28,20 @@ void apply_caps(const device_limit_caps& caps, device_info& d,
 }  // namespace
 
 gpu_context::gpu_context(const gpu_options& options)
-    : options_(options), instance_(options.validate) {
+    : options_(options), instance_(options.validate, options.instance_extensions) {
   devices_ = list_devices(instance_.get());
   chosen_ = select_device(devices_, options.device);
   const device_info& d = devices_[chosen_];
+  if (options.make_surface) {
+    surface_ = unique_surface(instance_.get(), options.make_surface(instance_.get()));
+    VkBool32 presents = VK_FALSE;
+    vk_check(vkGetPhysicalDeviceSurfaceSupportKHR(d.handle, d.compute_queue_family, surface_.get(),
+                                                  &presents),
+             "vkGetPhysicalDeviceSurfaceSupportKHR");
+    if (!presents || !has_device_extension(d.handle, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+      throw std::runtime_error("the Vulkan device " + d.name +
+                               " cannot present to the window from its compute queue");
+  }
   vkGetPhysicalDeviceMemoryProperties(d.handle, &memory_);
   apply_caps(options.caps, devices_[chosen_], memory_);
 
@@ -44,6 +54,7 @@ gpu_context::gpu_context(const gpu_options& options)
   // A portability implementation must have its subset extension enabled.
   if (has_device_extension(d.handle, "VK_KHR_portability_subset"))
     extensions.push_back("VK_KHR_portability_subset");
+  if (surface_.get()) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
@@ -84,6 +95,7 @@ gpu_context::~gpu_context() {
     for (slot& s : slots_) s.fence.release();
     pool_.release();
     device_.release();
+    surface_.release();
     instance_.abandon();
     return;
   }
@@ -110,7 +122,8 @@ void gpu_context::submit_and_wait(const std::function<void(VkCommandBuffer)>& re
   wait(submit(record));
 }
 
-std::uint64_t gpu_context::submit(const std::function<void(VkCommandBuffer)>& record) {
+std::uint64_t gpu_context::submit(const std::function<void(VkCommandBuffer)>& record,
+                                  const submit_sync& sync) {
   if (lost_) throw std::runtime_error("the Vulkan device " + device().name + " is unusable");
   const std::uint64_t ticket = submitted_ + 1;
   slot& s = slots_[ticket % submission_slots];
@@ -131,6 +144,15 @@ std::uint64_t gpu_context::submit(const std::function<void(VkCommandBuffer)>& re
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &s.cb;
+  if (sync.wait) {
+    submit.waitSemaphoreCount = 1;
+    submit.pWaitSemaphores = &sync.wait;
+    submit.pWaitDstStageMask = &sync.wait_stage;
+  }
+  if (sync.signal) {
+    submit.signalSemaphoreCount = 1;
+    submit.pSignalSemaphores = &sync.signal;
+  }
   const VkResult r = vkQueueSubmit(queue_, 1, &submit, fence);
   if (r != VK_SUCCESS) {
     if (r == VK_ERROR_DEVICE_LOST) lost_ = true;

@@ -26,6 +26,18 @@ struct gpu_options {
   bool validate = false;  // enable VK_LAYER_KHRONOS_validation
   std::chrono::milliseconds fence_timeout{120'000};  // longest wait for one submission
   device_limit_caps caps;                            // tests only
+  // Presenting to a window (rtvk view): the instance extensions its window system needs, and
+  // what makes the window's surface once the instance exists. The chosen device must then
+  // present from its compute queue, and gets VK_KHR_swapchain.
+  std::vector<std::string> instance_extensions;
+  std::function<VkSurfaceKHR(VkInstance)> make_surface;
+};
+
+// Semaphores a submission waits on and signals (presentation's image acquisition and release).
+struct submit_sync {
+  VkSemaphore wait = VK_NULL_HANDLE;    // waited on before `wait_stage`
+  VkPipelineStageFlags wait_stage = 0;  // the stage that waits
+  VkSemaphore signal = VK_NULL_HANDLE;  // signalled when the submission completes
 };
 
 // One chosen device with its queue, command pool and fence: everything a render submits with.
@@ -41,6 +53,10 @@ class gpu_context {
   // it may touch must not be destroyed (their owners give their handles up instead).
   bool lost() const { return lost_; }
   VkDevice vk() const { return device_.get(); }
+  VkInstance instance() const { return instance_.get(); }
+  VkQueue queue() const { return queue_; }
+  // The window's surface, when made with options.make_surface; else VK_NULL_HANDLE.
+  VkSurfaceKHR surface() const { return surface_.get(); }
   std::uint32_t validation_messages() const { return instance_.validation_messages(); }
   bool validating() const { return instance_.validating(); }
 
@@ -61,7 +77,8 @@ class gpu_context {
   // command buffer is reused by the submission `submission_slots` later.
   static constexpr std::uint64_t submission_slots = 2;
   // Records and submits; first waits for the submission that last used the slot, if any.
-  std::uint64_t submit(const std::function<void(VkCommandBuffer)>& record);
+  std::uint64_t submit(const std::function<void(VkCommandBuffer)>& record,
+                       const submit_sync& sync = {});
   // The ticket the next submit() returns (for recording per-slot queries).
   std::uint64_t next_ticket() const { return submitted_ + 1; }
   // Waits for submission `ticket` and every one before it, as submit_and_wait does.
@@ -72,6 +89,7 @@ class gpu_context {
  private:
   gpu_options options_;                        // as given
   vulkan_instance instance_;                   // destroyed last
+  unique_surface surface_;                     // the window's, when presenting
   std::vector<device_info> devices_;           // every device the instance sees
   std::size_t chosen_ = 0;                     // index into devices_
   VkPhysicalDeviceMemoryProperties memory_{};  // of the chosen device

@@ -145,9 +145,15 @@ unique_messenger make_messenger(VkInstance instance,
 
 }  // namespace
 
-vulkan_instance::vulkan_instance(bool validate) : validating_(validate) {
+vulkan_instance::vulkan_instance(bool validate, const std::vector<std::string>& extensions)
+    : validating_(validate) {
   require_vulkan_1_1();
-  const instance_features features = choose_features(validate);
+  instance_features features = choose_features(validate);
+  for (const std::string& e : extensions) {
+    if (!has_extension(e.c_str()))
+      throw std::runtime_error("the Vulkan loader has no " + e + " (needed to show a window)");
+    features.extensions.push_back(e.c_str());
+  }
   const VkDebugUtilsMessengerCreateInfoEXT messenger = messenger_info(&messages_);
   instance_ = unique_instance(create_instance(features, validate ? &messenger : nullptr));
   volkLoadInstance(instance_.get());

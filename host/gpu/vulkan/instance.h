@@ -1,6 +1,8 @@
 #pragma once
 #include <atomic>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "vk_handle.h"
 
@@ -12,7 +14,8 @@ namespace rtvk::gpu {
 class vulkan_instance {
  public:
   // Throws no_device_error when there is no Vulkan loader or no Vulkan 1.1 implementation.
-  explicit vulkan_instance(bool validate);
+  // `extensions`: instance extensions to enable besides rtvk's own (a window system's surface).
+  explicit vulkan_instance(bool validate, const std::vector<std::string>& extensions = {});
   vulkan_instance(const vulkan_instance&) = delete;
   vulkan_instance& operator=(const vulkan_instance&) = delete;
 

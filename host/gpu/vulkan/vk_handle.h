@@ -82,6 +82,10 @@ using unique_query_pool = device_handle<VkQueryPool, vkDestroyQueryPool>;
 using unique_pipeline_cache = device_handle<VkPipelineCache, vkDestroyPipelineCache>;
 using unique_messenger =
     owned_handle<VkInstance, VkDebugUtilsMessengerEXT, vkDestroyDebugUtilsMessengerEXT>;
+using unique_surface = owned_handle<VkInstance, VkSurfaceKHR, vkDestroySurfaceKHR>;
+using unique_swapchain = device_handle<VkSwapchainKHR, vkDestroySwapchainKHR>;
+using unique_semaphore = device_handle<VkSemaphore, vkDestroySemaphore>;
+using unique_image = device_handle<VkImage, vkDestroyImage>;
 using unique_instance = root_handle<VkInstance, vkDestroyInstance>;
 using unique_device = root_handle<VkDevice, vkDestroyDevice>;
 

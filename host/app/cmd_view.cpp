@@ -1,0 +1,128 @@
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "commands.h"
+#include "errors.h"
+#include "image_io.h"
+#include "interrupt.h"
+#include "output_pattern.h"
+#include "scene.h"
+#include "scene_file.h"
+#include "scene_flags.h"
+#include "viewer.h"
+
+namespace rtvk {
+namespace {
+
+struct view_options {
+  std::string scene = "seed";  // built-in scene name or .json file
+  std::string camera;          // the scene's camera to start from; default: the first
+  std::string device;          // Vulkan device: index or name substring
+  bool validate = false;       // Vulkan validation layer on
+  std::string accel = "bvh";   // bvh or none
+  double gpu_timeout = 120;    // seconds one GPU submission may take
+  std::string screenshot;      // write the image at --spp samples here, then exit
+  scene_flags flags;           // --width, --spp, --lookfrom, ...
+};
+
+// The shortest text that reads back as the same double: printed flags reproduce the frame.
+std::string exact(double x) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+
+std::string xyz(const vec3& v) {
+  return exact(v.x) + "," + exact(v.y) + "," + exact(v.z);
+}
+
+// The camera as `rtvk render` flags, so the framed shot can be rendered or sent to the farm.
+std::string render_flags(const std::string& scene_name, const view::viewer_result& r) {
+  const camera_pose& p = r.pose;
+  std::string f =
+      "rtvk render --scene " + scene_name + " --width " + std::to_string(r.width) + " --aspect " +
+      exact(r.aspect) + " --spp " + std::to_string(std::max(r.samples, 1)) + " --lookfrom " +
+      xyz(p.lookfrom) + " --lookat " + xyz(p.lookat) + " --vup " + xyz(p.vup) + " --vfov " +
+      exact(p.vfov) + " --aperture " + exact(p.aperture) + " --focus-dist " + exact(p.focus_dist) +
+      " --projection " + std::string(projection_name(p.projection));
+  if (p.projection == projection::fisheye_equidistant ||
+      p.projection == projection::fisheye_equisolid)
+    f += " --fisheye-fov " + exact(p.fisheye_fov);
+  return f;
+}
+
+int run_view(view_options o) {
+  const interrupt_guard signals;  // SIGINT, SIGTERM: close the window cleanly
+  if (!o.screenshot.empty()) output_pattern(o.screenshot, "--screenshot");  // checked up front
+  scene s = load_scene(o.scene);
+  const scene_overrides overrides = o.flags.overrides();
+  overrides.apply(s);
+  check_scene(s);
+  const camera_path* path = &main_camera(s);
+  if (!o.camera.empty()) {
+    path = nullptr;
+    for (const named_camera& c : s.cameras)
+      if (c.name == o.camera) path = &c.path;
+    if (!path) throw usage_error("--camera " + o.camera + ": the scene has no such camera");
+  }
+  const camera_pose pose = path->at(0);
+  overrides.make_camera(s, pose, "the view");  // refuses impossible poses and sizes up front
+
+  view::viewer_options v;
+  v.gpu.device = o.device;
+  const char* env = std::getenv("RTVK_VALIDATE");
+  v.gpu.validate = o.validate || (env && std::string(env) == "1");
+  v.gpu.fence_timeout =
+      std::chrono::milliseconds(std::max<long long>(1, std::llround(o.gpu_timeout * 1000)));
+  v.render.engine.use_bvh = o.accel == "bvh";
+  // A screenshot is the image rtvk render makes with the same flags: the scene's size.
+  v.size_follows_window = !overrides.width && !overrides.aspect && o.screenshot.empty();
+  v.exit_at_target = !o.screenshot.empty();
+  v.target_spp = o.screenshot.empty() && !overrides.spp ? 0 : s.render.spp;
+  v.cancelled = interrupt_requested();
+  const view::viewer_result r = view::run_viewer(s, pose, v);
+
+  const bool interrupted = pending_signal() != 0;
+  std::printf("%s\n", render_flags(o.scene, r).c_str());
+  std::fflush(stdout);
+  if (!o.screenshot.empty() && !interrupted && r.samples == s.render.spp) {
+    write_image(r.image, o.screenshot);
+    std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, viewed -> %s\n", s.name.c_str(), r.width,
+                 r.height, r.samples, o.screenshot.c_str());
+  } else if (!o.screenshot.empty()) {
+    std::fprintf(stderr, "rtvk: the window closed at %d of %d samples; %s was not written\n",
+                 r.samples, s.render.spp, o.screenshot.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+command_action add_view_command(CLI::App& app) {
+  auto o = std::make_shared<view_options>();
+  CLI::App* cmd = app.add_subcommand(
+      "view", "Open a window and render progressively on a Vulkan device (needs a display)");
+  cmd->add_option("--scene", o->scene, "Built-in scene (also spheres:N) or a .json scene file")
+      ->capture_default_str();
+  cmd->add_option("--camera", o->camera, "Camera of the scene to start from; default: the first");
+  cmd->add_option("--device", o->device, "Vulkan device: an index or part of its name");
+  cmd->add_flag("--validate", o->validate, "Enable the Vulkan validation layer");
+  cmd->add_option("--accel", o->accel, "bvh, or none to test every sphere (same image, slower)")
+      ->check(CLI::IsMember({"bvh", "none"}))
+      ->capture_default_str();
+  cmd->add_option("--gpu-timeout", o->gpu_timeout,
+                  "Seconds one GPU submission may take before the device counts as hung")
+      ->check(CLI::Range(0.001, 86400.0))
+      ->capture_default_str();
+  cmd->add_option("--screenshot", o->screenshot,
+                  "Render to --spp samples in the window, write the image here (.png or .ppm, "
+                  "the bytes rtvk render --backend gpu writes) and exit");
+  o->flags.add_to(*cmd);
+  return [o] { return run_view(*o); };
+}
+
+}  // namespace rtvk

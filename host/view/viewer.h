@@ -1,0 +1,37 @@
+#pragma once
+#include <functional>
+#include <string>
+
+#include "camera.h"
+#include "context.h"
+#include "image_rgb8.h"
+#include "render_gpu.h"
+#include "scene.h"
+
+namespace rtvk::view {
+
+struct viewer_options {
+  gpu::gpu_options gpu;             // device, validation, timeout (surface filled in here)
+  gpu::gpu_render_options render;   // BVH or not
+  int target_spp = 0;               // stop accumulating at this many samples; 0: never
+  bool exit_at_target = false;      // --screenshot: close once target_spp are in
+  bool size_follows_window = true;  // false: --width/--aspect fix the render's size
+  std::function<bool()> cancelled;  // Ctrl-C: close as if the window were closed
+};
+
+// What a viewing session ended with.
+struct viewer_result {
+  camera_pose pose;           // the camera when it closed
+  int width = 0, height = 0;  // the render's size then
+  double aspect = 0;          // and the aspect ratio its camera was made with
+  int samples = 0;            // samples per pixel accumulated then
+  image_rgb8 image;           // the accumulated image, encoded as rtvk render encodes it
+};
+
+// Opens a window and renders `s` from `pose` progressively on the chosen device: batches of
+// samples drawn by the GPU engine add exactly to per-pixel sums kept on the host, and after each
+// batch the running mean, encoded to 8 bits as rtvk render does, is shown. Throws usage_error
+// when there is no window system.
+viewer_result run_viewer(const scene& s, const camera_pose& pose, const viewer_options& options);
+
+}  // namespace rtvk::view
