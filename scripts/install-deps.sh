@@ -4,8 +4,8 @@
 #   install-deps.sh          build, render and package (help2man: the man page; dpkg-dev and file:
 #                            cpack -G DEB)
 #   install-deps.sh --test   also what only the tests use: Slurm, for the farm job files' test,
-#                            man-db, to read the installed man page, and Xvfb, an X server
-#                            without a screen for rtvk view's window
+#                            man-db, to read the installed man page, Xvfb, an X server
+#                            without a screen for rtvk view's window, and xdotool, to drive it
 set -euo pipefail
 
 packages=(
@@ -19,7 +19,7 @@ packages=(
   help2man dpkg-dev file
 )
 if [ "${1:-}" = "--test" ]; then
-  packages+=(slurm-wlm man-db xvfb)
+  packages+=(slurm-wlm man-db xvfb xdotool)
 fi
 
 missing=()

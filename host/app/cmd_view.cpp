@@ -84,11 +84,21 @@ int run_view(view_options o) {
   v.exit_at_target = !o.screenshot.empty();
   v.target_spp = o.screenshot.empty() && !overrides.spp ? 0 : s.render.spp;
   v.cancelled = interrupt_requested();
-  const view::viewer_result r = view::run_viewer(s, pose, v);
+  view::viewer_actions actions;
+  actions.print = [&](const view::viewer_result& r) {
+    std::printf("%s\n", render_flags(o.scene, r).c_str());
+    std::fflush(stdout);
+  };
+  int shots = 0;
+  actions.screenshot = [&](const view::viewer_result& r) {
+    const std::string name = "rtvk-view-" + std::to_string(++shots) + ".png";
+    write_image(r.image, name);
+    std::fprintf(stderr, "rtvk: %dx%d, %d spp -> %s\n", r.width, r.height, r.samples, name.c_str());
+  };
+  const view::viewer_result r = view::run_viewer(s, pose, v, actions);
 
   const bool interrupted = pending_signal() != 0;
-  std::printf("%s\n", render_flags(o.scene, r).c_str());
-  std::fflush(stdout);
+  actions.print(r);
   if (!o.screenshot.empty() && !interrupted && r.samples == s.render.spp) {
     write_image(r.image, o.screenshot);
     std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, viewed -> %s\n", s.name.c_str(), r.width,

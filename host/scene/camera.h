@@ -35,6 +35,8 @@ struct camera_pose {
   double focus_dist = 1;     // distance to the plane in perfect focus, scene units, > 0
   rtvk::projection projection = rtvk::projection::perspective;  // how directions map to pixels
   double fisheye_fov = 180;  // the fisheye models' field of view across the circle, degrees
+
+  bool operator==(const camera_pose&) const = default;
 };
 
 // Everything a ray needs is precomputed once, as in the lesson, so get_ray is a few multiply-adds.

@@ -32,6 +32,14 @@ struct viewer_result {
 // samples drawn by the GPU engine add exactly to per-pixel sums kept on the host, and after each
 // batch the running mean, encoded to 8 bits as rtvk render does, is shown. Throws usage_error
 // when there is no window system.
-viewer_result run_viewer(const scene& s, const camera_pose& pose, const viewer_options& options);
+// What the keys that hand the shot on do (K prints the camera, O writes a screenshot): given the
+// session's state at that moment.
+struct viewer_actions {
+  std::function<void(const viewer_result&)> print;       // K, and once more on exit
+  std::function<void(const viewer_result&)> screenshot;  // O
+};
+
+viewer_result run_viewer(const scene& s, const camera_pose& pose, const viewer_options& options,
+                         const viewer_actions& actions = {});
 
 }  // namespace rtvk::view

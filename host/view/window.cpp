@@ -56,6 +56,61 @@ window::window(const window_system&, int width, int height, const std::string& t
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) throw std::runtime_error("glfwCreateWindow: " + last_glfw_error());
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetCursorPosCallback(window_, on_cursor);
+  glfwSetMouseButtonCallback(window_, on_button);
+  glfwSetScrollCallback(window_, on_scroll);
+  glfwSetKeyCallback(window_, on_key);
+}
+
+void window::on_cursor(GLFWwindow* w, double x, double y) {
+  auto* self = static_cast<window*>(glfwGetWindowUserPointer(w));
+  if (self->cursor_known_) {
+    const int buttons[3] = {GLFW_MOUSE_BUTTON_LEFT, GLFW_MOUSE_BUTTON_RIGHT,
+                            GLFW_MOUSE_BUTTON_MIDDLE};
+    for (int b = 0; b < 3; ++b)
+      if (glfwGetMouseButton(w, buttons[b]) == GLFW_PRESS) {
+        self->input_.drag[b][0] += x - self->cursor_x_;
+        self->input_.drag[b][1] += y - self->cursor_y_;
+      }
+  }
+  self->cursor_x_ = x;
+  self->cursor_y_ = y;
+  self->cursor_known_ = true;
+}
+
+void window::on_button(GLFWwindow* w, int button, int action, int) {
+  auto* self = static_cast<window*>(glfwGetWindowUserPointer(w));
+  double x = 0, y = 0;
+  glfwGetCursorPos(w, &x, &y);
+  self->cursor_x_ = x;  // drags start where the button went down
+  self->cursor_y_ = y;
+  self->cursor_known_ = true;
+  if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS &&
+      glfwGetKey(w, GLFW_KEY_F) == GLFW_PRESS) {
+    self->input_.focus_click = true;
+    self->input_.click_x = x;
+    self->input_.click_y = y;
+  }
+}
+
+void window::on_scroll(GLFWwindow* w, double, double dy) {
+  static_cast<window*>(glfwGetWindowUserPointer(w))->input_.scroll += dy;
+}
+
+void window::on_key(GLFWwindow* w, int key, int, int action, int) {
+  if (action == GLFW_PRESS || action == GLFW_REPEAT)
+    static_cast<window*>(glfwGetWindowUserPointer(w))->input_.keys.push_back(key);
+}
+
+void window::window_size(int& width, int& height) const {
+  glfwGetWindowSize(window_, &width, &height);
+}
+
+window_input window::take_input() {
+  window_input taken = std::move(input_);
+  input_ = {};
+  return taken;
 }
 
 window::~window() {

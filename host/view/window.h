@@ -22,6 +22,16 @@ class window_system {
   std::vector<std::string> instance_extensions() const;
 };
 
+// What the user did since the input was last taken.
+struct window_input {
+  double drag[3][2] = {};    // per mouse button (left, right, middle): cursor motion while held,
+                             // window pixels, x to the right and y down
+  double scroll = 0;         // wheel steps, positive away from the user
+  std::vector<int> keys;     // GLFW key codes pressed (or auto-repeated), in order
+  bool focus_click = false;  // the left button was pressed while F was held ...
+  double click_x = 0, click_y = 0;  // ... here, window pixels from the top left
+};
+
 // One window with no client API (Vulkan draws into it), and what happened to it since the last
 // poll.
 class window {
@@ -42,11 +52,23 @@ class window {
   // The surface Vulkan presents to (owned by the caller, destroyed with the instance).
   VkSurfaceKHR create_surface(VkInstance instance) const;
   void set_title(const std::string& title);
+  // The window's size in screen coordinates (what cursor positions are measured in).
+  void window_size(int& width, int& height) const;
+  // Returns what happened since the last call, and forgets it.
+  window_input take_input();
 
   GLFWwindow* handle() const { return window_; }
 
  private:
-  GLFWwindow* window_ = nullptr;  // owned
+  static void on_cursor(GLFWwindow* w, double x, double y);
+  static void on_button(GLFWwindow* w, int button, int action, int mods);
+  static void on_scroll(GLFWwindow* w, double dx, double dy);
+  static void on_key(GLFWwindow* w, int key, int scancode, int action, int mods);
+
+  GLFWwindow* window_ = nullptr;        // owned
+  window_input input_;                  // collected by the callbacks
+  double cursor_x_ = 0, cursor_y_ = 0;  // last cursor position
+  bool cursor_known_ = false;           // cursor_x_/y_ hold a position
 };
 
 }  // namespace rtvk::view

@@ -12,7 +12,7 @@ set(may_use_cpu "cpu;accel;scene;base;shared")
 set(may_use_image "image;scene;base")
 set(may_use_gpu/vulkan "gpu/vulkan;base")
 set(may_use_gpu/render "gpu/render;gpu/vulkan;accel;scene;base;shared")
-set(may_use_view "view;gpu/render;gpu/vulkan;accel;scene;base;shared")
+set(may_use_view "view;cpu;gpu/render;gpu/vulkan;accel;scene;base;shared")
 set(may_use_app "app;view;cpu;image;gpu/render;gpu/vulkan;accel;scene;base;shared")
 set(layers base scene accel cpu image gpu/vulkan gpu/render view app)
 

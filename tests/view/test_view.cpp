@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <sstream>
@@ -87,6 +88,42 @@ std::vector<std::string> printed_flags(const std::string& out) {
   return flags;
 }
 
+// Runs a tool (xdotool) in the test's display and waits; its stdout, or "" when it failed.
+std::string run_tool(const std::vector<std::string>& args, const std::string& display) {
+  const test::temp_dir dir;
+  const std::string out = (dir.path() / "out").string();
+  std::vector<std::string> storage = args;
+  std::vector<char*> argv;
+  for (auto& a : storage) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> env = test::environment_with({"DISPLAY=" + display});
+  std::vector<char*> envp;
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  const int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) return "";
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? test::slurp(out) : "";
+}
+
+// The numbers of a printed flag's value, "x,y,z".
+std::vector<double> numbers_after(const std::vector<std::string>& flags, const std::string& flag) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i + 1 < flags.size(); ++i)
+    if (flags[i] == flag) {
+      std::stringstream parts(flags[i + 1]);
+      for (std::string p; std::getline(parts, p, ',');) out.push_back(std::stod(p));
+    }
+  return out;
+}
+
 // `view` and `render` take the same scene flags: the screenshot must be the bytes render writes,
 // and the printed camera must render them again.
 void expect_screenshot_is_the_render(const std::vector<std::string>& env,
@@ -135,6 +172,61 @@ TEST_F(XvfbTest, CtrlCClosesTheWindowWithExit0AndNoScreenshot) {
   EXPECT_FALSE(std::filesystem::exists(shot));
   EXPECT_EQ(printed_flags(r.out).front(), "render") << "the camera is printed on the way out";
   EXPECT_NE(r.err.find("was not written"), std::string::npos) << r.err;
+}
+
+// Real input through the X server: a left-drag of 100 pixels to the right must turn the eye
+// 25 degrees (0.25 per pixel) counter-clockwise about vup round the look-at point, at the same
+// distance and height; the O key's screenshot at --spp must be what rtvk render makes of the
+// camera printed on exit.
+TEST_F(XvfbTest, ADragOrbitsByTheControlsAngleAndTheShotRendersFromThePrintedCamera) {
+  if (run_tool({"xdotool", "version"}, display_).empty()) {
+    if (test::in_ci()) FAIL() << "xdotool not found (Debian: apt install xdotool)";
+    GTEST_SKIP() << "xdotool not found";
+  }
+  const test::temp_dir dir;
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());  // the O key writes into the current folder
+  test::running_rtvk view({"view", "--scene", "book-final", "--width", "200", "--spp", "4"}, env());
+  std::filesystem::current_path(before);
+  std::string id;
+  for (int i = 0; i < 300 && id.empty(); ++i) {
+    id = run_tool({"xdotool", "search", "--name", "rtvk view"}, display_);
+    if (id.empty()) std::this_thread::sleep_for(100ms);
+  }
+  ASSERT_FALSE(id.empty()) << "no window appeared";
+  id = id.substr(0, id.find('\n'));
+  const auto x = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), "xdotool");
+    run_tool(args, display_);
+    std::this_thread::sleep_for(200ms);
+  };
+  x({"mousemove", "--window", id, "50", "60"});
+  x({"mousedown", "1"});
+  x({"mousemove", "--window", id, "150", "60"});
+  x({"mouseup", "1"});
+  std::this_thread::sleep_for(3s);  // 4 samples of 200x133 take well under a second
+  x({"key", "--window", id, "o"});
+  x({"key", "--window", id, "Escape"});
+  const test::process_result r = view.wait_at_most(60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+  ASSERT_NE(r.err.find("200x133, 4 spp -> rtvk-view-1.png"), std::string::npos) << r.err;
+
+  const std::vector<std::string> printed = printed_flags(r.out.substr(r.out.rfind("rtvk render")));
+  const std::vector<double> from = numbers_after(printed, "--lookfrom");
+  ASSERT_EQ(from.size(), 3u) << r.out;
+  // book-final's camera: lookfrom 13,2,3, lookat 0,0,0, vup +y. Turned 25 degrees about +y:
+  const double a = 25 * 3.14159265358979323846 / 180;
+  EXPECT_NEAR(from[0], 13 * std::cos(a) + 3 * std::sin(a), 1e-9);
+  EXPECT_NEAR(from[1], 2, 1e-9);
+  EXPECT_NEAR(from[2], -13 * std::sin(a) + 3 * std::cos(a), 1e-9);
+
+  std::vector<std::string> render = printed;
+  const std::string again = (dir.path() / "again.png").string();
+  render.insert(render.end(), {"--backend", "gpu", "-q", "-o", again});
+  ASSERT_EQ(test::run_rtvk(render).status, 0);
+  EXPECT_EQ(test::slurp(dir.path() / "rtvk-view-1.png"), test::slurp(again))
+      << "the screenshot after the drag is not what the printed camera renders";
 }
 
 TEST(View, WithoutADisplayItExits2AndPointsToRender) {
