@@ -99,6 +99,10 @@ int run_view(view_options o) {
 
   const bool interrupted = pending_signal() != 0;
   actions.print(r);
+  std::fprintf(
+      stderr, "rtvk: %d frames in %.1f s (%.1f frames/s), %.3g Msamples/s; %dx%d at %d spp\n",
+      r.frames, r.seconds, r.seconds > 0 ? r.frames / r.seconds : 0.0,
+      r.seconds > 0 ? r.pixel_samples / r.seconds / 1e6 : 0.0, r.width, r.height, r.samples);
   if (!o.screenshot.empty() && !interrupted && r.samples == s.render.spp) {
     write_image(r.image, o.screenshot);
     std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, viewed -> %s\n", s.name.c_str(), r.width,

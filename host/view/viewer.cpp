@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #define GLFW_INCLUDE_NONE
@@ -15,8 +17,10 @@
 #include "camera_controls.h"
 #include "elapsed.h"
 #include "gpu_engine.h"
+#include "overlay.h"
 #include "parallel.h"
 #include "presenter.h"
+#include "render_cpu.h"
 #include "swapchain.h"
 #include "vk_error.h"
 #include "window.h"
@@ -25,60 +29,98 @@ namespace rtvk::view {
 namespace {
 
 // Exact per-pixel sums of every batch so far: integer additions, so the result does not depend
-// on how the samples were batched (the same bits as one render of all of them).
+// on how the samples were batched (the same bits as one render of all of them). Batches cover
+// bands of rows, so rows may briefly hold one pass more than others.
 struct accumulation {
   int width = 0, height = 0;        // pixels
-  int samples = 0;                  // per pixel, all pixels alike
+  int samples = 0;                  // per pixel in every row: the passes completed
+  std::vector<int> row_samples;     // per row, from the top
   std::vector<std::uint64_t> sums;  // 3 per pixel: r, g, b
 
   void reset(int w, int h) {
     width = w;
     height = h;
     samples = 0;
+    row_samples.assign(std::size_t(h), 0);
     sums.assign(std::size_t(w) * std::size_t(h) * 3, 0);
   }
-  void add(const gpu::sum_image& batch, int batch_samples) {
+  // Adds `count` samples of rows [row, row + batch.height).
+  void add(const gpu::sum_image& batch, int row, int count) {
     const auto word = [](gpu::uvec2 v) { return std::uint64_t(v.y) << 32 | v.x; };
+    const std::size_t first = std::size_t(row) * std::size_t(width);
     parallel_for(batch.pixels.size(), 0, 4096, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
-        sums[3 * i] += word(batch.pixels[i].r);
-        sums[3 * i + 1] += word(batch.pixels[i].g);
-        sums[3 * i + 2] += word(batch.pixels[i].b);
+        sums[3 * (first + i)] += word(batch.pixels[i].r);
+        sums[3 * (first + i) + 1] += word(batch.pixels[i].g);
+        sums[3 * (first + i) + 2] += word(batch.pixels[i].b);
       }
     });
-    samples += batch_samples;
+    for (int y = row; y < row + batch.height; ++y) row_samples[std::size_t(y)] += count;
+    samples = *std::min_element(row_samples.begin(), row_samples.end());
   }
 };
 
-// The running mean as 8-bit RGB (for screenshots) and RGBA (for the window), by encode_sum: the
-// device's tonemap.comp encodes rtvk render's images bit for bit the same way.
-void encode(const accumulation& acc, const byte_thresholds& t, image_rgb8& rgb,
+// Rows [first, last) of the running mean as 8-bit RGB (for screenshots) and RGBA (for the
+// window), by encode_sum: the device's tonemap.comp encodes rtvk render's images bit for bit the
+// same way. Only rows that changed are encoded again.
+void encode(const accumulation& acc, const byte_thresholds& t, int first, int last, image_rgb8& rgb,
             std::vector<std::uint32_t>& rgba) {
   const std::size_t pixels = std::size_t(acc.width) * std::size_t(acc.height);
   rgb.width = acc.width;
   rgb.height = acc.height;
   rgb.rgb.resize(pixels * 3);
   rgba.resize(pixels);
-  parallel_for(pixels, 0, 4096, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      std::uint32_t packed = 0xff000000u;
-      for (int c = 0; c < 3; ++c) {
-        const std::uint8_t byte = encode_sum(acc.sums[3 * i + c], std::uint32_t(acc.samples), t);
-        rgb.rgb[3 * i + c] = byte;
-        packed |= std::uint32_t(byte) << (8 * c);
-      }
-      rgba[i] = packed;
-    }
-  });
+  const std::size_t w = std::size_t(acc.width);
+  parallel_for((std::size_t(last) - std::size_t(first)) * w, 0, 4096,
+               [&](std::size_t begin, std::size_t end) {
+                 for (std::size_t k = begin; k < end; ++k) {
+                   const std::size_t i = std::size_t(first) * w + k;
+                   const auto n = std::uint32_t(acc.row_samples[i / w]);
+                   std::uint32_t packed = 0xff000000u;
+                   for (int c = 0; c < 3; ++c) {
+                     const std::uint8_t byte = encode_sum(acc.sums[3 * i + c], n, t);
+                     rgb.rgb[3 * i + c] = byte;
+                     packed |= std::uint32_t(byte) << (8 * c);
+                   }
+                   rgba[i] = packed;
+                 }
+               });
 }
 
-// Samples per batch: grown or shrunk so a batch takes about a tenth of a second, which keeps
-// the window responsive (about 10 frames a second) on slow devices and busy on fast ones.
-int next_batch(int batch, double seconds) {
-  constexpr double target = 0.1;
-  if (seconds < target / 2) return std::min(batch * 2, 1 << 16);
-  if (seconds > target * 2) return std::max(batch / 2, 1);
-  return batch;
+// A batch is `count` samples of a band of rows. Both adapt so that a batch takes about 60 ms,
+// keeping the window above 10 frames a second on slow devices (lavapipe: bands of the image)
+// and busy on fast ones (many samples of the whole image): bands grow to the whole image before
+// samples grow past one, and samples shrink back to one before bands shrink.
+struct batch_shape {
+  int rows = 16;  // band height, pixels
+  int count = 1;  // samples per pixel
+
+  void adapt(double seconds, int height) {
+    constexpr double target = 0.06;
+    if (seconds < target / 2) {
+      if (rows < height)
+        rows = std::min(rows * 2, height);
+      else
+        count = std::min(count * 2, 1 << 16);
+    } else if (seconds > target * 2) {
+      if (count > 1)
+        count /= 2;
+      else
+        rows = std::max(rows / 2, 1);
+    }
+  }
+};
+
+// Rays are counted for the overlay's Mrays/s (a counter beside the sums: the image is the same).
+gpu::gpu_render_options counting(gpu::gpu_render_options o) {
+  o.engine.count_rays = true;
+  return o;
+}
+
+std::string xyz(const vec3& v) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.3g,%.3g,%.3g", v.x, v.y, v.z);
+  return buf;
 }
 
 gpu::unique_semaphore make_semaphore(VkDevice device) {
@@ -98,7 +140,7 @@ class session {
         actions_(actions),
         win_(windowing_, start_width(), start_height(), "rtvk view: " + s.name),
         ctx_(gpu_options()),
-        engine_(ctx_, s, options.render),
+        engine_(ctx_, s, counting(options.render)),
         thresholds_(make_byte_thresholds(s.render.gamma, engine_.sum_exponent())),
         chain_(ctx_, start_width(), start_height()),
         acquired_(make_semaphore(ctx_.vk())),
@@ -131,6 +173,7 @@ class session {
   bool fit_to_window(int fb_w, int fb_h);
   void render_batch();
   void show(int fb_w, int fb_h);
+  std::vector<std::string> overlay_lines() const;
 
   const scene& s_;
   const viewer_options& options_;
@@ -149,11 +192,41 @@ class session {
   accumulation acc_;
   image_rgb8 rgb_;
   std::vector<std::uint32_t> rgba_;
-  int batch_ = 1;          // samples in the next batch
-  std::size_t named_ = 0;  // the named camera C last picked
-  bool restart_ = true;    // accumulation starts again (size or camera changed)
-  bool paused_ = false;    // Space
+  batch_shape batch_;            // the next batch
+  int pass_count_ = 0;           // samples per pixel of the pass under way
+  int next_row_ = 0;             // where the pass's next band starts
+  std::size_t named_ = 0;        // the named camera C last picked
+  bool restart_ = true;          // accumulation starts again (size or camera changed)
+  bool paused_ = false;          // Space
+  bool overlay_ = true;          // H hides it
+  int title_samples_ = -1;       // samples the title shows
+  int overlay_rows_ = 0;         // rows the overlay was last drawn over
+  int frames_ = 0;               // shown so far
+  long long pixel_samples_ = 0;  // traced so far
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+  double samples_per_second_ = 0;  // of the last batch: pixel samples
+  double rays_per_second_ = 0;     // of the last batch
+  double frame_seconds_ = 0;       // between the last two frames shown (smoothed)
+  std::chrono::steady_clock::time_point last_frame_ = std::chrono::steady_clock::now();
 };
+
+std::vector<std::string> session::overlay_lines() const {
+  char stats[160];
+  std::snprintf(stats, sizeof stats, "%d spp   %.3g Msamples/s   %.3g Mrays/s   %.1f frames/s%s",
+                acc_.samples, samples_per_second_ / 1e6, rays_per_second_ / 1e6,
+                frame_seconds_ > 0 ? 1 / frame_seconds_ : 0.0, paused_ ? "   paused" : "");
+  char lens[200];
+  std::snprintf(lens, sizeof lens, "vfov %.3g   aperture %.3g   focus %.3g   %s", pose_.vfov,
+                pose_.aperture, pose_.focus_dist,
+                std::string(projection_name(pose_.projection)).c_str());
+  return {
+      stats,
+      ctx_.device().name + "   " + std::to_string(acc_.width) + "x" + std::to_string(acc_.height),
+      "from " + xyz(pose_.lookfrom) + "   at " + xyz(pose_.lookat),
+      lens,
+      "orbit: drag   pan: right-drag   dolly: wheel   fly: WASDQE",
+      "fov: + -   aperture: [ ]   focus: F+click   P C Space R K O H"};
+}
 
 viewer_result session::state() const {
   viewer_result r;
@@ -163,6 +236,9 @@ viewer_result session::state() const {
   r.aspect = rs_.aspect;
   r.samples = acc_.samples;
   r.image = rgb_;
+  r.frames = frames_;
+  r.seconds = seconds_since(started_);
+  r.pixel_samples = pixel_samples_;
   return r;
 }
 
@@ -257,8 +333,9 @@ void session::focus_at(double x, double y) {
   if (px < 0 || py < 0 || px >= acc_.width || py >= acc_.height) return;
   if (!world_) world_ = std::make_unique<bvh_world>(s_.spheres);
   const camera cam(pose_, rs_.aspect, rs_.width);
-  const double u = px / (acc_.width - 1 > 0 ? acc_.width - 1 : 1);
-  const double v = (acc_.height - 1 - py) / (acc_.height - 1 > 0 ? acc_.height - 1 : 1);
+  // Pixel (px, py) from the top is the render's (i, j) = (px, height - 1 - py) from the bottom.
+  const double u = pixel_coordinate(px, acc_.width);
+  const double v = pixel_coordinate(acc_.height - 1 - py, acc_.height);
   const ray r = cam.get_ray(u, v);
   hit_record rec;
   if (!world_->hit(r, 1e-3, std::numeric_limits<double>::infinity(), rec)) return;
@@ -277,15 +354,31 @@ bool session::fit_to_window(int fb_w, int fb_h) {
 }
 
 void session::render_batch() {
+  if (next_row_ == 0)  // a new pass: every row gets the same samples
+    pass_count_ = options_.target_spp == 0
+                      ? batch_.count
+                      : std::min(batch_.count, options_.target_spp - acc_.samples);
   const camera cam(pose_, rs_.aspect, rs_.width);
-  const int count =
-      options_.target_spp == 0 ? batch_ : std::min(batch_, options_.target_spp - acc_.samples);
-  const render_window window{0, 0, acc_.width, acc_.height, acc_.samples, acc_.samples + count};
+  const int rows = std::min(batch_.rows, acc_.height - next_row_);
+  const render_window window{0,    next_row_,    acc_.width,
+                             rows, acc_.samples, acc_.samples + pass_count_};
   const auto start = std::chrono::steady_clock::now();
   const std::vector<gpu::sum_image> sums = engine_.render_sums({cam}, rs_, window);
-  acc_.add(sums.front(), count);
-  batch_ = next_batch(batch_, seconds_since(start));
-  encode(acc_, thresholds_, rgb_, rgba_);
+  const double seconds = std::max(seconds_since(start), 1e-9);
+  const int row = next_row_;
+  acc_.add(sums.front(), row, pass_count_);
+  next_row_ = next_row_ + rows >= acc_.height ? 0 : next_row_ + rows;
+  const double traced = double(acc_.width) * rows * pass_count_;
+  pixel_samples_ += (long long)traced;
+  std::uint64_t rays = 0;
+  for (const gpu::pixel_sum& p : sums.front().pixels) rays += p.rays;
+  samples_per_second_ = traced / seconds;
+  rays_per_second_ = double(rays) / seconds;
+  batch_.adapt(seconds, acc_.height);
+  // The band, and the rows the last overlay covered (drawn again over fresh pixels).
+  encode(acc_, thresholds_, row, row + rows, rgb_, rgba_);
+  encode(acc_, thresholds_, 0, std::min(overlay_rows_, acc_.height), rgb_, rgba_);
+  overlay_rows_ = overlay_ ? draw_overlay(rgba_, acc_.width, acc_.height, overlay_lines()) : 0;
   shown_->write(rgba_.data());
 }
 
@@ -301,6 +394,14 @@ void session::show(int fb_w, int fb_h) {
                                    chain_.ready_to_present(index)});
   ctx_.wait(ticket);
   if (!chain_.present(index)) chain_.recreate(fb_w, fb_h);
+  ++frames_;
+  if (acc_.samples != title_samples_) {  // the title says how far it is (the tests wait on it)
+    title_samples_ = acc_.samples;
+    win_.set_title("rtvk view: " + s_.name + " - " + std::to_string(acc_.samples) + " spp");
+  }
+  const double since = seconds_since(last_frame_);
+  last_frame_ = std::chrono::steady_clock::now();
+  frame_seconds_ = frame_seconds_ == 0 ? since : 0.8 * frame_seconds_ + 0.2 * since;
 }
 
 viewer_result session::run() {
@@ -316,18 +417,24 @@ viewer_result session::run() {
     if (fit_to_window(fb_w, fb_h)) restart();
     if (restart_) {
       const camera sized(pose_, rs_.aspect, rs_.width);
+      if (sized.image_width() != acc_.width || sized.image_height() != acc_.height) {
+        rgba_.assign(std::size_t(sized.image_width()) * std::size_t(sized.image_height()),
+                     0xff000000u);  // black until the first pass reaches each row
+        rgb_ = image_rgb8{};
+      }  // else the last view stays until the new one's rows replace it
       acc_.reset(sized.image_width(), sized.image_height());
       if (!shown_ || shown_->width() != acc_.width || shown_->height() != acc_.height)
         shown_ = std::make_unique<presenter>(ctx_, acc_.width, acc_.height);
       if (chain_.extent().width != std::uint32_t(fb_w) ||
           chain_.extent().height != std::uint32_t(fb_h))
         chain_.recreate(fb_w, fb_h);
-      batch_ = 1;
+      batch_ = batch_shape{};
+      next_row_ = 0;
       restart_ = false;
     }
     const bool want_more = options_.target_spp == 0 || acc_.samples < options_.target_spp;
     if (want_more && !paused_) render_batch();
-    if (acc_.samples > 0) show(fb_w, fb_h);
+    if (!rgba_.empty()) show(fb_w, fb_h);
     if (!want_more && options_.exit_at_target) break;
     if (!want_more || paused_) win_.wait();  // idle until something happens
   }

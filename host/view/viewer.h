@@ -21,11 +21,14 @@ struct viewer_options {
 
 // What a viewing session ended with.
 struct viewer_result {
-  camera_pose pose;           // the camera when it closed
-  int width = 0, height = 0;  // the render's size then
-  double aspect = 0;          // and the aspect ratio its camera was made with
-  int samples = 0;            // samples per pixel accumulated then
-  image_rgb8 image;           // the accumulated image, encoded as rtvk render encodes it
+  camera_pose pose;             // the camera when it closed
+  int width = 0, height = 0;    // the render's size then
+  double aspect = 0;            // and the aspect ratio its camera was made with
+  int samples = 0;              // samples per pixel accumulated then
+  image_rgb8 image;             // the accumulated image, encoded as rtvk render encodes it
+  int frames = 0;               // frames shown in the session
+  double seconds = 0;           // the session's length, window open to close
+  long long pixel_samples = 0;  // samples traced in the session, all restarts included
 };
 
 // Opens a window and renders `s` from `pose` progressively on the chosen device: batches of

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,8 +19,12 @@
 #include <thread>
 #include <vector>
 
+#include "bvh_world.h"
+#include "camera.h"
 #include "ci.h"
 #include "process.h"
+#include "render_cpu.h"
+#include "scene.h"
 #include "temp_dir.h"
 
 namespace rtvk {
@@ -35,10 +40,31 @@ class XvfbTest : public testing::Test {
       if (test::in_ci()) FAIL() << "Xvfb not found (Debian: apt install xvfb); CI must run this";
       GTEST_SKIP() << "Xvfb not found (Debian: apt install xvfb)";
     }
-    display_ = ":" + std::to_string(200 + getpid() % 700);
-    const std::string socket = "/tmp/.X11-unix/X" + display_.substr(1);
-    std::vector<std::string> args{"Xvfb",         display_,    "-screen", "0",
-                                  "1280x1024x24", "-nolisten", "tcp"};
+    // A display number of this process's own; -displayfd says when it accepts connections. It
+    // is checked from a client too, and the next number tried if it fails.
+    for (int attempt = 0; attempt < 5 && display_.empty(); ++attempt) {
+      start_xvfb(1000 + (getpid() * 5 + attempt) % 20000);
+      if (display_.empty()) continue;
+      std::this_thread::sleep_for(300ms);
+      if (run_tool_in({"xdotool", "version"}).empty() ||  // nothing to check with
+          !run_tool_in({"xdotool", "getdisplaygeometry"}).empty())
+        break;
+      stop_xvfb();
+    }
+    ASSERT_FALSE(display_.empty()) << "Xvfb did not start, or could not be reached";
+  }
+
+  void start_xvfb(int display) {
+    int fds[2];
+    if (pipe(fds) != 0) return;
+    std::vector<std::string> args{"Xvfb",         ":" + std::to_string(display),
+                                  "-displayfd",   "3",
+                                  "-screen",      "0",
+                                  "1280x1024x24", "-nolisten",
+                                  "tcp",
+                                  // an X server resets when its last client leaves, refusing
+                                  // connections meanwhile: xdotool's come and go
+                                  "-noreset"};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -46,26 +72,51 @@ class XvfbTest : public testing::Test {
     posix_spawn_file_actions_init(&fa);
     posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-    ASSERT_EQ(posix_spawnp(&xvfb_, "Xvfb", &fa, nullptr, argv.data(), environ), 0);
+    posix_spawn_file_actions_addclose(&fa, fds[0]);  // before the dup2: it may be fd 3 itself
+    posix_spawn_file_actions_adddup2(&fa, fds[1], 3);
+    const int rc = posix_spawnp(&xvfb_, "Xvfb", &fa, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&fa);
-    const auto end = std::chrono::steady_clock::now() + 10s;
-    while (!std::filesystem::exists(socket) && std::chrono::steady_clock::now() < end)
-      std::this_thread::sleep_for(20ms);
-    ASSERT_TRUE(std::filesystem::exists(socket)) << "Xvfb did not start on " << display_;
+    close(fds[1]);
+    std::string number;
+    if (rc == 0) {
+      pollfd ready{fds[0], POLLIN, 0};
+      char c = 0;
+      while (poll(&ready, 1, 20000) == 1 && read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+    }
+    close(fds[0]);
+    if (!number.empty()) display_ = ":" + number;
   }
-  void TearDown() override {
+
+  void stop_xvfb() {
     if (xvfb_ > 0) {
       ::kill(xvfb_, SIGTERM);
       int status = 0;
       waitpid(xvfb_, &status, 0);
     }
+    xvfb_ = -1;
+    display_.clear();
   }
+
+  void TearDown() override { stop_xvfb(); }
 
   // The environment of an rtvk that shows its window in this server, validation on.
   std::vector<std::string> env() const {
     return {"DISPLAY=" + display_, "WAYLAND_DISPLAY=", "RTVK_VALIDATE=1",
             "VK_LOADER_LAYERS_ENABLE=*validation"};
   }
+
+  // The id of rtvk view's window once it has shown a frame (its title then counts samples), or
+  // "" after 60 s: input sent earlier could reach the root window instead.
+  std::string shown_window() const {
+    for (int i = 0; i < 600; ++i) {
+      const std::string ids =
+          run_tool_in({"xdotool", "search", "--onlyvisible", "--name", "rtvk view: .* spp"});
+      if (!ids.empty()) return ids.substr(0, ids.find('\n'));
+      std::this_thread::sleep_for(100ms);
+    }
+    return "";
+  }
+  std::string run_tool_in(const std::vector<std::string>& args) const;
 
   static bool find_xvfb() {
     const char* path = std::getenv("PATH");
@@ -111,6 +162,10 @@ std::string run_tool(const std::vector<std::string>& args, const std::string& di
   int status = 0;
   waitpid(pid, &status, 0);
   return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? test::slurp(out) : "";
+}
+
+std::string XvfbTest::run_tool_in(const std::vector<std::string>& args) const {
+  return run_tool(args, display_);
 }
 
 // The numbers of a printed flag's value, "x,y,z".
@@ -188,13 +243,8 @@ TEST_F(XvfbTest, ADragOrbitsByTheControlsAngleAndTheShotRendersFromThePrintedCam
   std::filesystem::current_path(dir.path());  // the O key writes into the current folder
   test::running_rtvk view({"view", "--scene", "book-final", "--width", "200", "--spp", "4"}, env());
   std::filesystem::current_path(before);
-  std::string id;
-  for (int i = 0; i < 300 && id.empty(); ++i) {
-    id = run_tool({"xdotool", "search", "--name", "rtvk view"}, display_);
-    if (id.empty()) std::this_thread::sleep_for(100ms);
-  }
-  ASSERT_FALSE(id.empty()) << "no window appeared";
-  id = id.substr(0, id.find('\n'));
+  const std::string id = shown_window();
+  ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
   const auto x = [&](std::vector<std::string> args) {
     args.insert(args.begin(), "xdotool");
     run_tool(args, display_);
@@ -227,6 +277,75 @@ TEST_F(XvfbTest, ADragOrbitsByTheControlsAngleAndTheShotRendersFromThePrintedCam
   ASSERT_EQ(test::run_rtvk(render).status, 0);
   EXPECT_EQ(test::slurp(dir.path() / "rtvk-view-1.png"), test::slurp(again))
       << "the screenshot after the drag is not what the printed camera renders";
+}
+
+// F + click: the distance in focus becomes that of the surface under the cursor along the view
+// axis, found by the ray get_ray casts through that pixel (computed here the same way, on the
+// CPU, from the scene).
+TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
+  if (run_tool({"xdotool", "version"}, display_).empty()) {
+    if (test::in_ci()) FAIL() << "xdotool not found (Debian: apt install xdotool)";
+    GTEST_SKIP() << "xdotool not found";
+  }
+  test::running_rtvk view({"view", "--scene", "book-final", "--width", "200", "--spp", "2"}, env());
+  const std::string id = shown_window();
+  ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
+  const auto x = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), "xdotool");
+    run_tool(args, display_);
+    std::this_thread::sleep_for(200ms);
+  };
+  std::this_thread::sleep_for(1s);
+  x({"mousemove", "--window", id, "120", "70"});
+  x({"keydown", "f"});
+  x({"click", "1"});
+  x({"keyup", "f"});
+  x({"key", "Escape"});
+  const test::process_result r = view.wait_at_most(60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<std::string> printed = printed_flags(r.out.substr(r.out.rfind("rtvk render")));
+  const std::vector<double> focus = numbers_after(printed, "--focus-dist");
+  ASSERT_EQ(focus.size(), 1u) << r.out;
+
+  const scene s = builtin_scene("book-final");
+  const camera cam(main_camera(s).pose, 1.5, 200);  // 200x133, shown 1:1 in its window
+  const ray through = cam.get_ray(pixel_coordinate(120, 200), pixel_coordinate(132 - 70, 133));
+  hit_record rec;
+  ASSERT_TRUE(bvh_world(s.spheres).hit(through, 1e-3, 1e300, rec)) << "the click must hit";
+  const double expected = glm::dot(rec.p - cam.origin(), -cam.axis_w());
+  EXPECT_NEAR(focus[0], expected, 1e-9);
+  EXPECT_GT(std::abs(expected - 10), 0.1) << "the click must move the focus for this to mean much";
+}
+
+// The render follows the window: resized while accumulating, it restarts at the new size, and
+// what it shows is what rtvk render makes of the printed camera at that size.
+TEST_F(XvfbTest, AResizedWindowRestartsAtItsNewSize) {
+  if (run_tool({"xdotool", "version"}, display_).empty()) {
+    if (test::in_ci()) FAIL() << "xdotool not found (Debian: apt install xdotool)";
+    GTEST_SKIP() << "xdotool not found";
+  }
+  const test::temp_dir dir;
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());
+  test::running_rtvk view({"view", "--scene", "materials", "--spp", "4"}, env());
+  std::filesystem::current_path(before);
+  const std::string id = shown_window();
+  ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
+  std::this_thread::sleep_for(500ms);  // accumulating at 960x540
+  run_tool({"xdotool", "windowsize", id, "320", "180"}, display_);
+  std::this_thread::sleep_for(3s);
+  run_tool({"xdotool", "key", "--window", id, "o"}, display_);
+  std::this_thread::sleep_for(300ms);
+  run_tool({"xdotool", "key", "--window", id, "Escape"}, display_);
+  const test::process_result r = view.wait_at_most(60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+  ASSERT_NE(r.err.find("320x180, 4 spp -> rtvk-view-1.png"), std::string::npos) << r.err;
+  std::vector<std::string> render = printed_flags(r.out.substr(r.out.rfind("rtvk render")));
+  const std::string again = (dir.path() / "again.png").string();
+  render.insert(render.end(), {"--backend", "gpu", "-q", "-o", again});
+  ASSERT_EQ(test::run_rtvk(render).status, 0);
+  EXPECT_EQ(test::slurp(dir.path() / "rtvk-view-1.png"), test::slurp(again));
 }
 
 TEST(View, WithoutADisplayItExits2AndPointsToRender) {
