@@ -57,11 +57,8 @@ class XvfbTest : public testing::Test {
   void start_xvfb(int display) {
     int fds[2];
     if (pipe(fds) != 0) return;
-    std::vector<std::string> args{"Xvfb",         ":" + std::to_string(display),
-                                  "-displayfd",   "3",
-                                  "-screen",      "0",
-                                  "1280x1024x24", "-nolisten",
-                                  "tcp",
+    std::vector<std::string> args{"Xvfb", ":" + std::to_string(display), "-displayfd", "3",
+                                  "-screen", "0", "1280x1024x24", "-nolisten", "tcp",
                                   // an X server resets when its last client leaves, refusing
                                   // connections meanwhile: xdotool's come and go
                                   "-noreset"};
@@ -117,6 +114,23 @@ class XvfbTest : public testing::Test {
     return "";
   }
   std::string run_tool_in(const std::vector<std::string>& args) const;
+
+  // False, having failed the test in CI or skipped it elsewhere, when xdotool is missing.
+  bool xdotool_ready() {
+    if (!run_tool_in({"xdotool", "version"}).empty()) return true;
+    if (test::in_ci())
+      ADD_FAILURE() << "xdotool not found (Debian: apt install xdotool); CI must run this";
+    else
+      [] { GTEST_SKIP() << "xdotool not found"; }();  // GTEST_SKIP returns void
+    return false;
+  }
+
+  // One xdotool command in this server, then a moment for rtvk view to handle its events.
+  void xdo(std::vector<std::string> args) const {
+    args.insert(args.begin(), "xdotool");
+    run_tool_in(args);
+    std::this_thread::sleep_for(200ms);
+  }
 
   static bool find_xvfb() {
     const char* path = std::getenv("PATH");
@@ -234,10 +248,7 @@ TEST_F(XvfbTest, CtrlCClosesTheWindowWithExit0AndNoScreenshot) {
 // distance and height; the O key's screenshot at --spp must be what rtvk render makes of the
 // camera printed on exit.
 TEST_F(XvfbTest, ADragOrbitsByTheControlsAngleAndTheShotRendersFromThePrintedCamera) {
-  if (run_tool({"xdotool", "version"}, display_).empty()) {
-    if (test::in_ci()) FAIL() << "xdotool not found (Debian: apt install xdotool)";
-    GTEST_SKIP() << "xdotool not found";
-  }
+  if (!xdotool_ready()) return;
   const test::temp_dir dir;
   const std::filesystem::path before = std::filesystem::current_path();
   std::filesystem::current_path(dir.path());  // the O key writes into the current folder
@@ -245,18 +256,13 @@ TEST_F(XvfbTest, ADragOrbitsByTheControlsAngleAndTheShotRendersFromThePrintedCam
   std::filesystem::current_path(before);
   const std::string id = shown_window();
   ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
-  const auto x = [&](std::vector<std::string> args) {
-    args.insert(args.begin(), "xdotool");
-    run_tool(args, display_);
-    std::this_thread::sleep_for(200ms);
-  };
-  x({"mousemove", "--window", id, "50", "60"});
-  x({"mousedown", "1"});
-  x({"mousemove", "--window", id, "150", "60"});
-  x({"mouseup", "1"});
+  xdo({"mousemove", "--window", id, "50", "60"});
+  xdo({"mousedown", "1"});
+  xdo({"mousemove", "--window", id, "150", "60"});
+  xdo({"mouseup", "1"});
   std::this_thread::sleep_for(3s);  // 4 samples of 200x133 take well under a second
-  x({"key", "--window", id, "o"});
-  x({"key", "--window", id, "Escape"});
+  xdo({"key", "--window", id, "o"});
+  xdo({"key", "--window", id, "Escape"});
   const test::process_result r = view.wait_at_most(60s);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
@@ -283,24 +289,16 @@ TEST_F(XvfbTest, ADragOrbitsByTheControlsAngleAndTheShotRendersFromThePrintedCam
 // axis, found by the ray get_ray casts through that pixel (computed here the same way, on the
 // CPU, from the scene).
 TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
-  if (run_tool({"xdotool", "version"}, display_).empty()) {
-    if (test::in_ci()) FAIL() << "xdotool not found (Debian: apt install xdotool)";
-    GTEST_SKIP() << "xdotool not found";
-  }
+  if (!xdotool_ready()) return;
   test::running_rtvk view({"view", "--scene", "book-final", "--width", "200", "--spp", "2"}, env());
   const std::string id = shown_window();
   ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
-  const auto x = [&](std::vector<std::string> args) {
-    args.insert(args.begin(), "xdotool");
-    run_tool(args, display_);
-    std::this_thread::sleep_for(200ms);
-  };
   std::this_thread::sleep_for(1s);
-  x({"mousemove", "--window", id, "120", "70"});
-  x({"keydown", "f"});
-  x({"click", "1"});
-  x({"keyup", "f"});
-  x({"key", "Escape"});
+  xdo({"mousemove", "--window", id, "120", "70"});
+  xdo({"keydown", "f"});
+  xdo({"click", "1"});
+  xdo({"keyup", "f"});
+  xdo({"key", "Escape"});
   const test::process_result r = view.wait_at_most(60s);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::vector<std::string> printed = printed_flags(r.out.substr(r.out.rfind("rtvk render")));
@@ -320,10 +318,7 @@ TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
 // The render follows the window: resized while accumulating, it restarts at the new size, and
 // what it shows is what rtvk render makes of the printed camera at that size.
 TEST_F(XvfbTest, AResizedWindowRestartsAtItsNewSize) {
-  if (run_tool({"xdotool", "version"}, display_).empty()) {
-    if (test::in_ci()) FAIL() << "xdotool not found (Debian: apt install xdotool)";
-    GTEST_SKIP() << "xdotool not found";
-  }
+  if (!xdotool_ready()) return;
   const test::temp_dir dir;
   const std::filesystem::path before = std::filesystem::current_path();
   std::filesystem::current_path(dir.path());
@@ -332,11 +327,10 @@ TEST_F(XvfbTest, AResizedWindowRestartsAtItsNewSize) {
   const std::string id = shown_window();
   ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
   std::this_thread::sleep_for(500ms);  // accumulating at 960x540
-  run_tool({"xdotool", "windowsize", id, "320", "180"}, display_);
+  xdo({"windowsize", id, "320", "180"});
   std::this_thread::sleep_for(3s);
-  run_tool({"xdotool", "key", "--window", id, "o"}, display_);
-  std::this_thread::sleep_for(300ms);
-  run_tool({"xdotool", "key", "--window", id, "Escape"}, display_);
+  xdo({"key", "--window", id, "o"});
+  xdo({"key", "--window", id, "Escape"});
   const test::process_result r = view.wait_at_most(60s);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
