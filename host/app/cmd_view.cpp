@@ -86,7 +86,9 @@ int run_view(view_options o) {
   v.cancelled = interrupt_requested();
   view::viewer_actions actions;
   actions.print = [&](const view::viewer_result& r) {
-    std::printf("%s\n", render_flags(o.scene, r).c_str());
+    // The same frame twice: as flags, and as a camera to paste into a scene file.
+    std::printf("%s\n\"camera\": %s\n", render_flags(o.scene, r).c_str(),
+                dump_camera_json(r.pose).c_str());
     std::fflush(stdout);
   };
   int shots = 0;

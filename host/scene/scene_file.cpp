@@ -406,6 +406,10 @@ scene load_scene_file(const std::filesystem::path& path) {
   return parse_scene_json(text, path.string());
 }
 
+std::string dump_camera_json(const camera_pose& pose) {
+  return pose_json(pose).dump();
+}
+
 std::string dump_scene_json(const scene& s) {
   json root;
   if (s.cameras.size() == 1 && s.cameras[0].name == "default") {

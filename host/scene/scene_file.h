@@ -20,6 +20,10 @@ scene parse_scene_json(const std::string& text, const std::string& file_name);
 // The scene as JSON in the same format; reading it back gives the identical scene.
 std::string dump_scene_json(const scene& s);
 
+// One pose as a scene file's camera object, on one line ({"lookfrom": ...}); read back as a
+// scene's "camera" it is the same pose.
+std::string dump_camera_json(const camera_pose& pose);
+
 // --scene VALUE names a file (rather than a built-in) when it ends in .json or contains a '/'.
 bool names_scene_file(const std::string& value);
 

@@ -180,6 +180,27 @@ TEST(SceneFile, ProjectionsRoundTripAndPerspectiveStaysUnsaid) {
   EXPECT_EQ(dump_scene_json(builtin_scene("book-final")).find("projection"), std::string::npos);
 }
 
+// rtvk view prints its camera this way to be pasted into a scene file: every field, to the bit.
+TEST(SceneFile, ACameraObjectReadsBackAsTheSamePose) {
+  camera_pose lens;
+  lens.lookfrom = {0.1, 1.0 / 3.0, -7e-5};
+  lens.lookat = {2.5, -1e10, 3};
+  lens.vup = {0.6, 0.8, 1e-3};
+  lens.vfov = 33.333333333333336;
+  lens.aperture = 0.07;
+  lens.focus_dist = 12.125;
+  camera_pose fisheye = lens;
+  fisheye.aperture = 0;
+  fisheye.projection = projection::fisheye_equisolid;
+  fisheye.fisheye_fov = 271.5;
+  for (const camera_pose& pose : {lens, fisheye}) {
+    const std::string object = dump_camera_json(pose);
+    EXPECT_EQ(object.find('\n'), std::string::npos) << "one line: " << object;
+    const scene s = parse_scene_json(R"({"camera": )" + object + R"(, "spheres": []})", "cam.json");
+    EXPECT_TRUE(s.cameras.at(0).path.pose == pose) << object;
+  }
+}
+
 TEST(SceneFile, MissingEmptyAndFolderFiles) {
   test::temp_dir dir;
   EXPECT_THROW(load_scene_file(dir.path() / "none.json"), usage_error);

@@ -14,10 +14,13 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "bvh_world.h"
 #include "camera.h"
@@ -193,6 +196,22 @@ std::vector<double> numbers_after(const std::vector<std::string>& flags, const s
   return out;
 }
 
+// The scene `name` with the camera object rtvk view printed after its flags ("camera": {...})
+// in place of its own, written to `file`.
+void write_scene_with_printed_camera(const std::string& name, const std::string& out,
+                                     const std::filesystem::path& file) {
+  const std::string marker = "\"camera\": ";
+  const std::size_t at = out.rfind(marker);
+  ASSERT_NE(at, std::string::npos) << "no camera object printed: " << out;
+  const std::string object =
+      out.substr(at + marker.size(), out.find('\n', at) - at - marker.size());
+  const test::process_result dumped = test::run_rtvk({"scene", "dump", name});
+  ASSERT_EQ(dumped.status, 0) << dumped.err;
+  nlohmann::json scene = nlohmann::json::parse(dumped.out);
+  scene["camera"] = nlohmann::json::parse(object);
+  std::ofstream(file) << scene.dump();
+}
+
 // `view` and `render` take the same scene flags: the screenshot must be the bytes render writes,
 // and the printed camera must render them again.
 void expect_screenshot_is_the_render(const std::vector<std::string>& env,
@@ -283,6 +302,17 @@ TEST_F(XvfbTest, ADragOrbitsByTheControlsAngleAndTheShotRendersFromThePrintedCam
   ASSERT_EQ(test::run_rtvk(render).status, 0);
   EXPECT_EQ(test::slurp(dir.path() / "rtvk-view-1.png"), test::slurp(again))
       << "the screenshot after the drag is not what the printed camera renders";
+
+  // The camera object printed beside the flags, in a scene file, frames the same shot.
+  const std::filesystem::path file = dir.path() / "framed.json";
+  write_scene_with_printed_camera("book-final", r.out, file);
+  const std::string from_file = (dir.path() / "from-file.png").string();
+  ASSERT_EQ(test::run_rtvk({"render", "--scene", file.string(), "--width", "200", "--spp", "4",
+                            "--backend", "gpu", "-q", "-o", from_file})
+                .status,
+            0);
+  EXPECT_EQ(test::slurp(from_file), test::slurp(again))
+      << "the printed camera object frames another shot";
 }
 
 // F + click: the distance in focus becomes that of the surface under the cursor along the view
