@@ -5,7 +5,8 @@
 #                            cpack -G DEB)
 #   install-deps.sh --test   also what only the tests use: Slurm, for the farm job files' test,
 #                            man-db, to read the installed man page, Xvfb, an X server
-#                            without a screen for rtvk view's window, and xdotool, to drive it
+#                            without a screen for rtvk view's window, xdotool, to drive it, and
+#                            twm, a window manager to minimize it
 set -euo pipefail
 
 packages=(
@@ -19,7 +20,7 @@ packages=(
   help2man dpkg-dev file
 )
 if [ "${1:-}" = "--test" ]; then
-  packages+=(slurm-wlm man-db xvfb xdotool)
+  packages+=(slurm-wlm man-db xvfb xdotool twm)
 fi
 
 missing=()

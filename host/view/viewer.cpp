@@ -395,10 +395,6 @@ void session::show(int fb_w, int fb_h) {
   ctx_.wait(ticket);
   if (!chain_.present(index)) chain_.recreate(fb_w, fb_h);
   ++frames_;
-  if (acc_.samples != title_samples_) {  // the title says how far it is (the tests wait on it)
-    title_samples_ = acc_.samples;
-    win_.set_title("rtvk view: " + s_.name + " - " + std::to_string(acc_.samples) + " spp");
-  }
   const double since = seconds_since(last_frame_);
   last_frame_ = std::chrono::steady_clock::now();
   frame_seconds_ = frame_seconds_ == 0 ? since : 0.8 * frame_seconds_ + 0.2 * since;
@@ -408,12 +404,12 @@ viewer_result session::run() {
   while (!win_.should_close() && !(options_.cancelled && options_.cancelled())) {
     win_.poll();
     apply(win_.take_input());
-    int fb_w = 0, fb_h = 0;
-    win_.framebuffer_size(fb_w, fb_h);
-    if (fb_w == 0 || fb_h == 0) {  // minimized: nothing to show, nothing to render
+    if (win_.minimized()) {  // nothing to show, nothing to render (X11 keeps the size)
       win_.wait();
       continue;
     }
+    int fb_w = 0, fb_h = 0;
+    win_.framebuffer_size(fb_w, fb_h);
     if (fit_to_window(fb_w, fb_h)) restart();
     if (restart_) {
       const camera sized(pose_, rs_.aspect, rs_.width);
@@ -434,6 +430,10 @@ viewer_result session::run() {
     }
     const bool want_more = options_.target_spp == 0 || acc_.samples < options_.target_spp;
     if (want_more && !paused_) render_batch();
+    if (acc_.samples != title_samples_) {  // how far it is, shown or not (the tests read it)
+      title_samples_ = acc_.samples;
+      win_.set_title("rtvk view: " + s_.name + " - " + std::to_string(acc_.samples) + " spp");
+    }
     if (!rgba_.empty()) show(fb_w, fb_h);
     if (!want_more && options_.exit_at_target) break;
     if (!want_more || paused_) win_.wait();  // idle until something happens

@@ -134,6 +134,12 @@ void window::framebuffer_size(int& width, int& height) const {
   glfwGetFramebufferSize(window_, &width, &height);
 }
 
+bool window::minimized() const {
+  int width = 0, height = 0;
+  framebuffer_size(width, height);
+  return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE || width == 0 || height == 0;
+}
+
 VkSurfaceKHR window::create_surface(VkInstance instance) const {
   VkSurfaceKHR surface = VK_NULL_HANDLE;
   gpu::vk_check(glfwCreateWindowSurface(instance, window_, nullptr, &surface),

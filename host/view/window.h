@@ -47,8 +47,10 @@ class window {
   void wait();
   bool should_close() const;
   void request_close();
-  // The drawable size in pixels (0 x 0 while minimized).
+  // The drawable size in pixels (0 x 0 while minimized on some systems, unchanged on X11).
   void framebuffer_size(int& width, int& height) const;
+  // Iconified by the window manager, or with nothing to draw into.
+  bool minimized() const;
   // The surface Vulkan presents to (owned by the caller, destroyed with the instance).
   VkSurfaceKHR create_surface(VkInstance instance) const;
   void set_title(const std::string& title);

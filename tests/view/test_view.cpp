@@ -39,7 +39,7 @@ using namespace std::chrono_literals;
 class XvfbTest : public testing::Test {
  protected:
   void SetUp() override {
-    if (!find_xvfb()) {
+    if (!on_path("Xvfb")) {
       if (test::in_ci()) FAIL() << "Xvfb not found (Debian: apt install xvfb); CI must run this";
       GTEST_SKIP() << "Xvfb not found (Debian: apt install xvfb)";
     }
@@ -88,16 +88,53 @@ class XvfbTest : public testing::Test {
   }
 
   void stop_xvfb() {
-    if (xvfb_ > 0) {
-      ::kill(xvfb_, SIGTERM);
-      int status = 0;
-      waitpid(xvfb_, &status, 0);
-    }
-    xvfb_ = -1;
+    stop(window_manager_);
+    stop(xvfb_);
     display_.clear();
+  }
+  static void stop(pid_t& pid) {
+    if (pid > 0) {
+      ::kill(pid, SIGTERM);
+      int status = 0;
+      waitpid(pid, &status, 0);
+    }
+    pid = -1;
   }
 
   void TearDown() override { stop_xvfb(); }
+
+  // twm in this server (Xvfb alone has no window manager, so nothing can be minimized), placing
+  // windows itself rather than asking for a click. False, having failed the test in CI or
+  // skipped it elsewhere, when twm is missing.
+  bool start_window_manager(const std::filesystem::path& folder) {
+    if (!on_path("twm")) {
+      if (test::in_ci())
+        ADD_FAILURE() << "twm not found (Debian: apt install twm); CI must run this";
+      else
+        [] { GTEST_SKIP() << "twm not found (Debian: apt install twm)"; }();
+      return false;
+    }
+    const std::string rc = (folder / "twmrc").string();
+    std::ofstream(rc) << "RandomPlacement\nNoGrabServer\n"  // Xvfb's own font: no xfonts-base
+                      << "TitleFont \"fixed\"\nResizeFont \"fixed\"\nMenuFont \"fixed\"\n"
+                      << "IconFont \"fixed\"\nIconManagerFont \"fixed\"\n";
+    std::vector<std::string> args{"twm", "-display", display_, "-f", rc};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+    const int spawned = posix_spawnp(&window_manager_, "twm", &fa, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    if (spawned != 0) {
+      ADD_FAILURE() << "twm did not start";
+      return false;
+    }
+    std::this_thread::sleep_for(500ms);  // managing the root window before rtvk's appears
+    return true;
+  }
 
   // The environment of an rtvk that shows its window in this server, validation on.
   std::vector<std::string> env() const {
@@ -135,16 +172,33 @@ class XvfbTest : public testing::Test {
     std::this_thread::sleep_for(200ms);
   }
 
-  static bool find_xvfb() {
+  static bool on_path(const std::string& program) {
     const char* path = std::getenv("PATH");
     std::stringstream dirs(path ? path : "");
     for (std::string dir; std::getline(dirs, dir, ':');)
-      if (!dir.empty() && access((dir + "/Xvfb").c_str(), X_OK) == 0) return true;
+      if (!dir.empty() && access((dir + "/" + program).c_str(), X_OK) == 0) return true;
     return false;
   }
 
-  std::string display_;  // ":N"
-  pid_t xvfb_ = -1;      // the server
+  // The samples per pixel the window's title shows ("rtvk view: NAME - N spp"), or -1.
+  int title_samples(const std::string& id) const {
+    const std::string title = run_tool_in({"xdotool", "getwindowname", id});
+    const std::size_t dash = title.rfind(" - ");
+    return dash == std::string::npos ? -1 : std::atoi(title.c_str() + dash + 3);
+  }
+  // Waits up to 60 s for the title to show more than `samples`; what it shows then.
+  int samples_beyond(const std::string& id, int samples) const {
+    int now = title_samples(id);
+    for (int i = 0; i < 600 && now <= samples; ++i) {
+      std::this_thread::sleep_for(100ms);
+      now = title_samples(id);
+    }
+    return now;
+  }
+
+  std::string display_;        // ":N"
+  pid_t xvfb_ = -1;            // the server
+  pid_t window_manager_ = -1;  // twm, when a test asked for one
 };
 
 // The words of the one line rtvk view prints on stdout, without the leading "rtvk".
@@ -370,6 +424,33 @@ TEST_F(XvfbTest, AResizedWindowRestartsAtItsNewSize) {
   render.insert(render.end(), {"--backend", "gpu", "-q", "-o", again});
   ASSERT_EQ(test::run_rtvk(render).status, 0);
   EXPECT_EQ(test::slurp(dir.path() / "rtvk-view-1.png"), test::slurp(again));
+}
+
+// Minimized (iconified by the window manager) the session renders nothing -- the samples in the
+// title stop -- and restored it goes on from where it was.
+TEST_F(XvfbTest, MinimizedItRendersNothingAndRestoredItGoesOn) {
+  if (!xdotool_ready()) return;
+  const test::temp_dir dir;
+  if (!start_window_manager(dir.path())) return;
+  test::running_rtvk view({"view", "--scene", "book-final", "--width", "200"}, env());
+  const std::string id = shown_window();
+  ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
+  ASSERT_GT(samples_beyond(id, 1), 1) << "not accumulating: " << view.stderr_so_far();
+  xdo({"windowminimize", id});
+  bool hidden = false;
+  for (int i = 0; i < 100 && !hidden; ++i, std::this_thread::sleep_for(100ms))
+    hidden = run_tool_in({"xdotool", "search", "--onlyvisible", "--name", "rtvk view"}).empty();
+  ASSERT_TRUE(hidden) << "twm did not minimize the window";
+  std::this_thread::sleep_for(500ms);  // a batch under way when it was minimized ends
+  const int minimized = title_samples(id);
+  std::this_thread::sleep_for(2s);  // about 60 samples per pixel at this size when rendering
+  EXPECT_EQ(title_samples(id), minimized) << "rendered while minimized";
+  xdo({"windowmap", id});
+  EXPECT_GT(samples_beyond(id, minimized), minimized) << "did not go on once restored";
+  xdo({"key", "--window", id, "Escape"});
+  const test::process_result r = view.wait_at_most(60s);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
 }
 
 TEST(View, WithoutADisplayItExits2AndPointsToRender) {
