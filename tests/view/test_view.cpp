@@ -453,6 +453,21 @@ TEST_F(XvfbTest, MinimizedItRendersNothingAndRestoredItGoesOn) {
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
 }
 
+// A fence timeout far shorter than the work stands in for a hung device, as for rtvk render.
+TEST_F(XvfbTest, AHungDeviceExits1WithTheGpuTimeoutMessageAndNoScreenshot) {
+  const test::temp_dir dir;
+  const std::string shot = (dir.path() / "never.png").string();
+  const test::process_result r =
+      test::run_rtvk_within(60s,
+                            {"view", "--scene", "book-final", "--width", "600", "--spp", "20",
+                             "--gpu-timeout", "0.001", "--screenshot", shot},
+                            env());
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("vkWaitForFences: VK_TIMEOUT (device "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no answer after 0.001 s"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(shot));
+}
+
 TEST(View, WithoutADisplayItExits2AndPointsToRender) {
   for (const char* display : {"DISPLAY=", "DISPLAY=:9999"}) {
     const test::process_result r =
