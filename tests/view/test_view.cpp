@@ -453,6 +453,24 @@ TEST_F(XvfbTest, MinimizedItRendersNothingAndRestoredItGoesOn) {
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
 }
 
+// Under a test layer that says no queue can present (tests/view/layers), the device is refused
+// by name before anything is rendered.
+TEST_F(XvfbTest, ADeviceThatCannotPresentExits1NamingIt) {
+  const test::temp_dir dir;
+  const std::string shot = (dir.path() / "never.png").string();
+  std::vector<std::string> with_layer = env();
+  with_layer.insert(with_layer.end(), {"VK_ADD_LAYER_PATH=" RTVK_TEST_LAYER_DIR,
+                                       "VK_INSTANCE_LAYERS=VK_LAYER_RTVK_test_no_present"});
+  const test::process_result r = test::run_rtvk_within(
+      60s, {"view", "--scene", "seed", "--spp", "1", "--screenshot", shot}, with_layer);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("the Vulkan device llvmpipe"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("cannot present to the window from its compute queue"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+  EXPECT_FALSE(std::filesystem::exists(shot));
+}
+
 // A fence timeout far shorter than the work stands in for a hung device, as for rtvk render.
 TEST_F(XvfbTest, AHungDeviceExits1WithTheGpuTimeoutMessageAndNoScreenshot) {
   const test::temp_dir dir;
