@@ -14,6 +14,7 @@
 #include "elapsed.h"
 #include "errors.h"
 #include "gpu_engine.h"
+#include "gpu_flags.h"
 #include "interrupt.h"
 #include "pipeline_cache.h"
 #include "render_cpu.h"
@@ -31,7 +32,7 @@ struct bench_options {
   std::string backend = "all";       // cpu, gpu or all
   int threads = 0;                   // CPU threads; 0: one per core
   std::string accel = "bvh";         // bvh or none
-  std::string device;                // GPU selector
+  gpu_flags gpu;                     // --device, --validate, --gpu-timeout
   int repeat = 1;                    // timed runs per backend, after one warm-up
   std::string json;                  // write the records here too
   scene_flags flags;                 // --width, --spp, --depth, ...
@@ -136,8 +137,7 @@ void bench_cpu(const bench_options& o, bench_record b, const camera& cam, const 
 // and --backend gpu fails.
 void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const scene& s,
                const engine_options& engine, std::vector<bench_record>& records) {
-  gpu::gpu_options g;
-  g.device = o.device;
+  const gpu::gpu_options g = o.gpu.options();
   std::unique_ptr<gpu::gpu_context> ctx;
   try {
     ctx = std::make_unique<gpu::gpu_context>(g);
@@ -232,7 +232,7 @@ command_action add_bench_command(CLI::App& app) {
   cmd->add_option("--accel", o->accel, "bvh or none")
       ->check(CLI::IsMember({"bvh", "none"}))
       ->capture_default_str();
-  cmd->add_option("--device", o->device, "Vulkan device: an index or part of its name");
+  o->gpu.add_to(*cmd);
   cmd->add_option("--repeat", o->repeat, "Timed runs per backend")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();

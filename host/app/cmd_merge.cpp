@@ -5,10 +5,10 @@
 
 #include "commands.h"
 #include "image_io.h"
-#include "render_memory.h"
 #include "merge.h"
 #include "partial_image.h"
 #include "quantize.h"
+#include "render_memory.h"
 
 namespace rtvk {
 namespace {

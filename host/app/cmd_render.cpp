@@ -15,6 +15,7 @@
 #include "errors.h"
 #include "format.h"
 #include "gpu_engine.h"
+#include "gpu_flags.h"
 #include "image_compare.h"
 #include "image_io.h"
 #include "interrupt.h"
@@ -42,12 +43,10 @@ struct render_options {
   std::string backend = "cpu";    // cpu, gpu, auto or both
   job_request jobs;               // cameras, frames, region, samples and the -o pattern
   std::string ppm_format = "P3";  // P3 (ASCII, as the lesson) or P6 (binary)
-  std::string device;             // GPU selector: index or name substring
-  bool validate = false;          // Vulkan validation layer on
   bool quiet = false;             // no summary line, no progress bar
   std::string accel = "bvh";      // bvh or none
   int threads = 0;                // CPU threads; 0: one per core
-  double gpu_timeout = 120;       // seconds one GPU submission may take
+  gpu_flags gpu;                  // --device, --validate, --gpu-timeout
   scene_flags flags;              // --width, --spp, --lookfrom, ...
 };
 
@@ -57,16 +56,6 @@ engine_options engine_from(const render_options& o) {
   e.threads = o.threads;
   e.cancelled = interrupt_requested();
   return e;
-}
-
-gpu::gpu_options gpu_options_from(const render_options& o) {
-  gpu::gpu_options g;
-  g.device = o.device;
-  const char* env = std::getenv("RTVK_VALIDATE");
-  g.validate = o.validate || (env && std::string(env) == "1");
-  g.fence_timeout =
-      std::chrono::milliseconds(std::max<long long>(1, std::llround(o.gpu_timeout * 1000)));
-  return g;
 }
 
 // Everything a run shares between its images.
@@ -239,7 +228,7 @@ int render_all(const run_context& run, const std::vector<render_job>& jobs) {
   if (o.backend != "cpu") {
     std::unique_ptr<gpu::gpu_context> ctx;
     try {
-      ctx = std::make_unique<gpu::gpu_context>(gpu_options_from(o));
+      ctx = std::make_unique<gpu::gpu_context>(o.gpu.options());
     } catch (const gpu::no_device_error& e) {
       if (o.backend != "auto") throw;
       std::fprintf(stderr, "rtvk: note: no Vulkan device (%s); rendering on the CPU\n", e.what());
@@ -258,8 +247,8 @@ int render_all(const run_context& run, const std::vector<render_job>& jobs) {
 
 int run_render(render_options o) {
   const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
-  if (!o.device.empty() && o.backend == "cpu")
-    throw usage_error("--device " + o.device + ": needs --backend gpu, auto or both");
+  if (!o.gpu.device.empty() && o.backend == "cpu")
+    throw usage_error("--device " + o.gpu.device + ": needs --backend gpu, auto or both");
   const output_pattern output(o.jobs.output, "--output");  // refused before the scene loads
   scene s = load_scene(o.scene);
   check_scene(s);
@@ -311,17 +300,10 @@ void add_engine_options(CLI::App& cmd, render_options& o) {
   cmd.add_option("--ppm-format", o.ppm_format, "PPM flavour: P3 (ASCII) or P6 (binary)")
       ->transform(CLI::IsMember({"P3", "P6"}, CLI::ignore_case))
       ->capture_default_str();
-  cmd.add_option("--device", o.device,
-                 "Vulkan device: an index or part of its name (see rtvk devices)");
-  cmd.add_flag("--validate", o.validate,
-               "Enable VK_LAYER_KHRONOS_validation (also RTVK_VALIDATE=1)");
+  o.gpu.add_to(cmd);
   cmd.add_flag("-q,--quiet", o.quiet, "No summary line and no progress bar");
   cmd.add_option("--accel", o.accel, "bvh, or none to test every sphere (same image, slower)")
       ->check(CLI::IsMember({"bvh", "none"}))
-      ->capture_default_str();
-  cmd.add_option("--gpu-timeout", o.gpu_timeout,
-                 "Seconds one GPU submission may take before the device counts as hung")
-      ->check(CLI::Range(0.001, 86400.0))
       ->capture_default_str();
   cmd.add_option("--threads", o.threads, "CPU threads (0: one per core)")
       ->check(CLI::Range(0, 1024))

@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "errors.h"
+#include "gpu_flags.h"
 #include "image_io.h"
 #include "interrupt.h"
 #include "output_pattern.h"
@@ -21,10 +22,8 @@ namespace {
 struct view_options {
   std::string scene = "seed";  // built-in scene name or .json file
   std::string camera;          // the scene's camera to start from; default: the first
-  std::string device;          // Vulkan device: index or name substring
-  bool validate = false;       // Vulkan validation layer on
   std::string accel = "bvh";   // bvh or none
-  double gpu_timeout = 120;    // seconds one GPU submission may take
+  gpu_flags gpu;               // --device, --validate, --gpu-timeout
   std::string screenshot;      // write the image at --spp samples here, then exit
   scene_flags flags;           // --width, --spp, --lookfrom, ...
 };
@@ -73,11 +72,7 @@ int run_view(view_options o) {
   overrides.make_camera(s, pose, "the view");  // refuses impossible poses and sizes up front
 
   view::viewer_options v;
-  v.gpu.device = o.device;
-  const char* env = std::getenv("RTVK_VALIDATE");
-  v.gpu.validate = o.validate || (env && std::string(env) == "1");
-  v.gpu.fence_timeout =
-      std::chrono::milliseconds(std::max<long long>(1, std::llround(o.gpu_timeout * 1000)));
+  v.gpu = o.gpu.options();
   v.render.engine.use_bvh = o.accel == "bvh";
   // A screenshot is the image rtvk render makes with the same flags: the scene's size.
   v.size_follows_window = !overrides.width && !overrides.aspect && o.screenshot.empty();
@@ -125,14 +120,9 @@ command_action add_view_command(CLI::App& app) {
   cmd->add_option("--scene", o->scene, "Built-in scene (also spheres:N) or a .json scene file")
       ->capture_default_str();
   cmd->add_option("--camera", o->camera, "Camera of the scene to start from; default: the first");
-  cmd->add_option("--device", o->device, "Vulkan device: an index or part of its name");
-  cmd->add_flag("--validate", o->validate, "Enable the Vulkan validation layer");
+  o->gpu.add_to(*cmd);
   cmd->add_option("--accel", o->accel, "bvh, or none to test every sphere (same image, slower)")
       ->check(CLI::IsMember({"bvh", "none"}))
-      ->capture_default_str();
-  cmd->add_option("--gpu-timeout", o->gpu_timeout,
-                  "Seconds one GPU submission may take before the device counts as hung")
-      ->check(CLI::Range(0.001, 86400.0))
       ->capture_default_str();
   cmd->add_option("--screenshot", o->screenshot,
                   "Render to --spp samples in the window, write the image here (.png or .ppm, "

@@ -45,9 +45,7 @@ void check_pose(const camera_pose& p) {
   if (!(p.fisheye_fov > 0 && p.fisheye_fov <= 360))
     throw std::invalid_argument("fisheye field of view must be in (0, 360] degrees, got " +
                                 format_number(p.fisheye_fov));
-  const bool has_lens =
-      p.projection == projection::perspective || p.projection == projection::orthographic;
-  if (p.aperture > 0 && !has_lens)
+  if (p.aperture > 0 && !has_lens(p.projection))
     throw std::invalid_argument("the " + std::string(projection_name(p.projection)) +
                                 " projection has no lens: aperture must be 0, got " +
                                 format_number(p.aperture));

@@ -24,6 +24,12 @@ std::string_view projection_name(projection p);
 std::optional<projection> projection_from_name(std::string_view name);
 std::string projection_names();  // all of them, comma-separated, for messages and --help
 
+// Perspective and orthographic cameras have a thin lens (aperture, focus distance); the
+// panoramic models do not, so their aperture must be 0.
+constexpr bool has_lens(projection p) {
+  return p == projection::perspective || p == projection::orthographic;
+}
+
 // Where the camera stands and how its lens is set. The defaults are the lesson's pinhole camera:
 // at the origin, looking down -z, 90 degrees vertical field of view, everything in focus.
 struct camera_pose {

@@ -74,10 +74,7 @@ camera_pose zoom(const camera_pose& p, double steps) {
 
 camera_pose stop(const camera_pose& p, int steps) {
   camera_pose out = p;
-  if (p.projection == projection::equirectangular ||
-      p.projection == projection::fisheye_equidistant ||
-      p.projection == projection::fisheye_equisolid)
-    return out;  // no lens
+  if (!has_lens(p.projection)) return out;
   double a = p.aperture;
   for (int i = 0; i < steps; ++i) a = a == 0 ? 0.01 : a * aperture_step;
   for (int i = 0; i > steps; --i) a = a <= 0.01 ? 0 : a / aperture_step;
@@ -104,8 +101,7 @@ camera_pose next_projection(const camera_pose& p) {
       out.projection = projection::perspective;
       break;
   }
-  if (out.projection != projection::perspective && out.projection != projection::orthographic)
-    out.aperture = 0;
+  if (!has_lens(out.projection)) out.aperture = 0;
   return out;
 }
 

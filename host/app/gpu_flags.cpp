@@ -1,0 +1,30 @@
+#include "gpu_flags.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+
+namespace rtvk {
+
+void gpu_flags::add_to(CLI::App& cmd) {
+  cmd.add_option("--device", device,
+                 "Vulkan device: an index or part of its name (see rtvk devices)");
+  cmd.add_flag("--validate", validate, "Enable VK_LAYER_KHRONOS_validation (also RTVK_VALIDATE=1)");
+  cmd.add_option("--gpu-timeout", gpu_timeout,
+                 "Seconds one GPU submission may take before the device counts as hung")
+      ->check(CLI::Range(0.001, 86400.0))
+      ->capture_default_str();
+}
+
+gpu::gpu_options gpu_flags::options() const {
+  gpu::gpu_options g;
+  g.device = device;
+  const char* env = std::getenv("RTVK_VALIDATE");
+  g.validate = validate || (env && std::string(env) == "1");
+  g.fence_timeout =
+      std::chrono::milliseconds(std::max<long long>(1, std::llround(gpu_timeout * 1000)));
+  return g;
+}
+
+}  // namespace rtvk

@@ -1,0 +1,21 @@
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "context.h"
+
+namespace rtvk {
+
+// The flags of every command that runs on a Vulkan device (render, bench, view), and the
+// device options they make.
+struct gpu_flags {
+  std::string device;        // Vulkan device: an index or part of its name; "" the first
+  bool validate = false;     // the Vulkan validation layer on (also RTVK_VALIDATE=1)
+  double gpu_timeout = 120;  // seconds one GPU submission may take before it counts as hung
+
+  // --device, --validate and --gpu-timeout.
+  void add_to(CLI::App& cmd);
+  gpu::gpu_options options() const;
+};
+
+}  // namespace rtvk
