@@ -149,7 +149,8 @@ void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const 
   b.backend = "gpu";
   const auto& d = ctx->device();
   b.device = d.name + ", driver " + d.driver_name + " " + gpu::driver_version_string(d) +
-             (d.driver_info.empty() ? "" : " (" + d.driver_info + ")");
+             (d.driver_info.empty() ? "" : " (" + d.driver_info + ")") +
+             (g.validate ? ", validation layer on" : "");  // slower: the record says so
   // The engine is set up once, as a run of `rtvk render` does; the timed renders reuse it.
   const auto start = std::chrono::steady_clock::now();
   gpu::gpu_engine gpu_scene(
@@ -168,6 +169,9 @@ void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const 
         gpu_scene.render_views({cam}, s.render, all, first_sample, &st);
       },
       records);
+  if (ctx->validation_messages() > 0)
+    throw std::runtime_error("the Vulkan validation layer reported " +
+                             std::to_string(ctx->validation_messages()) + " problem(s) (above)");
 }
 
 void write_json(const std::string& path, const std::vector<bench_record>& records) {

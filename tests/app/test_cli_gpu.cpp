@@ -176,5 +176,23 @@ TEST_F(CliGpu, BenchReportsSetUpTimeToFirstSampleAndDeviceTime) {
   EXPECT_EQ(gpu_records, 2);
 }
 
+// Timings under the validation layer are slower: a validated bench says so in its records.
+TEST_F(CliGpu, BenchTakesTheGpuFlagsAndSaysWhenValidationIsOn) {
+  test::temp_dir dir;
+  for (const bool validate : {false, true}) {
+    const auto json = (dir.path() / "bench.json").string();
+    std::vector<std::string> args{"bench", "--scene", "seed", "--width",       "32", "--backend",
+                                  "gpu",   "--json",  json,   "--gpu-timeout", "60"};
+    if (validate) args.push_back("--validate");
+    const auto r = run_rtvk(gpu_args(args), {"RTVK_VALIDATE="});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json records = nlohmann::json::parse(test::slurp(json));
+    ASSERT_EQ(records.size(), 1u) << records.dump();
+    const std::string device = records[0]["device"];
+    EXPECT_EQ(device.find(", validation layer on") != std::string::npos, validate) << device;
+  }
+  EXPECT_EQ(run_rtvk({"bench", "--gpu-timeout", "0"}).status, 2) << "checked as for render";
+}
+
 }  // namespace
 }  // namespace rtvk

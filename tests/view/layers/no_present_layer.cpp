@@ -1,6 +1,7 @@
 // A Vulkan layer for tests: every device it sees answers that no queue can present to any
 // surface (vkGetPhysicalDeviceSurfaceSupportKHR says VK_FALSE); everything else passes through.
-// With it, a test can show rtvk view a device that cannot present to its window.
+// With it, a test can show rtvk view a device that cannot present to its window. The chain is
+// kept in globals: a test process of rtvk makes one instance and at most one device.
 #include <vulkan/vk_layer.h>
 
 #include <cstring>
