@@ -11,6 +11,7 @@
 #include <fstream>
 #include <thread>
 
+#include "fault_layer.h"
 #include "gpu_fixture.h"
 #include "process.h"
 
@@ -111,6 +112,25 @@ class GpuInterrupt : public test::GpuTest {};
 TEST_F(GpuInterrupt, SigintStopsAGpuRenderAndReleasesTheDeviceCleanly) {
   if (!test::test_device().empty()) GTEST_SKIP() << "uses lavapipe's speed for its timing";
   expect_interrupted("gpu", SIGINT, 130, "SIGINT");
+}
+
+// A device lost part way (the test layer answers VK_ERROR_DEVICE_LOST from the third submission
+// on): exit 1 naming the call and the device, no image, no crash while the engine is torn down.
+TEST_F(GpuInterrupt, ALostDeviceIsAnErrorAndWritesNoImage) {
+  test::temp_dir dir;
+  for (const char* out_name : {"out.png", "out.exr"}) {
+    const fs::path out = dir.path() / out_name;
+    std::vector<std::string> args{"render", "--scene", "book-final", "--width",
+                                  "300",    "--spp",   "20",         "--backend",
+                                  "gpu",    "-o",      out.string()};
+    if (!test::test_device().empty()) args.insert(args.end(), {"--device", test::test_device()});
+    const auto r = test::run_rtvk(args, test::fault_environment("lose-device-at-submit:3"));
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("vkQueueSubmit: VK_ERROR_DEVICE_LOST (device " + gpu().device().name),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(out)) << out_name;
+  }
 }
 
 TEST_F(GpuInterrupt, AHungDeviceIsAnErrorNotAHang) {

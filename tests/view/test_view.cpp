@@ -25,6 +25,7 @@
 #include "bvh_world.h"
 #include "camera.h"
 #include "ci.h"
+#include "fault_layer.h"
 #include "process.h"
 #include "render_cpu.h"
 #include "scene.h"
@@ -465,8 +466,7 @@ TEST_F(XvfbTest, ADeviceThatCannotPresentExits1NamingIt) {
   const test::temp_dir dir;
   const std::string shot = (dir.path() / "never.png").string();
   std::vector<std::string> with_layer = env();
-  with_layer.insert(with_layer.end(), {"VK_ADD_LAYER_PATH=" RTVK_TEST_LAYER_DIR,
-                                       "VK_INSTANCE_LAYERS=VK_LAYER_RTVK_test_no_present"});
+  for (const std::string& e : test::fault_environment("no-present")) with_layer.push_back(e);
   const test::process_result r = test::run_rtvk_within(
       60s, {"view", "--scene", "seed", "--spp", "1", "--screenshot", shot}, with_layer);
   EXPECT_EQ(r.status, 1) << r.err;
@@ -474,6 +474,23 @@ TEST_F(XvfbTest, ADeviceThatCannotPresentExits1NamingIt) {
   EXPECT_NE(r.err.find("cannot present to the window from its compute queue"), std::string::npos)
       << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+  EXPECT_FALSE(std::filesystem::exists(shot));
+}
+
+// A device lost after the window has shown a few frames: exit 1 naming the call, the result and
+// the device, with no screenshot and no hang or crash on the way out.
+TEST_F(XvfbTest, ALostDeviceWhileViewingExits1AndWritesNoScreenshot) {
+  const test::temp_dir dir;
+  const std::string shot = (dir.path() / "never.png").string();
+  std::vector<std::string> lost = env();
+  for (const std::string& e : test::fault_environment("lose-device-after-present:5"))
+    lost.push_back(e);
+  const test::process_result r = test::run_rtvk_within(
+      60s,
+      {"view", "--scene", "book-final", "--width", "200", "--spp", "100000", "--screenshot", shot},
+      lost);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("vkQueueSubmit: VK_ERROR_DEVICE_LOST (device "), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(shot));
 }
 

@@ -1,0 +1,144 @@
+// A Vulkan layer for tests (tests/fault_layer.h loads it) that makes a device fail the way real
+// ones do, chosen by the environment variable RTVK_TEST_FAULT; everything else passes through:
+//   no-present                   no queue can present to any surface
+//                                (vkGetPhysicalDeviceSurfaceSupportKHR says VK_FALSE)
+//   lose-device-at-submit:N      the Nth vkQueueSubmit and every later one: VK_ERROR_DEVICE_LOST
+//   lose-device-after-present:N  every vkQueueSubmit after the Nth present: VK_ERROR_DEVICE_LOST
+// The chain is kept in globals: a test process of rtvk makes one instance and one device.
+#include <vulkan/vk_layer.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+namespace {
+
+PFN_vkGetInstanceProcAddr next_instance_proc = nullptr;  // the next layer's, or the loader's
+PFN_vkGetDeviceProcAddr next_device_proc = nullptr;
+PFN_vkQueueSubmit next_queue_submit = nullptr;
+PFN_vkQueuePresentKHR next_queue_present = nullptr;
+VkInstance created_instance = VK_NULL_HANDLE;
+std::atomic<long> submits{0}, presents{0};
+
+// The fault's count when RTVK_TEST_FAULT is "name:N", 0 when it is another fault or none.
+long fault_count(const char* name) {
+  const char* fault = std::getenv("RTVK_TEST_FAULT");
+  const std::size_t n = std::strlen(name);
+  if (!fault || std::strncmp(fault, name, n) != 0 || fault[n] != ':') return 0;
+  return std::strtol(fault + n + 1, nullptr, 10);
+}
+bool fault_is(const char* name) {
+  const char* fault = std::getenv("RTVK_TEST_FAULT");
+  return fault && std::strcmp(fault, name) == 0;
+}
+
+template <typename Info, typename Link>
+Link* find_link(const Info* info, VkStructureType type) {
+  auto* p = static_cast<Link*>(const_cast<void*>(info->pNext));
+  while (p && !(p->sType == type && p->function == VK_LAYER_LINK_INFO))
+    p = static_cast<Link*>(const_cast<void*>(p->pNext));
+  return p;
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL create_instance(const VkInstanceCreateInfo* info,
+                                               const VkAllocationCallbacks* allocator,
+                                               VkInstance* instance) {
+  auto* link = find_link<VkInstanceCreateInfo, VkLayerInstanceCreateInfo>(
+      info, VK_STRUCTURE_TYPE_LOADER_INSTANCE_CREATE_INFO);
+  if (!link) return VK_ERROR_INITIALIZATION_FAILED;
+  next_instance_proc = link->u.pLayerInfo->pfnNextGetInstanceProcAddr;
+  link->u.pLayerInfo = link->u.pLayerInfo->pNext;  // the next layer finds its own link
+  auto create = reinterpret_cast<PFN_vkCreateInstance>(
+      next_instance_proc(VK_NULL_HANDLE, "vkCreateInstance"));
+  const VkResult r = create(info, allocator, instance);
+  if (r == VK_SUCCESS) created_instance = *instance;
+  return r;
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical,
+                                             const VkDeviceCreateInfo* info,
+                                             const VkAllocationCallbacks* allocator,
+                                             VkDevice* device) {
+  auto* link = find_link<VkDeviceCreateInfo, VkLayerDeviceCreateInfo>(
+      info, VK_STRUCTURE_TYPE_LOADER_DEVICE_CREATE_INFO);
+  if (!link) return VK_ERROR_INITIALIZATION_FAILED;
+  const PFN_vkGetInstanceProcAddr next = link->u.pLayerInfo->pfnNextGetInstanceProcAddr;
+  next_device_proc = link->u.pLayerInfo->pfnNextGetDeviceProcAddr;
+  link->u.pLayerInfo = link->u.pLayerInfo->pNext;
+  auto create = reinterpret_cast<PFN_vkCreateDevice>(next(created_instance, "vkCreateDevice"));
+  const VkResult r = create(physical, info, allocator, device);
+  if (r != VK_SUCCESS) return r;
+  next_queue_submit =
+      reinterpret_cast<PFN_vkQueueSubmit>(next_device_proc(*device, "vkQueueSubmit"));
+  next_queue_present =  // null without VK_KHR_swapchain
+      reinterpret_cast<PFN_vkQueuePresentKHR>(next_device_proc(*device, "vkQueuePresentKHR"));
+  return r;
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL surface_support(VkPhysicalDevice physical, uint32_t family,
+                                               VkSurfaceKHR surface, VkBool32* supported) {
+  if (fault_is("no-present")) {
+    *supported = VK_FALSE;
+    return VK_SUCCESS;
+  }
+  auto next = reinterpret_cast<PFN_vkGetPhysicalDeviceSurfaceSupportKHR>(
+      next_instance_proc(created_instance, "vkGetPhysicalDeviceSurfaceSupportKHR"));
+  return next(physical, family, surface, supported);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL queue_submit(VkQueue queue, uint32_t count,
+                                            const VkSubmitInfo* submits_info, VkFence fence) {
+  const long at = fault_count("lose-device-at-submit");
+  const long after = fault_count("lose-device-after-present");
+  if ((at > 0 && ++submits >= at) || (after > 0 && presents >= after)) return VK_ERROR_DEVICE_LOST;
+  return next_queue_submit(queue, count, submits_info, fence);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL queue_present(VkQueue queue, const VkPresentInfoKHR* info) {
+  ++presents;
+  return next_queue_present(queue, info);
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL get_device_proc(VkDevice device, const char* name);
+
+// The functions this layer changes, by name; null for the others.
+PFN_vkVoidFunction own_function(const char* name) {
+  const auto is = [name](const char* n) { return std::strcmp(name, n) == 0; };
+  if (is("vkGetDeviceProcAddr")) return reinterpret_cast<PFN_vkVoidFunction>(get_device_proc);
+  if (is("vkCreateDevice")) return reinterpret_cast<PFN_vkVoidFunction>(create_device);
+  if (is("vkQueueSubmit")) return reinterpret_cast<PFN_vkVoidFunction>(queue_submit);
+  if (is("vkQueuePresentKHR")) return reinterpret_cast<PFN_vkVoidFunction>(queue_present);
+  return nullptr;
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL get_instance_proc(VkInstance instance, const char* name) {
+  const auto is = [name](const char* n) { return std::strcmp(name, n) == 0; };
+  if (is("vkGetInstanceProcAddr")) return reinterpret_cast<PFN_vkVoidFunction>(get_instance_proc);
+  if (is("vkCreateInstance")) return reinterpret_cast<PFN_vkVoidFunction>(create_instance);
+  if (is("vkGetPhysicalDeviceSurfaceSupportKHR"))
+    return reinterpret_cast<PFN_vkVoidFunction>(surface_support);
+  if (PFN_vkVoidFunction own = own_function(name)) return own;
+  return next_instance_proc ? next_instance_proc(instance, name) : nullptr;
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL get_device_proc(VkDevice device, const char* name) {
+  if (PFN_vkVoidFunction own = own_function(name)) {
+    // A device without the swapchain extension has no present to pass on to.
+    if (std::strcmp(name, "vkQueuePresentKHR") == 0 && !next_queue_present) return nullptr;
+    return own;
+  }
+  return next_device_proc ? next_device_proc(device, name) : nullptr;
+}
+
+}  // namespace
+
+extern "C" VK_LAYER_EXPORT VKAPI_ATTR VkResult VKAPI_CALL
+vkNegotiateLoaderLayerInterfaceVersion(VkNegotiateLayerInterface* v) {
+  if (v->loaderLayerInterfaceVersion < 2) return VK_ERROR_INITIALIZATION_FAILED;
+  v->loaderLayerInterfaceVersion = 2;
+  v->pfnGetInstanceProcAddr = get_instance_proc;
+  v->pfnGetDeviceProcAddr = get_device_proc;
+  v->pfnGetPhysicalDeviceProcAddr = nullptr;
+  return VK_SUCCESS;
+}
