@@ -11,7 +11,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libglm-dev libcli11-dev libstb-dev nlohmann-json3-dev libtbb-dev libglfw3-dev
+  libglm-dev libcli11-dev libstb-dev nlohmann-json3-dev libtbb-dev libglfw3-dev libx11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libvulkan-dev libvulkan-volk-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev
   mesa-vulkan-drivers vulkan-validationlayers

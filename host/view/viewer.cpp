@@ -168,10 +168,12 @@ class session {
   }
   viewer_result state() const;
   void apply(const window_input& in);
+  void apply_key(int key);
   void focus_at(double x, double y);
   void restart() { restart_ = true; }
   bool fit_to_window(int fb_w, int fb_h);
   void render_batch();
+  void refresh_overlay();
   void show(int fb_w, int fb_h);
   std::vector<std::string> overlay_lines() const;
 
@@ -192,17 +194,18 @@ class session {
   accumulation acc_;
   image_rgb8 rgb_;
   std::vector<std::uint32_t> rgba_;
-  batch_shape batch_;            // the next batch
-  int pass_count_ = 0;           // samples per pixel of the pass under way
-  int next_row_ = 0;             // where the pass's next band starts
-  std::size_t named_ = 0;        // the named camera C last picked
-  bool restart_ = true;          // accumulation starts again (size or camera changed)
-  bool paused_ = false;          // Space
-  bool overlay_ = true;          // H hides it
-  int title_samples_ = -1;       // samples the title shows
-  int overlay_rows_ = 0;         // rows the overlay was last drawn over
-  int frames_ = 0;               // shown so far
-  long long pixel_samples_ = 0;  // traced so far
+  batch_shape batch_;             // the next batch
+  int pass_count_ = 0;            // samples per pixel of the pass under way
+  int next_row_ = 0;              // where the pass's next band starts
+  std::size_t named_ = 0;         // the named camera C last picked
+  bool restart_ = true;           // accumulation starts again (size or camera changed)
+  bool paused_ = false;           // Space
+  bool overlay_ = true;           // H hides it
+  bool overlay_changed_ = false;  // shown or hidden, or what it says changed, since last drawn
+  int title_samples_ = -1;        // samples the title shows
+  int overlay_rows_ = 0;          // rows the overlay was last drawn over
+  int frames_ = 0;                // shown so far
+  long long pixel_samples_ = 0;   // traced so far
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   double samples_per_second_ = 0;  // of the last batch: pixel samples
   double rays_per_second_ = 0;     // of the last batch
@@ -242,6 +245,38 @@ viewer_result session::state() const {
   return r;
 }
 
+// The keys that move the camera: each is one pure function of the pose (camera_controls.h).
+camera_pose moved_by_key(const camera_pose& p, int key) {
+  switch (key) {
+    case GLFW_KEY_W:
+      return fly(p, 1, 0, 0);
+    case GLFW_KEY_S:
+      return fly(p, -1, 0, 0);
+    case GLFW_KEY_D:
+      return fly(p, 0, 1, 0);
+    case GLFW_KEY_A:
+      return fly(p, 0, -1, 0);
+    case GLFW_KEY_E:
+      return fly(p, 0, 0, 1);
+    case GLFW_KEY_Q:
+      return fly(p, 0, 0, -1);
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD:
+      return zoom(p, 1);
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT:
+      return zoom(p, -1);
+    case GLFW_KEY_RIGHT_BRACKET:
+      return stop(p, 1);
+    case GLFW_KEY_LEFT_BRACKET:
+      return stop(p, -1);
+    case GLFW_KEY_P:
+      return next_projection(p);
+    default:
+      return p;
+  }
+}
+
 // The controls of docs/viewer.md: every move goes through the camera pose and restarts the
 // accumulation.
 void session::apply(const window_input& in) {
@@ -255,69 +290,45 @@ void session::apply(const window_input& in) {
   }
   if (in.scroll != 0) pose_ = dolly(pose_, in.scroll);
   for (const int key : in.keys) {
-    switch (key) {
-      case GLFW_KEY_W:
-        pose_ = fly(pose_, 1, 0, 0);
-        break;
-      case GLFW_KEY_S:
-        pose_ = fly(pose_, -1, 0, 0);
-        break;
-      case GLFW_KEY_D:
-        pose_ = fly(pose_, 0, 1, 0);
-        break;
-      case GLFW_KEY_A:
-        pose_ = fly(pose_, 0, -1, 0);
-        break;
-      case GLFW_KEY_E:
-        pose_ = fly(pose_, 0, 0, 1);
-        break;
-      case GLFW_KEY_Q:
-        pose_ = fly(pose_, 0, 0, -1);
-        break;
-      case GLFW_KEY_EQUAL:
-      case GLFW_KEY_KP_ADD:
-        pose_ = zoom(pose_, 1);
-        break;
-      case GLFW_KEY_MINUS:
-      case GLFW_KEY_KP_SUBTRACT:
-        pose_ = zoom(pose_, -1);
-        break;
-      case GLFW_KEY_RIGHT_BRACKET:
-        pose_ = stop(pose_, 1);
-        break;
-      case GLFW_KEY_LEFT_BRACKET:
-        pose_ = stop(pose_, -1);
-        break;
-      case GLFW_KEY_P:
-        pose_ = next_projection(pose_);
-        break;
-      case GLFW_KEY_C:
-        if (!s_.cameras.empty()) {
-          named_ = (named_ + 1) % s_.cameras.size();
-          pose_ = s_.cameras[named_].path.at(0);
-        }
-        break;
-      case GLFW_KEY_SPACE:
-        paused_ = !paused_;
-        break;
-      case GLFW_KEY_R:
-        restart();
-        break;
-      case GLFW_KEY_ESCAPE:
-        win_.request_close();
-        break;
-      case GLFW_KEY_K:
-        if (actions_.print) actions_.print(state());
-        break;
-      case GLFW_KEY_O:
-        if (actions_.screenshot && acc_.samples > 0) actions_.screenshot(state());
-        break;
-      default:
-        break;
-    }
+    pose_ = moved_by_key(pose_, key);
+    apply_key(key);
   }
   if (in.focus_click) focus_at(in.click_x, in.click_y);
   if (!(pose_ == before)) restart();
+}
+
+// The keys that do something other than move the camera.
+void session::apply_key(int key) {
+  switch (key) {
+    case GLFW_KEY_C:
+      if (!s_.cameras.empty()) {
+        named_ = (named_ + 1) % s_.cameras.size();
+        pose_ = s_.cameras[named_].path.at(0);
+      }
+      break;
+    case GLFW_KEY_SPACE:
+      paused_ = !paused_;
+      overlay_changed_ = true;  // it says "paused"
+      break;
+    case GLFW_KEY_R:
+      restart();
+      break;
+    case GLFW_KEY_H:
+      overlay_ = !overlay_;
+      overlay_changed_ = true;
+      break;
+    case GLFW_KEY_ESCAPE:
+      win_.request_close();
+      break;
+    case GLFW_KEY_K:
+      if (actions_.print) actions_.print(state());
+      break;
+    case GLFW_KEY_O:
+      if (actions_.screenshot && acc_.samples > 0) actions_.screenshot(state());
+      break;
+    default:
+      break;
+  }
 }
 
 // F + click: the distance in focus becomes that of the surface under the cursor, along the
@@ -375,11 +386,17 @@ void session::render_batch() {
   samples_per_second_ = traced / seconds;
   rays_per_second_ = double(rays) / seconds;
   batch_.adapt(seconds, acc_.height);
-  // The band, and the rows the last overlay covered (drawn again over fresh pixels).
   encode(acc_, thresholds_, row, row + rows, rgb_, rgba_);
+  refresh_overlay();
+}
+
+// The rows the last overlay covered are encoded again from the sums, and the overlay drawn over
+// them (or not, when H hid it); then the image goes to the presenter.
+void session::refresh_overlay() {
   encode(acc_, thresholds_, 0, std::min(overlay_rows_, acc_.height), rgb_, rgba_);
   overlay_rows_ = overlay_ ? draw_overlay(rgba_, acc_.width, acc_.height, overlay_lines()) : 0;
   shown_->write(rgba_.data());
+  overlay_changed_ = false;
 }
 
 void session::show(int fb_w, int fb_h) {
@@ -429,7 +446,10 @@ viewer_result session::run() {
       restart_ = false;
     }
     const bool want_more = options_.target_spp == 0 || acc_.samples < options_.target_spp;
-    if (want_more && !paused_) render_batch();
+    if (want_more && !paused_)
+      render_batch();
+    else if (overlay_changed_ && acc_.samples > 0)  // idle: nothing else would draw it
+      refresh_overlay();
     if (acc_.samples != title_samples_) {  // how far it is, shown or not (the tests read it)
       title_samples_ = acc_.samples;
       win_.set_title("rtvk view: " + s_.name + " - " + std::to_string(acc_.samples) + " spp");

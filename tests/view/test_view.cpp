@@ -26,10 +26,12 @@
 #include "camera.h"
 #include "ci.h"
 #include "fault_layer.h"
+#include "image_io.h"
 #include "process.h"
 #include "render_cpu.h"
 #include "scene.h"
 #include "temp_dir.h"
+#include "x_window_pixels.h"
 
 namespace rtvk {
 namespace {
@@ -374,6 +376,51 @@ TEST_F(XvfbTest, ADragOrbitsByTheControlsAngleAndTheShotRendersFromThePrintedCam
             0);
   EXPECT_EQ(test::slurp(from_file), test::slurp(again))
       << "the printed camera object frames another shot";
+}
+
+// Bytes of `a` and `b` that differ in rows [first, last) (both 8-bit RGB of one size).
+long differing_bytes(const image_rgb8& a, const image_rgb8& b, int first, int last) {
+  long n = 0;
+  for (std::size_t i = std::size_t(first) * std::size_t(a.width) * 3;
+       i < std::size_t(last) * std::size_t(a.width) * 3; ++i)
+    n += a.rgb[i] != b.rgb[i];
+  return n;
+}
+
+// What the window shows, read back from the X server: with the overlay, its text over the top
+// rows; after H, exactly the screenshot's pixels (the swapchain is UNORM and a 200-pixel render
+// fills its 200-pixel window 1:1).
+TEST_F(XvfbTest, HHidesTheOverlayAndTheWindowThenShowsTheScreenshotsPixels) {
+  if (!xdotool_ready()) return;
+  const test::temp_dir dir;
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());
+  test::running_rtvk view({"view", "--scene", "book-final", "--width", "200", "--spp", "4"}, env());
+  std::filesystem::current_path(before);
+  const std::string id = shown_window();
+  ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
+  ASSERT_EQ(samples_beyond(id, 3), 4) << view.stderr_so_far();
+  std::this_thread::sleep_for(500ms);  // the last batch presented
+  const image_rgb8 with_overlay = test::window_pixels(display_, id);
+  xdo({"key", "--window", id, "o"});
+  xdo({"key", "--window", id, "h"});
+  std::this_thread::sleep_for(300ms);
+  const image_rgb8 without = test::window_pixels(display_, id);
+  xdo({"key", "--window", id, "Escape"});
+  const test::process_result r = view.wait_at_most(60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+
+  const image_rgb8 shot = read_image(dir.path() / "rtvk-view-1.png");
+  ASSERT_EQ(shot.width, 200);
+  ASSERT_EQ(shot.height, 133);
+  ASSERT_EQ(without.width, 200) << "the window is the render's size";
+  ASSERT_EQ(without.height, 133);
+  ASSERT_EQ(with_overlay.width, 200);
+  ASSERT_EQ(with_overlay.height, 133);
+  EXPECT_EQ(differing_bytes(without, shot, 0, 133), 0) << "with H the window shows the image";
+  EXPECT_GT(differing_bytes(with_overlay, shot, 0, 20), 500) << "the overlay's first lines";
+  EXPECT_EQ(differing_bytes(with_overlay, shot, 120, 133), 0) << "below the overlay: the image";
 }
 
 // F + click: the distance in focus becomes that of the surface under the cursor along the view
