@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "commands.h"
@@ -88,7 +89,9 @@ int run_view(view_options o) {
   };
   int shots = 0;
   actions.screenshot = [&](const view::viewer_result& r) {
-    const std::string name = "rtvk-view-" + std::to_string(++shots) + ".png";
+    std::string name;  // the next number whose file is not there: earlier sessions' shots stay
+    do name = "rtvk-view-" + std::to_string(++shots) + ".png";
+    while (std::filesystem::exists(name));
     write_image(r.image, name);
     std::fprintf(stderr, "rtvk: %dx%d, %d spp -> %s\n", r.width, r.height, r.samples, name.c_str());
   };

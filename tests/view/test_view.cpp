@@ -389,10 +389,12 @@ long differing_bytes(const image_rgb8& a, const image_rgb8& b, int first, int la
 
 // What the window shows, read back from the X server: with the overlay, its text over the top
 // rows; after H, exactly the screenshot's pixels (the swapchain is UNORM and a 200-pixel render
-// fills its 200-pixel window 1:1).
+// fills its 200-pixel window 1:1). The O key never overwrites an earlier shot: it takes the next
+// free number.
 TEST_F(XvfbTest, HHidesTheOverlayAndTheWindowThenShowsTheScreenshotsPixels) {
   if (!xdotool_ready()) return;
   const test::temp_dir dir;
+  std::ofstream(dir.path() / "rtvk-view-1.png") << "an earlier session's shot";
   const std::filesystem::path before = std::filesystem::current_path();
   std::filesystem::current_path(dir.path());
   test::running_rtvk view({"view", "--scene", "book-final", "--width", "200", "--spp", "4"}, env());
@@ -411,7 +413,8 @@ TEST_F(XvfbTest, HHidesTheOverlayAndTheWindowThenShowsTheScreenshotsPixels) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
 
-  const image_rgb8 shot = read_image(dir.path() / "rtvk-view-1.png");
+  EXPECT_EQ(test::slurp(dir.path() / "rtvk-view-1.png"), "an earlier session's shot");
+  const image_rgb8 shot = read_image(dir.path() / "rtvk-view-2.png");  // the next free number
   ASSERT_EQ(shot.width, 200);
   ASSERT_EQ(shot.height, 133);
   ASSERT_EQ(without.width, 200) << "the window is the render's size";
