@@ -50,6 +50,13 @@ TEST(CameraControls, PanMovesEyeAndTargetTogetherByTheViewsScale) {
   const double distance = glm::length(p.lookfrom - p.lookat);
   EXPECT_NEAR(glm::length(shift), 100.0 / 400 * 2 * distance * std::tan(10 * degrees), 1e-12);
   EXPECT_NEAR(glm::dot(shift, glm::normalize(p.lookfrom - p.lookat)), 0, 1e-12);
+  // The scene follows the cursor: a drag to the right moves the camera to its left (the look-at
+  // point is then right of the centre by the drag), a drag up moves it down.
+  const vec3 w = glm::normalize(p.lookfrom - p.lookat);
+  const vec3 right = glm::normalize(glm::cross(p.vup, w)), up = glm::cross(w, right);
+  EXPECT_NEAR(glm::dot(shift, right), -glm::length(shift), 1e-12);
+  const vec3 shift_up = view::pan(p, 0, 100, 400).lookat - p.lookat;
+  EXPECT_NEAR(glm::dot(shift_up, up), -glm::length(shift), 1e-12);
 }
 
 TEST(CameraControls, DollyFlyZoomStopAndProjectionSteps) {
