@@ -169,9 +169,7 @@ void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const 
         gpu_scene.render_views({cam}, s.render, all, first_sample, &st);
       },
       records);
-  if (ctx->validation_messages() > 0)
-    throw std::runtime_error("the Vulkan validation layer reported " +
-                             std::to_string(ctx->validation_messages()) + " problem(s) (above)");
+  ctx->check_validation();
 }
 
 void write_json(const std::string& path, const std::vector<bench_record>& records) {

@@ -146,10 +146,7 @@ gpu_group draw_gpu(const run_context& run, gpu::gpu_context& ctx, gpu::gpu_engin
   else
     out.means = engine.render_views(views, run.s.render, run.win, progress);
   bar.finish();
-  if (ctx.validation_messages() > 0)
-    throw std::runtime_error("the Vulkan validation layer reported " +
-                             std::to_string(ctx.validation_messages()) +
-                             " problem(s) (above); no image written");
+  ctx.check_validation("; no image written");
   return out;
 }
 

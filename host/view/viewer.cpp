@@ -459,9 +459,7 @@ viewer_result session::run() {
     if (!want_more || paused_) win_.wait();  // idle until something happens
   }
   ctx_.wait_all();
-  if (ctx_.validation_messages() > 0)
-    throw std::runtime_error("the Vulkan validation layer reported " +
-                             std::to_string(ctx_.validation_messages()) + " problem(s) (above)");
+  ctx_.check_validation();
   return state();
 }
 

@@ -194,5 +194,26 @@ TEST_F(CliGpu, BenchTakesTheGpuFlagsAndSaysWhenValidationIsOn) {
   EXPECT_EQ(run_rtvk({"bench", "--gpu-timeout", "0"}).status, 2) << "checked as for render";
 }
 
+// A validated run that the layer found problems in fails, writing nothing: the layer's
+// best-practices checks (VK_LAYER_ENABLES) report rtvk's small allocations as warnings, which
+// stand in for real findings here.
+TEST_F(CliGpu, ValidationFindingsFailRenderAndBench) {
+  test::temp_dir dir;
+  const auto out = (dir.path() / "out.png").string();
+  const std::vector<std::string> picky{
+      "VK_LAYER_ENABLES=VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT"};
+  const auto r = run_rtvk(
+      gpu_args({"render", "--scene", "seed", "--backend", "gpu", "--validate", "-o", out}), picky);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("the Vulkan validation layer reported "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("problem(s) (above); no image written"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  const auto b = run_rtvk(
+      gpu_args({"bench", "--scene", "seed", "--width", "32", "--backend", "gpu", "--validate"}),
+      picky);
+  EXPECT_EQ(b.status, 1) << b.err;
+  EXPECT_NE(b.err.find("the Vulkan validation layer reported "), std::string::npos) << b.err;
+}
+
 }  // namespace
 }  // namespace rtvk

@@ -186,6 +186,13 @@ void gpu_context::wait(std::uint64_t ticket) {
   completed_ = std::max(completed_, ticket);
 }
 
+void gpu_context::check_validation(const std::string& consequence) const {
+  if (validation_messages() > 0)
+    throw std::runtime_error("the Vulkan validation layer reported " +
+                             std::to_string(validation_messages()) + " problem(s) (above)" +
+                             consequence);
+}
+
 void gpu_context::wait_all() noexcept {
   if (lost_ || submitted_ == completed_) return;
   try {

@@ -59,6 +59,9 @@ class gpu_context {
   VkSurfaceKHR surface() const { return surface_.get(); }
   std::uint32_t validation_messages() const { return instance_.validation_messages(); }
   bool validating() const { return instance_.validating(); }
+  // Throws when the validation layer has reported anything (printed above): a validated run
+  // with problems must not pass. `consequence` ends the message ("; no image written").
+  void check_validation(const std::string& consequence = "") const;
 
   // A memory type allowed by type_bits with all `required` flags, preferring one that also has
   // `preferred`. Throws when there is none.
