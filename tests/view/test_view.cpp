@@ -68,17 +68,7 @@ class XvfbTest : public testing::Test {
                                   // an X server resets when its last client leaves, refusing
                                   // connections meanwhile: xdotool's come and go
                                   "-noreset"};
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addclose(&fa, fds[0]);  // before the dup2: it may be fd 3 itself
-    posix_spawn_file_actions_adddup2(&fa, fds[1], 3);
-    const int rc = posix_spawnp(&xvfb_, "Xvfb", &fa, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&fa);
+    const int rc = spawn_quietly(args, xvfb_, fds[1], fds[0]);
     close(fds[1]);
     std::string number;
     if (rc == 0) {
@@ -88,6 +78,25 @@ class XvfbTest : public testing::Test {
     }
     close(fds[0]);
     if (!number.empty()) display_ = ":" + number;
+  }
+
+  // Starts args[0] from PATH with stdout and stderr to /dev/null; `fd3`, unless -1, becomes its
+  // fd 3, after `unused` is closed there. 0, or posix_spawnp's error.
+  static int spawn_quietly(std::vector<std::string> args, pid_t& pid, int fd3 = -1,
+                           int unused = -1) {
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+    if (unused >= 0)  // before the dup2: it may be fd 3 itself
+      posix_spawn_file_actions_addclose(&fa, unused);
+    if (fd3 >= 0) posix_spawn_file_actions_adddup2(&fa, fd3, 3);
+    const int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    return rc;
   }
 
   void stop_xvfb() {
@@ -127,17 +136,7 @@ class XvfbTest : public testing::Test {
     std::ofstream(rc) << "RandomPlacement\nNoGrabServer\n"  // Xvfb's own font: no xfonts-base
                       << "TitleFont \"fixed\"\nResizeFont \"fixed\"\nMenuFont \"fixed\"\n"
                       << "IconFont \"fixed\"\nIconManagerFont \"fixed\"\n";
-    std::vector<std::string> args{"twm", "-display", display_, "-f", rc};
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-    const int spawned = posix_spawnp(&window_manager_, "twm", &fa, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&fa);
-    if (spawned != 0) {
+    if (spawn_quietly({"twm", "-display", display_, "-f", rc}, window_manager_) != 0) {
       ADD_FAILURE() << "twm did not start";
       return false;
     }
