@@ -13,8 +13,11 @@ set(may_use_image "image;scene;base")
 set(may_use_gpu/vulkan "gpu/vulkan;base")
 set(may_use_gpu/render "gpu/render;gpu/vulkan;accel;scene;base;shared")
 set(may_use_view "view;cpu;gpu/render;gpu/vulkan;accel;scene;base;shared")
-set(may_use_app "app;view;cpu;image;gpu/render;gpu/vulkan;accel;scene;base;shared")
-set(layers base scene accel cpu image gpu/vulkan gpu/render view app)
+set(may_use_app/jobs "app/jobs;cpu;image;gpu/render;gpu/vulkan;accel;scene;base;shared")
+set(may_use_app/commands
+    "app/commands;app/jobs;view;cpu;image;gpu/render;gpu/vulkan;accel;scene;base;shared")
+set(may_use_app "app;app/commands;app/jobs;image;base")
+set(layers base scene accel cpu image gpu/vulkan gpu/render view app/jobs app/commands app)
 
 # A new folder of sources must be given its place in the map above.
 file(GLOB_RECURSE all_sources RELATIVE ${ROOT}/host ${ROOT}/host/*.h ${ROOT}/host/*.cpp)
