@@ -1,7 +1,7 @@
 #pragma once
 // The environment that loads the test layer of tests/view/layers into rtvk with one fault: the
-// device cannot present ("no-present") or is lost ("lose-device-at-submit:N",
-// "lose-device-after-present:N").
+// device cannot present ("no-present"), is lost ("lose-device-at-submit:N",
+// "lose-device-after-present:N"), or says it is an NVIDIA GPU ("disguise-device").
 #include <string>
 #include <vector>
 

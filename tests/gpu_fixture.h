@@ -7,26 +7,41 @@
 
 #include "ci.h"
 #include "context.h"
+#include "software_device.h"
 
 namespace rtvk::test {
 
-inline constexpr const char* lavapipe_icd = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
-
-// RTVK_TEST_DEVICE: a --device selector for a real device; empty means lavapipe.
+// RTVK_TEST_DEVICE: a --device selector for a real device; empty means the software device
+// (lavapipe) the suite finds by its driver ID (software_device.h).
 inline std::string test_device() {
   const char* d = std::getenv("RTVK_TEST_DEVICE");
   return d ? d : "";
 }
 
+// The --device selector of the device under test: RTVK_TEST_DEVICE, else the software device's
+// index ("" when the suite found none). test_main.cpp also hands it to every rtvk the tests run,
+// as RTVK_DEVICE.
+inline std::string device_under_test() {
+  if (!test_device().empty()) return test_device();
+  const device_pick& pick = software_device();
+  return pick.found ? std::to_string(pick.index) : "";
+}
+
 // Every GPU test: one validated context per test process. A test fails if the validation layer
-// reports any warning or error while it runs. Without a device the test fails in CI and skips
-// elsewhere, saying why.
+// reports any warning or error while it runs. Without the device the test fails in CI and skips
+// elsewhere, saying what it looked for and what the loader offered.
 class GpuTest : public ::testing::Test {
  protected:
   void SetUp() override {
+    if (test_device().empty() && !software_device().found) {
+      if (in_ci())
+        FAIL() << "no software Vulkan device in CI (GPU tests must run): "
+               << software_device().failure;
+      GTEST_SKIP() << "no software Vulkan device, GPU test not run: " << software_device().failure;
+    }
     try {
       gpu::gpu_options o;
-      o.device = test_device();
+      o.device = device_under_test();
       o.validate = true;
       ctx_ = std::make_unique<gpu::gpu_context>(o);
     } catch (const std::exception& e) {

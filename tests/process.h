@@ -33,28 +33,32 @@ inline std::string slurp(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// The current environment with `overrides` ("NAME=value") replacing or adding variables.
+// The current environment with `overrides` ("NAME=value") replacing or adding variables; an
+// override of a bare "NAME" removes that variable.
 inline std::vector<std::string> environment_with(const std::vector<std::string>& overrides) {
   std::vector<std::string> env;
   for (char** e = environ; *e; ++e) {
     const std::string entry(*e);
     bool replaced = false;
-    for (const auto& o : overrides)
-      replaced |= entry.compare(0, o.find('=') + 1, o, 0, o.find('=') + 1) == 0;
+    for (const auto& o : overrides) {
+      const std::string name = o.substr(0, o.find('=')) + '=';
+      replaced |= entry.compare(0, name.size(), name) == 0;
+    }
     if (!replaced) env.push_back(entry);
   }
-  env.insert(env.end(), overrides.begin(), overrides.end());
+  for (const auto& o : overrides)
+    if (o.find('=') != std::string::npos) env.push_back(o);
   return env;
 }
 
-// The rtvk executable started with args (stdin from /dev/null, stdout to a file, stderr to a
-// file or to `stderr_path` when given, e.g. a pseudo-terminal), not yet waited for: tests can
-// signal it while it runs.
+// The rtvk executable (or `program`) started with args (stdin from /dev/null, stdout to a
+// file, stderr to a file or to `stderr_path` when given, e.g. a pseudo-terminal), not yet waited
+// for: tests can signal it while it runs.
 class running_rtvk {
  public:
   running_rtvk(const std::vector<std::string>& args,
                const std::vector<std::string>& env_overrides = {},
-               const std::string& stderr_path = "") {
+               const std::string& stderr_path = "", const std::string& program = RTVK_EXE) {
     out_ = (io_.path() / "out").string();
     err_ = stderr_path.empty() ? (io_.path() / "err").string() : stderr_path;
     posix_spawn_file_actions_t fa;
@@ -65,7 +69,7 @@ class running_rtvk {
       posix_spawn_file_actions_addopen(&fa, 2, err_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     else
       posix_spawn_file_actions_addopen(&fa, 2, err_.c_str(), O_RDWR | O_NOCTTY, 0);
-    std::vector<std::string> storage{RTVK_EXE};
+    std::vector<std::string> storage{program};
     storage.insert(storage.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (auto& s : storage) argv.push_back(s.data());
@@ -74,7 +78,7 @@ class running_rtvk {
     std::vector<char*> envp;
     for (auto& e : env) envp.push_back(e.data());
     envp.push_back(nullptr);
-    const int rc = posix_spawn(&pid_, RTVK_EXE, &fa, nullptr, argv.data(), envp.data());
+    const int rc = posix_spawn(&pid_, program.c_str(), &fa, nullptr, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&fa);
     if (rc != 0) throw std::runtime_error("posix_spawn failed");
     captured_stderr_ = stderr_path.empty();

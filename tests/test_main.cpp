@@ -1,25 +1,48 @@
-// The GPU tests run on Mesa's lavapipe unless RTVK_TEST_DEVICE names another device: the
-// harness selects the driver itself, so a machine's real GPU does not change what CI checks.
+// The GPU tests run on the software rasterizer the suite finds by its driver ID (lavapipe,
+// whatever its manifest is called and wherever it is installed) unless RTVK_TEST_DEVICE names
+// another device; every rtvk the tests run gets the same device through RTVK_DEVICE, so a
+// machine's real GPU does not change what CI checks.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 
 #include "gpu_fixture.h"
+#include "software_device.h"
+
+namespace {
+
+// `rtvk_tests --pick-software-device`: the suite's device pick alone, for the test that runs it
+// against a loader set up otherwise (tests/gpu/test_device_pick.cpp). Prints the index and the
+// device on stdout and exits 0, or the failure on stderr and exits 1.
+int print_pick() {
+  const rtvk::test::device_pick pick = rtvk::test::find_software_device();
+  if (!pick.found) {
+    std::fprintf(stderr, "%s\n", pick.failure.c_str());
+    return 1;
+  }
+  std::printf("%u\n%s\n", pick.index, pick.description.c_str());
+  return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 2 && std::string(argv[1]) == "--pick-software-device") return print_pick();
   // rtvk keeps compiled pipelines in the user's cache folder: the tests, and the rtvk they run,
   // use a folder of their own, removed at the end.
   const std::filesystem::path cache =
       std::filesystem::temp_directory_path() / ("rtvk-test-cache-" + std::to_string(getpid()));
   setenv("XDG_CACHE_HOME", cache.c_str(), 1);
-  if (rtvk::test::test_device().empty()) {
-    setenv("VK_DRIVER_FILES", rtvk::test::lavapipe_icd, 1);
-    setenv("VK_ICD_FILENAMES", rtvk::test::lavapipe_icd, 1);  // loaders older than 1.3.207
-  }
+  const std::string device = rtvk::test::device_under_test();
+  if (device.empty())
+    unsetenv("RTVK_DEVICE");  // GPU tests fail (CI) or skip, saying why
+  else
+    setenv("RTVK_DEVICE", device.c_str(), 1);
   testing::InitGoogleTest(&argc, argv);
   const int status = RUN_ALL_TESTS();
   std::error_code ec;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "fault_layer.h"
 #include "gpu_fixture.h"
 #include "image_io.h"
 #include "process.h"
@@ -90,6 +91,78 @@ TEST_F(CliGpu, DevicesListsAndMarksThePick) {
     EXPECT_NE(r.out.find("[cpu]"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("Vulkan 1."), std::string::npos) << r.out;
   }
+}
+
+// What the device under test offers, read by the test itself from the extension list.
+bool lists_extension(VkPhysicalDevice dev, const char* name) {
+  std::uint32_t n = 0;
+  vkEnumerateDeviceExtensionProperties(dev, nullptr, &n, nullptr);
+  std::vector<VkExtensionProperties> exts(n);
+  vkEnumerateDeviceExtensionProperties(dev, nullptr, &n, exts.data());
+  for (const auto& e : exts)
+    if (std::string(e.extensionName) == name) return true;
+  return false;
+}
+
+TEST_F(CliGpu, DevicesShowTheDriverItsVersionAndWhatItOffersOfRayTracing) {
+  const auto text = run_rtvk({"devices"});
+  ASSERT_EQ(text.status, 0) << text.err;
+  const auto json = run_rtvk({"devices", "--json"});
+  ASSERT_EQ(json.status, 0) << json.err;
+  const nlohmann::json devices = nlohmann::json::parse(json.out);
+  const auto& d = gpu().device();
+  ASSERT_LT(d.index, devices.size()) << json.out;
+  const auto& mine = devices[d.index];
+  EXPECT_EQ(mine["name"], d.name) << json.out;
+  EXPECT_TRUE(mine["chosen"].get<bool>()) << "RTVK_DEVICE picks it: " << json.out;
+  const bool queries = lists_extension(d.handle, VK_KHR_RAY_QUERY_EXTENSION_NAME);
+  const bool pipelines = lists_extension(d.handle, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
+  EXPECT_EQ(mine["ray_queries"].get<bool>(), queries) << json.out;
+  EXPECT_EQ(mine["ray_tracing_pipelines"].get<bool>(), pipelines) << json.out;
+  EXPECT_NE(text.out.find(std::string("ray queries: ") + (queries ? "yes" : "no") +
+                          ", ray-tracing pipelines: " + (pipelines ? "yes" : "no")),
+            std::string::npos)
+      << text.out;
+  if (test::test_device().empty()) {               // lavapipe: its ID, its names, Mesa's version
+    EXPECT_EQ(mine["driver_id"], 13) << json.out;  // VK_DRIVER_ID_MESA_LLVMPIPE
+    EXPECT_EQ(mine["driver"], "lavapipe") << json.out;
+    EXPECT_EQ(mine["driver_name"], "llvmpipe") << json.out;
+    EXPECT_EQ(mine["driver_info"].get<std::string>().rfind("Mesa ", 0), 0u) << json.out;
+    EXPECT_NE(text.out.find("driver lavapipe (llvmpipe), Mesa "), std::string::npos) << text.out;
+  }
+}
+
+// --device takes the driver's names and version as well as the device's name, and RTVK_DEVICE
+// stands in for it.
+TEST_F(CliGpu, DeviceByDriverNameOrVersionOrFromRtvkDevice) {
+  if (!test::test_device().empty()) GTEST_SKIP() << "names lavapipe's driver";
+  test::temp_dir dir;
+  const auto out = (dir.path() / "x.png").string();
+  // "lavapipe" is in no name the driver reports: only its driver ID says it.
+  for (const char* sel : {"lavapipe", "LLVMPIPE", "mesa"}) {
+    const auto r = run_rtvk({"render", "--backend", "gpu", "--device", sel, "-o", out});
+    EXPECT_EQ(r.status, 0) << sel << ": " << r.err;
+    EXPECT_NE(r.err.find("on gpu (llvmpipe"), std::string::npos) << r.err;
+  }
+  fs::remove(out);
+  const auto env = run_rtvk({"render", "--backend", "gpu", "-o", out}, {"RTVK_DEVICE=no-such-gpu"});
+  EXPECT_EQ(env.status, 2) << env.err;
+  EXPECT_NE(env.err.find("RTVK_DEVICE: 'no-such-gpu' matches no Vulkan device"), std::string::npos)
+      << env.err;
+  EXPECT_NE(env.err.find("(driver lavapipe (llvmpipe), Mesa "), std::string::npos) << env.err;
+  EXPECT_FALSE(fs::exists(out));
+  const auto flag_wins = run_rtvk({"render", "--backend", "gpu", "--device", "lavapipe", "-o", out},
+                                  {"RTVK_DEVICE=no-such-gpu"});
+  EXPECT_EQ(flag_wins.status, 0) << flag_wins.err;
+  EXPECT_EQ(run_rtvk({"devices"}, {"RTVK_DEVICE=no-such-gpu"}).status, 2);
+
+  // A loader that offers an NVIDIA GPU instead (the test layer's disguise of lavapipe).
+  const auto disguise = test::fault_environment("disguise-device");
+  const auto nvidia = run_rtvk({"devices", "--device", "nvidia"}, disguise);
+  EXPECT_EQ(nvidia.status, 0) << nvidia.err;
+  EXPECT_NE(nvidia.out.find("* 0: rtvk disguised GPU [discrete]"), std::string::npos) << nvidia.out;
+  EXPECT_NE(nvidia.out.find("driver NVIDIA, 555.42.02"), std::string::npos) << nvidia.out;
+  EXPECT_EQ(run_rtvk({"devices", "--device", "lavapipe"}, disguise).status, 2);
 }
 
 TEST_F(CliGpu, DeviceSelectorsThatMatchNothingAreUsageErrors) {

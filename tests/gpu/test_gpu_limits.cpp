@@ -17,7 +17,7 @@ class GpuLimits : public test::GpuTest {
   // message, or "" when it rendered.
   std::string render_with(const scene& s, const gpu::device_limit_caps& caps) {
     gpu::gpu_options o;
-    o.device = test::test_device();
+    o.device = test::device_under_test();
     o.validate = true;
     o.caps = caps;
     gpu::gpu_context ctx(o);

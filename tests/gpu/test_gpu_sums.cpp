@@ -152,7 +152,7 @@ TEST_F(GpuSums, TheDevicesEncodingIsTheHostsAtEveryThreshold) {
 
 TEST_F(GpuSums, EncodingSpreadsOverRowsOfWorkgroupsWhenOneRowWouldPassTheLimit) {
   gpu::gpu_options o;
-  o.device = test::test_device();
+  o.device = test::device_under_test();
   o.validate = true;
   o.caps.workgroup_count = 3;  // 1000 sums are 16 workgroups of 64: six rows of three
   gpu::gpu_context ctx(o);

@@ -148,8 +148,7 @@ void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const 
   if (!ctx) return;
   b.backend = "gpu";
   const auto& d = ctx->device();
-  b.device = d.name + ", driver " + d.driver_name + " " + gpu::driver_version_string(d) +
-             (d.driver_info.empty() ? "" : " (" + d.driver_info + ")") +
+  b.device = d.name + ", driver " + gpu::driver_string(d) +
              (g.validate ? ", validation layer on" : "");  // slower: the record says so
   // The engine is set up once, as a run of `rtvk render` does; the timed renders reuse it.
   const auto start = std::chrono::steady_clock::now();

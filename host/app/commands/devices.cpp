@@ -1,8 +1,10 @@
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "commands.h"
+#include "gpu_flags.h"
 #include "instance.h"
 #include "physical_device.h"
 #include "vk_error.h"
@@ -13,15 +15,46 @@ namespace {
 struct devices_options {
   std::string device;     // mark this selection instead of the default pick
   bool validate = false;  // load the validation layer while listing
+  bool json = false;      // one JSON array instead of text, for scripts
 };
+
+// What scripts pick a device by: what the driver reports, never a file name.
+nlohmann::ordered_json to_json(const gpu::device_info& d, bool chosen) {
+  return {{"index", d.index},
+          {"name", d.name},
+          {"type", gpu::type_name(d.type)},
+          {"vendor_id", d.vendor_id},
+          {"driver_id", int(d.driver_id)},
+          {"driver", gpu::driver_common_name(d.driver_id)},
+          {"driver_name", d.driver_name},
+          {"driver_info", d.driver_info},
+          {"driver_version", gpu::driver_version_string(d)},
+          {"vulkan", gpu::version_string(d.api_version)},
+          {"subgroup_size", d.subgroup_size},
+          {"ray_queries", d.ray_queries},
+          {"ray_tracing_pipelines", d.ray_tracing_pipelines},
+          {"acceleration_structures", d.acceleration_structures},
+          {"usable", d.unusable_reason.empty()},
+          {"unusable_reason", d.unusable_reason},
+          {"chosen", chosen}};
+}
 
 int run_devices(const devices_options& o) {
   const gpu::vulkan_instance instance(o.validate);
   const auto devices = gpu::list_devices(instance.get());
   if (devices.empty()) throw gpu::no_device_error("no Vulkan device found");
-  const std::size_t chosen = gpu::select_device(devices, o.device);
+  std::string source;
+  const std::string selector = device_selector(o.device, source);
+  const std::size_t chosen = gpu::select_device(devices, selector, source);
+  if (o.json) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const auto& d : devices) out.push_back(to_json(d, d.index == chosen));
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
+  }
   std::fputs(gpu::describe_devices(devices, chosen).c_str(), stdout);
-  std::printf("(* = the device rtvk renders on%s)\n", o.device.empty() ? " by default" : "");
+  std::printf("(* = the device rtvk renders on%s)\n",
+              selector.empty() ? " by default" : (" with " + source + " " + selector).c_str());
   return 0;
 }
 
@@ -29,9 +62,14 @@ int run_devices(const devices_options& o) {
 
 command_action add_devices_command(CLI::App& app) {
   auto opts = std::make_shared<devices_options>();
-  CLI::App* cmd = app.add_subcommand("devices", "List Vulkan devices and mark the one rtvk picks");
-  cmd->add_option("--device", opts->device, "Mark this device: an index or part of its name");
+  CLI::App* cmd = app.add_subcommand(
+      "devices", "List Vulkan devices, their drivers and ray tracing, and mark the one rtvk picks");
+  cmd->add_option("--device", opts->device, std::string("Mark this device. ") + device_flag_help);
   cmd->add_flag("--validate", opts->validate, "Enable VK_LAYER_KHRONOS_validation");
+  cmd->add_flag("--json", opts->json,
+                "Print a JSON array, one object a device (index, name, type, driver_id, driver, "
+                "driver_name, driver_info, vulkan, ray_queries, ray_tracing_pipelines, chosen, "
+                "...)");
   return [opts] { return run_devices(*opts); };
 }
 

@@ -5,7 +5,9 @@
 namespace rtvk::gpu {
 
 std::uint32_t default_loop_budget(const device_info& d) {
-  const bool llvmpipe = d.driver_name == "llvmpipe" || d.name.rfind("llvmpipe", 0) == 0;
+  // By driver ID; a device too old to report one is known by its name.
+  const bool llvmpipe = d.driver_id == VK_DRIVER_ID_MESA_LLVMPIPE ||
+                        (d.driver_id == VkDriverId(0) && d.name.rfind("llvmpipe", 0) == 0);
   return llvmpipe ? 60'000u : 0xffffffffu;
 }
 

@@ -30,7 +30,7 @@ void apply_caps(const device_limit_caps& caps, device_info& d,
 gpu_context::gpu_context(const gpu_options& options)
     : options_(options), instance_(options.validate, options.instance_extensions) {
   devices_ = list_devices(instance_.get());
-  chosen_ = select_device(devices_, options.device);
+  chosen_ = select_device(devices_, options.device, options.device_source);
   const device_info& d = devices_[chosen_];
   if (options.make_surface) {
     surface_ = unique_surface(instance_.get(), options.make_surface(instance_.get()));

@@ -22,8 +22,9 @@ struct device_limit_caps {
 };
 
 struct gpu_options {
-  std::string device;     // --device: index, name substring, or empty for the default pick
-  bool validate = false;  // enable VK_LAYER_KHRONOS_validation
+  std::string device;  // --device: index, name substring, or empty for the default pick
+  std::string device_source = "--device";            // where `device` came from, for error messages
+  bool validate = false;                             // enable VK_LAYER_KHRONOS_validation
   std::chrono::milliseconds fence_timeout{120'000};  // longest wait for one submission
   device_limit_caps caps;                            // tests only
   // Presenting to a window (rtvk view): the instance extensions its window system needs, and

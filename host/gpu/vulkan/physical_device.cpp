@@ -9,18 +9,48 @@
 #include "vk_error.h"
 
 namespace rtvk::gpu {
-bool has_device_extension(VkPhysicalDevice dev, const char* name) {
+namespace {
+
+std::vector<VkExtensionProperties> device_extensions(VkPhysicalDevice dev) {
   std::uint32_t n = 0;
   vk_check(vkEnumerateDeviceExtensionProperties(dev, nullptr, &n, nullptr),
            "vkEnumerateDeviceExtensionProperties");
   std::vector<VkExtensionProperties> exts(n);
   vk_check(vkEnumerateDeviceExtensionProperties(dev, nullptr, &n, exts.data()),
            "vkEnumerateDeviceExtensionProperties");
+  exts.resize(n);
+  return exts;
+}
+
+bool has(const std::vector<VkExtensionProperties>& exts, const char* name) {
   return std::any_of(exts.begin(), exts.end(),
                      [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
-namespace {
+// What the device offers of hardware ray tracing: the extension must be listed and its feature
+// reported, since a driver may list an extension whose feature is off.
+void describe_ray_tracing(VkPhysicalDevice dev, device_info& d) {
+  if (d.api_version < VK_API_VERSION_1_1) return;
+  const auto exts = device_extensions(dev);
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR as{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  VkPhysicalDeviceRayQueryFeaturesKHR rq{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  if (!has(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME)) return;
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features.pNext = &as;
+  void** next = &as.pNext;  // only structures of listed extensions go on the chain
+  if (has(exts, VK_KHR_RAY_QUERY_EXTENSION_NAME)) {
+    *next = &rq;
+    next = &rq.pNext;
+  }
+  if (has(exts, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME)) *next = &rt;
+  vkGetPhysicalDeviceFeatures2(dev, &features);
+  d.acceleration_structures = as.accelerationStructure == VK_TRUE;
+  d.ray_queries = d.acceleration_structures && rq.rayQuery == VK_TRUE;
+  d.ray_tracing_pipelines = d.acceleration_structures && rt.rayTracingPipeline == VK_TRUE;
+}
 
 device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
   VkPhysicalDeviceProperties props{};
@@ -52,9 +82,11 @@ device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
     VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     props2.pNext = &driver;
     vkGetPhysicalDeviceProperties2(dev, &props2);
+    d.driver_id = driver.driverID;
     d.driver_name = driver.driverName;
     d.driver_info = driver.driverInfo;
   }
+  describe_ray_tracing(dev, d);
 
   std::uint32_t n = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(dev, &n, nullptr);
@@ -94,7 +126,24 @@ std::string lower(std::string s) {
   return s;
 }
 
+bool contains(const std::string& text, const std::string& part) {
+  return !text.empty() && lower(text).find(lower(part)) != std::string::npos;
+}
+
+bool matches(const device_info& d, const std::string& selector) {
+  return contains(d.name, selector) || contains(d.driver_name, selector) ||
+         contains(driver_common_name(d.driver_id), selector) || contains(d.driver_info, selector);
+}
+
+std::string yes_no(bool b) {
+  return b ? "yes" : "no";
+}
+
 }  // namespace
+
+bool has_device_extension(VkPhysicalDevice dev, const char* name) {
+  return has(device_extensions(dev), name);
+}
 
 std::vector<device_info> list_devices(VkInstance instance) {
   std::uint32_t n = 0;
@@ -134,6 +183,55 @@ std::string driver_version_string(const device_info& d) {
   return version_string(v);
 }
 
+std::string driver_common_name(VkDriverId id) {
+  switch (id) {
+    case VK_DRIVER_ID_MESA_LLVMPIPE:
+      return "lavapipe";
+    case VK_DRIVER_ID_MESA_RADV:
+      return "radv";
+    case VK_DRIVER_ID_INTEL_OPEN_SOURCE_MESA:
+      return "anv";
+    case VK_DRIVER_ID_NVIDIA_PROPRIETARY:
+      return "nvidia";
+    case VK_DRIVER_ID_AMD_PROPRIETARY:
+      return "amd proprietary";
+    case VK_DRIVER_ID_AMD_OPEN_SOURCE:
+      return "amdvlk";
+    case VK_DRIVER_ID_INTEL_PROPRIETARY_WINDOWS:
+      return "intel";
+    case VK_DRIVER_ID_GOOGLE_SWIFTSHADER:
+      return "swiftshader";
+    case VK_DRIVER_ID_MOLTENVK:
+      return "moltenvk";
+    case VK_DRIVER_ID_MESA_TURNIP:
+      return "turnip";
+    case VK_DRIVER_ID_MESA_V3DV:
+      return "v3dv";
+    case VK_DRIVER_ID_MESA_PANVK:
+      return "panvk";
+    case VK_DRIVER_ID_MESA_VENUS:
+      return "venus";
+    case VK_DRIVER_ID_MESA_DOZEN:
+      return "dozen";
+    case VK_DRIVER_ID_MESA_NVK:
+      return "nvk";
+    default:
+      return "";
+  }
+}
+
+std::string driver_string(const device_info& d) {
+  const std::string common = driver_common_name(d.driver_id);
+  std::string name;
+  if (d.driver_name.empty())
+    name = common.empty() ? "?" : common;
+  else if (common.empty() || lower(common) == lower(d.driver_name))
+    name = d.driver_name;  // "NVIDIA", as the driver spells it
+  else
+    name = common + " (" + d.driver_name + ")";
+  return name + ", " + (d.driver_info.empty() ? driver_version_string(d) : d.driver_info);
+}
+
 std::size_t default_device(const std::vector<device_info>& devices) {
   std::size_t best = devices.size();
   for (std::size_t i = 0; i < devices.size(); ++i) {
@@ -147,8 +245,9 @@ std::size_t default_device(const std::vector<device_info>& devices) {
   return best;
 }
 
-std::size_t select_device(const std::vector<device_info>& devices, const std::string& selector) {
-  if (selector.empty()) return default_device(devices);
+std::size_t select_device(const std::vector<device_info>& devices, const std::string& selector,
+                          const std::string& source) {
+  if (selector.empty() || devices.empty()) return default_device(devices);
   std::size_t found = devices.size();
   unsigned index = 0;
   const auto [end, ec] = std::from_chars(selector.data(), selector.data() + selector.size(), index);
@@ -156,17 +255,18 @@ std::size_t select_device(const std::vector<device_info>& devices, const std::st
     if (index < devices.size()) found = index;
   } else {
     for (std::size_t i = 0; i < devices.size() && found == devices.size(); ++i)
-      if (lower(devices[i].name).find(lower(selector)) != std::string::npos) found = i;
+      if (matches(devices[i], selector)) found = i;
   }
   std::string listing;
   for (const auto& d : devices)
-    listing += (listing.empty() ? "" : "; ") + std::to_string(d.index) + ": " + d.name;
+    listing += (listing.empty() ? "" : "; ") + std::to_string(d.index) + ": " + d.name +
+               " (driver " + driver_string(d) + ")";
   if (devices.empty()) listing = "none";
   if (found == devices.size())
-    throw usage_error("--device: '" + selector + "' matches no Vulkan device (devices: " + listing +
-                      ")");
+    throw usage_error(source + ": '" + selector +
+                      "' matches no Vulkan device (devices: " + listing + ")");
   if (!devices[found].unusable_reason.empty())
-    throw usage_error("--device: '" + selector + "' is " + devices[found].name + ", which " +
+    throw usage_error(source + ": '" + selector + "' is " + devices[found].name + ", which " +
                       devices[found].unusable_reason);
   return found;
 }
@@ -175,12 +275,13 @@ std::string describe_devices(const std::vector<device_info>& devices, std::size_
   std::string out;
   for (const auto& d : devices) {
     out += (d.index == chosen ? "* " : "  ") + std::to_string(d.index) + ": " + d.name + " [" +
-           type_name(d.type) + "] driver " +
-           (d.driver_name.empty() ? std::string("?") : d.driver_name) + " " +
-           driver_version_string(d) + (d.driver_info.empty() ? "" : " (" + d.driver_info + ")") +
-           ", Vulkan " + version_string(d.api_version) + ", subgroup " +
+           type_name(d.type) + "] Vulkan " + version_string(d.api_version) + ", subgroup " +
            std::to_string(d.subgroup_size) +
            (d.unusable_reason.empty() ? "" : " -- unusable: " + d.unusable_reason) + "\n";
+    out += "     driver " + driver_string(d) + "\n";
+    out += "     ray queries: " + yes_no(d.ray_queries) +
+           ", ray-tracing pipelines: " + yes_no(d.ray_tracing_pipelines) +
+           ", acceleration structures: " + yes_no(d.acceleration_structures) + "\n";
   }
   return out;
 }

@@ -15,8 +15,9 @@ struct device_info {
   std::string name;  // deviceName
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
   std::uint32_t vendor_id = 0;             // PCI vendor ID
-  std::string driver_name;                 // from VkPhysicalDeviceDriverProperties, or empty
-  std::string driver_info;                 // ditto
+  VkDriverId driver_id = VkDriverId(0);    // from VkPhysicalDeviceDriverProperties; 0: unknown
+  std::string driver_name;                 // ditto ("llvmpipe", "NVIDIA", "radv"), or empty
+  std::string driver_info;                 // ditto ("Mesa 25.0.7", "550.54.14"), or empty
   std::uint32_t driver_version = 0;        // vendor-encoded
   std::uint32_t api_version = 0;           // highest Vulkan version the device supports
   std::uint32_t compute_queue_family = 0;  // first family with compute, when usable
@@ -26,6 +27,9 @@ struct device_info {
   VkPhysicalDeviceLimits limits{};         // for workgroup and buffer sizes
   VkDeviceSize max_allocation_size = 0;    // largest single allocation (Vulkan 1.1's
                                            // maintenance3); 0 when the device does not say
+  bool acceleration_structures = false;    // VK_KHR_acceleration_structure, extension and feature
+  bool ray_queries = false;                // VK_KHR_ray_query, ditto
+  bool ray_tracing_pipelines = false;      // VK_KHR_ray_tracing_pipeline, ditto
 };
 
 std::vector<device_info> list_devices(VkInstance instance);
@@ -37,15 +41,27 @@ std::string type_name(VkPhysicalDeviceType type);       // "discrete", "cpu", ..
 std::string version_string(std::uint32_t api_version);  // "1.3.230"
 std::string driver_version_string(const device_info& d);
 
+// The name people know the driver by, from its driver ID ("lavapipe", "radv", "anv", "nvidia"),
+// or empty for an ID this table does not know.
+std::string driver_common_name(VkDriverId id);
+
+// The driver as `rtvk devices` shows it: "lavapipe (llvmpipe), Mesa 25.0.7 (LLVM 15.0.6)".
+std::string driver_string(const device_info& d);
+
 // The device rtvk picks without --device: discrete > integrated > virtual > cpu > other, among
 // usable devices, first listed on a tie. Throws no_device_error when none is usable.
 std::size_t default_device(const std::vector<device_info>& devices);
 
-// --device: an index ("0") or a case-insensitive substring of the name ("llvmpipe"); empty picks
-// the default. Throws usage_error, listing the devices, when nothing (usable) matches.
-std::size_t select_device(const std::vector<device_info>& devices, const std::string& selector);
+// --device: an index ("0"), or a case-insensitive substring of the device's name ("RTX 4090"),
+// of its driver's name, common name or version ("llvmpipe", "lavapipe", "radv", "Mesa 25");
+// the first device that matches. Empty picks the default. Throws no_device_error when there is
+// no device at all, and usage_error naming `source` (the flag or variable the selector came
+// from), listing the devices, when nothing matches or the match is unusable.
+std::size_t select_device(const std::vector<device_info>& devices, const std::string& selector,
+                          const std::string& source = "--device");
 
-// One line per device, the chosen one marked with '*'.
+// Three lines per device (name, type, Vulkan version; driver; ray tracing), the chosen one
+// marked with '*'.
 std::string describe_devices(const std::vector<device_info>& devices, std::size_t chosen);
 
 }  // namespace rtvk::gpu

@@ -4,6 +4,9 @@
 //                                (vkGetPhysicalDeviceSurfaceSupportKHR says VK_FALSE)
 //   lose-device-at-submit:N      the Nth vkQueueSubmit and every later one: VK_ERROR_DEVICE_LOST
 //   lose-device-after-present:N  every vkQueueSubmit after the Nth present: VK_ERROR_DEVICE_LOST
+//   disguise-device              every device says it is a discrete GPU named "rtvk disguised
+//                                GPU" whose driver is NVIDIA's (ID, name and info), so tests
+//                                see a loader that offers no software device
 // The chain is kept in globals: a test process of rtvk makes one instance and one device.
 #include <vulkan/vk_layer.h>
 
@@ -18,6 +21,10 @@ PFN_vkGetInstanceProcAddr next_instance_proc = nullptr;  // the next layer's, or
 PFN_vkGetDeviceProcAddr next_device_proc = nullptr;
 PFN_vkQueueSubmit next_queue_submit = nullptr;
 PFN_vkQueuePresentKHR next_queue_present = nullptr;
+// Looked up while the instance is made: later, the loader's answer would be the top of the chain,
+// which leads back here.
+PFN_vkGetPhysicalDeviceProperties next_properties = nullptr;
+PFN_vkGetPhysicalDeviceProperties2 next_properties2 = nullptr;
 VkInstance created_instance = VK_NULL_HANDLE;
 std::atomic<long> submits{0}, presents{0};
 
@@ -52,7 +59,12 @@ VKAPI_ATTR VkResult VKAPI_CALL create_instance(const VkInstanceCreateInfo* info,
   auto create = reinterpret_cast<PFN_vkCreateInstance>(
       next_instance_proc(VK_NULL_HANDLE, "vkCreateInstance"));
   const VkResult r = create(info, allocator, instance);
-  if (r == VK_SUCCESS) created_instance = *instance;
+  if (r != VK_SUCCESS) return r;
+  created_instance = *instance;
+  next_properties = reinterpret_cast<PFN_vkGetPhysicalDeviceProperties>(
+      next_instance_proc(*instance, "vkGetPhysicalDeviceProperties"));
+  next_properties2 = reinterpret_cast<PFN_vkGetPhysicalDeviceProperties2>(
+      next_instance_proc(*instance, "vkGetPhysicalDeviceProperties2"));
   return r;
 }
 
@@ -87,6 +99,31 @@ VKAPI_ATTR VkResult VKAPI_CALL surface_support(VkPhysicalDevice physical, uint32
   return next(physical, family, surface, supported);
 }
 
+void disguise(VkPhysicalDeviceProperties& p) {
+  p.deviceType = VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
+  std::strncpy(p.deviceName, "rtvk disguised GPU", VK_MAX_PHYSICAL_DEVICE_NAME_SIZE);
+}
+
+VKAPI_ATTR void VKAPI_CALL device_properties(VkPhysicalDevice physical,
+                                             VkPhysicalDeviceProperties* props) {
+  next_properties(physical, props);
+  if (fault_is("disguise-device")) disguise(*props);
+}
+
+VKAPI_ATTR void VKAPI_CALL device_properties2(VkPhysicalDevice physical,
+                                              VkPhysicalDeviceProperties2* props) {
+  next_properties2(physical, props);
+  if (!fault_is("disguise-device")) return;
+  disguise(props->properties);
+  for (auto* s = static_cast<VkBaseOutStructure*>(props->pNext); s; s = s->pNext) {
+    if (s->sType != VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES) continue;
+    auto* driver = reinterpret_cast<VkPhysicalDeviceDriverProperties*>(s);
+    driver->driverID = VK_DRIVER_ID_NVIDIA_PROPRIETARY;
+    std::strncpy(driver->driverName, "NVIDIA", VK_MAX_DRIVER_NAME_SIZE);
+    std::strncpy(driver->driverInfo, "555.42.02", VK_MAX_DRIVER_INFO_SIZE);
+  }
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL queue_submit(VkQueue queue, uint32_t count,
                                             const VkSubmitInfo* submits_info, VkFence fence) {
   const long at = fault_count("lose-device-at-submit");
@@ -118,6 +155,10 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL get_instance_proc(VkInstance instance, 
   if (is("vkCreateInstance")) return reinterpret_cast<PFN_vkVoidFunction>(create_instance);
   if (is("vkGetPhysicalDeviceSurfaceSupportKHR"))
     return reinterpret_cast<PFN_vkVoidFunction>(surface_support);
+  if (is("vkGetPhysicalDeviceProperties"))
+    return reinterpret_cast<PFN_vkVoidFunction>(device_properties);
+  if (is("vkGetPhysicalDeviceProperties2") || is("vkGetPhysicalDeviceProperties2KHR"))
+    return reinterpret_cast<PFN_vkVoidFunction>(device_properties2);
   if (PFN_vkVoidFunction own = own_function(name)) return own;
   return next_instance_proc ? next_instance_proc(instance, name) : nullptr;
 }
