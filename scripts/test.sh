@@ -1,15 +1,56 @@
 #!/usr/bin/env bash
 # README command 2: install what is missing, then for each preset build (warnings are errors) and
-# run its tests: fuzz (a one-minute libFuzzer run on the scene parser), ci (every test), asan
-# (every test again under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer, except
-# the Slurm job-array test, which runs once, in ci).
+# run its tests: fuzz (a one-minute libFuzzer run on the scene parser), ci (every test, on the
+# system's lavapipe), asan (every test again under AddressSanitizer + UndefinedBehaviorSanitizer +
+# LeakSanitizer, except the Slurm job-array test, which runs once, in ci), and last the ci tests
+# again (Slurm's aside) on a second lavapipe: Mesa 25 from bookworm-backports when the system
+# has bookworm's Mesa 22.3, else bookworm's 22.3, fetched by scripts/private-mesa.sh into
+# build/mesa/ and never installed. RTVK_SECOND_MESA=SUITE picks that suite instead.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/install-deps.sh" --test
 cd "$root"
+timings=()
+timed() {  # timed LABEL COMMAND...: runs it, and notes how long it took
+  local label=$1 start=$SECONDS
+  shift
+  "$@"
+  timings+=("$label: $((SECONDS - start)) s")
+}
+run_preset() {
+  cmake --preset "$1" >/dev/null
+  cmake --build --preset "$1"
+  ctest --preset "$1" -j2 "${@:2}"
+}
+# Which lavapipe the loader offers, as rtvk sees it: the log says what each pass ran on.
+show_devices() { "$root/build/ci/rtvk" devices || true; }
+
+system_mesa=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers)
+if [[ $system_mesa == 22.* ]]; then second=bookworm-backports; else second=bookworm; fi
+second=${RTVK_SECOND_MESA:-$second}
+
 for preset in fuzz ci asan; do
   echo "== preset $preset"
-  cmake --preset "$preset" >/dev/null
-  cmake --build --preset "$preset"
-  ctest --preset "$preset" -j2
+  timed "$preset" run_preset "$preset"
+  [[ $preset == ci ]] && show_devices
 done
+
+echo "== preset ci again, on the lavapipe of $second's mesa-vulkan-drivers (the system has $system_mesa)"
+start=$SECONDS
+env_file=$(bash scripts/private-mesa.sh "$root/build/mesa" "$second")
+timings+=("fetch and unpack $second's lavapipe: $((SECONDS - start)) s")
+(
+  set -a
+  # shellcheck disable=SC1090 # written by private-mesa.sh
+  source "$env_file"
+  set +a
+  listing=$(show_devices)
+  echo "$listing"
+  # The pass must run on the fetched driver, not silently on the system's.
+  want="Mesa ${RTVK_PRIVATE_MESA_VERSION%%-*}"
+  grep -qF "$want" <<<"$listing" || { echo "rtvk: expected a lavapipe of $want (above)" >&2; exit 1; }
+  timed "ci on $want" ctest --preset ci -j2 -E '^Slurm\.'
+  printf '%s\n' "${timings[@]}" >"$root/build/test-timings.txt"
+)
+echo "== timings"
+cat "$root/build/test-timings.txt"

@@ -98,10 +98,16 @@ expect "--json" rtvk bench --js
 rm "$work"/*
 
 # The installed rtvk renders from another folder, the same bytes as the build tree's rtvk: with
-# the CPU, and through lavapipe with the GPU shaders embedded in the binary.
-lavapipe=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json
+# the CPU, and through lavapipe with the GPU shaders embedded in the binary. lavapipe is found by
+# its driver ID (the "lavapipe" device selector), whatever its manifest is called and wherever
+# the loader found it; both rtvks then render on it through RTVK_DEVICE.
 backends=(cpu)
-if [[ -f $lavapipe ]]; then backends+=(gpu); else missing "no lavapipe, so no GPU render"; fi
+if "$build/rtvk" devices --device lavapipe >"$tmp/devices.txt" 2>&1; then
+  backends+=(gpu)
+  export RTVK_DEVICE=lavapipe
+else
+  missing "no lavapipe, so no GPU render: $(cat "$tmp/devices.txt")"
+fi
 # Runs rtvk render in $work with the source and build trees hidden under empty mounts where a
 # private mount namespace can be had (root, or user namespaces), else just from $work.
 # The probe mounts for real: some sandboxes allow the namespace but not the mount.
@@ -125,10 +131,9 @@ render_installed() {
     _ "$src" "$build" "$work" "$rtvk" render "$@"
 }
 for backend in "${backends[@]}"; do
-  (cd "$work" && VK_DRIVER_FILES=$lavapipe "$build/rtvk" render --scene seed --backend "$backend" -q \
-    -o "$tmp/reference.png")
+  (cd "$work" && "$build/rtvk" render --scene seed --backend "$backend" -q -o "$tmp/reference.png")
   [[ -s $tmp/reference.png ]] || fail "the build tree's rtvk wrote no image ($backend)"
-  VK_DRIVER_FILES=$lavapipe render_installed --scene seed --backend "$backend" -o seed.png \
+  render_installed --scene seed --backend "$backend" -o seed.png \
     || fail "the installed rtvk did not render with --backend $backend"
   cmp "$work/seed.png" "$tmp/reference.png" || fail "the installed rtvk's $backend image differs"
   rm "$work/seed.png" "$tmp/reference.png"
