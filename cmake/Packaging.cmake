@@ -22,7 +22,9 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # volk opens the Vulkan loader with dlopen, so dpkg-shlibdeps cannot see it; without a loader only
 # --backend cpu works. lavapipe (in mesa-vulkan-drivers) lets --backend gpu run on any CPU.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS libvulkan1)
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS mesa-vulkan-drivers)
+# The completion in /usr/share/bash-completion/completions is loaded by bash-completion's
+# framework, which a minimal system lacks.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "mesa-vulkan-drivers, bash-completion")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS vulkan-validationlayers)
 
 include(CPack)

@@ -26,6 +26,7 @@ for lib in libc6 'libstdc\+\+6' 'libopenexr.*'; do
   grep -Eqx "$lib" <<<"$(entries Depends)" || fail "Depends lacks $lib (dpkg-shlibdeps did not run?)"
 done
 grep -qx mesa-vulkan-drivers <<<"$(entries Recommends)" || fail "Recommends lacks mesa-vulkan-drivers"
+grep -qx bash-completion <<<"$(entries Recommends)" || fail "Recommends lacks bash-completion (the completion is inert without it)"
 grep -qx vulkan-validationlayers <<<"$(entries Suggests)" || fail "Suggests lacks vulkan-validationlayers"
 
 dpkg-deb -c "$deb" | awk '{ print $6 }' >"$tmp/files"

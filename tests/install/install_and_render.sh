@@ -56,6 +56,10 @@ else
   MANWIDTH=80 man -l "$man" >"$tmp/man.txt" 2>"$tmp/man.err" || fail "man -l: $(cat "$tmp/man.err")"
   grep -q -- '--gpu-timeout' "$tmp/man.txt" || fail "man -l shows no --gpu-timeout"
   grep -q '^EXIT STATUS' "$tmp/man.txt" || fail "man -l shows no EXIT STATUS"
+  # What the README says: with the prefix's bin/ on PATH, `man rtvk` finds the page (man-db
+  # looks beside each bin/ of PATH), and without it does not.
+  found=$(env -u MANPATH PATH="$prefix/bin:/usr/bin:/bin" man -w rtvk 2>&1) || true
+  [[ $found == "$man" ]] || fail "with $prefix/bin on PATH, man -w rtvk gives '$found', not $man"
 fi
 
 # The bash completion, driven as bash would: every flag it offers is in that command's --help.
