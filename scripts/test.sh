@@ -5,7 +5,8 @@
 # LeakSanitizer, except the Slurm job-array test, which runs once, in ci), and last the ci tests
 # again (Slurm's aside) on a second lavapipe: Mesa 25 from bookworm-backports when the system
 # has bookworm's Mesa 22.3, else bookworm's 22.3, fetched by scripts/private-mesa.sh into
-# build/mesa/ and never installed. RTVK_SECOND_MESA=SUITE picks that suite instead.
+# ~/.cache/rtvk-test-mesa/ (RTVK_MESA_DIR) and never installed: outside the source and build
+# trees, which the install test hides. RTVK_SECOND_MESA=SUITE picks that suite instead.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/install-deps.sh" --test
@@ -37,7 +38,8 @@ done
 
 echo "== preset ci again, on the lavapipe of $second's mesa-vulkan-drivers (the system has $system_mesa)"
 start=$SECONDS
-env_file=$(bash scripts/private-mesa.sh "$root/build/mesa" "$second")
+mesa_dir=${RTVK_MESA_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/rtvk-test-mesa}
+env_file=$(bash scripts/private-mesa.sh "$mesa_dir" "$second")
 timings+=("fetch and unpack $second's lavapipe: $((SECONDS - start)) s")
 (
   set -a
