@@ -57,7 +57,7 @@ echo "| backend | device | seconds, median (runs) | device time, median | Mrays/
 echo "|---|---|---|---|---|---|"
 for name in cpu "${suites[@]}"; do
   m=$(runs "$name" seconds | median)
-  all=$(runs "$name" seconds | xargs | sed 's/ /, /g')
+  all=$(runs "$name" seconds | awk '{ printf "%s%.3f", (NR > 1 ? ", " : ""), $1 }')
   dev=$(runs "$name" gpu_seconds | grep -v null | median || true)
   backend=$(field "$out/$name.1.json" backend)
   device=$(field "$out/$name.1.json" device)
