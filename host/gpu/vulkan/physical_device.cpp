@@ -32,12 +32,12 @@ bool has(const std::vector<VkExtensionProperties>& exts, const char* name) {
 void describe_ray_tracing(VkPhysicalDevice dev, device_info& d) {
   if (d.api_version < VK_API_VERSION_1_1) return;
   const auto exts = device_extensions(dev);
+  if (!has(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME)) return;
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
   VkPhysicalDeviceRayQueryFeaturesKHR rq{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
   VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
-  if (!has(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME)) return;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   features.pNext = &as;
   void** next = &as.pNext;  // only structures of listed extensions go on the chain
