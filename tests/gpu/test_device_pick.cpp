@@ -126,7 +126,10 @@ TEST(DevicePick, WithoutASoftwareDeviceItSaysWhatItLookedForAndWhatTheLoaderOffe
 
   // A loader that offers a device, but no software one: the test layer dresses every device up
   // as an NVIDIA GPU.
-  if (!test::software_device().found) GTEST_SKIP() << test::software_device().failure;
+  if (!test::software_device().found) {
+    if (test::in_ci()) FAIL() << "CI must offer lavapipe: " << test::software_device().failure;
+    GTEST_SKIP() << test::software_device().failure;
+  }
   const auto disguised = run_pick(test::fault_environment("disguise-device"));
   EXPECT_EQ(disguised.status, 1) << disguised.out;
   EXPECT_NE(disguised.err.find("looked for a Vulkan device whose driver ID is "
