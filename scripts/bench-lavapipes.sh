@@ -4,14 +4,19 @@
 # ROUNDS rounds, each timing the three once in turn (after rtvk bench's own warm-up), so that a
 # shared machine's slow minutes fall on all three alike. Prints a Markdown table of medians and
 # of each lavapipe's time over the CPU's.
-#   bench-lavapipes.sh [RTVK] [ROUNDS] [-- rtvk bench flags]
+#   bench-lavapipes.sh [RTVK [ROUNDS]] [-- rtvk bench flags]
 # Default: build/release/rtvk, 3 rounds, book-final 1200x675, 10 spp, depth 20.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-rtvk=$(realpath "${1:-$root/build/release/rtvk}")
-rounds=${2:-3}
-shift $(($# > 2 ? 2 : $#))
+positional=()
+while [[ $# -gt 0 && $1 != -- ]]; do
+  positional+=("$1")
+  shift
+done
 [[ ${1:-} == -- ]] && shift
+rtvk=$(realpath "${positional[0]:-$root/build/release/rtvk}")
+rounds=${positional[1]:-3}
+[[ $rounds =~ ^[1-9][0-9]*$ ]] || { echo "bench-lavapipes.sh: ROUNDS '$rounds' is not a count" >&2; exit 2; }
 scene=("$@")
 [[ ${#scene[@]} -gt 0 ]] || scene=(--scene book-final --width 1200 --aspect 16:9 --spp 10 --depth 20)
 suites=(bookworm bookworm-backports)
@@ -19,8 +24,8 @@ out=$(mktemp -d /tmp/rtvk-bench-lavapipes-XXXXXX)
 trap 'rm -rf "$out"' EXIT
 
 declare -A env_of
-mesa_dir=${RTVK_MESA_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/rtvk-test-mesa}
-for s in "${suites[@]}"; do env_of[$s]=$(bash "$root/scripts/private-mesa.sh" "$mesa_dir" "$s"); done
+for s in "${suites[@]}"; do env_of[$s]=$(bash "$root/scripts/private-mesa.sh" "$s"); done
+unset RTVK_DEVICE
 
 # bench NAME [ENV_FILE] -- FLAGS: one timed run into $out/NAME.ROUND.json
 bench() {
@@ -39,7 +44,7 @@ bench() {
 for round in $(seq 1 "$rounds"); do
   echo "== round $round of $rounds" >&2
   bench cpu "" --backend cpu
-  for s in "${suites[@]}"; do bench "$s" "${env_of[$s]}" --backend gpu; done
+  for s in "${suites[@]}"; do bench "$s" "${env_of[$s]}" --backend gpu --device lavapipe; done
 done
 
 # A record's field, from rtvk bench's JSON (one record a file here).
@@ -52,13 +57,13 @@ median() {
 }
 runs() { for f in "$out/$1".*.json; do field "$f" "$2"; done; }
 cpu_median=$(runs cpu seconds | median)
-rays=$(field "$out/cpu.1.json" rays)
 echo "| backend | device | seconds, median (runs) | device time, median | Mrays/s | time / CPU's |"
 echo "|---|---|---|---|---|---|"
 for name in cpu "${suites[@]}"; do
   m=$(runs "$name" seconds | median)
   all=$(runs "$name" seconds | awk '{ printf "%s%.3f", (NR > 1 ? ", " : ""), $1 }')
   dev=$(runs "$name" gpu_seconds | grep -v null | median || true)
+  rays=$(field "$out/$name.1.json" rays)
   backend=$(field "$out/$name.1.json" backend)
   device=$(field "$out/$name.1.json" device)
   [[ $name == cpu ]] && device="$device, $(field "$out/cpu.1.json" threads) threads"

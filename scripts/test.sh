@@ -26,7 +26,7 @@ run_preset() {
 # Which lavapipe the loader offers, as rtvk sees it: the log says what each pass ran on.
 show_devices() { "$root/build/ci/rtvk" devices || true; }
 
-system_mesa=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers)
+system_mesa=$(dpkg-query -W -f='${Version}\n' "mesa-vulkan-drivers:$(dpkg --print-architecture)")
 if [[ $system_mesa == 22.* ]]; then second=bookworm-backports; else second=bookworm; fi
 second=${RTVK_SECOND_MESA:-$second}
 
@@ -38,10 +38,11 @@ done
 
 echo "== preset ci again, on the lavapipe of $second's mesa-vulkan-drivers (the system has $system_mesa)"
 start=$SECONDS
-mesa_dir=${RTVK_MESA_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/rtvk-test-mesa}
-env_file=$(bash scripts/private-mesa.sh "$mesa_dir" "$second")
+env_file=$(bash scripts/private-mesa.sh "$second")
 timings+=("fetch and unpack $second's lavapipe: $((SECONDS - start)) s")
 (
+  # The suite picks lavapipe itself; a device named for other runs must not steer this one.
+  unset RTVK_DEVICE RTVK_TEST_DEVICE
   set -a
   # shellcheck disable=SC1090 # written by private-mesa.sh
   source "$env_file"

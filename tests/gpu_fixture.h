@@ -11,22 +11,6 @@
 
 namespace rtvk::test {
 
-// RTVK_TEST_DEVICE: a --device selector for a real device; empty means the software device
-// (lavapipe) the suite finds by its driver ID (software_device.h).
-inline std::string test_device() {
-  const char* d = std::getenv("RTVK_TEST_DEVICE");
-  return d ? d : "";
-}
-
-// The --device selector of the device under test: RTVK_TEST_DEVICE, else the software device's
-// index ("" when the suite found none). test_main.cpp also hands it to every rtvk the tests run,
-// as RTVK_DEVICE.
-inline std::string device_under_test() {
-  if (!test_device().empty()) return test_device();
-  const device_pick& pick = software_device();
-  return pick.found ? std::to_string(pick.index) : "";
-}
-
 // Every GPU test: one validated context per test process. A test fails if the validation layer
 // reports any warning or error while it runs. Without the device the test fails in CI and skips
 // elsewhere, saying what it looked for and what the loader offered.

@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "software_device.h"
 #include "temp_dir.h"
 
 extern char** environ;
@@ -33,21 +34,26 @@ inline std::string slurp(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// The current environment with `overrides` ("NAME=value") replacing or adding variables; an
-// override of a bare "NAME" removes that variable.
+// The environment of a child the tests start: the current one, with RTVK_DEVICE naming the device
+// under test (software_device.h), then `overrides` ("NAME=value") replacing or adding variables;
+// an override of a bare "NAME" removes that variable. A later override of a name wins.
 inline std::vector<std::string> environment_with(const std::vector<std::string>& overrides) {
+  std::vector<std::string> all{device_environment()};
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  const auto name_of = [](const std::string& o) { return o.substr(0, o.find('=')) + '='; };
   std::vector<std::string> env;
   for (char** e = environ; *e; ++e) {
     const std::string entry(*e);
     bool replaced = false;
-    for (const auto& o : overrides) {
-      const std::string name = o.substr(0, o.find('=')) + '=';
-      replaced |= entry.compare(0, name.size(), name) == 0;
-    }
+    for (const auto& o : all) replaced |= entry.compare(0, name_of(o).size(), name_of(o)) == 0;
     if (!replaced) env.push_back(entry);
   }
-  for (const auto& o : overrides)
-    if (o.find('=') != std::string::npos) env.push_back(o);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    bool overridden_later = false;
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      overridden_later |= name_of(all[j]) == name_of(all[i]);
+    if (!overridden_later && all[i].find('=') != std::string::npos) env.push_back(all[i]);
+  }
   return env;
 }
 

@@ -23,13 +23,6 @@ std::string loader_variables() {
   return out.empty() ? "no loader variables set" : out;
 }
 
-// "0: llvmpipe (LLVM 15.0.6, 256 bits) [cpu] driver lavapipe (llvmpipe), Mesa 22.3.6 (...)"
-std::string one_line(const gpu::device_info& d) {
-  return std::to_string(d.index) + ": " + d.name + " [" + gpu::type_name(d.type) + "] driver " +
-         gpu::driver_string(d) +
-         (d.unusable_reason.empty() ? "" : " (unusable: " + d.unusable_reason + ")");
-}
-
 }  // namespace
 
 device_pick pick_software_device(const std::vector<gpu::device_info>& devices,
@@ -44,11 +37,11 @@ device_pick pick_software_device(const std::vector<gpu::device_info>& devices,
   if (chosen) {
     pick.found = true;
     pick.index = chosen->index;
-    pick.description = one_line(*chosen);
+    pick.description = gpu::device_line(*chosen);
     return pick;
   }
   std::string offered;
-  for (const auto& d : devices) offered += (offered.empty() ? "" : "; ") + one_line(d);
+  for (const auto& d : devices) offered += (offered.empty() ? "" : "; ") + gpu::device_line(d);
   pick.failure = std::string("looked for ") + looked_for + "; the loader offered " +
                  (offered.empty() ? "no device" : offered) +
                  (offered_note.empty() ? "" : " (" + offered_note + ")") +
@@ -69,6 +62,22 @@ device_pick find_software_device() {
 const device_pick& software_device() {
   static const device_pick pick = find_software_device();
   return pick;
+}
+
+std::string test_device() {
+  const char* d = std::getenv("RTVK_TEST_DEVICE");
+  return d ? d : "";
+}
+
+std::string device_under_test() {
+  if (!test_device().empty()) return test_device();
+  const device_pick& pick = software_device();
+  return pick.found ? std::to_string(pick.index) : "";
+}
+
+std::string device_environment() {
+  const std::string device = device_under_test();
+  return device.empty() ? "RTVK_DEVICE" : "RTVK_DEVICE=" + device;
 }
 
 }  // namespace rtvk::test

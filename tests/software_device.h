@@ -25,7 +25,18 @@ device_pick pick_software_device(const std::vector<gpu::device_info>& devices,
 // The pick among what the Vulkan loader offers this process now (an instance with no layers).
 device_pick find_software_device();
 
-// find_software_device's result, computed once per process.
+// find_software_device's result, computed once per process (when first asked for).
 const device_pick& software_device();
+
+// RTVK_TEST_DEVICE: a --device selector for a real device; empty means the software device.
+std::string test_device();
+
+// The --device selector of the device under test: RTVK_TEST_DEVICE, else the software device's
+// index ("" when the suite found none).
+std::string device_under_test();
+
+// What every rtvk the tests start gets, so that it renders on the device under test:
+// "RTVK_DEVICE=<selector>", or a bare "RTVK_DEVICE" (removed) when there is none.
+std::string device_environment();
 
 }  // namespace rtvk::test

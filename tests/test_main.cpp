@@ -1,7 +1,8 @@
 // The GPU tests run on the software rasterizer the suite finds by its driver ID (lavapipe,
 // whatever its manifest is called and wherever it is installed) unless RTVK_TEST_DEVICE names
-// another device; every rtvk the tests run gets the same device through RTVK_DEVICE, so a
-// machine's real GPU does not change what CI checks.
+// another device; every rtvk the tests run gets the same device through RTVK_DEVICE
+// (tests/process.h), so a machine's real GPU does not change what CI checks. The device is
+// looked for when a test first needs it, not in tests that need none.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -11,7 +12,6 @@
 #include <filesystem>
 #include <string>
 
-#include "gpu_fixture.h"
 #include "software_device.h"
 
 namespace {
@@ -38,11 +38,6 @@ int main(int argc, char** argv) {
   const std::filesystem::path cache =
       std::filesystem::temp_directory_path() / ("rtvk-test-cache-" + std::to_string(getpid()));
   setenv("XDG_CACHE_HOME", cache.c_str(), 1);
-  const std::string device = rtvk::test::device_under_test();
-  if (device.empty())
-    unsetenv("RTVK_DEVICE");  // GPU tests fail (CI) or skip, saying why
-  else
-    setenv("RTVK_DEVICE", device.c_str(), 1);
   testing::InitGoogleTest(&argc, argv);
   const int status = RUN_ALL_TESTS();
   std::error_code ec;

@@ -12,10 +12,12 @@
 #include <sstream>
 
 #include "ci.h"
+#include "errors.h"
 #include "fault_layer.h"
 #include "process.h"
 #include "software_device.h"
 #include "temp_dir.h"
+#include "vk_error.h"
 
 namespace rtvk {
 namespace {
@@ -168,6 +170,58 @@ TEST(DevicePick, PrefersLavapipeByDriverIdThenAnyCpuDevice) {
   EXPECT_FALSE(none.found);
   EXPECT_NE(none.failure.find("0: AMD [discrete] driver radv"), std::string::npos) << none.failure;
   EXPECT_NE(none.failure.find("(a note)"), std::string::npos) << none.failure;
+}
+
+// --device and RTVK_DEVICE against a machine of three devices, as their drivers describe them.
+TEST(DeviceSelector, MatchesTheDevicesNameOrItsDriversNameCommonNameOrVersion) {
+  auto radv = device(0, VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, VK_DRIVER_ID_MESA_RADV,
+                     "AMD Radeon RX 6800 (RADV NAVI21)");
+  radv.driver_name = "radv";
+  radv.driver_info = "Mesa 24.0.1";
+  auto lavapipe = device(1, VK_PHYSICAL_DEVICE_TYPE_CPU, VK_DRIVER_ID_MESA_LLVMPIPE,
+                         "llvmpipe (LLVM 15.0.6, 256 bits)");
+  lavapipe.driver_name = "llvmpipe";
+  lavapipe.driver_info = "Mesa 25.0.7 (LLVM 15.0.6)";
+  auto nvidia = device(2, VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, VK_DRIVER_ID_NVIDIA_PROPRIETARY,
+                       "NVIDIA GeForce RTX 4090");
+  nvidia.driver_name = "NVIDIA";
+  nvidia.driver_info = "550.54.14";
+  const std::vector<gpu::device_info> devices{radv, lavapipe, nvidia};
+  const auto pick = [&](const std::string& s) { return gpu::select_device(devices, s); };
+  EXPECT_EQ(pick(""), 0u);  // the default: the first discrete GPU
+  EXPECT_EQ(pick("2"), 2u);
+  EXPECT_EQ(pick("rtx 4090"), 2u);
+  EXPECT_EQ(pick("Lavapipe"), 1u);  // the driver ID's common name, in no reported name
+  EXPECT_EQ(pick("llvmpipe"), 1u);
+  EXPECT_EQ(pick("Mesa 25"), 1u);  // the driver's version
+  EXPECT_EQ(pick("mesa"), 0u);     // the first that matches
+  EXPECT_EQ(pick("nvidia"), 2u);
+  EXPECT_EQ(pick("550.54"), 2u);
+  EXPECT_EQ(pick("radv"), 0u);
+  // A device that cannot render is passed over for a later one that matches too.
+  auto broken = devices;
+  broken[0].unusable_reason = "has no compute queue";
+  EXPECT_EQ(gpu::select_device(broken, "mesa"), 1u);
+  try {
+    gpu::select_device(broken, "radv", "RTVK_DEVICE");
+    ADD_FAILURE() << "an unusable device was selected";
+  } catch (const usage_error& e) {
+    EXPECT_NE(std::string(e.what()).find("RTVK_DEVICE: 'radv' is AMD Radeon RX 6800 (RADV NAVI21), "
+                                         "which has no compute queue"),
+              std::string::npos)
+        << e.what();
+  }
+  try {
+    gpu::select_device(devices, "intel", "RTVK_DEVICE");
+    ADD_FAILURE() << "'intel' matched a device";
+  } catch (const usage_error& e) {
+    EXPECT_NE(std::string(e.what()).find("RTVK_DEVICE: 'intel' matches no Vulkan device (devices: "
+                                         "0: AMD Radeon RX 6800 (RADV NAVI21) [discrete] driver "
+                                         "radv, Mesa 24.0.1; 1: llvmpipe"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(gpu::select_device({}, "lavapipe"), gpu::no_device_error);
 }
 
 }  // namespace

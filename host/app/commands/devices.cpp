@@ -39,7 +39,7 @@ nlohmann::ordered_json to_json(const gpu::device_info& d, bool chosen) {
           {"chosen", chosen}};
 }
 
-int run_devices(const devices_options& o) {
+int show_devices(const devices_options& o) {
   const gpu::vulkan_instance instance(o.validate);
   const auto devices = gpu::list_devices(instance.get());
   if (devices.empty()) throw gpu::no_device_error("no Vulkan device found");
@@ -56,6 +56,17 @@ int run_devices(const devices_options& o) {
   std::printf("(* = the device rtvk renders on%s)\n",
               selector.empty() ? " by default" : (" with " + source + " " + selector).c_str());
   return 0;
+}
+
+// No loader, no driver or no device: no_device_error (exit 1), after an empty JSON array when
+// JSON was asked for, so that scripts parse "none" too.
+int run_devices(const devices_options& o) {
+  try {
+    return show_devices(o);
+  } catch (const gpu::no_device_error&) {
+    if (o.json) std::printf("[]\n");
+    throw;
+  }
 }
 
 }  // namespace

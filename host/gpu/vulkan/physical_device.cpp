@@ -29,9 +29,9 @@ bool has(const std::vector<VkExtensionProperties>& exts, const char* name) {
 
 // What the device offers of hardware ray tracing: the extension must be listed and its feature
 // reported, since a driver may list an extension whose feature is off.
-void describe_ray_tracing(VkPhysicalDevice dev, device_info& d) {
+void describe_ray_tracing(VkPhysicalDevice dev, const std::vector<VkExtensionProperties>& exts,
+                          device_info& d) {
   if (d.api_version < VK_API_VERSION_1_1) return;
-  const auto exts = device_extensions(dev);
   if (!has(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME)) return;
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
@@ -76,8 +76,9 @@ device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
   if (props.apiVersion >= VK_API_VERSION_1_1)
     d.max_allocation_size = maintenance3.maxMemoryAllocationSize;
 
+  const auto exts = device_extensions(dev);
   if (props.apiVersion >= VK_API_VERSION_1_2 ||
-      has_device_extension(dev, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME)) {
+      has(exts, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME)) {
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
     VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     props2.pNext = &driver;
@@ -86,7 +87,7 @@ device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
     d.driver_name = driver.driverName;
     d.driver_info = driver.driverInfo;
   }
-  describe_ray_tracing(dev, d);
+  describe_ray_tracing(dev, exts, d);
 
   std::uint32_t n = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(dev, &n, nullptr);
@@ -254,13 +255,18 @@ std::size_t select_device(const std::vector<device_info>& devices, const std::st
   if (ec == std::errc() && end == selector.data() + selector.size()) {
     if (index < devices.size()) found = index;
   } else {
-    for (std::size_t i = 0; i < devices.size() && found == devices.size(); ++i)
-      if (matches(devices[i], selector)) found = i;
+    // The first usable device that matches, else the first that matches (refused below).
+    for (std::size_t i = 0; i < devices.size(); ++i) {
+      if (!matches(devices[i], selector)) continue;
+      if (found == devices.size()) found = i;
+      if (devices[i].unusable_reason.empty()) {
+        found = i;
+        break;
+      }
+    }
   }
   std::string listing;
-  for (const auto& d : devices)
-    listing += (listing.empty() ? "" : "; ") + std::to_string(d.index) + ": " + d.name +
-               " (driver " + driver_string(d) + ")";
+  for (const auto& d : devices) listing += (listing.empty() ? "" : "; ") + device_line(d);
   if (devices.empty()) listing = "none";
   if (found == devices.size())
     throw usage_error(source + ": '" + selector +
@@ -269,6 +275,12 @@ std::size_t select_device(const std::vector<device_info>& devices, const std::st
     throw usage_error(source + ": '" + selector + "' is " + devices[found].name + ", which " +
                       devices[found].unusable_reason);
   return found;
+}
+
+std::string device_line(const device_info& d) {
+  return std::to_string(d.index) + ": " + d.name + " [" + type_name(d.type) + "] driver " +
+         driver_string(d) +
+         (d.unusable_reason.empty() ? "" : " (unusable: " + d.unusable_reason + ")");
 }
 
 std::string describe_devices(const std::vector<device_info>& devices, std::size_t chosen) {

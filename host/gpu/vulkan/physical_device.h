@@ -54,11 +54,15 @@ std::size_t default_device(const std::vector<device_info>& devices);
 
 // --device: an index ("0"), or a case-insensitive substring of the device's name ("RTX 4090"),
 // of its driver's name, common name or version ("llvmpipe", "lavapipe", "radv", "Mesa 25");
-// the first device that matches. Empty picks the default. Throws no_device_error when there is
-// no device at all, and usage_error naming `source` (the flag or variable the selector came
+// the first usable device that matches. Empty picks the default. Throws no_device_error when there
+// is no device at all, and usage_error naming `source` (the flag or variable the selector came
 // from), listing the devices, when nothing matches or the match is unusable.
 std::size_t select_device(const std::vector<device_info>& devices, const std::string& selector,
                           const std::string& source = "--device");
+
+// One line: "0: llvmpipe (LLVM 15.0.6, 256 bits) [cpu] driver lavapipe (llvmpipe), Mesa 22.3.6
+// (LLVM 15.0.6)", and why the device is unusable, if it is.
+std::string device_line(const device_info& d);
 
 // Three lines per device (name, type, Vulkan version; driver; ray tracing), the chosen one
 // marked with '*'.
