@@ -41,23 +41,17 @@ layout(push_constant) uniform push_block {
   render_push pc;
 };
 
-#include "camera.glsl"
-#include "random.glsl"
+#include "camera_rays.h"
+#include "random.h"
 #include "shading.glsl"
 
-// The first ray of one sample of the pixel, through a spot of the pixel (and of the lens), and
-// the sample's random numbers: mirrors pixel_color in host/cpu/render_cpu.cpp. `j` counts rows
-// from the bottom.
-ray sample_ray(camera_ubo cam, uvec2 pixel, uint j, uint sample_index, out random_stream s) {
-  s = random_stream(pc.seed, pixel.y * cam.image_width + pixel.x, sample_index, 0u);
-  precise float x = jitter ? float(pixel.x) + rnd(s, dim_jitter_u) : float(pixel.x);
-  precise float y = jitter ? float(j) + rnd(s, dim_jitter_v) : float(j);
-  precise float u = pixel_coordinate(x, cam.image_width);
-  precise float v = pixel_coordinate(y, cam.image_height);
-  precise vec2 lens = any_lens && cam.lens_radius > 0.0
-                          ? random_in_unit_disk(rnd(s, dim_lens_a), rnd(s, dim_lens_b))
-                          : vec2(0.0);
-  return get_ray(cam, u, v, lens);
+// A new path for the pixel's sample: its stream and its first ray (sample_ray, as pixel_color in
+// host/cpu/render_cpu.cpp draws it). `j` counts rows from the bottom.
+path_state pixel_path(camera_ubo cam, uvec2 pixel, uint j, uint sample_index) {
+  random_stream s =
+      pixel_sample_stream(pc.seed, pixel.y * cam.image_width + pixel.x, sample_index);
+  ray r = sample_ray(cam, cam.image_width, cam.image_height, pixel.x, j, s, jitter, any_lens);
+  return start_path(r, s);
 }
 
 // floor(c * 2^F) as (low word, high word), exactly as to_fixed in host/base/sample_sum.h: the
@@ -106,8 +100,7 @@ void main() {
   uint first = acc.samples;
   uint iterations = 0u;
   uint rays = 0u;  // of the path in flight
-  random_stream s;
-  path_state p = start_path(sample_ray(cam, pixel, j, pc.sample_begin + acc.samples, s), s);
+  path_state p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   while (true) {
     precise vec3 c;
     bool ended = ray_color_step(p, c, iterations, rays);
@@ -116,7 +109,7 @@ void main() {
     add_sample(acc, c, rays);
     rays = 0u;
     if (acc.samples >= pc.sample_target) break;
-    p = start_path(sample_ray(cam, pixel, j, pc.sample_begin + acc.samples, s), s);
+    p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   }
   if (iterations > pc.loop_budget) {
     if (acc.samples == first) {              // one sample needs more than a whole budget

@@ -7,7 +7,7 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block { rng_probe_entry entries[]; };
 
-#include "random.glsl"
+#include "random.h"
 
 void main() {
   uint i = gl_GlobalInvocationID.x;

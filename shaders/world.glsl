@@ -1,9 +1,12 @@
-// Mirrors bvh_world::hit (host/cpu/bvh_world.cpp) and hittable_list::hit. Expects `spheres`
+// The closest hit over the world's spheres: through the binary BVH, or every sphere in turn as
+// hittable_list::hit does. The sphere math is the shared kernels' (hit_sphere.h); the traversal is
+// the GPU's own (bvh.glsl says why). Expects `spheres`
 // (gpu_sphere[]: in the BVH's leaf order with use_bvh, else in scene order), `bvh_nodes`, `pc`
 // (render_push) and the specialization constant `use_bvh` declared by the including shader.
 #ifndef RTVK_WORLD_GLSL
 #define RTVK_WORLD_GLSL
-#include "sphere.glsl"
+#include "bvh.glsl"
+#include "hit_sphere.h"
 
 // Tests the sphere in slot k, keeping the nearest hit (`closest`; `best` its scene index,
 // `best_slot` its slot). Ties go to the later sphere in the scene.
@@ -11,14 +14,15 @@ void test_sphere(uint k, ray r, float t_min, precise inout float closest, inout 
                  inout uint best_slot) {
   precise float t;
   int i = int(spheres[k].scene_index);
-  if (hit_distance(spheres[k], r, t_min, closest, t) && (t < closest || i > best)) {
+  if (hit_sphere(spheres[k].center, spheres[k].radius, r, t_min, closest, t) &&
+      (t < closest || i > best)) {
     closest = t;
     best = i;
     best_slot = k;
   }
 }
 
-// Mirrors visit_leaf in host/cpu/bvh_world.cpp: tests spheres first .. first + count - 1. False
+// Tests spheres first .. first + count - 1 of a leaf. False
 // when the loop budget ran out.
 bool visit_leaf(uint first, uint count, ray r, float t_min, precise inout float closest,
                 inout int best, inout uint best_slot, inout uint iterations) {
@@ -34,8 +38,9 @@ bool visit_leaf(uint first, uint count, ray r, float t_min, precise inout float 
 // leaf, which holds RTVK_BVH_LEAF spheres.
 const uint stack_leaf = 0x80000000u;
 
-// Mirrors bvh_world::hit: the same nodes in the same order, the same skipped entries, ties to the
-// later sphere, the record filled once for the winner. One node fetch brings both children's
+// As bvh_world::hit, with the binary tree: the nearest child first, remembered children behind the
+// closest hit dropped, ties to the later sphere (so the winner does not depend on the order of
+// visits, which differs from the CPU's four-wide walk), the record filled once for the winner. One node fetch brings both children's
 // boxes and references. The loop is flat -- each trip visits one node or leaf, or drops one
 // remembered child that is now behind the closest hit -- so the invocations of a SIMD group
 // (lavapipe's 8 lanes, a warp) step together instead of waiting for each other in nested loops;
@@ -96,7 +101,8 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
     next_entry = uintBitsToFloat(stack[top].y & ~stack_leaf);
   }
   if (best < 0) return false;
-  record_hit(spheres[best_slot], r, closest, rec);
+  gpu_sphere s = spheres[best_slot];
+  record_hit(s.center, s.radius, s.material, r, closest, rec);
   return true;
 }
 
@@ -113,13 +119,16 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
   for (uint i = 0u; i < pc.sphere_count; ++i) {
     if (++iterations > pc.loop_budget) return false;
     precise float t;
-    if (hit_distance(spheres[i], r, t_min, closest_so_far, t)) {
+    if (hit_sphere(spheres[i].center, spheres[i].radius, r, t_min, closest_so_far, t)) {
       hit_anything = true;
       closest_so_far = t;
       closest_sphere = i;
     }
   }
-  if (hit_anything) record_hit(spheres[closest_sphere], r, closest_so_far, rec);
+  if (hit_anything) {
+    gpu_sphere s = spheres[closest_sphere];
+    record_hit(s.center, s.radius, s.material, r, closest_so_far, rec);
+  }
   return hit_anything;
 }
 

@@ -14,8 +14,8 @@
 #include "camera.h"
 #include "hittable_sphere.h"
 #include "random.h"
-#include "scatter.h"
 #include "scene.h"
+#include "shading.h"
 #include "world.h"
 
 namespace rtvk {
@@ -27,8 +27,8 @@ std::vector<ray> camera_rays(const scene& s, int count) {
   std::vector<ray> rays;
   rays.reserve(std::size_t(count));
   for (int i = 0; i < count; ++i) {
-    const random_stream r{1, std::uint32_t(i), 0, 0};
-    rays.push_back(cam.get_ray(r(0), r(1), random_in_unit_disk(r(2), r(3))));
+    const random_stream r = pixel_sample_stream(1, std::uint32_t(i), 0);
+    rays.push_back(cam.get_ray(rnd(r, 0), rnd(r, 1), random_in_unit_disk(rnd(r, 2), rnd(r, 3))));
   }
   return rays;
 }
@@ -67,7 +67,7 @@ class binary_bvh_world final : public hittable {
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override {
     const std::vector<gpu::bvh_node>& nodes = tree_.nodes();
-    const glm::vec3 o(r.origin()), inv_d = safe_inverse(glm::vec3(r.direction()));
+    const glm::vec3 o(r.origin), inv_d = safe_inverse(glm::vec3(r.direction));
     const float margin = origin_margin(o), box_min = float(t_min) * (1.0f - 0x1p-20f);
     std::uint32_t stack_ref[RTVK_BVH_STACK], stack_count[RTVK_BVH_STACK];
     float stack_entry[RTVK_BVH_STACK];
@@ -167,7 +167,7 @@ std::vector<ray> book_final_rays(int count) {
     color attenuation;
     ray out;
     if (scatter(materials[std::size_t(rec.material)], in, rec,
-                random_stream(2, std::uint32_t(i), 0, 1), attenuation, out))
+                at_bounce(pixel_sample_stream(2, std::uint32_t(i), 0), 1), attenuation, out))
       rays.push_back(out);
   }
   return rays;

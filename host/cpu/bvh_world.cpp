@@ -24,7 +24,7 @@ struct ray_slabs {
   float inv[3];         // inverse direction (safe_inverse)
 
   explicit ray_slabs(const ray& r) {
-    const glm::vec3 o(r.origin()), inv_d = safe_inverse(glm::vec3(r.direction()));
+    const glm::vec3 o(r.origin), inv_d = safe_inverse(glm::vec3(r.direction));
     const float margin = origin_margin(o);
     constexpr int lo = offsetof(wide_node, lo) / sizeof(float),
                   hi = offsetof(wide_node, hi) / sizeof(float);

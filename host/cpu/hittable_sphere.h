@@ -1,14 +1,19 @@
 #pragma once
+#include "hit_sphere.h"
 #include "hittable.h"
 #include "sphere.h"
 
 namespace rtvk {
 
-// The two halves of a sphere hit, named as in shaders/sphere.glsl: the nearest root in
+// The two halves of a sphere hit (hit_sphere.h) for a scene sphere: the nearest root in
 // [t_min, t_max] (false when there is none), and the record of a hit at t. A search over many
 // spheres fills the record only for the winner.
-bool hit_distance(const sphere& s, const ray& r, double t_min, double t_max, double& t);
-void record_hit(const sphere& s, const ray& r, double t, hit_record& rec);
+inline bool hit_distance(const sphere& s, const ray& r, double t_min, double t_max, double& t) {
+  return hit_sphere(s.center, s.radius, r, t_min, t_max, t);
+}
+inline void record_hit(const sphere& s, const ray& r, double t, hit_record& rec) {
+  record_hit(s.center, s.radius, uint(s.material), r, t, rec);
+}
 
 // A scene sphere as a hittable, for the lesson's hittable_list.
 class hittable_sphere final : public hittable {

@@ -47,14 +47,11 @@ color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y) {
   const int j = height - 1 - y;  // the lesson counts rows from the bottom
   color sum(0, 0, 0);
   for (int sample = in.win.sample_begin; sample < in.win.sample_end; ++sample) {
-    const random_stream rnd{in.rs.seed, std::uint32_t(y) * std::uint32_t(width) + std::uint32_t(i),
-                            std::uint32_t(sample), 0};
-    const double u = pixel_coordinate(in.rs.jitter ? i + rnd(dim_jitter_u) : i, width);
-    const double v = pixel_coordinate(in.rs.jitter ? j + rnd(dim_jitter_v) : j, height);
-    const glm::dvec2 lens = in.cam.lens_radius() > 0
-                                ? random_in_unit_disk(rnd(dim_lens_a), rnd(dim_lens_b))
-                                : glm::dvec2(0, 0);
-    sum += ray_color(in.cam.get_ray(u, v, lens), world, in.materials, in.sky, in.rs.max_depth, rnd);
+    const random_stream rnd =
+        pixel_sample_stream(in.rs.seed, uint(y) * uint(width) + uint(i), uint(sample));
+    const ray r = sample_ray(in.cam.frame(), uint(width), uint(height), uint(i), uint(j), rnd,
+                             in.rs.jitter, true);
+    sum += ray_color(r, world, in.materials, in.sky, in.rs.max_depth, rnd);
   }
   return divide(sum, in.win.samples());
 }

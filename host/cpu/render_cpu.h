@@ -10,12 +10,6 @@
 
 namespace rtvk {
 
-// Normalized coordinate of position x along a side of n pixels: x / (n - 1), as the lesson does,
-// and the side's center when n == 1 (where the lesson would divide by zero).
-inline double pixel_coordinate(double x, int n) {
-  return n > 1 ? x / (n - 1) : 0.5;
-}
-
 // Called with the number of rows finished so far; may be empty.
 using progress_callback = std::function<void(int rows_done)>;
 

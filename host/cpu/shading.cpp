@@ -1,39 +1,29 @@
 #include "shading.h"
 
-#include "scatter.h"
-
 #include <limits>
 
 namespace rtvk {
 
-color sky_color(const vec3& d, const sky& background) {
-  const vec3 unit_direction = unit_vector(d);
-  const double t = 0.5 * (unit_direction.y + 1.0);
-  return (1.0 - t) * background.horizon + t * background.zenith;
-}
+static_assert(int(material_type::normal) == RTVK_MATERIAL_NORMAL);
+static_assert(int(material_type::lambertian) == RTVK_MATERIAL_LAMBERTIAN);
+static_assert(int(material_type::metal) == RTVK_MATERIAL_METAL);
+static_assert(int(material_type::dielectric) == RTVK_MATERIAL_DIELECTRIC);
 
-// Iterative rather than the book's recursion, so it reads line for line like the shader.
+// The book's recursion as a loop over the shared steps (ray_color.h); shaders/shading.glsl runs
+// the same steps, a bounce per trip.
 color ray_color(const ray& r_in, const hittable& world, std::span<const material> materials,
                 const sky& background, int max_depth, const random_stream& rnd) {
   const double infinity = std::numeric_limits<double>::infinity();
-  // A camera gives no ray (a zero direction) where its model sees nothing: black.
-  if (r_in.direction() == vec3(0, 0, 0)) return color(0, 0, 0);
-  ray r = r_in;
-  color throughput(1.0, 1.0, 1.0);
-  for (int depth = 0; depth < max_depth; ++depth) {
-    hit_record rec;
-    if (!world.hit(r, t_min, infinity, rec))
-      return throughput * sky_color(r.direction(), background);
-    const material& m = materials[std::size_t(rec.material)];
-    if (m.type == material_type::normal) return throughput * (0.5 * (rec.normal + color(1, 1, 1)));
-    color attenuation;
-    ray scattered;
-    if (!scatter(m, r, rec, rnd.at_bounce(std::uint32_t(depth + 1)), attenuation, scattered))
-      return color(0, 0, 0);
-    throughput *= attenuation;
-    r = scattered;
+  path_state p = start_path(r_in, rnd);
+  while (!path_ends_unlit(p, uint(max_depth))) {
+    hit_record rec{};
+    if (!world.hit(p.r, t_min, infinity, rec))
+      return path_missed(p, background.horizon, background.zenith);
+    const material& m = materials[rec.material];
+    color c;
+    if (path_hit(p, rec, uint(m.type), m.albedo, m.fuzz, m.ir, c)) return c;
   }
-  return color(0, 0, 0);  // out of bounces: no light gathered
+  return color(0, 0, 0);  // out of bounces, or no ray: no light gathered
 }
 
 color ray_color(const ray& r, const hittable& world) {

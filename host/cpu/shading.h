@@ -4,16 +4,14 @@
 #include "hittable.h"
 #include "material.h"
 #include "random.h"
+#include "ray_color.h"
 #include "scene.h"
 
 namespace rtvk {
 
-// Hits closer than this are ignored: a scattered ray must not hit its own starting point again
-// through rounding ("shadow acne").
-inline constexpr double t_min = 0.001;
-
 // The color seen along r: bounces through the materials up to max_depth scatter events, and
 // returns the sky on a miss. A "normal" material ends the path with the lesson's normal color.
+// The loop's body is the shared kernels' (ray_color.h), which the GPU runs too.
 color ray_color(const ray& r, const hittable& world, std::span<const material> materials,
                 const sky& background, int max_depth, const random_stream& rnd);
 
@@ -21,6 +19,14 @@ color ray_color(const ray& r, const hittable& world, std::span<const material> m
 color ray_color(const ray& r, const hittable& world);
 
 // The sky seen along direction d: by default white at the horizon blending to blue overhead.
-color sky_color(const vec3& d, const sky& background = sky{});
+inline color sky_color(const vec3& d, const sky& background = sky{}) {
+  return sky_color(d, background.horizon, background.zenith);
+}
+
+// scatter (scatter.h) for one of the scene's materials.
+inline bool scatter(const material& m, const ray& r_in, const hit_record& rec,
+                    const random_stream& rnd, color& attenuation, ray& scattered) {
+  return scatter(uint(m.type), m.albedo, m.fuzz, m.ir, r_in, rec, rnd, attenuation, scattered);
+}
 
 }  // namespace rtvk

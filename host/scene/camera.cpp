@@ -62,8 +62,6 @@ double tan_half_angle(double vfov_degrees) {
   return std::tan(vfov_degrees * 3.1415926535897932385 / 180.0 / 2.0);
 }
 
-constexpr double pi = 3.1415926535897932385;
-
 struct named_projection {
   projection model;
   std::string_view name;
@@ -77,6 +75,12 @@ constexpr named_projection projections[] = {
 };
 
 }  // namespace
+
+static_assert(int(projection::perspective) == RTVK_PROJECTION_PERSPECTIVE);
+static_assert(int(projection::orthographic) == RTVK_PROJECTION_ORTHOGRAPHIC);
+static_assert(int(projection::equirectangular) == RTVK_PROJECTION_EQUIRECTANGULAR);
+static_assert(int(projection::fisheye_equidistant) == RTVK_PROJECTION_FISHEYE_EQUIDISTANT);
+static_assert(int(projection::fisheye_equisolid) == RTVK_PROJECTION_FISHEYE_EQUISOLID);
 
 std::string_view projection_name(projection p) {
   for (const named_projection& n : projections)
@@ -97,28 +101,8 @@ std::string projection_names() {
   return out;
 }
 
-vec3 camera::panoramic_direction(double s, double t) const {
-  if (projection_ == projection::equirectangular) {
-    const double phi = (s - 0.5) * 2 * pi;  // longitude, 0 straight ahead, + to the right
-    const double theta = (t - 0.5) * pi;    // latitude, + up
-    return std::cos(theta) * (std::sin(phi) * lens_u_ - std::cos(phi) * axis_w_) +
-           std::sin(theta) * lens_v_;
-  }
-  // Fisheye: a circle that touches the top and bottom edges.
-  const double x = (2 * s - 1) * aspect_ratio_, y = 2 * t - 1;
-  const double r = std::sqrt(x * x + y * y);
-  if (r > 1) return vec3(0, 0, 0);  // outside the lens: no ray
-  if (r == 0) return -axis_w_;
-  const double theta = projection_ == projection::fisheye_equidistant
-                           ? r * fisheye_fov_ / 2
-                           : 2 * std::asin(r * std::sin(fisheye_fov_ / 4));
-  return std::cos(theta) * -axis_w_ + std::sin(theta) * (x / r * lens_u_ + y / r * lens_v_);
-}
-
 camera::camera(const camera_pose& pose, double aspect_ratio, int image_width)
-    : aspect_ratio_(aspect_ratio),
-      image_width_(image_width),
-      image_height_(checked_height(aspect_ratio, image_width)) {
+    : image_width_(image_width), image_height_(checked_height(aspect_ratio, image_width)) {
   check_pose(pose);
   const double viewport_height = 2.0 * tan_half_angle(pose.vfov);
   const double viewport_width = aspect_ratio * viewport_height;
@@ -127,17 +111,19 @@ camera::camera(const camera_pose& pose, double aspect_ratio, int image_width)
   const vec3 u = unit_vector(glm::cross(pose.vup, w));
   const vec3 v = glm::cross(w, u);
 
-  origin_ = pose.lookfrom;
-  horizontal_ = pose.focus_dist * viewport_width * u;
-  vertical_ = pose.focus_dist * viewport_height * v;
-  lower_left_ = origin_ - divide(horizontal_, 2) - divide(vertical_, 2) - pose.focus_dist * w;
-  lens_u_ = u;
-  lens_v_ = v;
-  lens_radius_ = pose.aperture / 2;
-  projection_ = pose.projection;
-  axis_w_ = w;
-  focus_dist_ = pose.focus_dist;
-  fisheye_fov_ = pose.fisheye_fov * pi / 180;
+  camera_frame& f = frame_;
+  f.origin = pose.lookfrom;
+  f.horizontal = pose.focus_dist * viewport_width * u;
+  f.vertical = pose.focus_dist * viewport_height * v;
+  f.lower_left = f.origin - divide(f.horizontal, 2) - divide(f.vertical, 2) - pose.focus_dist * w;
+  f.lens_u = u;
+  f.lens_v = v;
+  f.axis_w = w;
+  f.lens_radius = pose.aperture / 2;
+  f.aspect = aspect_ratio;
+  f.fisheye_fov = pose.fisheye_fov * pi / 180;
+  f.focus_dist = pose.focus_dist;
+  f.projection = uint(pose.projection);
 }
 
 }  // namespace rtvk

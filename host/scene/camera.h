@@ -5,8 +5,9 @@
 
 #include <glm/vec2.hpp>
 
+#include "camera_rays.h"
 #include "image_size.h"
-#include "ray.h"
+#include "vec3.h"
 
 namespace rtvk {
 
@@ -62,56 +63,37 @@ class camera {
   // The ray through normalized image coordinates (s, t) -- (0, 0) is the lower-left corner of
   // the viewport, (1, 1) the upper-right -- leaving the lens at `lens`, a point of the unit disk.
   // Where the model sees nothing (outside a fisheye's circle) the direction is zero: no ray,
-  // and the renderers draw the pixel black.
+  // and the renderers draw the pixel black. The shared kernels' get_ray (camera_rays.h), which
+  // the GPU compiles too, on this camera's vectors.
   ray get_ray(double s, double t, glm::dvec2 lens = {0, 0}) const {
-    const glm::dvec2 rd = lens_radius_ * lens;
-    const vec3 offset = lens_u_ * rd.x + lens_v_ * rd.y;
-    switch (projection_) {
-      case projection::perspective:
-        return ray(origin_ + offset,
-                   lower_left_ + s * horizontal_ + t * vertical_ - origin_ - offset);
-      case projection::orthographic: {
-        const point3 on_focus_plane = lower_left_ + s * horizontal_ + t * vertical_;
-        const point3 from = on_focus_plane + focus_dist_ * axis_w_ + offset;
-        return ray(from, on_focus_plane - from);
-      }
-      default:
-        return ray(origin_, panoramic_direction(s, t));
-    }
+    return rtvk::get_ray(frame_, s, t, lens);
   }
 
   // The direction get_ray gives at (s, t) for the equirectangular and fisheye models (no lens).
-  vec3 panoramic_direction(double s, double t) const;
-  double aspect_ratio() const { return aspect_ratio_; }
+  vec3 panoramic_direction(double s, double t) const {
+    return rtvk::panoramic_direction(frame_, s, t);
+  }
+  // The precomputed vectors get_ray uses; the GPU's camera_ubo holds them in float.
+  const camera_frame& frame() const { return frame_; }
+  double aspect_ratio() const { return frame_.aspect; }
   int image_width() const { return image_width_; }
   int image_height() const { return image_height_; }
-  const point3& origin() const { return origin_; }
-  const vec3& horizontal() const { return horizontal_; }
-  const vec3& vertical() const { return vertical_; }
-  const point3& lower_left() const { return lower_left_; }
-  const vec3& lens_u() const { return lens_u_; }
-  const vec3& lens_v() const { return lens_v_; }
-  double lens_radius() const { return lens_radius_; }
-  rtvk::projection projection() const { return projection_; }
-  const vec3& axis_w() const { return axis_w_; }
-  double focus_dist() const { return focus_dist_; }
-  double fisheye_fov() const { return fisheye_fov_; }  // radians
+  const point3& origin() const { return frame_.origin; }
+  const vec3& horizontal() const { return frame_.horizontal; }
+  const vec3& vertical() const { return frame_.vertical; }
+  const point3& lower_left() const { return frame_.lower_left; }
+  const vec3& lens_u() const { return frame_.lens_u; }
+  const vec3& lens_v() const { return frame_.lens_v; }
+  double lens_radius() const { return frame_.lens_radius; }
+  rtvk::projection projection() const { return rtvk::projection(frame_.projection); }
+  const vec3& axis_w() const { return frame_.axis_w; }
+  double focus_dist() const { return frame_.focus_dist; }
+  double fisheye_fov() const { return frame_.fisheye_fov; }  // radians
 
  private:
-  double aspect_ratio_;  // image width / height
-  int image_width_;      // pixels
-  int image_height_;     // pixels, max(1, int(width / aspect))
-  point3 origin_;        // eye position, scene units
-  vec3 horizontal_;      // full viewport width as a vector, on the focus plane, scene units
-  vec3 vertical_;        // full viewport height as a vector, on the focus plane, scene units
-  point3 lower_left_;    // lower-left corner of the viewport, scene units
-  vec3 lens_u_;          // unit vector to the camera's right
-  vec3 lens_v_;          // unit vector to the camera's up
-  double lens_radius_;   // aperture / 2, scene units
-  rtvk::projection projection_;  // the model get_ray follows
-  vec3 axis_w_;                  // unit vector backwards, away from what the camera looks at
-  double focus_dist_;            // distance to the plane in perfect focus, scene units
-  double fisheye_fov_;           // fisheye field of view across the circle, radians
+  int image_width_;     // pixels
+  int image_height_;    // pixels, max(1, int(width / aspect))
+  camera_frame frame_;  // the pose and lens as get_ray's vectors (aspect: width / height)
 };
 
 }  // namespace rtvk

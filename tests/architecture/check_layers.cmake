@@ -5,18 +5,18 @@
 # docs/architecture.md draws; host/*/CMakeLists.txt link exactly these layers.
 cmake_minimum_required(VERSION 3.25)
 
-set(may_use_base "base")
-set(may_use_scene "scene;base")
+set(may_use_base "base;shared")
+set(may_use_scene "scene;base;shared")
 set(may_use_accel "accel;scene;base;shared")
 set(may_use_cpu "cpu;accel;scene;base;shared")
-set(may_use_image "image;scene;base")
-set(may_use_gpu/vulkan "gpu/vulkan;base")
+set(may_use_image "image;scene;base;shared")
+set(may_use_gpu/vulkan "gpu/vulkan;base;shared")
 set(may_use_gpu/render "gpu/render;gpu/vulkan;accel;scene;base;shared")
 set(may_use_view "view;cpu;gpu/render;gpu/vulkan;accel;scene;base;shared")
 set(may_use_app/jobs "app/jobs;cpu;image;gpu/render;gpu/vulkan;accel;scene;base;shared")
 set(may_use_app/commands
     "app/commands;app/jobs;view;cpu;image;gpu/render;gpu/vulkan;accel;scene;base;shared")
-set(may_use_app "app;app/commands;app/jobs;image;base")
+set(may_use_app "app;app/commands;app/jobs;image;base;shared")
 set(layers base scene accel cpu image gpu/vulkan gpu/render view app/jobs app/commands app)
 
 # A new folder of sources must be given its place in the map above.
@@ -40,7 +40,15 @@ foreach(layer IN LISTS layers)
   endforeach()
 endforeach()
 set(owner_version.h base)             # generated from host/base/version.h.in
-set(owner_shared_types.h shared)      # shaders/shared, through the rtvk_shared_types target
+# shaders/shared (the structs that cross to the GPU and the shared kernels), through the
+# rtvk_shared target that base links: below every layer, and no host header may take a name there.
+file(GLOB shared_headers RELATIVE ${ROOT}/shaders/shared ${ROOT}/shaders/shared/*.h)
+foreach(h IN LISTS shared_headers)
+  if(DEFINED owner_${h})
+    list(APPEND problems "${h} exists in both shaders/shared and ${owner_${h}}")
+  endif()
+  set(owner_${h} shared)
+endforeach()
 
 set(checked 0)
 foreach(layer IN LISTS layers)

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "random.h"
+#include "vec3.h"
 
 namespace rtvk {
 namespace {
@@ -24,10 +25,10 @@ TEST(Random, KnownAnswers) {
 TEST(Random, StreamsDrawTheNumbersOfTheirCounters) {
   // Each field lands on its own counter: the known answer above is (seed 7, pixel 12345,
   // sample 3, bounce 2, dimension 1), reached here through at_bounce from bounce 0.
-  const random_stream a{7, 12345, 3, 0};
-  EXPECT_EQ(a.at_bounce(2)(1), double(0.8945695757865906f));
-  EXPECT_NE(a(1), a.at_bounce(2)(1));  // the bounce is a counter too
-  std::set<float> seen;                // neighbouring counters give unrelated numbers
+  const random_stream a = pixel_sample_stream(7, 12345, 3);
+  EXPECT_EQ(rnd(at_bounce(a, 2), 1), 0.8945695757865906f);
+  EXPECT_NE(rnd(a, 1), rnd(at_bounce(a, 2), 1));  // the bounce is a counter too
+  std::set<float> seen;                           // neighbouring counters give unrelated numbers
   for (std::uint32_t p = 0; p < 8; ++p)
     for (std::uint32_t s = 0; s < 8; ++s)
       for (std::uint32_t d = 0; d < 4; ++d) seen.insert(random_float(0, p, s, 1, d));
@@ -55,12 +56,12 @@ TEST(Random, UniformInUnitInterval) {
 TEST(Random, DirectionSamplers) {
   vec3 mean(0);
   for (std::uint32_t i = 0; i < 20000; ++i) {
-    const random_stream s{1, i, 0, 1};
-    const vec3 u = random_unit_vector(s(0), s(1));
+    const random_stream s = at_bounce(pixel_sample_stream(1, i, 0), 1);
+    const vec3 u = random_unit_vector(rnd(s, 0), rnd(s, 1));
     ASSERT_NEAR(glm::length(u), 1.0, 1e-12);
     mean += u;
-    ASSERT_LE(glm::length(random_in_unit_sphere(s(0), s(1), s(2))), 1.0 + 1e-12);
-    ASSERT_LE(glm::length(random_in_unit_disk(s(0), s(1))), 1.0 + 1e-12);
+    ASSERT_LE(glm::length(random_in_unit_sphere(rnd(s, 0), rnd(s, 1), rnd(s, 2))), 1.0 + 1e-12);
+    ASSERT_LE(glm::length(random_in_unit_disk(rnd(s, 0), rnd(s, 1))), 1.0 + 1e-12);
   }
   mean /= 20000.0;
   EXPECT_LT(glm::length(mean), 0.03);  // no preferred direction

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "scatter.h"
+#include "shading.h"
 
 namespace rtvk {
 namespace {
@@ -17,7 +17,7 @@ hit_record hit_at_origin(vec3 normal, bool front_face = true) {
 }
 
 random_stream stream(std::uint32_t i) {
-  return {9, i, 0, 1};
+  return at_bounce(pixel_sample_stream(9, i, 0), 1);
 }
 
 TEST(Lambertian, ScattersIntoTheHemisphereAroundTheNormal) {
@@ -28,10 +28,10 @@ TEST(Lambertian, ScattersIntoTheHemisphereAroundTheNormal) {
     color attenuation;
     ray out;
     ASSERT_TRUE(scatter(m, ray(point3(0, 1, 0), vec3(0, -1, 0)), rec, stream(i), attenuation, out));
-    ASSERT_GE(glm::dot(out.direction(), rec.normal), 0.0);
-    ASSERT_GT(out.origin().y, 0.0);  // leaves from just above the surface
+    ASSERT_GE(glm::dot(out.direction, rec.normal), 0.0);
+    ASSERT_GT(out.origin.y, 0.0);  // leaves from just above the surface
     EXPECT_EQ(attenuation, m.albedo);
-    mean_cos += glm::dot(unit_vector(out.direction()), rec.normal);
+    mean_cos += glm::dot(unit_vector(out.direction), rec.normal);
   }
   // Cosine-weighted about the normal: E[cos theta] = 2/3.
   EXPECT_NEAR(mean_cos / 20000, 2.0 / 3.0, 0.01);
@@ -43,7 +43,7 @@ TEST(Metal, MirrorsWithoutFuzz) {
   ray out;
   ASSERT_TRUE(scatter(m, ray(point3(-1, 1, 0), vec3(1, -1, 0)), hit_at_origin(vec3(0, 1, 0)),
                       stream(0), attenuation, out));
-  const vec3 d = unit_vector(out.direction());
+  const vec3 d = unit_vector(out.direction);
   EXPECT_NEAR(d.x, std::sqrt(0.5), 1e-12);
   EXPECT_NEAR(d.y, std::sqrt(0.5), 1e-12);
   EXPECT_NEAR(d.z, 0.0, 1e-12);
@@ -61,7 +61,7 @@ TEST(Metal, FuzzPerturbsAndAbsorbsBelowTheSurface) {
                               hit_at_origin(vec3(0, 1, 0)), stream(i), attenuation, out);
     absorbed += !kept;
     if (kept) {
-      EXPECT_GT(glm::dot(out.direction(), vec3(0, 1, 0)), 0.0);
+      EXPECT_GT(glm::dot(out.direction, vec3(0, 1, 0)), 0.0);
     }
   }
   EXPECT_GT(absorbed, 100);
@@ -93,7 +93,7 @@ TEST(Dielectric, TotalInternalReflection) {
     ray out;
     ASSERT_TRUE(scatter(m, ray(point3(0, -1, 0), in), hit_at_origin(vec3(0, -1, 0), false),
                         stream(i), attenuation, out));
-    EXPECT_NEAR(unit_vector(out.direction()).y, -std::cos(a), 1e-12);  // mirrored back down
+    EXPECT_NEAR(unit_vector(out.direction).y, -std::cos(a), 1e-12);  // mirrored back down
     EXPECT_EQ(attenuation, color(1, 1, 1));
   }
 }
@@ -116,7 +116,7 @@ TEST(Dielectric, ReflectsAboutTheSchlickFraction) {
     ray out;
     scatter(m, ray(point3(0, 1, 0), vec3(0, -1, 0)), hit_at_origin(vec3(0, 1, 0)), stream(i),
             attenuation, out);
-    reflected += out.direction().y > 0;
+    reflected += out.direction.y > 0;
   }
   EXPECT_NEAR(reflected / double(n), 0.04, 0.006);
 }

@@ -308,8 +308,8 @@ TEST_F(GpuLayout, GetRayGivesTheCpuCamerasRays) {
     for (int k = 0; k < RTVK_PROBE_POINTS; ++k) {
       SCOPED_TRACE("probe point " + std::to_string(k) + ", width " + std::to_string(width));
       const ray r = cam.get_ray(uv[k].x, uv[k].y, glm::dvec2(uv[k].z, uv[k].w));
-      expect_near_vec(glm::vec3(io.ray_origin[k]), r.origin(), "origin");
-      expect_near_vec(glm::vec3(io.direction[k]), r.direction(), "direction");
+      expect_near_vec(glm::vec3(io.ray_origin[k]), r.origin, "origin");
+      expect_near_vec(glm::vec3(io.direction[k]), r.direction, "direction");
     }
   }
 }

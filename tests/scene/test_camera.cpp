@@ -46,10 +46,10 @@ TEST(Camera, GetRayCornersAndCenter) {
   const camera cam;
   const double vw = 16.0 / 9.0 * 2.0;
   const ray lower_left = cam.get_ray(0, 0);
-  expect_vec(lower_left.origin(), 0, 0, 0);
-  expect_vec(lower_left.direction(), -vw / 2, -1, -1);
-  expect_vec(cam.get_ray(1, 1).direction(), vw / 2, 1, -1);
-  expect_vec(cam.get_ray(0.5, 0.5).direction(), 0, 0, -1);
+  expect_vec(lower_left.origin, 0, 0, 0);
+  expect_vec(lower_left.direction, -vw / 2, -1, -1);
+  expect_vec(cam.get_ray(1, 1).direction, vw / 2, 1, -1);
+  expect_vec(cam.get_ray(0.5, 0.5).direction, 0, 0, -1);
 }
 
 TEST(Camera, InvalidArgumentsThrowNamingTheValue) {
@@ -110,8 +110,8 @@ TEST(PosedCamera, DefaultPoseGivesTheLessonsVectorsAndIgnoresTheLens) {
   // A pinhole: the lens sample moves nothing. Direction = lower_left + 0.25 * horizontal +
   // 0.75 * vertical - origin = (-2 + 1, -1 + 1.5, -1) = (-1, 0.5, -1).
   const ray r = cam.get_ray(0.25, 0.75, {0.5, 0.5});
-  expect_exact(r.origin(), 0, 0, 0);
-  expect_exact(r.direction(), -1, 0.5, -1);
+  expect_exact(r.origin, 0, 0, 0);
+  expect_exact(r.direction, -1, 0.5, -1);
 }
 
 TEST(PosedCamera, LookingDownMinusXFromAnOffsetPoint) {
@@ -134,10 +134,10 @@ TEST(PosedCamera, LookingDownMinusXFromAnOffsetPoint) {
   expect_exact(cam.lens_v(), 0, 1, 0);
   // (s, t) = (0.25, 0.75): (0, 1, 5) + (0, 0, -1) + (0, 1.5, 0) - (1, 2, 3) = (-1, 0.5, 1).
   const ray r = cam.get_ray(0.25, 0.75);
-  expect_exact(r.origin(), 1, 2, 3);
-  expect_exact(r.direction(), -1, 0.5, 1);
+  expect_exact(r.origin, 1, 2, 3);
+  expect_exact(r.direction, -1, 0.5, 1);
   // The center looks straight at lookat, one focus distance away.
-  expect_exact(cam.get_ray(0.5, 0.5).at(1), 0, 2, 3);
+  expect_exact(ray_at(cam.get_ray(0.5, 0.5), 1), 0, 2, 3);
 }
 
 TEST(PosedCamera, ThinLensRaysLeaveTheLensAndMeetOnTheFocusPlane) {
@@ -159,16 +159,16 @@ TEST(PosedCamera, ThinLensRaysLeaveTheLensAndMeetOnTheFocusPlane) {
   // Center, lens (1, 0): offset = 0.5 * 1 * u = (0.5, 0, 0), so the ray leaves (0.5, 0, 4) with
   // direction (-6, -4, 0) + (6, 0, 0) + (0, 4, 0) - (0, 0, 4) - (0.5, 0, 0) = (-0.5, 0, -4).
   const ray center = cam.get_ray(0.5, 0.5, {1, 0});
-  expect_exact(center.origin(), 0.5, 0, 4);
-  expect_exact(center.direction(), -0.5, 0, -4);
-  expect_exact(center.at(1), 0, 0, 0);  // lookat, in focus
+  expect_exact(center.origin, 0.5, 0, 4);
+  expect_exact(center.direction, -0.5, 0, -4);
+  expect_exact(ray_at(center, 1), 0, 0, 0);  // lookat, in focus
 
   // Lower-right corner (1, 0), lens (0, -1): offset = 0.5 * -1 * v = (0, -0.5, 0), origin
   // (0, -0.5, 4), direction (-6, -4, 0) + (12, 0, 0) - (0, 0, 4) - (0, -0.5, 0) = (6, -3.5, -4).
   const ray corner = cam.get_ray(1, 0, {0, -1});
-  expect_exact(corner.origin(), 0, -0.5, 4);
-  expect_exact(corner.direction(), 6, -3.5, -4);
-  expect_exact(corner.at(1), 6, -4, 0);  // the focus plane's lower-right corner
+  expect_exact(corner.origin, 0, -0.5, 4);
+  expect_exact(corner.direction, 6, -3.5, -4);
+  expect_exact(ray_at(corner, 1), 6, -4, 0);  // the focus plane's lower-right corner
 }
 
 TEST(PosedCamera, VfovSixtyAtFocusThreeGivesAViewportTwoRootThreeHigh) {
@@ -192,7 +192,7 @@ TEST(PosedCamera, LookatIsAtTheImageCenter) {
   p.vfov = 20;
   p.focus_dist = 7;
   const camera cam(p, 1.5, 300);
-  const vec3 d = unit_vector(cam.get_ray(0.5, 0.5).direction());
+  const vec3 d = unit_vector(cam.get_ray(0.5, 0.5).direction);
   const vec3 want = unit_vector(p.lookat - p.lookfrom);
   EXPECT_NEAR(glm::length(d - want), 0.0, 1e-12);
   EXPECT_EQ(cam.origin(), p.lookfrom);
@@ -210,7 +210,7 @@ TEST(PosedCamera, VfovGivesTheViewport) {
     EXPECT_NEAR(glm::length(cam.vertical()), h, 1e-12) << vfov;
     EXPECT_NEAR(glm::length(cam.horizontal()), 2.0 * h, 1e-12) << vfov;
     // The top and bottom rows see vfov degrees apart.
-    const vec3 top = cam.get_ray(0.5, 1).direction(), bottom = cam.get_ray(0.5, 0).direction();
+    const vec3 top = cam.get_ray(0.5, 1).direction, bottom = cam.get_ray(0.5, 0).direction;
     const double seen = std::acos(glm::dot(unit_vector(top), unit_vector(bottom))) * 180 / pi;
     EXPECT_NEAR(seen, vfov, 1e-9) << vfov;
   }
@@ -228,9 +228,9 @@ TEST(PosedCamera, LensSamplesMeetOnTheFocusPlane) {
   for (glm::dvec2 lens : {glm::dvec2(1, 0), glm::dvec2(0, -1), glm::dvec2(0.3, 0.4)}) {
     const ray r = cam.get_ray(0.2, 0.6, lens);
     // The origin moves across the lens...
-    EXPECT_NEAR(glm::length(r.origin() - pin.origin()), glm::length(lens), 1e-12);
+    EXPECT_NEAR(glm::length(r.origin - pin.origin), glm::length(lens), 1e-12);
     // ...but every lens sample aims at the same point on the focus plane.
-    EXPECT_NEAR(glm::length(r.at(1) - pin.at(1)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(ray_at(r, 1) - ray_at(pin, 1)), 0.0, 1e-12);
   }
 }
 

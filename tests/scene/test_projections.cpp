@@ -23,7 +23,7 @@ camera posed(projection p, double aspect = 2, int width = 201, double fisheye_fo
 }
 
 void expect_direction(const camera& c, double s, double t, const vec3& want, const char* what) {
-  const vec3 d = unit_vector(c.get_ray(s, t).direction());
+  const vec3 d = unit_vector(c.get_ray(s, t).direction);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(d[k], want[k], 1e-12) << what << ", component " << k;
 }
 
@@ -58,8 +58,8 @@ TEST(Projection, FisheyeAnglesGrowWithTheRadiusAsEachModelSays) {
   expect_direction(posed(projection::fisheye_equidistant, 2, 201, 360), 0.5, 0.0, vec3(0, 0, 1),
                    "equidistant 360, bottom rim: straight behind");
   // Outside the circle: no ray.
-  EXPECT_EQ(eq.get_ray(0.0, 0.0).direction(), vec3(0, 0, 0));
-  EXPECT_EQ(es.get_ray(0.05, 0.5).direction(), vec3(0, 0, 0));
+  EXPECT_EQ(eq.get_ray(0.0, 0.0).direction, vec3(0, 0, 0));
+  EXPECT_EQ(es.get_ray(0.05, 0.5).direction, vec3(0, 0, 0));
 }
 
 TEST(Projection, OrthographicRaysAreParallelFromTheFocusPlaneViewport) {
@@ -72,9 +72,9 @@ TEST(Projection, OrthographicRaysAreParallelFromTheFocusPlaneViewport) {
   const double h = 6 * std::tan(pi / 6), w = 1.5 * h;
   for (auto [s, t] : {std::pair{0.0, 0.0}, {1.0, 1.0}, {0.25, 0.8}}) {
     const ray r = c.get_ray(s, t);
-    EXPECT_NEAR(r.origin().x, (s - 0.5) * w, 1e-12);
-    EXPECT_NEAR(r.origin().y, (t - 0.5) * h, 1e-12);
-    EXPECT_NEAR(r.origin().z, 0, 1e-12);
+    EXPECT_NEAR(r.origin.x, (s - 0.5) * w, 1e-12);
+    EXPECT_NEAR(r.origin.y, (t - 0.5) * h, 1e-12);
+    EXPECT_NEAR(r.origin.z, 0, 1e-12);
     expect_direction(c, s, t, vec3(0, 0, -1), "orthographic");
   }
 }
@@ -102,8 +102,8 @@ TEST(Projection, DirectionsMapBackToTheImagePointsTheyCameFrom) {
     for (double s = 0.3; s <= 0.7; s += 0.05)
       for (double t = 0.1; t <= 0.9; t += 0.05) {
         for (const camera* c : {&eq, &es}) {
-          const vec3 d = unit_vector(c->get_ray(s, t).direction());
-          if (d != d || glm::length(c->get_ray(s, t).direction()) == 0) continue;
+          const vec3 d = unit_vector(c->get_ray(s, t).direction);
+          if (d != d || glm::length(c->get_ray(s, t).direction) == 0) continue;
           const auto [s2, t2] = fisheye_inverse(d, c == &es, fov_deg * pi / 180, aspect);
           EXPECT_NEAR(s2, s, 1e-9) << "fov " << fov_deg << " at " << s << ", " << t;
           EXPECT_NEAR(t2, t, 1e-9) << "fov " << fov_deg << " at " << s << ", " << t;
@@ -113,7 +113,7 @@ TEST(Projection, DirectionsMapBackToTheImagePointsTheyCameFrom) {
   const camera er = posed(projection::equirectangular);
   for (double s = 0.02; s < 1; s += 0.05)
     for (double t = 0.02; t < 1; t += 0.05) {
-      const auto [s2, t2] = equirect_inverse(unit_vector(er.get_ray(s, t).direction()));
+      const auto [s2, t2] = equirect_inverse(unit_vector(er.get_ray(s, t).direction));
       EXPECT_NEAR(s2, s, 1e-9) << s << ", " << t;
       EXPECT_NEAR(t2, t, 1e-9) << s << ", " << t;
     }

@@ -2,26 +2,21 @@
 
 namespace rtvk::gpu {
 
-static_assert(int(projection::perspective) == RTVK_PROJECTION_PERSPECTIVE);
-static_assert(int(projection::orthographic) == RTVK_PROJECTION_ORTHOGRAPHIC);
-static_assert(int(projection::equirectangular) == RTVK_PROJECTION_EQUIRECTANGULAR);
-static_assert(int(projection::fisheye_equidistant) == RTVK_PROJECTION_FISHEYE_EQUIDISTANT);
-static_assert(int(projection::fisheye_equisolid) == RTVK_PROJECTION_FISHEYE_EQUISOLID);
-
 camera_ubo to_ubo(const camera& cam) {
   camera_ubo u{};
-  u.origin = vec3(cam.origin());
-  u.horizontal = vec3(cam.horizontal());
-  u.vertical = vec3(cam.vertical());
-  u.lower_left = vec3(cam.lower_left());
-  u.lens_u = vec3(cam.lens_u());
-  u.lens_v = vec3(cam.lens_v());
-  u.lens_radius = float(cam.lens_radius());
-  u.projection = uint(cam.projection());
-  u.aspect = float(cam.aspect_ratio());
-  u.fisheye_fov = float(cam.fisheye_fov());
-  u.axis_w = vec3(cam.axis_w());
-  u.focus_dist = float(cam.focus_dist());
+  const camera_frame& f = cam.frame();  // get_ray's vectors, each field by its name
+  u.origin = vec3(f.origin);
+  u.horizontal = vec3(f.horizontal);
+  u.vertical = vec3(f.vertical);
+  u.lower_left = vec3(f.lower_left);
+  u.lens_u = vec3(f.lens_u);
+  u.lens_v = vec3(f.lens_v);
+  u.axis_w = vec3(f.axis_w);
+  u.lens_radius = float(f.lens_radius);
+  u.aspect = float(f.aspect);
+  u.fisheye_fov = float(f.fisheye_fov);
+  u.focus_dist = float(f.focus_dist);
+  u.projection = f.projection;
   u.image_width = uint(cam.image_width());
   u.image_height = uint(cam.image_height());
   return u;

@@ -1,42 +1,12 @@
-// Mirrors host/cpu/hittable_sphere.cpp, and the slab test of host/accel/bvh.h. Reads no buffers:
-// probes include it alone; the world's traversal is in world.glsl.
-#ifndef RTVK_SPHERE_GLSL
-#define RTVK_SPHERE_GLSL
-#include "ray.glsl"
-
-// Mirrors hit_distance(sphere, ...) in host/cpu/hittable_sphere.cpp: the nearest root in
-// [t_min, t_max], if any.
-bool hit_distance(gpu_sphere s, ray r, float t_min, float t_max, precise out float t) {
-  t = 0.0;
-  precise vec3 oc = r.origin - s.center;
-  precise float a = dot3(r.direction, r.direction);
-  precise float half_b = dot3(oc, r.direction);
-  // As on the host: half_b^2 - a*c without the cancellation that ruins it in float.
-  precise vec3 l = oc - (half_b / a) * r.direction;
-  precise float discriminant = a * (s.radius * s.radius - dot3(l, l));
-  if (discriminant < 0.0) return false;
-  precise float sqrtd = sqrt(discriminant);
-
-  // As on the host: only a finite root inside the interval is a hit (NaN fails every comparison).
-  precise float root = (-half_b - sqrtd) / a;
-  if (!(t_min <= root && root <= t_max && !isinf(root))) {
-    root = (-half_b + sqrtd) / a;
-    if (!(t_min <= root && root <= t_max && !isinf(root))) return false;
-  }
-  t = root;
-  return true;
-}
-
-// Mirrors record_hit(sphere, ...).
-void record_hit(gpu_sphere s, ray r, float t, precise inout hit_record rec) {
-  rec.t = t;
-  rec.p = ray_at(r, t);
-  precise vec3 outward_normal = divide(rec.p - s.center, s.radius);
-  set_face_normal(rec, r, outward_normal);
-  rec.material = s.material;
-  precise float extent = max(max(abs(s.center.x), abs(s.center.y)), abs(s.center.z));
-  rec.offset = (extent + s.radius) * (1.0 / 1048576.0);  // 2^-20, as on the host
-}
+// The slab test of the GPU's binary tree. Where one source cannot serve: the CPU walks a
+// four-wide tree with SSE (host/cpu/bvh_world.cpp, host/accel/bvh.h), this shader walks the
+// binary tree two children a node in a flat loop; their math is alike (the same safe inverse,
+// origin margin and box widening), their order of visits is not, and
+// GpuBook.BothTraversalsFindTheSameClosestHits holds their closest hits against each other.
+// Reads no buffers; the world's traversal is in world.glsl.
+#ifndef RTVK_BVH_GLSL
+#define RTVK_BVH_GLSL
+#include "ray.h"
 
 // Mirrors safe_inverse in host/accel/bvh.h: no zero components, so no 0 * infinity in the slab
 // test.

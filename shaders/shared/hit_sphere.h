@@ -1,0 +1,54 @@
+// The sphere hit, in the two halves a search over many spheres needs: the nearest root in an
+// interval (hit_sphere), and the record of the winner (record_hit).
+#ifndef RTVK_HIT_SPHERE_H
+#define RTVK_HIT_SPHERE_H
+#include "kernel_lang.h"
+#include "ray.h"
+
+RTVK_KERNELS_BEGIN
+
+// Solves |origin + t*dir - center|^2 = radius^2 with the half-b form of the quadratic: true, and
+// the nearest root in [t_min, t_max] in `t`, when there is one (t = 0 when there is none).
+inline bool hit_sphere(real3 center, real radius, ray r, real t_min, real t_max,
+                       precise OUT(real) t) {
+  t = real(0.0);
+  precise real3 oc = r.origin - center;
+  precise real a = dot3(r.direction, r.direction);
+  precise real half_b = dot3(oc, r.direction);
+  // half_b^2 - a*c, written as a * (radius^2 - |l|^2) with l the offset from the center to the
+  // line's closest point: the same number without subtracting two large, nearly equal squares.
+  // In float (the GPU) the lesson's form loses most digits for small, distant spheres.
+  precise real3 l = oc - (half_b / a) * r.direction;
+  precise real discriminant = a * (radius * radius - dot3(l, l));
+  if (discriminant < real(0.0)) return false;
+  precise real sqrtd = sqrt(discriminant);
+
+  // The nearer root first; the farther one only when the nearer is out of range. A root that is
+  // not a finite number inside the interval is no hit: NaN (a degenerate ray: zero or infinite
+  // direction) fails every comparison, and infinity (overflow) would pass `<= t_max` when t_max
+  // is infinite.
+  precise real root = (-half_b - sqrtd) / a;
+  if (!(t_min <= root && root <= t_max && !isinf(root))) {
+    root = (-half_b + sqrtd) / a;
+    if (!(t_min <= root && root <= t_max && !isinf(root))) return false;
+  }
+  t = root;
+  return true;
+}
+
+// The record of a hit at t on the sphere.
+inline void record_hit(real3 center, real radius, uint material, ray r, real t,
+                       precise INOUT(hit_record) rec) {
+  rec.t = t;
+  rec.p = ray_at(r, t);
+  precise real3 outward_normal = divide(rec.p - center, radius);
+  set_face_normal(rec, r, outward_normal);
+  rec.material = material;
+  // About eight float ulps of the largest coordinate involved: covers the GPU's rounding.
+  precise real extent = max(max(abs(center.x), abs(center.y)), abs(center.z));
+  rec.offset = (extent + radius) * real(1.0 / 1048576.0);  // 2^-20
+}
+
+RTVK_KERNELS_END
+
+#endif  // RTVK_HIT_SPHERE_H

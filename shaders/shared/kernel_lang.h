@@ -1,0 +1,81 @@
+// The language the shared kernels are written in: the common subset of GLSL 450 and C++20, with
+// the few words that differ bridged here. Every header of shaders/shared/ that holds rendering
+// math includes this first, and compiles twice: into the shaders (glslangValidator) and into the
+// C++ backends, so that "the GPU mirrors get_ray" is "the GPU compiles get_ray".
+//
+// Kernels write
+//   real, real2, real3  the compilation's scalar and vectors: GLSL float; C++ RTVK_REAL (double
+//                       for the CPU reference; float for the tests that hold the C++ against
+//                       the GPU operation for operation). One typedef per compilation.
+//   float, uint, bool   the same in both languages, whatever `real` is.
+//   real(2.0) * v       a literal next to a vector: C++'s float vectors take no double scalar.
+//   OUT(T), INOUT(T)    GLSL's out and inout parameters (C++: references).
+//   precise             GLSL: no reassociation and no fused multiply-adds; C++ is built with
+//                       -ffp-contract=off and never reassociates, so the word is empty there.
+//   inline              C++: header functions; GLSL: empty.
+// and call only the GLSL built-ins listed below, which C++ finds in std:: and glm.
+#ifndef RTVK_KERNEL_LANG_H
+#define RTVK_KERNEL_LANG_H
+
+#ifdef __cplusplus
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+// A translation unit picks its scalar before the first kernel header, e.g. the float one of the
+// tests: #define RTVK_REAL float, #define RTVK_KERNEL_NAMESPACE rtvk::f32.
+#ifndef RTVK_REAL
+#define RTVK_REAL double
+#endif
+#ifndef RTVK_KERNEL_NAMESPACE
+#define RTVK_KERNEL_NAMESPACE rtvk
+#endif
+#define RTVK_KERNELS_BEGIN namespace RTVK_KERNEL_NAMESPACE {
+#define RTVK_KERNELS_END }
+#define OUT(T) T&
+#define INOUT(T) T&
+#define precise
+
+namespace RTVK_KERNEL_NAMESPACE {
+using real = RTVK_REAL;
+using real2 = glm::vec<2, real>;
+using real3 = glm::vec<3, real>;
+using uint = std::uint32_t;
+// The GLSL built-ins the kernels call.
+using glm::max;
+using glm::min;
+using std::abs;
+using std::asin;
+using std::cos;
+using std::floor;
+using std::isinf;
+using std::sin;
+using std::sqrt;
+// Where one source cannot serve: GLSL has no cube root. pow(x, 1/3) there, cbrt here; the two
+// differ in the last bits, so the probes compare them with a bound.
+inline real cube_root(real x) {
+  return std::cbrt(x);
+}
+}  // namespace RTVK_KERNEL_NAMESPACE
+
+#else  // GLSL
+
+#define RTVK_KERNELS_BEGIN
+#define RTVK_KERNELS_END
+#define OUT(T) out T
+#define INOUT(T) inout T
+#define inline
+#define real float
+#define real2 vec2
+#define real3 vec3
+precise float cube_root(float x) {
+  return pow(x, 1.0 / 3.0);
+}
+
+#endif
+
+#endif  // RTVK_KERNEL_LANG_H

@@ -1,0 +1,123 @@
+// The one random number generator of both backends, counter-based: the numbers for (seed, pixel,
+// sample, bounce, dimension) are a pure function of those integers, computed with the same 32-bit
+// integer arithmetic in C++ and GLSL, so both draw identical numbers. And the samplers that turn
+// them into directions and lens points.
+#ifndef RTVK_RANDOM_H
+#define RTVK_RANDOM_H
+#include "kernel_lang.h"
+
+RTVK_KERNELS_BEGIN
+
+// Dimensions within one bounce; at most 16 (4 bits).
+const uint dim_jitter_u = 0u;     // bounce 0: pixel jitter
+const uint dim_jitter_v = 1u;     //
+const uint dim_lens_a = 2u;       // bounce 0: lens sample
+const uint dim_lens_b = 3u;       //
+const uint dim_direction_a = 0u;  // bounce >= 1: scatter direction
+const uint dim_direction_b = 1u;  //
+const uint dim_fuzz_radius = 2u;  // bounce >= 1: metal fuzz
+const uint dim_choice = 3u;       // bounce >= 1: reflect or refract
+
+// A 32-bit integer hash with good avalanche ("lowbias32", Chris Wellons).
+inline uint hash32(uint x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+// The part of random_bits that depends on the sample only, shared by all its numbers.
+inline uint sample_key(uint seed, uint pixel, uint sample_index) {
+  return hash32(hash32(hash32(seed ^ 0x9e3779b9u) ^ pixel) ^ sample_index);
+}
+
+inline uint random_bits(uint seed, uint pixel, uint sample_index, uint bounce, uint dim) {
+  return hash32(sample_key(seed, pixel, sample_index) ^ ((bounce << 4) | dim));
+}
+
+// The top 24 bits as a float in [0, 1): exact in float and in double alike.
+inline precise float bits_to_unit(uint bits) {
+  return float(bits >> 8) * (1.0f / 16777216.0f);
+}
+
+inline precise float random_float(uint seed, uint pixel, uint sample_index, uint bounce, uint dim) {
+  return bits_to_unit(random_bits(seed, pixel, sample_index, bounce, dim));
+}
+
+// The random numbers of one pixel sample at one bounce. The sample's key is hashed once, when the
+// stream is made: every number then costs one hash, not four (the same numbers).
+struct random_stream {
+  uint key;     // sample_key(seed, pixel y * width + x from the top, sample index)
+  uint bounce;  // 0 for the camera ray, k for the k-th scatter
+#ifdef __cplusplus
+  random_stream() : random_stream(0u, 0u) {}
+  random_stream(uint k, uint b) : key(k), bounce(b) {}
+#endif
+};
+
+// The stream of a pixel sample's camera ray (bounce 0).
+inline random_stream pixel_sample_stream(uint seed, uint pixel, uint sample_index) {
+  return random_stream(sample_key(seed, pixel, sample_index), 0u);
+}
+
+inline precise float rnd(random_stream s, uint dim) {
+  return bits_to_unit(hash32(s.key ^ ((s.bounce << 4) | dim)));
+}
+
+inline random_stream at_bounce(random_stream s, uint b) {
+  return random_stream(s.key, b);
+}
+
+// (cos, sin) of the angle 2 pi b, b in [0, 1), without libm's sincos (a tenth of the CPU's time
+// when it was called for every bounce): b picks the nearest quarter turn q, and the rest, an
+// angle of at most pi/4, goes through Taylor polynomials to theta^15 and theta^16, whose error
+// (< 1e-16) is below double's rounding.
+inline precise real2 turn_cos_sin(real b) {
+  int q = int(real(4.0) * b + real(0.5));  // the nearest quarter turn, 0 .. 4
+  precise real theta = (real(4.0) * b - real(q)) * real(3.1415926535897932385 / 2.0);
+  precise real t2 = theta * theta;
+  precise real t4 = t2 * t2;
+  precise real t8 = t4 * t4;
+  // Estrin's scheme: independent pairs, a short chain of dependent multiplies.
+  precise real s =
+      theta *
+      ((real(1.0) + t2 * real(-1.0 / 6.0)) + t4 * (real(1.0 / 120.0) + t2 * real(-1.0 / 5040.0)) +
+       t8 * ((real(1.0 / 362880.0) + t2 * real(-1.0 / 39916800.0)) +
+             t4 * (real(1.0 / 6227020800.0) + t2 * real(-1.0 / 1307674368000.0))));
+  precise real c = (real(1.0) + t2 * real(-1.0 / 2.0)) +
+                   t4 * (real(1.0 / 24.0) + t2 * real(-1.0 / 720.0)) +
+                   t8 * ((real(1.0 / 40320.0) + t2 * real(-1.0 / 3628800.0)) +
+                         t4 * (real(1.0 / 479001600.0) + t2 * real(-1.0 / 87178291200.0))) +
+                   t8 * t8 * real(1.0 / 20922789888000.0);
+  // Turned by q quarter turns without a branch (a random quadrant would mispredict it most
+  // times): the 0-or-1 factors keep the values exact.
+  precise real odd = real(q & 1);
+  precise real even = real(1.0) - odd;
+  precise real half_turn = real(1.0) - real(q & 2);
+  return real2(half_turn * (c * even - s * odd), half_turn * (s * even + c * odd));
+}
+
+// Uniform on the unit sphere's surface, from two uniform numbers (no rejection loop, so both
+// backends draw the same count of numbers).
+inline precise real3 random_unit_vector(real a, real b) {
+  precise real z = real(1.0) - real(2.0) * a;
+  precise real r = sqrt(max(real(0.0), real(1.0) - z * z));
+  precise real2 phi = turn_cos_sin(b);
+  return real3(r * phi.x, r * phi.y, z);
+}
+
+// Uniform inside the unit sphere: the radius's cube has to be uniform.
+inline precise real3 random_in_unit_sphere(real a, real b, real c) {
+  return cube_root(c) * random_unit_vector(a, b);
+}
+
+// Uniform inside the unit disk (z = 0 plane).
+inline precise real2 random_in_unit_disk(real a, real b) {
+  return sqrt(a) * turn_cos_sin(b);
+}
+
+RTVK_KERNELS_END
+
+#endif  // RTVK_RANDOM_H

@@ -1,0 +1,69 @@
+// The lesson's ray and hit record, and the vector helpers every kernel uses: one source for the
+// C++ backends and the shaders (kernel_lang.h).
+#ifndef RTVK_RAY_H
+#define RTVK_RAY_H
+#include "kernel_lang.h"
+
+RTVK_KERNELS_BEGIN
+
+const real pi = real(3.1415926535897932385);
+
+// glm's dot and length, operation for operation: (x * x' + y * y') + z * z', no fused
+// multiply-adds (GLSL's built-ins leave the order and the fusing to the device).
+inline precise real dot3(real3 a, real3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline precise real length3(real3 v) {
+  return sqrt(dot3(v, v));
+}
+
+// The lesson divides as (1/t) * v: the reference image is bit for bit the lesson's.
+inline precise real3 divide(real3 v, real t) {
+  return (real(1.0) / t) * v;
+}
+inline precise real3 unit_vector(real3 v) {
+  return divide(v, length3(v));
+}
+
+// P(t) = origin + t * direction.
+struct ray {
+  precise real3 origin;     // where the ray starts, scene units
+  precise real3 direction;  // not normalized: t is measured in lengths of this vector
+#ifdef __cplusplus
+  ray() = default;
+  ray(real3 o, real3 d) : origin(o), direction(d) {}
+#endif
+};
+
+inline precise real3 ray_at(ray r, real t) {
+  return r.origin + t * r.direction;
+}
+
+struct hit_record {
+  precise real3 p;       // where the ray hit, scene units
+  precise real3 normal;  // unit surface normal, facing against the ray
+  precise real t;        // ray parameter of the hit
+  bool front_face;       // the ray arrived from outside the surface
+  uint material;         // index into the scene's materials
+  precise real offset;   // how far a ray leaving p starts off the surface, scene units
+};
+
+// Where a ray leaving the hit along `direction` starts: lifted off the surface to the side it
+// leaves to, by more than float rounding can misplace p on a large sphere. Without it, float hit
+// points on the book's radius-1000 ground land inside it often enough that rays leaving it hit it
+// again ("acne"), and the GPU's image drifts from the CPU's.
+inline precise real3 scatter_origin(hit_record rec, real3 direction) {
+  precise real facing = dot3(direction, rec.normal);
+  return rec.p + (facing >= real(0.0) ? rec.offset : -rec.offset) * rec.normal;
+}
+
+// Stores the normal so that it always opposes the incoming ray.
+inline void set_face_normal(precise INOUT(hit_record) rec, ray r, real3 outward_normal) {
+  precise real facing = dot3(r.direction, outward_normal);
+  rec.front_face = facing < real(0.0);
+  rec.normal = rec.front_face ? outward_normal : -outward_normal;
+}
+
+RTVK_KERNELS_END
+
+#endif  // RTVK_RAY_H

@@ -1,0 +1,78 @@
+// ray_color, the book's path loop, taken one bounce at a time so that both backends run it: the
+// CPU walks one path to its end (host/cpu/shading.cpp), the GPU interleaves a pixel's samples
+// path after path (shaders/shading.glsl). Each backend searches its world for the hit in
+// between; everything else is here.
+#ifndef RTVK_RAY_COLOR_H
+#define RTVK_RAY_COLOR_H
+#include "kernel_lang.h"
+#include "random.h"
+#include "ray.h"
+#include "scatter.h"
+#include "shared_types.h"
+
+RTVK_KERNELS_BEGIN
+
+// Hits closer than this are ignored: a scattered ray must not hit its own starting point again
+// through rounding ("shadow acne").
+const real t_min = real(0.001);
+
+// The sky seen along direction d: `horizon` at the horizon blending to `zenith` overhead (the
+// book's white to blue by default).
+inline precise real3 sky_color(real3 d, real3 horizon, real3 zenith) {
+  precise real3 unit_direction = unit_vector(d);
+  precise real t = real(0.5) * (unit_direction.y + real(1.0));
+  return (real(1.0) - t) * horizon + t * zenith;
+}
+
+// ray_color's loop variables: a path in flight.
+struct path_state {
+  ray r;                     // the ray about to be traced
+  precise real3 throughput;  // product of the attenuations so far
+  uint depth;                // bounces so far
+  random_stream s;           // the path's random numbers (pixel, sample)
+};
+
+inline path_state start_path(ray r, random_stream s) {
+  path_state p;
+  p.r = r;
+  p.throughput = real3(1.0);
+  p.depth = 0u;
+  p.s = s;
+  return p;
+}
+
+// Before tracing p.r: true when the path ends black without it, out of bounces or without a ray
+// (a camera gives a zero direction where its model sees nothing).
+inline bool path_ends_unlit(path_state p, uint max_depth) {
+  return p.depth >= max_depth || p.r.direction == real3(0.0);
+}
+
+// p.r escaped: the color the path gathers from the sky.
+inline precise real3 path_missed(path_state p, real3 horizon, real3 zenith) {
+  return p.throughput * sky_color(p.r.direction, horizon, zenith);
+}
+
+// p.r hit `rec`, whose material is of `type` with these parameters (scatter's). Either ends the
+// path, its color in `c` (the lesson's normal shading; black when absorbed), or scatters it for
+// the next trip (false).
+inline bool path_hit(precise INOUT(path_state) p, hit_record rec, uint type, real3 albedo,
+                     real fuzz, real ir, precise OUT(real3) c) {
+  c = real3(0.0);
+  if (type == RTVK_MATERIAL_NORMAL) {
+    c = p.throughput * (real(0.5) * (rec.normal + real3(1.0, 1.0, 1.0)));
+    return true;
+  }
+  precise real3 attenuation;
+  precise ray scattered;
+  if (!scatter(type, albedo, fuzz, ir, p.r, rec, at_bounce(p.s, p.depth + 1u), attenuation,
+               scattered))
+    return true;
+  p.throughput *= attenuation;
+  p.r = scattered;
+  ++p.depth;
+  return false;
+}
+
+RTVK_KERNELS_END
+
+#endif  // RTVK_RAY_COLOR_H

@@ -1,0 +1,93 @@
+// What each material does with a ray that hits it: the book's lambertian, metal and dielectric.
+// Each returns false when the ray is absorbed; `s` is the stream of this bounce.
+#ifndef RTVK_SCATTER_H
+#define RTVK_SCATTER_H
+#include "kernel_lang.h"
+#include "random.h"
+#include "ray.h"
+#include "shared_types.h"
+
+RTVK_KERNELS_BEGIN
+
+// Mirror reflection of v about the unit normal n.
+inline precise real3 reflect_dir(real3 v, real3 n) {
+  return v - real(2.0) * dot3(v, n) * n;
+}
+
+// Snell's law for a unit direction uv entering a surface with unit normal n (facing against uv),
+// etai_over_etat = n1 / n2.
+inline precise real3 refract_dir(real3 uv, real3 n, real etai_over_etat) {
+  precise real cos_theta = min(dot3(-uv, n), real(1.0));
+  precise real3 r_out_perp = etai_over_etat * (uv + cos_theta * n);
+  precise real3 r_out_parallel = -sqrt(abs(real(1.0) - dot3(r_out_perp, r_out_perp))) * n;
+  return r_out_perp + r_out_parallel;
+}
+
+// Schlick's approximation of the reflected fraction; (1 - cosine)^5 without pow.
+inline precise real schlick_reflectance(real cosine, real ref_idx) {
+  precise real r0 = (real(1.0) - ref_idx) / (real(1.0) + ref_idx);
+  r0 = r0 * r0;
+  precise real x = real(1.0) - cosine;
+  precise real x2 = x * x;
+  return r0 + (real(1.0) - r0) * (x2 * x2 * x);
+}
+
+inline bool scatter_lambertian(real3 albedo, hit_record rec, random_stream s,
+                               precise OUT(real3) attenuation, precise OUT(ray) scattered) {
+  precise real3 direction =
+      rec.normal + random_unit_vector(real(rnd(s, dim_direction_a)), real(rnd(s, dim_direction_b)));
+  // A random vector opposite the normal would give a zero direction: keep the normal instead.
+  const real e = real(1e-8);
+  if (abs(direction.x) < e && abs(direction.y) < e && abs(direction.z) < e) direction = rec.normal;
+  scattered = ray(scatter_origin(rec, direction), direction);
+  attenuation = albedo;
+  return true;
+}
+
+inline bool scatter_metal(real3 albedo, real fuzz, ray r_in, hit_record rec, random_stream s,
+                          precise OUT(real3) attenuation, precise OUT(ray) scattered) {
+  precise real3 reflected = reflect_dir(unit_vector(r_in.direction), rec.normal);
+  precise real3 fuzz_dir = random_in_unit_sphere(
+      real(rnd(s, dim_direction_a)), real(rnd(s, dim_direction_b)), real(rnd(s, dim_fuzz_radius)));
+  precise real3 direction = reflected + fuzz * fuzz_dir;
+  scattered = ray(scatter_origin(rec, direction), direction);
+  attenuation = albedo;
+  precise real facing = dot3(scattered.direction, rec.normal);
+  return facing > real(0.0);
+}
+
+inline bool scatter_dielectric(real ir, ray r_in, hit_record rec, random_stream s,
+                               precise OUT(real3) attenuation, precise OUT(ray) scattered) {
+  attenuation = real3(1.0, 1.0, 1.0);
+  precise real refraction_ratio = rec.front_face ? (real(1.0) / ir) : ir;
+  precise real3 unit_direction = unit_vector(r_in.direction);
+  precise real cos_theta = min(dot3(-unit_direction, rec.normal), real(1.0));
+  precise real sin_theta = sqrt(real(1.0) - cos_theta * cos_theta);
+  bool cannot_refract = refraction_ratio * sin_theta > real(1.0);
+  precise real3 direction =
+      cannot_refract || schlick_reflectance(cos_theta, refraction_ratio) > real(rnd(s, dim_choice))
+          ? reflect_dir(unit_direction, rec.normal)
+          : refract_dir(unit_direction, rec.normal, refraction_ratio);
+  scattered = ray(scatter_origin(rec, direction), direction);
+  return true;
+}
+
+// The material of type `type` (RTVK_MATERIAL_*) with these parameters: albedo for lambertian and
+// metal, fuzz for metal, ir for dielectric. The normal material scatters nothing (ray_color
+// shades it).
+inline bool scatter(uint type, real3 albedo, real fuzz, real ir, ray r_in, hit_record rec,
+                    random_stream s, precise OUT(real3) attenuation, precise OUT(ray) scattered) {
+  attenuation = real3(0.0);
+  scattered = r_in;
+  if (type == RTVK_MATERIAL_LAMBERTIAN)
+    return scatter_lambertian(albedo, rec, s, attenuation, scattered);
+  if (type == RTVK_MATERIAL_METAL)
+    return scatter_metal(albedo, fuzz, r_in, rec, s, attenuation, scattered);
+  if (type == RTVK_MATERIAL_DIELECTRIC)
+    return scatter_dielectric(ir, r_in, rec, s, attenuation, scattered);
+  return false;
+}
+
+RTVK_KERNELS_END
+
+#endif  // RTVK_SCATTER_H
