@@ -1,0 +1,38 @@
+// The shared kernels with float as `real` (kernels_f32.h). Built with -Wdouble-promotion as an
+// error (tests/CMakeLists.txt): a literal that would silently widen the kernel's arithmetic to
+// double, where the GPU computes in float, fails the build.
+#define RTVK_REAL float
+#define RTVK_KERNEL_NAMESPACE rtvk::f32::k
+#include "kernels_f32.h"
+
+#include "camera_rays.h"
+#include "hit_sphere.h"
+#include "random.h"
+
+namespace rtvk::f32 {
+
+glm::vec2 turn_cos_sin(float b) { return k::turn_cos_sin(b); }
+
+ray_f get_ray(const gpu::camera_ubo& cam, float s, float t, glm::vec2 lens) {
+  k::camera_frame f{};
+  f.origin = cam.origin;
+  f.horizontal = cam.horizontal;
+  f.vertical = cam.vertical;
+  f.lower_left = cam.lower_left;
+  f.lens_u = cam.lens_u;
+  f.lens_v = cam.lens_v;
+  f.axis_w = cam.axis_w;
+  f.lens_radius = cam.lens_radius;
+  f.aspect = cam.aspect;
+  f.fisheye_fov = cam.fisheye_fov;
+  f.focus_dist = cam.focus_dist;
+  f.projection = cam.projection;
+  const k::ray r = k::get_ray(f, s, t, lens);
+  return {r.origin, r.direction};
+}
+
+bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_max, float& t) {
+  return k::hit_sphere(center, radius, k::ray(r.origin, r.direction), t_min, t_max, t);
+}
+
+}  // namespace rtvk::f32

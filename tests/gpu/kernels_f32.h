@@ -1,0 +1,28 @@
+#pragma once
+// The shared kernels (shaders/shared) compiled a second time in C++, with float as their `real`:
+// the GPU's arithmetic on the host, operation for operation, so that the probe shaders' results
+// can be held to it exactly where the operations are exactly rounded (+, -, *) and to a stated
+// bound where the device's sqrt, division and transcendentals may differ. The compilation is its
+// own translation unit (kernels_f32.cpp), since a unit compiles the kernels with one `real` only.
+#include <cstdint>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "shared_types.h"
+
+namespace rtvk::f32 {
+
+glm::vec2 turn_cos_sin(float b);
+
+struct ray_f {
+  glm::vec3 origin;     // scene units
+  glm::vec3 direction;  // not normalized
+};
+// get_ray on the camera_ubo's vectors (what the GPU reads), in float.
+ray_f get_ray(const gpu::camera_ubo& cam, float s, float t, glm::vec2 lens);
+
+// hit_sphere in float: true and the root in t, or false.
+bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_max, float& t);
+
+}  // namespace rtvk::f32

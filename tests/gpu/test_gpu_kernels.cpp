@@ -1,0 +1,127 @@
+// The shared kernels (shaders/shared) called from C++ and from the probe shaders on the same
+// inputs. The C++ side is the kernels' float compilation (kernels_f32.h): where a kernel uses only
+// +, - and * (which Vulkan rounds correctly, as C++ does) the two must agree bit for bit; where it
+// divides, takes a square root or a sine, the device may round differently, and the bound is
+// stated.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "camera.h"
+#include "gpu_fixture.h"
+#include "kernels_f32.h"
+#include "packing.h"
+#include "probe.h"
+
+namespace rtvk {
+namespace {
+
+class GpuKernels : public test::GpuTest {};
+
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// How many float steps apart a and b are (0: equal).
+std::int64_t ulps_apart(float a, float b) {
+  std::int32_t ia, ib;
+  std::memcpy(&ia, &a, 4);
+  std::memcpy(&ib, &b, 4);
+  if (ia < 0) ia = std::numeric_limits<std::int32_t>::min() - ia;
+  if (ib < 0) ib = std::numeric_limits<std::int32_t>::min() - ib;
+  return std::abs(std::int64_t(ia) - std::int64_t(ib));
+}
+
+// turn_cos_sin is multiplies and adds only: the GPU's is the float compilation's, bit for bit.
+TEST_F(GpuKernels, TurnCosSinIsTheFloatCompilationBitForBit) {
+  std::vector<gpu::rng_probe_entry> entries;
+  for (std::uint32_t pixel = 0; pixel < 4096; ++pixel)
+    entries.push_back({pixel, 0, 1, 0, 0, 0, 0, 0});
+  const auto out = gpu::run_rng_probe(gpu(), entries);
+  ASSERT_EQ(out.size(), entries.size());
+  int differ = 0;
+  for (const auto& e : out) {
+    const glm::vec2 cpu = f32::turn_cos_sin(e.value);
+    differ += !same_bits(e.turn_cos, cpu.x) || !same_bits(e.turn_sin, cpu.y);
+  }
+  EXPECT_EQ(differ, 0) << "of " << out.size();
+}
+
+// get_ray of every camera model. The lens models (perspective, orthographic) are multiplies and
+// adds: bit for bit. The panoramic ones take cos, sin and asin, which Vulkan leaves to the device
+// (an absolute error of 2^-11 in [-pi, pi] for sin and cos): within 4e-4 of the float
+// compilation, to the direction's length (a unit vector).
+TEST_F(GpuKernels, GetRayIsTheFloatCompilation) {
+  const std::array<glm::vec4, RTVK_PROBE_POINTS> uv = {
+      glm::vec4(0, 0, 0, 0), glm::vec4(1, 0.25f, 0, 0), glm::vec4(0.3f, 1, 0, 0),
+      glm::vec4(0.9f, 0.6f, 0.6f, -0.3f), glm::vec4(0.5f, 0.5f, -0.25f, 0.5f)};
+  for (const char* name : {"perspective", "orthographic", "equirectangular",
+                           "fisheye-equidistant", "fisheye-equisolid"}) {
+    camera_pose pose;
+    pose.lookfrom = point3(13, 2, 3);
+    pose.lookat = point3(0, 0, 0);
+    pose.vfov = 20;
+    pose.projection = *projection_from_name(name);
+    pose.aperture = has_lens(pose.projection) ? 0.1 : 0;
+    pose.focus_dist = 10;
+    pose.fisheye_fov = 200;
+    const camera cam(pose, 1.5, 300);
+    const gpu::camera_ubo ubo = gpu::to_ubo(cam);
+    const gpu::probe_io io = gpu::run_probe(gpu(), cam, uv);
+    for (int k = 0; k < RTVK_PROBE_POINTS; ++k) {
+      SCOPED_TRACE(std::string(name) + ", probe point " + std::to_string(k));
+      const f32::ray_f cpu = f32::get_ray(ubo, uv[k].x, uv[k].y, glm::vec2(uv[k].z, uv[k].w));
+      for (int c = 0; c < 3; ++c) {
+        if (has_lens(pose.projection)) {
+          EXPECT_TRUE(same_bits(io.ray_origin[k][c], cpu.origin[c]))
+              << io.ray_origin[k][c] << " vs " << cpu.origin[c];
+          EXPECT_TRUE(same_bits(io.direction[k][c], cpu.direction[c]))
+              << io.direction[k][c] << " vs " << cpu.direction[c];
+        } else {
+          EXPECT_TRUE(same_bits(io.ray_origin[k][c], cpu.origin[c]));
+          EXPECT_NEAR(io.direction[k][c], cpu.direction[c], 4e-4);
+        }
+      }
+    }
+  }
+}
+
+// hit_sphere divides and takes a square root (Vulkan: division within 2.5 ulp, sqrt as the
+// reciprocal of inversesqrt): the same hits, and roots within 16 ulp of the float compilation's,
+// over random rays into random spheres.
+TEST_F(GpuKernels, HitSphereIsTheFloatCompilation) {
+  std::mt19937 gen(24);
+  std::uniform_real_distribution<float> coord(-20, 20), size(0.05f, 5), unit(-1, 1);
+  std::vector<gpu::hit_probe_entry> entries;
+  for (int i = 0; i < 4096; ++i) {
+    gpu::hit_probe_entry e{};
+    e.center = glm::vec3(coord(gen), coord(gen), coord(gen));
+    e.radius = size(gen);
+    e.origin = glm::vec3(coord(gen), coord(gen), coord(gen));
+    // Half aimed near the sphere, half anywhere.
+    const glm::vec3 jitter(unit(gen), unit(gen), unit(gen));
+    e.direction = i % 2 ? e.center + e.radius * jitter - e.origin : jitter;
+    e.t_min = 0.001f;
+    e.t_max = i % 3 ? 3.402823466e+38f : 2.0f;
+    entries.push_back(e);
+  }
+  const auto out = gpu::run_hit_probe(gpu(), entries);
+  ASSERT_EQ(out.size(), entries.size());
+  int hits = 0, exact = 0;
+  std::int64_t worst = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const auto& e = entries[i];
+    float t = 0;
+    const bool hit = f32::hit_sphere(e.center, e.radius, {e.origin, e.direction}, e.t_min, e.t_max, t);
+    ASSERT_EQ(out[i].hit != 0, hit) << "entry " << i << ": gpu t " << out[i].t << ", cpu t " << t;
+    if (!hit) continue;
+    ++hits;
+    exact += same_bits(out[i].t, t);
+    worst = std::max(worst, ulps_apart(out[i].t, t));
+  }
+  EXPECT_GT(hits, 1000) << "the rays must hit often enough to test the roots";
+  EXPECT_LE(worst, 16) << exact << " of " << hits << " roots exact";
+}
+
+}  // namespace
+}  // namespace rtvk
