@@ -1,8 +1,9 @@
 // The slab test of the GPU's binary tree. Where one source cannot serve: the CPU walks a
 // four-wide tree with SSE (host/cpu/bvh_world.cpp, host/accel/bvh.h), this shader walks the
 // binary tree two children a node in a flat loop; their math is alike (the same safe inverse,
-// origin margin and box widening), their order of visits is not, and
-// GpuBook.BothTraversalsFindTheSameClosestHits holds their closest hits against each other.
+// origin margin and box widening), their order of visits is not. Both test spheres with the shared
+// hit_sphere and break ties to the later sphere, so each must find what a plain scan finds:
+// Accel.BvhAndThreadsGiveTheIdenticalCpuImage and GpuBook.BvhGivesTheIdenticalGpuImage.
 // Reads no buffers; the world's traversal is in world.glsl.
 #ifndef RTVK_BVH_GLSL
 #define RTVK_BVH_GLSL
