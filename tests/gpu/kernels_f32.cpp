@@ -11,7 +11,9 @@
 
 namespace rtvk::f32 {
 
-glm::vec2 turn_cos_sin(float b) { return k::turn_cos_sin(b); }
+glm::vec2 turn_cos_sin(float b) {
+  return k::turn_cos_sin(b);
+}
 
 ray_f get_ray(const gpu::camera_ubo& cam, float s, float t, glm::vec2 lens) {
   k::camera_frame f{};

@@ -34,22 +34,6 @@ TEST_F(GpuBook, RandomNumbersAreBitIdentical) {
   }
 }
 
-// The directions' angles: the shader's turn_cos_sin, in float, is the host's to float precision
-// (the same polynomials, evaluated in float).
-TEST_F(GpuBook, TurnCosSinIsTheHostsToFloatPrecision) {
-  std::vector<gpu::rng_probe_entry> entries;
-  for (std::uint32_t pixel = 0; pixel < 4096; ++pixel)
-    entries.push_back({pixel, 0, 1, 0, 0, 0, 0, 0});
-  const auto out = gpu::run_rng_probe(gpu(), entries);
-  ASSERT_EQ(out.size(), entries.size());
-  double worst = 0;
-  for (const auto& e : out) {
-    const glm::dvec2 cpu = turn_cos_sin(e.value);
-    worst = std::max({worst, std::abs(e.turn_cos - cpu.x), std::abs(e.turn_sin - cpu.y)});
-  }
-  EXPECT_LE(worst, 3e-7);
-}
-
 void expect_agreement(gpu::gpu_context& ctx, scene s, int width, int spp) {
   s.render.width = width;
   s.render.spp = spp;
