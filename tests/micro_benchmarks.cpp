@@ -135,7 +135,7 @@ void BM_Traversal(benchmark::State& state) {
   const std::vector<ray> rays = camera_rays(s, 4096);
   std::size_t i = 0;
   for (auto _ : state) {
-    hit_record rec;
+    hit_record rec{};
     benchmark::DoNotOptimize(world->hit(rays[i++ & 4095], 0.001, 1e30, rec));
   }
   state.SetItemsProcessed(state.iterations());
@@ -162,7 +162,7 @@ std::vector<ray> book_final_rays(int count) {
   std::vector<ray> rays = camera_rays(s, count / 2);
   for (int i = 0; int(rays.size()) < count; ++i) {
     const ray& in = rays[std::size_t(i)];
-    hit_record rec;
+    hit_record rec{};
     if (!world->hit(in, 0.001, std::numeric_limits<double>::infinity(), rec)) continue;
     color attenuation;
     ray out;
@@ -179,7 +179,7 @@ void BM_BookFinalRays(benchmark::State& state) {
   const std::vector<ray> rays = book_final_rays(8192);
   std::size_t i = 0;
   for (auto _ : state) {
-    hit_record rec;
+    hit_record rec{};
     benchmark::DoNotOptimize(
         world->hit(rays[i++ & 8191], 0.001, std::numeric_limits<double>::infinity(), rec));
   }

@@ -3,7 +3,7 @@
 namespace rtvk {
 
 bool hittable_list::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
-  hit_record temp;
+  hit_record temp{};
   bool hit_anything = false;
   double closest_so_far = t_max;
   for (const auto& object : objects) {

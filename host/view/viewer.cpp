@@ -348,7 +348,7 @@ void session::focus_at(double x, double y) {
   const double u = pixel_coordinate(px, acc_.width);
   const double v = pixel_coordinate(acc_.height - 1 - py, acc_.height);
   const ray r = cam.get_ray(u, v);
-  hit_record rec;
+  hit_record rec{};
   if (!world_->hit(r, 1e-3, std::numeric_limits<double>::infinity(), rec)) return;
   const double along = glm::dot(rec.p - cam.origin(), -cam.axis_w());
   if (along > 0) pose_.focus_dist = along;

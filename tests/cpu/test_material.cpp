@@ -8,7 +8,7 @@ namespace rtvk {
 namespace {
 
 hit_record hit_at_origin(vec3 normal, bool front_face = true) {
-  hit_record rec;
+  hit_record rec{};
   rec.p = point3(0, 0, 0);
   rec.normal = normal;
   rec.front_face = front_face;

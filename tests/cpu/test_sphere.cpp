@@ -16,14 +16,14 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 TEST(Sphere, Miss) {
   const hittable_sphere s(point3(0, 0, -1), 0.5);
-  hit_record rec;
+  hit_record rec{};
   EXPECT_FALSE(s.hit(ray(point3(0, 0, 0), vec3(0, 1, 0)), 0, inf, rec));
   EXPECT_FALSE(s.hit(ray(point3(0, 0, 0), vec3(1, 0, -1)), 0, inf, rec));
 }
 
 TEST(Sphere, HitFromOutsideTakesNearestRoot) {
   const hittable_sphere s(point3(0, 0, -3), 1);
-  hit_record rec;
+  hit_record rec{};
   ASSERT_TRUE(s.hit(ray(point3(0, 0, 0), vec3(0, 0, -2)), 0, inf, rec));
   EXPECT_DOUBLE_EQ(rec.t, 1.0);  // direction of length 2: the near surface at z = -2
   EXPECT_DOUBLE_EQ(rec.p.z, -2.0);
@@ -33,7 +33,7 @@ TEST(Sphere, HitFromOutsideTakesNearestRoot) {
 
 TEST(Sphere, HitFromInsideNormalFacesTheRay) {
   const hittable_sphere s(point3(0, 0, 0), 2);
-  hit_record rec;
+  hit_record rec{};
   ASSERT_TRUE(s.hit(ray(point3(0, 0, 0), vec3(1, 0, 0)), 0, inf, rec));
   EXPECT_DOUBLE_EQ(rec.t, 2.0);
   EXPECT_FALSE(rec.front_face);
@@ -44,7 +44,7 @@ TEST(Sphere, HitFromInsideNormalFacesTheRay) {
 TEST(Sphere, RootsOutsideTheInterval) {
   const hittable_sphere s(point3(0, 0, -3), 1);  // roots at t = 2 and t = 4
   const ray r(point3(0, 0, 0), vec3(0, 0, -1));
-  hit_record rec;
+  hit_record rec{};
   EXPECT_FALSE(s.hit(r, 0, 1.5, rec));    // both beyond t_max
   EXPECT_FALSE(s.hit(r, 4.5, inf, rec));  // both before t_min
   ASSERT_TRUE(s.hit(r, 2.5, inf, rec));   // near root excluded: the far one
@@ -56,7 +56,7 @@ TEST(Sphere, RootsOutsideTheInterval) {
 
 TEST(Sphere, TangentRayHitsOnce) {
   const hittable_sphere s(point3(0, 1, -3), 1);  // the ray along -z at y = 0 grazes its bottom
-  hit_record rec;
+  hit_record rec{};
   ASSERT_TRUE(s.hit(ray(point3(0, 0, 0), vec3(0, 0, -1)), 0, inf, rec));
   EXPECT_DOUBLE_EQ(rec.t, 3.0);
   EXPECT_DOUBLE_EQ(rec.p.y, 0.0);
@@ -94,7 +94,7 @@ TEST(Sphere, AnOverflowingRootIsNoHit) {
 TEST(Sphere, DegenerateRaysAreNoHit) {
   const hittable_sphere s(point3(0, 0, -3), 1);
   for (const degenerate_case& c : degenerate_rays) {
-    hit_record rec;
+    hit_record rec{};
     double t = -1;
     EXPECT_FALSE(hit_distance(s.data(), ray(c.origin, c.direction), 0.001, inf, t))
         << c.what << " t=" << t;
@@ -133,7 +133,7 @@ TEST(HittableList, ClosestOfOverlappingHits) {
   world.add(std::make_shared<hittable_sphere>(point3(0, 0, -5), 1));
   world.add(
       std::make_shared<hittable_sphere>(point3(0, 0, -7), 3));  // overlaps, near side at t = 4
-  hit_record rec;
+  hit_record rec{};
   ASSERT_TRUE(world.hit(ray(point3(0, 0, 0), vec3(0, 0, -1)), 0, inf, rec));
   EXPECT_DOUBLE_EQ(rec.t, 4.0);
   EXPECT_DOUBLE_EQ(rec.p.z, -4.0);
@@ -141,7 +141,7 @@ TEST(HittableList, ClosestOfOverlappingHits) {
 
 TEST(HittableList, EmptyListMisses) {
   const hittable_list world;
-  hit_record rec;
+  hit_record rec{};
   EXPECT_FALSE(world.hit(ray(point3(0, 0, 0), vec3(0, 0, -1)), 0, inf, rec));
 }
 

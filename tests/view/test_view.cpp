@@ -448,7 +448,7 @@ TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
   const scene s = builtin_scene("book-final");
   const camera cam(main_camera(s).pose, 1.5, 200);  // 200x133, shown 1:1 in its window
   const ray through = cam.get_ray(pixel_coordinate(120, 200), pixel_coordinate(132 - 70, 133));
-  hit_record rec;
+  hit_record rec{};
   ASSERT_TRUE(bvh_world(s.spheres).hit(through, 1e-3, 1e300, rec)) << "the click must hit";
   const double expected = glm::dot(rec.p - cam.origin(), -cam.axis_w());
   EXPECT_NEAR(focus[0], expected, 1e-9);
