@@ -52,24 +52,8 @@ constexpr VkAccessFlags shader_rw = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER
 
 namespace {
 
-// How long dispatches and submissions should take, by kind of device. A GPU wants dispatches of a
-// few milliseconds (a display may be waiting, and long shaders risk a driver's watchdog) and
-// submissions short enough for progress and Ctrl-C. On a CPU device (lavapipe) nothing waits on
-// a dispatch, and an invocation tracing more of its samples keeps its SIMD lanes busier (a lane
-// whose path ends starts its next sample while the others bounce), so dispatches may take a
-// quarter second and, from 8 samples a pixel on, bands are kept small enough that one dispatch
-// can take all of a band's samples: about 2^18 pixel samples a band (2^15 pixels at least).
-// With fewer samples there is little to gain, and many views in one dispatch (an animation's
-// frames) do better: one band, one wait and one readback for all of them.
-struct pacing {
-  double dispatch_grow, dispatch_shrink;      // seconds of device time per dispatch
-  double submission_grow, submission_shrink;  // seconds of wall time per submission
-  bool small_bands;                           // bands sized to the sample count, as above
-};
-
-pacing pacing_for(const device_info& dev) {
-  if (dev.type == VK_PHYSICAL_DEVICE_TYPE_CPU) return {0.25, 1.0, 0.5, 2.0, true};
-  return {0.004, 0.016, 0.1, 0.4, false};
+bool cpu_device(const device_info& dev) {
+  return dev.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }
 
 // How the views and rows of a render are grouped so that one group's sums fit one storage
@@ -84,7 +68,7 @@ work_layout plan_work(const device_info& dev, const gpu_render_options& options,
                       const render_window& win, std::size_t views) {
   const VkDeviceSize row_bytes = VkDeviceSize(win.width) * sizeof(pixel_sum);
   const VkDeviceSize paced =
-      pacing_for(dev).small_bands && win.samples() >= 8
+      pacing_for(cpu_device(dev)).small_bands && win.samples() >= 8
           ? std::max<VkDeviceSize>(1u << 15, (1u << 18) / VkDeviceSize(win.samples())) *
                 sizeof(pixel_sum)
           : default_band_bytes;
@@ -182,9 +166,8 @@ struct band_pass {
   VkDeviceSize pixels() const { return VkDeviceSize(views) * rows; }  // times the width
 };
 
-// What a band_renderer uses of its engine. `drawn` (some band was drawn before), `batch`
-// (samples per submission) and `per_dispatch` (samples per dispatch) carry over from one render
-// to the next.
+// What a band_renderer uses of its engine. `drawn` (some band was drawn before) and `pace` (the
+// sizes of dispatches and submissions) carry over from one render to the next.
 struct engine_parts {
   gpu_context& ctx;
   render_targets& targets;
@@ -192,8 +175,7 @@ struct engine_parts {
   std::array<std::uint32_t, 2> wg;  // workgroup size
   const gpu_render_options& options;
   bool& drawn;
-  std::uint32_t& batch;
-  std::uint32_t& per_dispatch;
+  pacer& pace;
 };
 
 // A submission in flight: what it asked of the pixels, and when.
@@ -235,7 +217,7 @@ class band_renderer {
         throw cancelled(b, target);
       }
       const std::uint32_t from = target;
-      target = std::min(samples, target + e_.batch);
+      target = std::min(samples, target + e_.pace.samples_per_submission());
       pending.push_back(submit(b, first, from, target, target == samples));
       first = false;
       // Wait for the oldest while the newest runs; at the last target, for all of them.
@@ -277,7 +259,7 @@ class band_renderer {
 
   in_flight submit(const band_pass& b, bool first, std::uint32_t from, std::uint32_t to,
                    bool last) {
-    const std::uint32_t step = std::max(1u, e_.per_dispatch);
+    const std::uint32_t step = e_.pace.samples_per_dispatch();
     const std::uint32_t dispatches = std::max(1u, (to - from + step - 1) / step);
     const std::uint64_t ticket =
         e_.ctx.submit([&](VkCommandBuffer cb) { record(cb, b, first, from, to, step, last); });
@@ -296,21 +278,9 @@ class band_renderer {
     }
     check_overrun(*static_cast<const render_status*>(e_.targets.status.read()), push_.loop_budget,
                   e_.ctx.device());
-    if (e_.options.samples_per_dispatch || e_.options.samples_per_submission) {
-      e_.per_dispatch = std::max(1u, e_.options.samples_per_dispatch);
-      e_.batch = std::max(e_.per_dispatch, e_.options.samples_per_submission);
-      return;
-    }
-    const pacing p = pacing_for(e_.ctx.device());
-    const double per_dispatch = (e_.timer.available() ? device_seconds : wall) / f.dispatches;
-    if (per_dispatch < p.dispatch_grow && e_.per_dispatch < (1u << 20)) e_.per_dispatch *= 2;
-    if (per_dispatch > p.dispatch_shrink && e_.per_dispatch > 1) e_.per_dispatch /= 2;
     // Device time where there is a timer: the wall time includes waiting behind the other
     // submission in flight.
-    const double submission = e_.timer.available() ? device_seconds : wall;
-    if (submission < p.submission_grow && e_.batch < (1u << 20)) e_.batch *= 2;
-    if (submission > p.submission_shrink && e_.batch > 1) e_.batch /= 2;
-    e_.batch = std::min(std::max(e_.batch, e_.per_dispatch), e_.per_dispatch * 256);
+    e_.pace.measured(e_.timer.available() ? device_seconds : wall, f.dispatches);
   }
 
   // Before a band's first samples: cleared sums, and for a render's first band a cleared
@@ -428,7 +398,9 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       targets_(std::make_unique<render_targets>(ctx, 1)),
       cache_(ctx, options.pipeline_cache_folder),
       timer_(ctx),
-      exponent_(rtvk::sum_exponent(brightest(s.sky))) {
+      exponent_(rtvk::sum_exponent(brightest(s.sky))),
+      pacer_(pacing_for(cpu_device(ctx.device())), options.samples_per_dispatch,
+             options.samples_per_submission) {
   upload();
   setup_seconds_ = seconds_since(start_);
 }
@@ -554,11 +526,7 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
   if (stats) *stats = render_stats{.build_seconds = drawn_ ? 0.0 : build_seconds()};
   const bool lens =
       std::any_of(views.begin(), views.end(), [](const camera& c) { return c.lens_radius() > 0; });
-  if (options_.samples_per_dispatch || options_.samples_per_submission) {
-    per_dispatch_ = std::max(1u, options_.samples_per_dispatch);
-    batch_ = std::max(per_dispatch_, options_.samples_per_submission);
-  }
-  band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, batch_, per_dispatch_},
+  band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, pacer_},
                       pipeline_for(rs.jitter, lens, count_rays), tonemap,
                       make_push(sky_, rs, win, options_, dev, scene_.sphere_count(), exponent_),
                       win);

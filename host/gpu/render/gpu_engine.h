@@ -16,6 +16,7 @@
 #include "framebuffer.h"
 #include "gpu_scene.h"
 #include "image_rgb8.h"
+#include "pacer.h"
 #include "pipeline_cache.h"
 #include "render_gpu.h"
 #include "render_settings.h"
@@ -115,9 +116,8 @@ class gpu_engine {
   int exponent_;                               // F of the sums (sample_sum.h)
   double thresholds_gamma_ = 0;                // the thresholds buffer holds this gamma's; 0: none
   bool drawn_ = false;                         // some band was drawn before
-  std::uint32_t batch_ = 1;         // samples per submission: grows while submissions are short
-  std::uint32_t per_dispatch_ = 1;  // samples per dispatch: grows while dispatches are short
-  double setup_seconds_ = 0;        // the constructor took
+  pacer pacer_;               // samples per dispatch and per submission, from measured times
+  double setup_seconds_ = 0;  // the constructor took
 };
 
 }  // namespace rtvk::gpu

@@ -1,0 +1,160 @@
+// The pacer on synthetic devices: no Vulkan, just the times a device of a given speed would
+// report, so that devices nobody here has (a fast discrete GPU, a slow integrated one, a device
+// that slows down when it heats up) are tried too.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "pacer.h"
+
+namespace rtvk::gpu {
+namespace {
+
+// A device on which a dispatch costs `per_sample` seconds per sample it asks of each pixel, plus
+// `overhead` per dispatch.
+struct synthetic_device {
+  double per_sample;    // seconds
+  double overhead = 0;  // seconds per dispatch
+};
+
+// One submission as the engine makes it: dispatches of samples_per_dispatch until the
+// submission's samples are done. Returns its seconds, after telling the pacer.
+double submit(pacer& p, const synthetic_device& d) {
+  const std::uint32_t step = p.samples_per_dispatch();
+  const std::uint32_t dispatches = (p.samples_per_submission() + step - 1) / step;
+  const double seconds = dispatches * (d.overhead + step * d.per_sample);
+  p.measured(seconds, dispatches);
+  return seconds;
+}
+
+void expect_sane(const pacer& p) {
+  EXPECT_GE(p.samples_per_dispatch(), 1u);
+  EXPECT_LE(p.samples_per_dispatch(), pacer::max_samples);
+  EXPECT_GE(p.samples_per_submission(), p.samples_per_dispatch());
+  EXPECT_LE(p.samples_per_submission(), p.samples_per_dispatch() * pacer::max_dispatches);
+}
+
+TEST(Pacer, StartsAtOneSample) {
+  const pacer p(pacing_for(false));
+  EXPECT_EQ(p.samples_per_dispatch(), 1u);
+  EXPECT_EQ(p.samples_per_submission(), 1u);
+}
+
+// On any steady device the sizes settle with dispatches and submissions inside their targets,
+// within a few dozen submissions, and stay there.
+TEST(Pacer, SettlesInsideTheTargetsOnSteadyDevices) {
+  for (const bool cpu : {false, true}) {
+    const pacing t = pacing_for(cpu);
+    for (const double per_sample : {1e-7, 3e-6, 1e-4, 2e-3}) {
+      SCOPED_TRACE(std::string(cpu ? "cpu" : "gpu") + " pacing, " + std::to_string(per_sample) +
+                   " s a sample");
+      pacer p(t);
+      const synthetic_device d{per_sample};
+      for (int k = 0; k < 60; ++k) submit(p, d);
+      const std::uint32_t settled_dispatch = p.samples_per_dispatch();
+      const std::uint32_t settled_submission = p.samples_per_submission();
+      for (int k = 0; k < 20; ++k) {
+        const double seconds = submit(p, d);
+        const double dispatch = p.samples_per_dispatch() * per_sample;
+        // Shorter than the aims only at a cap: the most samples, or the most dispatches in one
+        // submission.
+        if (p.samples_per_dispatch() < pacer::max_samples) {
+          EXPECT_GE(dispatch, t.dispatch_grow);
+        }
+        EXPECT_LE(dispatch, t.dispatch_shrink);
+        EXPECT_LE(seconds, t.submission_shrink);
+        if (seconds < t.submission_grow) {
+          EXPECT_TRUE(p.samples_per_submission() == pacer::max_samples ||
+                      p.samples_per_submission() ==
+                          p.samples_per_dispatch() * pacer::max_dispatches)
+              << p.samples_per_submission() << " samples in " << seconds << " s";
+        }
+        expect_sane(p);
+      }
+      EXPECT_EQ(p.samples_per_dispatch(), settled_dispatch) << "a steady device, steady sizes";
+      EXPECT_EQ(p.samples_per_submission(), settled_submission);
+    }
+  }
+}
+
+// A device too slow for even one sample a dispatch stays at one, never zero.
+TEST(Pacer, ASlowDeviceStaysAtOneSample) {
+  pacer p(pacing_for(false));
+  for (int k = 0; k < 10; ++k) submit(p, {5.0});
+  EXPECT_EQ(p.samples_per_dispatch(), 1u);
+  EXPECT_EQ(p.samples_per_submission(), 1u);
+}
+
+// A device so fast that no size reaches the targets stops at the caps.
+TEST(Pacer, AnInstantDeviceStopsAtTheCaps) {
+  pacer p(pacing_for(false));
+  for (int k = 0; k < 100; ++k) submit(p, {0.0});
+  EXPECT_EQ(p.samples_per_dispatch(), pacer::max_samples);
+  EXPECT_EQ(p.samples_per_submission(), pacer::max_samples);
+  expect_sane(p);
+}
+
+// A device that becomes ten times slower (a laptop's GPU when it heats up, another program on a
+// shared GPU) is back inside the dispatch target within a few submissions.
+TEST(Pacer, ADeviceThatSlowsDownIsFollowed) {
+  const pacing t = pacing_for(false);
+  pacer p(t);
+  for (int k = 0; k < 60; ++k) submit(p, {1e-5});
+  int submissions = 0;
+  while (p.samples_per_dispatch() * 1e-4 > t.dispatch_shrink) {
+    submit(p, {1e-4});
+    ASSERT_LT(++submissions, 8) << "still " << p.samples_per_dispatch() << " samples a dispatch";
+  }
+  expect_sane(p);
+}
+
+// Whatever times a device reports, even contradictory ones (dispatches quick but submissions slow:
+// a device shared with a display), a submission holds at least one dispatch and at most the most
+// dispatches.
+TEST(Pacer, TheSizesStayConsistentWhateverTheTimes) {
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> log_seconds(-7, 1);
+  std::uniform_int_distribution<std::uint32_t> dispatches(1, 2000);
+  for (const bool cpu : {false, true}) {
+    pacer p(pacing_for(cpu));
+    for (int k = 0; k < 5000; ++k) {
+      p.measured(std::pow(10.0, log_seconds(gen)), dispatches(gen));
+      expect_sane(p);
+      if (::testing::Test::HasFailure()) return;
+    }
+  }
+}
+
+// Fixed sizes are what the tests asked for, whatever the times say.
+TEST(Pacer, FixedSizesAreKept) {
+  pacer p(pacing_for(false), 3, 7);
+  EXPECT_EQ(p.samples_per_dispatch(), 3u);
+  EXPECT_EQ(p.samples_per_submission(), 7u);
+  for (double seconds : {0.0, 1e-9, 100.0}) p.measured(seconds, 3);
+  EXPECT_EQ(p.samples_per_dispatch(), 3u);
+  EXPECT_EQ(p.samples_per_submission(), 7u);
+  const pacer at_least_one_dispatch(pacing_for(false), 5, 2);
+  EXPECT_EQ(at_least_one_dispatch.samples_per_submission(), 5u);
+  const pacer submission_only(pacing_for(false), 0, 4);
+  EXPECT_EQ(submission_only.samples_per_dispatch(), 1u);
+  EXPECT_EQ(submission_only.samples_per_submission(), 4u);
+}
+
+// A time that is not a number (a broken timer) changes nothing; an infinite one shrinks.
+TEST(Pacer, TimesThatAreNotNumbersChangeNothing) {
+  pacer p(pacing_for(false));
+  for (int k = 0; k < 10; ++k) submit(p, {1e-6});
+  const std::uint32_t d = p.samples_per_dispatch(), s = p.samples_per_submission();
+  p.measured(std::numeric_limits<double>::quiet_NaN(), 4);
+  p.measured(1.0, 0);
+  EXPECT_EQ(p.samples_per_dispatch(), d);
+  EXPECT_EQ(p.samples_per_submission(), s);
+  p.measured(std::numeric_limits<double>::infinity(), 1);
+  EXPECT_EQ(p.samples_per_dispatch(), d / 2);
+  expect_sane(p);
+}
+
+}  // namespace
+}  // namespace rtvk::gpu
