@@ -4,11 +4,6 @@
 
 namespace rtvk {
 
-static_assert(int(material_type::normal) == RTVK_MATERIAL_NORMAL);
-static_assert(int(material_type::lambertian) == RTVK_MATERIAL_LAMBERTIAN);
-static_assert(int(material_type::metal) == RTVK_MATERIAL_METAL);
-static_assert(int(material_type::dielectric) == RTVK_MATERIAL_DIELECTRIC);
-
 // The book's recursion as a loop over the shared steps (ray_color.h); shaders/shading.glsl runs
 // the same steps, a bounce per trip.
 color ray_color(const ray& r_in, const hittable& world, std::span<const material> materials,

@@ -1,27 +1,46 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 
+#include "shared_types.h"
 #include "vec3.h"
 
 namespace rtvk {
 
+// The kinds of material, numbered as the shaders number them (shared_types.h).
 enum class material_type : std::uint32_t {
-  normal = 0,      // the lesson's shading: color = 0.5 * (normal + 1); no bounce
-  lambertian = 1,  // diffuse
-  metal = 2,       // mirror, blurred by fuzz
-  dielectric = 3,  // glass: refracts, reflects by Schlick, total internal reflection
+  normal = RTVK_MATERIAL_NORMAL,          // the lesson's shading: 0.5 * (normal + 1); no bounce
+  lambertian = RTVK_MATERIAL_LAMBERTIAN,  // diffuse
+  metal = RTVK_MATERIAL_METAL,            // mirror, blurred by fuzz
+  dielectric = RTVK_MATERIAL_DIELECTRIC,  // glass: refracts, reflects by Schlick, total reflection
 };
 
 // A surface's optics. One flat struct (rather than a class per material) so the GPU copy is the
-// same data; each renderer's scatter functions (cpu/scatter.h, shaders/material.glsl) carry the
-// book's names and math.
+// same data; what each kind does with a ray is the shared kernels' (shaders/shared/scatter.h and
+// ray_color.h), which both backends compile.
 struct material {
   material_type type = material_type::normal;
   color albedo{1, 1, 1};  // fraction of light kept per channel (lambertian, metal)
   double fuzz = 0;        // metal: radius of the reflection's blur sphere, 0 to 1
   double ir = 1.5;        // dielectric: index of refraction
 };
+
+// What a kind is called in scene files and which of material's parameters it reads: the one
+// place the host lists the kinds (material.cpp).
+struct material_kind {
+  material_type type;
+  std::string_view name;  // in scene files, e.g. "lambertian"
+  bool albedo;            // reads `albedo` (required in scene files)
+  bool fuzz;              // reads `fuzz` (optional, default 0)
+  bool ir;                // reads `ir` (required)
+  bool random;            // draws random numbers: its images are Monte Carlo estimates
+};
+
+const material_kind& kind_of(material_type t);
+std::optional<material_kind> kind_named(std::string_view name);
+std::string kind_names();  // "normal, lambertian, metal or dielectric", for messages
 
 std::string type_name(material_type t);
 

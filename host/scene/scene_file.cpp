@@ -238,28 +238,22 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
   const json& type = r.required(j, p, "type");
   if (!type.is_string()) r.fail(p + "/type", "expected a string, got " + r.type_of(type));
   const std::string t = type.get<std::string>();
+  const std::optional<material_kind> kind = kind_named(t);
+  if (!kind)
+    r.fail(p + "/type", "unknown material type \"" + t + "\" (expected " + kind_names() + ")");
+  std::set<std::string> fields{"type"};
+  if (kind->albedo) fields.insert("albedo");
+  if (kind->fuzz) fields.insert("fuzz");
+  if (kind->ir) fields.insert("ir");
+  r.only_fields(j, p, fields);
   material m;
-  if (t == "normal") {
-    r.only_fields(j, p, {"type"});
-    m.type = material_type::normal;
-  } else if (t == "lambertian") {
-    r.only_fields(j, p, {"type", "albedo"});
-    m.type = material_type::lambertian;
-    m.albedo = r.albedo(r.required(j, p, "albedo"), p + "/albedo");
-  } else if (t == "metal") {
-    r.only_fields(j, p, {"type", "albedo", "fuzz"});
-    m.type = material_type::metal;
-    m.albedo = r.albedo(r.required(j, p, "albedo"), p + "/albedo");
-    if (j.contains("fuzz")) m.fuzz = r.number_in(j["fuzz"], p + "/fuzz", 0, 1);
-  } else if (t == "dielectric") {
-    r.only_fields(j, p, {"type", "ir"});
-    m.type = material_type::dielectric;
+  m.type = kind->type;
+  if (kind->albedo) m.albedo = r.albedo(r.required(j, p, "albedo"), p + "/albedo");
+  if (kind->fuzz && j.contains("fuzz")) m.fuzz = r.number_in(j["fuzz"], p + "/fuzz", 0, 1);
+  if (kind->ir) {
     m.ir = r.number(r.required(j, p, "ir"), p + "/ir");
     if (m.ir <= 0)
       r.fail(p + "/ir", "expected an index of refraction > 0, got " + format_number(m.ir));
-  } else {
-    r.fail(p + "/type", "unknown material type \"" + t +
-                            "\" (expected normal, lambertian, metal or dielectric)");
   }
   return m;
 }
@@ -426,11 +420,11 @@ std::string dump_scene_json(const scene& s) {
   root["sky"] = {{"horizon", vec_json(s.sky.horizon)}, {"zenith", vec_json(s.sky.zenith)}};
   json mats = json::object();
   for (const auto& [name, m] : s.materials) {
+    const material_kind& kind = kind_of(m.type);
     json j = {{"type", type_name(m.type)}};
-    if (m.type == material_type::lambertian || m.type == material_type::metal)
-      j["albedo"] = vec_json(m.albedo);
-    if (m.type == material_type::metal) j["fuzz"] = m.fuzz;
-    if (m.type == material_type::dielectric) j["ir"] = m.ir;
+    if (kind.albedo) j["albedo"] = vec_json(m.albedo);
+    if (kind.fuzz) j["fuzz"] = m.fuzz;
+    if (kind.ir) j["ir"] = m.ir;
     mats[name] = j;
   }
   root["materials"] = mats;

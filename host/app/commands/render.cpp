@@ -150,11 +150,12 @@ gpu_group draw_gpu(const run_context& run, gpu::gpu_context& ctx, gpu::gpu_engin
   return out;
 }
 
-// Deterministic renders (one sample, no jitter, no lens, normal shading) must agree to a level;
+// Deterministic renders (one sample, no jitter, no lens, no material that draws random numbers)
+// must agree to a level;
 // Monte Carlo ones to the noise rule.
 agreement agreement_for(const run_context& run, const camera& cam) {
   bool deterministic = run.win.samples() == 1 && !run.s.render.jitter && cam.lens_radius() == 0;
-  for (const auto& m : run.s.materials) deterministic &= m.m.type == material_type::normal;
+  for (const auto& m : run.s.materials) deterministic &= !kind_of(m.m.type).random;
   return deterministic ? agreement{} : monte_carlo_agreement;
 }
 
