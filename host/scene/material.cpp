@@ -10,6 +10,7 @@ constexpr material_kind kinds[] = {
     {material_type::lambertian, "lambertian", true, false, false, true},
     {material_type::metal, "metal", true, true, false, true},
     {material_type::dielectric, "dielectric", false, false, true, true},
+    {material_type::flat, "flat", true, false, false, false},
 };
 
 }  // namespace

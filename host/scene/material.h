@@ -15,6 +15,7 @@ enum class material_type : std::uint32_t {
   lambertian = RTVK_MATERIAL_LAMBERTIAN,  // diffuse
   metal = RTVK_MATERIAL_METAL,            // mirror, blurred by fuzz
   dielectric = RTVK_MATERIAL_DIELECTRIC,  // glass: refracts, reflects by Schlick, total reflection
+  flat = RTVK_MATERIAL_FLAT,              // its albedo, unlit; no bounce (geometry and colors)
 };
 
 // A surface's optics. One flat struct (rather than a class per material) so the GPU copy is the

@@ -53,13 +53,17 @@ inline precise real3 path_missed(path_state p, real3 horizon, real3 zenith) {
 }
 
 // p.r hit `rec`, whose material is of `type` with these parameters (scatter's). Either ends the
-// path, its color in `c` (the lesson's normal shading; black when absorbed), or scatters it for
-// the next trip (false).
+// path, its color in `c` (the lesson's normal shading; a flat material's albedo, unlit; black
+// when absorbed), or scatters it for the next trip (false).
 inline bool path_hit(precise INOUT(path_state) p, hit_record rec, uint type, real3 albedo,
                      real fuzz, real ir, precise OUT(real3) c) {
   c = real3(0.0);
   if (type == RTVK_MATERIAL_NORMAL) {
     c = p.throughput * (real(0.5) * (rec.normal + real3(1.0, 1.0, 1.0)));
+    return true;
+  }
+  if (type == RTVK_MATERIAL_FLAT) {
+    c = p.throughput * albedo;
     return true;
   }
   precise real3 attenuation;

@@ -54,6 +54,7 @@ using uvec2 = glm::uvec2;
 #define RTVK_MATERIAL_LAMBERTIAN 1
 #define RTVK_MATERIAL_METAL 2
 #define RTVK_MATERIAL_DIELECTRIC 3
+#define RTVK_MATERIAL_FLAT 4
 
 // Camera models, as rtvk::projection (host/scene/camera.h).
 #define RTVK_PROJECTION_PERSPECTIVE 0

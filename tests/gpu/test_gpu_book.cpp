@@ -51,6 +51,33 @@ TEST_F(GpuBook, BookFinalMatchesTheCpu) {
   expect_agreement(gpu(), builtin_scene("book-final"), 320, 8);
 }
 
+// The flat material, written once (shaders/shared/ray_color.h), draws its albedo where it is
+// seen, unlit, through a metal mirror too (the throughput times the albedo), on both backends:
+// a deterministic image, so both give the same bytes.
+TEST_F(GpuBook, AFlatMaterialIsItsAlbedoOnBothBackends) {
+  scene s;
+  s.name = "flat test";
+  s.materials = {{"flat", {material_type::flat, color(0.8, 0.3, 0.1), 0, 1.5}},
+                 {"mirror", {material_type::metal, color(0.5, 0.5, 0.5), 0, 1.5}},
+                 {"normal", {}}};
+  s.spheres = {sphere(point3(0, 0, -1), 0.5, 0), sphere(point3(0, -100.5, -1), 100, 2),
+               sphere(point3(-0.9, 0, -1), 0.3, 1)};
+  s.render.width = 64;
+  const camera cam = test::scene_camera(s);
+  const framebuffer cpu = render_cpu(cam, s, s.render);
+  const framebuffer gpu_fb = gpu::render_gpu(gpu(), cam, s, s.render);
+  const int cx = cam.image_width() / 2, cy = cam.image_height() / 2;
+  EXPECT_EQ(cpu.at(cx, cy), color(0.8, 0.3, 0.1));  // exactly the albedo, no light, no bounce
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu_fb.at(cx, cy)[c], cpu.at(cx, cy)[c], 1e-6);
+  // Seen in the mirror (left), the flat sphere is its albedo times the mirror's.
+  int mirrored = 0;
+  for (int x = 0; x < cx; ++x)
+    for (int y = 0; y < cam.image_height(); ++y)
+      mirrored += glm::length(cpu.at(x, y) - color(0.4, 0.15, 0.05)) < 1e-12;
+  EXPECT_GT(mirrored, 0) << "no pixel of the mirror shows the flat sphere";
+  EXPECT_EQ(test::cpu_image(s, cam).rgb, test::gpu_image(gpu(), s, cam).rgb);
+}
+
 TEST_F(GpuBook, SeedImageIsStillTheReference) {
   const scene s = builtin_scene("seed");
   const image_difference d = compare_images(test::gpu_image(gpu(), s), test::cpu_image(s), 1);

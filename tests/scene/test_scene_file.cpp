@@ -31,6 +31,23 @@ TEST(SceneFile, BuiltinScenesRoundTripExactly) {
   }
 }
 
+// Every kind of material, with the parameters it reads, written and read back the same.
+TEST(SceneFile, EveryMaterialKindRoundTrips) {
+  const std::string text = R"({"materials":{
+    "a":{"type":"normal"},
+    "b":{"type":"lambertian","albedo":[0.25,0.5,0.75]},
+    "c":{"type":"metal","albedo":[0.5,0.5,0.5],"fuzz":0.125},
+    "d":{"type":"dielectric","ir":1.5},
+    "e":{"type":"flat","albedo":[0.8,0.3,0.1]}},"spheres":[]})";
+  const scene s = parse_scene_json(text, "kinds.json");
+  ASSERT_EQ(s.materials.size(), 5u);
+  EXPECT_EQ(s.materials[4].m.type, material_type::flat);
+  EXPECT_EQ(s.materials[4].m.albedo, color(0.8, 0.3, 0.1));
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_NE(dumped.find("\"flat\""), std::string::npos) << dumped;
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "back.json")), dumped);
+}
+
 TEST(SceneFile, BookFinalIsTheSameSceneEveryRun) {
   const scene a = builtin_scene("book-final"), b = builtin_scene("book-final");
   EXPECT_EQ(dump_scene_json(a), dump_scene_json(b));
@@ -89,6 +106,10 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
       {R"({"materials":{"m":{"type":"metal","albedo":[1,1,1],"fuzz":3}},"spheres":[]})",
        "/materials/m/fuzz"},
       {R"({"materials":{"m":{"type":"dielectric","ir":0}},"spheres":[]})", "/materials/m/ir"},
+      {R"({"materials":{"m":{"type":"flat"}},"spheres":[]})",
+       "/materials/m: missing field \"albedo\""},
+      {R"({"materials":{"m":{"type":"flat","albedo":[1,1,1],"fuzz":0}},"spheres":[]})",
+       "/materials/m/fuzz: unknown field"},
       {R"({"render":{"width":0},"spheres":[]})",
        "/render/width: expected an integer in [1, 65536]"},
       {R"({"render":{"spp":2.5},"spheres":[]})", "/render/spp: expected an integer, got 2.5"},
