@@ -24,7 +24,7 @@ using uvec2 = glm::uvec2;
 #define RTVK_BINDING_IMAGE 2        // storage buffer: pixel_sum[] of one band of rows
 #define RTVK_BINDING_MATERIALS 3    // storage buffer: gpu_material[]
 #define RTVK_BINDING_STATUS 4       // storage buffer: render_status
-#define RTVK_BINDING_PROBE 5        // storage buffer: probe_io or rng_probe_entry[] (probes only)
+#define RTVK_BINDING_PROBE 5        // storage buffer: a probe's entries (probes only)
 #define RTVK_BINDING_BVH_NODES 6    // storage buffer: bvh_node[] (7 and 8 are no longer used)
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
@@ -194,6 +194,17 @@ struct hit_probe_entry {
   uint pad1;       // unused
 };
 
+// std430 array element for world_probe.comp: the host fills a ray, the shader what hit_world
+// finds along it in [0.001, max float].
+struct world_probe_entry {
+  vec3 origin;     // in: ray origin, scene units
+  float t;         // out: the closest hit's t (0 when none)
+  vec3 direction;  // in: ray direction
+  uint hit;        // out: 1 when something was hit
+  vec3 normal;     // out: the hit's normal, facing against the ray
+  uint material;   // out: the hit sphere's material index
+};
+
 #ifdef __cplusplus
 static_assert(offsetof(camera_ubo, origin) == 0);
 static_assert(offsetof(camera_ubo, image_width) == 12);
@@ -265,6 +276,12 @@ static_assert(offsetof(hit_probe_entry, radius) == 44);
 static_assert(offsetof(hit_probe_entry, t) == 48);
 static_assert(offsetof(hit_probe_entry, hit) == 52);
 static_assert(sizeof(hit_probe_entry) == 64);
+static_assert(offsetof(world_probe_entry, t) == 12);
+static_assert(offsetof(world_probe_entry, direction) == 16);
+static_assert(offsetof(world_probe_entry, hit) == 28);
+static_assert(offsetof(world_probe_entry, normal) == 32);
+static_assert(offsetof(world_probe_entry, material) == 44);
+static_assert(sizeof(world_probe_entry) == 48);
 }  // namespace rtvk::gpu
 #endif
 

@@ -102,6 +102,11 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
          RTVK_MEMBER(hit_probe_entry, center), RTVK_MEMBER(hit_probe_entry, radius),
          RTVK_MEMBER(hit_probe_entry, t), RTVK_MEMBER(hit_probe_entry, hit),
          RTVK_MEMBER(hit_probe_entry, pad0), RTVK_MEMBER(hit_probe_entry, pad1)}}},
+      {"world_probe_entry",
+       {sizeof(gpu::world_probe_entry),
+        {RTVK_MEMBER(world_probe_entry, origin), RTVK_MEMBER(world_probe_entry, t),
+         RTVK_MEMBER(world_probe_entry, direction), RTVK_MEMBER(world_probe_entry, hit),
+         RTVK_MEMBER(world_probe_entry, normal), RTVK_MEMBER(world_probe_entry, material)}}},
   };
   return layouts;
 }
@@ -219,11 +224,9 @@ class struct_walker {
 
 TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
   const std::vector<std::pair<std::string, std::span<const std::uint32_t>>> shaders = {
-      {"render.comp", gpu::render_shader()},
-      {"tonemap.comp", gpu::tonemap_shader()},
-      {"probe.comp", gpu::probe_shader()},
-      {"rng_probe.comp", gpu::rng_probe_shader()},
-      {"hit_probe.comp", gpu::hit_probe_shader()}};
+      {"render.comp", gpu::render_shader()},       {"tonemap.comp", gpu::tonemap_shader()},
+      {"probe.comp", gpu::probe_shader()},         {"rng_probe.comp", gpu::rng_probe_shader()},
+      {"hit_probe.comp", gpu::hit_probe_shader()}, {"world_probe.comp", gpu::world_probe_shader()}};
   std::map<std::string, int> checked;  // struct name -> times compared
   int blocks = 0, push_blocks = 0;
   for (const auto& [shader, words] : shaders) {
@@ -274,11 +277,11 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
     }
   }
   // Coverage cannot shrink unnoticed: every shared struct is checked in some shader, and the
-  // push constants (render.comp's and tonemap.comp's) are among the blocks walked.
+  // push constants (render.comp's, tonemap.comp's and world_probe.comp's) are among the blocks walked.
   for (const auto& [name, layout] : cpp_layouts())
     EXPECT_GT(checked[name], 0) << name << " was found in no shader's buffers or push constants";
   EXPECT_GE(blocks, 15) << "uniform, storage and push-constant blocks walked";
-  EXPECT_EQ(push_blocks, 2) << "push-constant blocks walked";
+  EXPECT_EQ(push_blocks, 3) << "push-constant blocks walked";
 }
 
 // --- The camera on the GPU ---------------------------------------------------------------------

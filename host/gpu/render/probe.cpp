@@ -4,6 +4,7 @@
 
 #include "buffer.h"
 #include "compute_pipeline.h"
+#include "gpu_scene.h"
 #include "packing.h"
 #include "shaders.h"
 
@@ -53,6 +54,42 @@ std::vector<rng_probe_entry> run_rng_probe(gpu_context& ctx, std::vector<rng_pro
 std::vector<hit_probe_entry> run_hit_probe(gpu_context& ctx, std::vector<hit_probe_entry> entries) {
   run_in_place(ctx, hit_probe_shader(), entries.data(), entries.size() * sizeof(hit_probe_entry),
                std::uint32_t((entries.size() + 63) / 64), nullptr);
+  return entries;
+}
+
+std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s, bool use_bvh,
+                                               std::vector<world_probe_entry> entries) {
+  const gpu_scene g(ctx, s, use_bvh);
+  const std::size_t bytes = entries.size() * sizeof(world_probe_entry);
+  gpu_buffer buf(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::upload);
+  buf.write(entries.data(), bytes);
+  const std::uint32_t spec[RTVK_SPEC_USE_BVH + 1] = {0, 0, 0, 0, use_bvh};
+  const compute_pipeline pipeline(
+      ctx, world_probe_shader(),
+      {{RTVK_BINDING_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.spheres()},
+       {RTVK_BINDING_BVH_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.nodes()},
+       {RTVK_BINDING_PROBE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buf.get()}},
+      sizeof(render_push), spec);
+  render_push push{};
+  push.sphere_count = g.sphere_count();
+  push.loop_budget = 0xffffffffu;  // one ray an invocation: no loop cap to respect
+  ctx.submit_and_wait([&](VkCommandBuffer cb) {
+    g.record_upload(cb);
+    VkMemoryBarrier upload{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    upload.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    upload.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         0, 1, &upload, 0, nullptr, 0, nullptr);
+    pipeline.bind(cb);
+    pipeline.push(cb, &push, sizeof push);
+    vkCmdDispatch(cb, std::uint32_t((entries.size() + 63) / 64), 1, 1);
+    VkMemoryBarrier done{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    done.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    done.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                         &done, 0, nullptr, 0, nullptr);
+  });
+  std::memcpy(entries.data(), buf.read(), bytes);
   return entries;
 }
 

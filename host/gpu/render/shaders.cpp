@@ -8,6 +8,7 @@
 #include "render_spv.h"
 #include "rng_probe_spv.h"
 #include "tonemap_spv.h"
+#include "world_probe_spv.h"
 
 namespace rtvk::gpu {
 
@@ -25,6 +26,9 @@ std::span<const std::uint32_t> rng_probe_shader() {
 }
 std::span<const std::uint32_t> hit_probe_shader() {
   return hit_probe_spv;
+}
+std::span<const std::uint32_t> world_probe_shader() {
+  return world_probe_spv;
 }
 
 }  // namespace rtvk::gpu
