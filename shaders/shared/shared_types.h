@@ -205,6 +205,33 @@ struct world_probe_entry {
   uint material;   // out: the hit sphere's material index
 };
 
+// std430 array element for kernel_probe.comp (kernel_probe.h): the host fills a hit, the ray
+// arriving at it, a material and a random stream; the shader runs the shared kernels on them.
+struct kernel_probe_entry {
+  vec3 p;              // in: the hit point, scene units
+  float offset;        // in: hit_record::offset
+  vec3 normal;         // in: unit normal, facing against the ray
+  uint front_face;     // in: 1 when the ray arrived from outside
+  vec3 direction;      // in: the arriving ray's direction
+  uint type;           // in: RTVK_MATERIAL_*
+  vec3 albedo;         // in: the material's albedo
+  float fuzz;          // in: metal's fuzz
+  float ir;            // in: dielectric's index of refraction
+  uint key;            // in: the random stream's key
+  uint bounce;         // in: the random stream's bounce
+  uint scattered;      // out: 1 when scatter scattered
+  vec3 attenuation;    // out: scatter's attenuation
+  float disk_x;        // out: random_in_unit_disk(rnd 0, rnd 1).x
+  vec3 origin_out;     // out: the scattered ray's origin
+  float disk_y;        // out: and .y
+  vec3 direction_out;  // out: the scattered ray's direction
+  float pad0;          // unused
+  vec3 sky;            // out: sky_color(direction, the book's white and blue)
+  float pad1;          // unused
+  vec3 ball;           // out: random_in_unit_sphere(rnd 0, rnd 1, rnd 2)
+  float pad2;          // unused
+};
+
 #ifdef __cplusplus
 static_assert(offsetof(camera_ubo, origin) == 0);
 static_assert(offsetof(camera_ubo, image_width) == 12);
@@ -282,6 +309,25 @@ static_assert(offsetof(world_probe_entry, hit) == 28);
 static_assert(offsetof(world_probe_entry, normal) == 32);
 static_assert(offsetof(world_probe_entry, material) == 44);
 static_assert(sizeof(world_probe_entry) == 48);
+static_assert(offsetof(kernel_probe_entry, offset) == 12);
+static_assert(offsetof(kernel_probe_entry, normal) == 16);
+static_assert(offsetof(kernel_probe_entry, front_face) == 28);
+static_assert(offsetof(kernel_probe_entry, direction) == 32);
+static_assert(offsetof(kernel_probe_entry, type) == 44);
+static_assert(offsetof(kernel_probe_entry, albedo) == 48);
+static_assert(offsetof(kernel_probe_entry, fuzz) == 60);
+static_assert(offsetof(kernel_probe_entry, ir) == 64);
+static_assert(offsetof(kernel_probe_entry, key) == 68);
+static_assert(offsetof(kernel_probe_entry, bounce) == 72);
+static_assert(offsetof(kernel_probe_entry, scattered) == 76);
+static_assert(offsetof(kernel_probe_entry, attenuation) == 80);
+static_assert(offsetof(kernel_probe_entry, disk_x) == 92);
+static_assert(offsetof(kernel_probe_entry, origin_out) == 96);
+static_assert(offsetof(kernel_probe_entry, disk_y) == 108);
+static_assert(offsetof(kernel_probe_entry, direction_out) == 112);
+static_assert(offsetof(kernel_probe_entry, sky) == 128);
+static_assert(offsetof(kernel_probe_entry, ball) == 144);
+static_assert(sizeof(kernel_probe_entry) == 160);
 }  // namespace rtvk::gpu
 #endif
 

@@ -7,6 +7,7 @@
 
 #include "camera_rays.h"
 #include "hit_sphere.h"
+#include "kernel_probe.h"
 #include "random.h"
 
 namespace rtvk::f32 {
@@ -35,6 +36,10 @@ ray_f get_ray(const gpu::camera_ubo& cam, float s, float t, glm::vec2 lens) {
 
 bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_max, float& t) {
   return k::hit_sphere(center, radius, k::ray(r.origin, r.direction), t_min, t_max, t);
+}
+
+void run_kernel_probe(gpu::kernel_probe_entry& e) {
+  k::run_kernel_probe(e);
 }
 
 }  // namespace rtvk::f32

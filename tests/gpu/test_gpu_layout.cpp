@@ -102,6 +102,30 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
          RTVK_MEMBER(hit_probe_entry, center), RTVK_MEMBER(hit_probe_entry, radius),
          RTVK_MEMBER(hit_probe_entry, t), RTVK_MEMBER(hit_probe_entry, hit),
          RTVK_MEMBER(hit_probe_entry, pad0), RTVK_MEMBER(hit_probe_entry, pad1)}}},
+      {"kernel_probe_entry",
+       {sizeof(gpu::kernel_probe_entry),
+        {RTVK_MEMBER(kernel_probe_entry, p),
+         RTVK_MEMBER(kernel_probe_entry, offset),
+         RTVK_MEMBER(kernel_probe_entry, normal),
+         RTVK_MEMBER(kernel_probe_entry, front_face),
+         RTVK_MEMBER(kernel_probe_entry, direction),
+         RTVK_MEMBER(kernel_probe_entry, type),
+         RTVK_MEMBER(kernel_probe_entry, albedo),
+         RTVK_MEMBER(kernel_probe_entry, fuzz),
+         RTVK_MEMBER(kernel_probe_entry, ir),
+         RTVK_MEMBER(kernel_probe_entry, key),
+         RTVK_MEMBER(kernel_probe_entry, bounce),
+         RTVK_MEMBER(kernel_probe_entry, scattered),
+         RTVK_MEMBER(kernel_probe_entry, attenuation),
+         RTVK_MEMBER(kernel_probe_entry, disk_x),
+         RTVK_MEMBER(kernel_probe_entry, origin_out),
+         RTVK_MEMBER(kernel_probe_entry, disk_y),
+         RTVK_MEMBER(kernel_probe_entry, direction_out),
+         RTVK_MEMBER(kernel_probe_entry, pad0),
+         RTVK_MEMBER(kernel_probe_entry, sky),
+         RTVK_MEMBER(kernel_probe_entry, pad1),
+         RTVK_MEMBER(kernel_probe_entry, ball),
+         RTVK_MEMBER(kernel_probe_entry, pad2)}}},
       {"world_probe_entry",
        {sizeof(gpu::world_probe_entry),
         {RTVK_MEMBER(world_probe_entry, origin), RTVK_MEMBER(world_probe_entry, t),
@@ -224,9 +248,13 @@ class struct_walker {
 
 TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
   const std::vector<std::pair<std::string, std::span<const std::uint32_t>>> shaders = {
-      {"render.comp", gpu::render_shader()},       {"tonemap.comp", gpu::tonemap_shader()},
-      {"probe.comp", gpu::probe_shader()},         {"rng_probe.comp", gpu::rng_probe_shader()},
-      {"hit_probe.comp", gpu::hit_probe_shader()}, {"world_probe.comp", gpu::world_probe_shader()}};
+      {"render.comp", gpu::render_shader()},
+      {"tonemap.comp", gpu::tonemap_shader()},
+      {"probe.comp", gpu::probe_shader()},
+      {"rng_probe.comp", gpu::rng_probe_shader()},
+      {"hit_probe.comp", gpu::hit_probe_shader()},
+      {"world_probe.comp", gpu::world_probe_shader()},
+      {"kernel_probe.comp", gpu::kernel_probe_shader()}};
   std::map<std::string, int> checked;  // struct name -> times compared
   int blocks = 0, push_blocks = 0;
   for (const auto& [shader, words] : shaders) {
@@ -277,7 +305,8 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
     }
   }
   // Coverage cannot shrink unnoticed: every shared struct is checked in some shader, and the
-  // push constants (render.comp's, tonemap.comp's and world_probe.comp's) are among the blocks walked.
+  // push constants (render.comp's, tonemap.comp's and world_probe.comp's) are among the blocks
+  // walked.
   for (const auto& [name, layout] : cpp_layouts())
     EXPECT_GT(checked[name], 0) << name << " was found in no shader's buffers or push constants";
   EXPECT_GE(blocks, 15) << "uniform, storage and push-constant blocks walked";

@@ -57,6 +57,14 @@ std::vector<hit_probe_entry> run_hit_probe(gpu_context& ctx, std::vector<hit_pro
   return entries;
 }
 
+std::vector<kernel_probe_entry> run_kernel_probe(gpu_context& ctx,
+                                                 std::vector<kernel_probe_entry> entries) {
+  run_in_place(ctx, kernel_probe_shader(), entries.data(),
+               entries.size() * sizeof(kernel_probe_entry),
+               std::uint32_t((entries.size() + 63) / 64), nullptr);
+  return entries;
+}
+
 std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s, bool use_bvh,
                                                std::vector<world_probe_entry> entries) {
   const gpu_scene g(ctx, s, use_bvh);

@@ -22,6 +22,11 @@ std::vector<rng_probe_entry> run_rng_probe(gpu_context& ctx, std::vector<rng_pro
 // Runs hit_probe.comp: fills `t` and `hit` of each entry with sphere.glsl's hit_distance.
 std::vector<hit_probe_entry> run_hit_probe(gpu_context& ctx, std::vector<hit_probe_entry> entries);
 
+// Runs kernel_probe.comp: fills the outputs of each entry with the shared kernels' answers
+// (run_kernel_probe in shaders/shared/kernel_probe.h).
+std::vector<kernel_probe_entry> run_kernel_probe(gpu_context& ctx,
+                                                 std::vector<kernel_probe_entry> entries);
+
 // Runs world_probe.comp over the scene's spheres (through the BVH, or every sphere in turn): fills
 // `t`, `hit`, `normal` and `material` of each entry with what hit_world finds along its ray.
 std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s, bool use_bvh,

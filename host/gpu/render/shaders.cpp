@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "hit_probe_spv.h"
+#include "kernel_probe_spv.h"
 #include "probe_spv.h"
 #include "render_spv.h"
 #include "rng_probe_spv.h"
@@ -29,6 +30,9 @@ std::span<const std::uint32_t> hit_probe_shader() {
 }
 std::span<const std::uint32_t> world_probe_shader() {
   return world_probe_spv;
+}
+std::span<const std::uint32_t> kernel_probe_shader() {
+  return kernel_probe_spv;
 }
 
 }  // namespace rtvk::gpu

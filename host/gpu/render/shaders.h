@@ -5,11 +5,12 @@
 namespace rtvk::gpu {
 
 // SPIR-V compiled from shaders/ at build time and embedded in the binary.
-std::span<const std::uint32_t> render_shader();       // render.comp
-std::span<const std::uint32_t> tonemap_shader();      // tonemap.comp
-std::span<const std::uint32_t> probe_shader();        // probe.comp
-std::span<const std::uint32_t> rng_probe_shader();    // rng_probe.comp
-std::span<const std::uint32_t> hit_probe_shader();    // hit_probe.comp
-std::span<const std::uint32_t> world_probe_shader();  // world_probe.comp
+std::span<const std::uint32_t> render_shader();        // render.comp
+std::span<const std::uint32_t> tonemap_shader();       // tonemap.comp
+std::span<const std::uint32_t> probe_shader();         // probe.comp
+std::span<const std::uint32_t> rng_probe_shader();     // rng_probe.comp
+std::span<const std::uint32_t> hit_probe_shader();     // hit_probe.comp
+std::span<const std::uint32_t> world_probe_shader();   // world_probe.comp
+std::span<const std::uint32_t> kernel_probe_shader();  // kernel_probe.comp
 
 }  // namespace rtvk::gpu

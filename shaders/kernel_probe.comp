@@ -1,0 +1,22 @@
+#version 450
+// Test probe: the shared kernels (scatter of every material, sky_color, the samplers) on the
+// host's hits, rays, materials and streams, through run_kernel_probe (kernel_probe.h), which the
+// tests' float compilation runs too.
+#extension GL_GOOGLE_include_directive : require
+#include "shared_types.h"
+
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block {
+  kernel_probe_entry entries[];
+};
+
+#include "kernel_probe.h"
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= uint(entries.length())) return;
+  kernel_probe_entry e = entries[i];
+  run_kernel_probe(e);
+  entries[i] = e;
+}
