@@ -4,7 +4,7 @@
 namespace rtvk {
 
 // A sphere of the scene: plain data. The CPU hits it through hittable_sphere (cpu/), the GPU
-// through gpu_sphere and shaders/sphere.glsl; both with the same math.
+// through gpu_sphere; both with the same math, the shared hit_sphere (shaders/shared).
 struct sphere {
   sphere() = default;
   sphere(const point3& center, double radius, int material = 0)

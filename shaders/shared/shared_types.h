@@ -180,7 +180,7 @@ struct rng_probe_entry {
 };
 
 // std430 array element for hit_probe.comp: the host fills a ray, an interval and a sphere; the
-// shader runs hit_distance on them.
+// shader runs hit_sphere on them.
 struct hit_probe_entry {
   vec3 origin;     // ray origin, scene units
   float t_min;     // interval start
@@ -188,8 +188,8 @@ struct hit_probe_entry {
   float t_max;     // interval end
   vec3 center;     // sphere center, scene units
   float radius;    // sphere radius, scene units
-  float t;         // out: the root hit_distance found (0 when none)
-  uint hit;        // out: 1 when hit_distance reported a hit
+  float t;         // out: the root hit_sphere found (0 when none)
+  uint hit;        // out: 1 when hit_sphere reported a hit
   uint pad0;       // unused
   uint pad1;       // unused
 };
