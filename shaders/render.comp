@@ -4,8 +4,10 @@
 // other invocations' paths, and adds them to the pixel's exact sums in one write. The loop budget
 // bounds the work one invocation does (lavapipe silently stops loops at 65,535 iterations in
 // all): an invocation that runs out keeps the samples it finished and
-// the next dispatch goes on from there; only a sample that does not fit a whole budget fails the
-// render. The dispatch's z index is the view: every camera (or animation frame) of a group shares
+// the next dispatch goes on from there. A sample that does not fit a whole budget leaves the pixel
+// as it was and is drawn again under the larger budget the host then gives (the pacer, host/gpu/
+// render/pacer.h); only one that does not fit the largest fails the render. The budget and the
+// dispatch's pixels bound its work on every device, before any of it was measured. The dispatch's z index is the view: every camera (or animation frame) of a group shares
 // the scene buffers and the dispatch.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
@@ -42,6 +44,7 @@ layout(push_constant) uniform push_block {
 };
 
 #include "camera_rays.h"
+#include "fixed_sum.h"
 #include "random.h"
 #include "shading.glsl"
 
@@ -54,17 +57,6 @@ path_state pixel_path(camera_ubo cam, uvec2 pixel, uint j, uint sample_index) {
   return start_path(r, s);
 }
 
-// floor(c * 2^F) as (low word, high word), exactly as to_fixed in host/base/sample_sum.h: the
-// scaling is by a power of two, floor(x / 2^32) and x - h * 2^32 are exact in float, and only
-// the bits below 2^-F are dropped. c is clamped into [0, pc.sample_limit] first (NaN to 0: a
-// comparison with NaN is false, where min and max may pass it through).
-uvec2 to_fixed(float c) {
-  precise float x = (c > 0.0 ? min(c, pc.sample_limit) : 0.0) * pc.sum_scale;
-  precise float h = floor(x * (1.0 / 4294967296.0));
-  precise float l = x - h * 4294967296.0;
-  return uvec2(uint(l), uint(h));
-}
-
 // 64-bit integer addition on (low, high) words.
 uvec2 add_fixed(uvec2 a, uvec2 b) {
   uint carry;
@@ -74,9 +66,9 @@ uvec2 add_fixed(uvec2 a, uvec2 b) {
 
 // Adds one sample's color (and its rays, when counted) to the pixel's sums.
 void add_sample(inout pixel_sum acc, vec3 c, uint rays) {
-  acc.r = add_fixed(acc.r, to_fixed(c.r));
-  acc.g = add_fixed(acc.g, to_fixed(c.g));
-  acc.b = add_fixed(acc.b, to_fixed(c.b));
+  acc.r = add_fixed(acc.r, to_fixed(c.r, pc.sample_limit, pc.sum_scale));
+  acc.g = add_fixed(acc.g, to_fixed(c.g, pc.sample_limit, pc.sum_scale));
+  acc.b = add_fixed(acc.b, to_fixed(c.b, pc.sample_limit, pc.sum_scale));
   if (count_rays) acc.rays += rays;
   ++acc.samples;
 }
@@ -112,12 +104,12 @@ void main() {
     p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   }
   if (iterations > pc.loop_budget) {
-    if (acc.samples == first) {              // one sample needs more than a whole budget
-      atomicAdd(status.overrun_pixels, 1u);  // the host fails the render rather than show this
-      sums[index].samples = 0xffffffffu;     // and no later dispatch tries the pixel again
+    atomicAdd(status.unfinished_pixels, 1u);  // the host dispatches again
+    if (acc.samples == first) {  // one sample needs more than a whole budget: the host gives
+      atomicAdd(status.starved_pixels, 1u);  // later dispatches a larger one, or at the largest
+      atomicMax(status.starved_budget, pc.loop_budget);  // fails the render rather than show this
       return;
     }
-    atomicAdd(status.unfinished_pixels, 1u);  // the host dispatches again
   }
   sums[index] = acc;
 }

@@ -44,8 +44,7 @@ uint encode_sum(uvec2 sum, uint samples) {
 
 void main() {
   // Rows of workgroups when one row would pass the device's workgroup count limit.
-  uint row = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-  uint i = gl_GlobalInvocationID.y * row + gl_GlobalInvocationID.x;
+  uint i = gl_GlobalInvocationID.y * pc.row_invocations + gl_GlobalInvocationID.x;
   if (i >= pc.pixels) return;
   pixel_sum p = sums[i];
   uint r = encode_sum(p.r, p.samples);

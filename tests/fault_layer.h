@@ -1,7 +1,8 @@
 #pragma once
 // The environment that loads the test layer of tests/view/layers into rtvk with one fault: the
 // device cannot present ("no-present"), is lost ("lose-device-at-submit:N",
-// "lose-device-after-present:N"), or says it is an NVIDIA GPU ("disguise-device").
+// "lose-device-after-present:N"), loses itself when one submission runs longer than a watchdog
+// allows ("watchdog:MS"), or says it is an NVIDIA GPU ("disguise-device").
 #include <string>
 #include <vector>
 

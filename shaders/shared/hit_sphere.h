@@ -20,17 +20,19 @@ inline bool hit_sphere(real3 center, real radius, ray r, real t_min, real t_max,
   // In float (the GPU) the lesson's form loses most digits for small, distant spheres.
   precise real3 l = oc - (half_b / a) * r.direction;
   precise real discriminant = a * (radius * radius - dot3(l, l));
-  if (discriminant < real(0.0)) return false;
+  // A degenerate ray (zero, infinite or NaN direction) makes this NaN or infinite: no hit. The
+  // finiteness tests are explicit (is_finite tests bits on the GPU), not left to NaN failing
+  // comparisons, which a driver may assume never happens.
+  if (!is_finite(discriminant) || discriminant < real(0.0)) return false;
   precise real sqrtd = sqrt(discriminant);
 
   // The nearer root first; the farther one only when the nearer is out of range. A root that is
-  // not a finite number inside the interval is no hit: NaN (a degenerate ray: zero or infinite
-  // direction) fails every comparison, and infinity (overflow) would pass `<= t_max` when t_max
-  // is infinite.
+  // not a finite number inside the interval is no hit (infinity, from overflow, would pass
+  // `<= t_max` when t_max is infinite).
   precise real root = (-half_b - sqrtd) / a;
-  if (!(t_min <= root && root <= t_max && !isinf(root))) {
+  if (!(is_finite(root) && t_min <= root && root <= t_max)) {
     root = (-half_b + sqrtd) / a;
-    if (!(t_min <= root && root <= t_max && !isinf(root))) return false;
+    if (!(is_finite(root) && t_min <= root && root <= t_max)) return false;
   }
   t = root;
   return true;

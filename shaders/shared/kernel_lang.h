@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
@@ -45,6 +46,7 @@ using real = RTVK_REAL;
 using real2 = glm::vec<2, real>;
 using real3 = glm::vec<3, real>;
 using uint = std::uint32_t;
+using uvec2 = glm::uvec2;
 // The GLSL built-ins the kernels call.
 using glm::max;
 using glm::min;
@@ -52,13 +54,23 @@ using std::abs;
 using std::asin;
 using std::cos;
 using std::floor;
-using std::isinf;
 using std::sin;
 using std::sqrt;
 // Where one source cannot serve: GLSL has no cube root. pow(x, 1/3) there, cbrt here; the two
 // differ in the last bits, so the probes compare them with a bound.
 inline real cube_root(real x) {
   return std::cbrt(x);
+}
+// Not NaN and not infinite. The GLSL body tests the bits: Vulkan lets a driver assume that no
+// float is NaN or infinite (and fold isnan, isinf and comparisons with them) unless a shader
+// declares SignedZeroInfNanPreserve, so a guard must not depend on float semantics there.
+inline bool is_finite(real x) {
+  return std::isfinite(x);
+}
+inline uint floatBitsToUint(float x) {  // GLSL's built-in
+  uint u;
+  std::memcpy(&u, &x, sizeof u);
+  return u;
 }
 }  // namespace RTVK_KERNEL_NAMESPACE
 
@@ -74,6 +86,9 @@ inline real cube_root(real x) {
 #define real3 vec3
 precise float cube_root(float x) {
   return pow(x, 1.0 / 3.0);
+}
+bool is_finite(float x) {
+  return (floatBitsToUint(x) & 0x7f800000u) != 0x7f800000u;  // the exponent is not all ones
 }
 
 #endif

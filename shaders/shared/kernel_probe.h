@@ -3,6 +3,7 @@
 // function on the same entries, so whatever they disagree on is the device's arithmetic.
 #ifndef RTVK_KERNEL_PROBE_H
 #define RTVK_KERNEL_PROBE_H
+#include "fixed_sum.h"
 #include "kernel_lang.h"
 #include "random.h"
 #include "ray.h"
@@ -38,6 +39,9 @@ inline void run_kernel_probe(INOUT(kernel_probe_entry) e) {
   precise real2 disk = random_in_unit_disk(real(rnd(s, 0u)), real(rnd(s, 1u)));
   e.disk_x = disk.x;
   e.disk_y = disk.y;
+  uvec2 words = to_fixed(e.sample_value, float(RTVK_PROBE_SAMPLE_LIMIT), 1048576.0f);
+  e.fixed_low = words.x;
+  e.fixed_high = words.y;
 }
 
 RTVK_KERNELS_END

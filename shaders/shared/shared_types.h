@@ -127,7 +127,7 @@ struct render_push {
   uint sample_begin;   // the window's first sample index: a pixel's k-th sample is this + k
   uint seed;           // the render's random seed
   uint max_depth;      // most scatter events per path
-  uint loop_budget;    // most loop iterations one invocation may run (lavapipe stops at 65,535)
+  uint loop_budget;    // most loop iterations one invocation runs in this dispatch (pacer.h)
   uint band_y0;        // first image row of this band: the image buffers hold rows band_y0 on
   uint band_rows;      // rows in this band
   uint region_x0;      // first image column drawn
@@ -149,15 +149,17 @@ struct pixel_sum {
 
 // Push constants of tonemap.comp (std430).
 struct tonemap_push {
-  uint pixels;  // pixel_sum entries to encode
+  uint pixels;           // pixel_sum entries to encode
+  uint row_invocations;  // invocations in x of the whole dispatch (a tile's gl_NumWorkGroups is
+                         // less)
 };
 
 // std430: written by the shader when something went wrong.
 struct render_status {
-  uint overrun_pixels;     // invocations whose first sample alone overran loop_budget
+  uint starved_pixels;     // invocations whose first sample alone overran loop_budget
   uint unfinished_pixels;  // invocations that stopped short of sample_target (counted per pass)
-  uint pad1;               // unused
-  uint pad2;               // unused
+  uint starved_budget;     // the largest loop_budget under which some invocation starved
+  uint pad;                // unused
 };
 
 // std430, read and written by probe.comp: the host fills uv, the shader fills the rest.
@@ -225,12 +227,13 @@ struct kernel_probe_entry {
   vec3 origin_out;     // out: the scattered ray's origin
   float disk_y;        // out: and .y
   vec3 direction_out;  // out: the scattered ray's direction
-  float pad0;          // unused
+  float sample_value;  // in: a sample's channel for to_fixed (fixed_sum.h)
   vec3 sky;            // out: sky_color(direction, the book's white and blue)
-  float pad1;          // unused
+  uint fixed_low;      // out: to_fixed(sample_value, RTVK_PROBE_SAMPLE_LIMIT, 2^20), low word
   vec3 ball;           // out: random_in_unit_sphere(rnd 0, rnd 1, rnd 2)
-  float pad2;          // unused
+  uint fixed_high;     // out: and its high word
 };
+#define RTVK_PROBE_SAMPLE_LIMIT 65536.0  // the kernel probe's to_fixed limit (scale: 2^20)
 
 #ifdef __cplusplus
 static_assert(offsetof(camera_ubo, origin) == 0);
@@ -279,8 +282,10 @@ static_assert(offsetof(pixel_sum, b) == 16);
 static_assert(offsetof(pixel_sum, samples) == 24);
 static_assert(offsetof(pixel_sum, rays) == 28);
 static_assert(sizeof(pixel_sum) == 32);
-static_assert(sizeof(tonemap_push) == 4);
+static_assert(offsetof(tonemap_push, row_invocations) == 4);
+static_assert(sizeof(tonemap_push) == 8);
 static_assert(offsetof(render_status, unfinished_pixels) == 4);
+static_assert(offsetof(render_status, starved_budget) == 8);
 static_assert(RTVK_MAX_VIEWS * sizeof(camera_ubo) <= 16384);
 static_assert(offsetof(bvh_node, x) == 0);
 static_assert(offsetof(bvh_node, y) == 16);
@@ -325,7 +330,10 @@ static_assert(offsetof(kernel_probe_entry, disk_x) == 92);
 static_assert(offsetof(kernel_probe_entry, origin_out) == 96);
 static_assert(offsetof(kernel_probe_entry, disk_y) == 108);
 static_assert(offsetof(kernel_probe_entry, direction_out) == 112);
+static_assert(offsetof(kernel_probe_entry, sample_value) == 124);
 static_assert(offsetof(kernel_probe_entry, sky) == 128);
+static_assert(offsetof(kernel_probe_entry, fixed_low) == 140);
+static_assert(offsetof(kernel_probe_entry, fixed_high) == 156);
 static_assert(offsetof(kernel_probe_entry, ball) == 144);
 static_assert(sizeof(kernel_probe_entry) == 160);
 }  // namespace rtvk::gpu

@@ -169,6 +169,24 @@ TEST_F(CliGpu, DeviceByDriverNameOrVersionOrFromRtvkDevice) {
   EXPECT_EQ(run_rtvk({"devices", "--device", "lavapipe"}, disguise).status, 2);
 }
 
+// A Vulkan 1.0 device (the test layer aborts the process if it is asked what only Vulkan 1.1
+// devices answer): listed as unusable, and a render on it refused, never a crash.
+TEST_F(CliGpu, AVulkan10DeviceIsListedAsUnusableWithoutA11Query) {
+  const auto old = test::fault_environment("vulkan-1.0");
+  const auto listed = run_rtvk({"devices"}, old);
+  // Listed; then no device to render on (1), or the one the suite selects refused (2).
+  EXPECT_TRUE(listed.status == 1 || listed.status == 2) << listed.status << " " << listed.err;
+  EXPECT_NE(listed.out.find("unusable: supports only Vulkan 1.0.0"), std::string::npos)
+      << listed.out;
+  EXPECT_EQ(listed.err.find("test layer"), std::string::npos) << listed.err;
+  test::temp_dir dir;
+  const auto out = (dir.path() / "x.png").string();
+  const auto r = run_rtvk({"render", "--backend", "gpu", "-o", out}, old);
+  EXPECT_TRUE(r.status == 1 || r.status == 2) << r.status << " " << r.err;
+  EXPECT_NE(r.err.find("supports only Vulkan 1.0.0"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(CliGpu, DeviceSelectorsThatMatchNothingAreUsageErrors) {
   test::temp_dir dir;
   const auto out = dir.path() / "x.png";

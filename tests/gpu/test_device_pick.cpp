@@ -224,5 +224,24 @@ TEST(DeviceSelector, MatchesTheDevicesNameOrItsDriversNameCommonNameOrVersion) {
   EXPECT_THROW(gpu::select_device({}, "lavapipe"), gpu::no_device_error);
 }
 
+// The family rtvk computes on: a compute-only one (asynchronous compute on AMD and NVIDIA, where
+// rendering does not hold up the desktop's drawing) over the graphics family, which is still
+// taken when there is nothing else; none without compute.
+TEST(DevicePick, ComputeGoesToADedicatedComputeFamilyWhereThereIsOne) {
+  const auto family = [](VkQueueFlags flags, std::uint32_t count = 1) {
+    VkQueueFamilyProperties f{};
+    f.queueFlags = flags;
+    f.queueCount = count;
+    return f;
+  };
+  const VkQueueFlags all = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT | VK_QUEUE_TRANSFER_BIT;
+  const VkQueueFlags compute = VK_QUEUE_COMPUTE_BIT | VK_QUEUE_TRANSFER_BIT;
+  // NVIDIA's and AMD's layouts: graphics first, then compute, then transfer.
+  EXPECT_EQ(gpu::compute_family({family(all), family(compute), family(VK_QUEUE_TRANSFER_BIT)}), 1u);
+  EXPECT_EQ(gpu::compute_family({family(all)}), 0u);  // lavapipe, most integrated GPUs
+  EXPECT_EQ(gpu::compute_family({family(all), family(compute, 0)}), 0u);  // no queues in it
+  EXPECT_EQ(gpu::compute_family({family(VK_QUEUE_TRANSFER_BIT)}), gpu::no_queue_family);
+}
+
 }  // namespace
 }  // namespace rtvk

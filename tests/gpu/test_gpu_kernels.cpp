@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
 #include "camera.h"
@@ -192,6 +193,54 @@ TEST_F(GpuKernels, ScatterSkyAndSamplersAreTheFloatCompilation) {
   }
   EXPECT_GT(scattered, 2000) << "lambertian, metal and dielectric entries must mostly scatter";
   EXPECT_LE(worst, 2e-5);
+}
+
+// A sample's channel as the device adds it to the exact sums (to_fixed, fixed_sum.h, the code
+// render.comp runs), on the values a render rarely makes: NaN (either sign), infinities,
+// negatives, -0, subnormals, past the limit, and a thousand ordinary ones. NaN and negatives add
+// 0, +infinity the limit, the rest floor(c * 2^20) exactly, as the host's double arithmetic says;
+// guards written with bit tests, not with comparisons a driver may fold when it assumes no NaN.
+TEST_F(GpuKernels, SamplesThatAreNotNumbersOrNotFiniteAddWhatTheRuleSays) {
+  const float inf = std::numeric_limits<float>::infinity();
+  std::vector<float> values{std::numeric_limits<float>::quiet_NaN(),
+                            -std::numeric_limits<float>::quiet_NaN(),
+                            std::numeric_limits<float>::signaling_NaN(),
+                            inf,
+                            -inf,
+                            -0.0f,
+                            0.0f,
+                            -1.0f,
+                            1e-40f,
+                            std::numeric_limits<float>::min(),
+                            float(RTVK_PROBE_SAMPLE_LIMIT),
+                            std::nextafter(float(RTVK_PROBE_SAMPLE_LIMIT), inf),
+                            1e30f,
+                            std::numeric_limits<float>::max()};
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<float> log_value(-8, 5);
+  for (int i = 0; i < 1000; ++i) values.push_back(std::pow(10.0f, log_value(gen)));
+  std::vector<gpu::kernel_probe_entry> entries;
+  for (float v : values) {
+    gpu::kernel_probe_entry e{};
+    e.normal = glm::vec3(0, 0, 1);
+    e.direction = glm::vec3(0, 0, -1);
+    e.sample_value = v;
+    entries.push_back(e);
+  }
+  const auto out = gpu::run_kernel_probe(gpu(), entries);
+  ASSERT_EQ(out.size(), entries.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const float v = values[i];
+    const double clamped =
+        std::isnan(v) || std::signbit(v) ? 0.0 : std::min(double(v), RTVK_PROBE_SAMPLE_LIMIT);
+    const auto want = std::uint64_t(std::floor(clamped * 1048576.0));
+    const std::uint64_t got = std::uint64_t(out[i].fixed_high) << 32 | out[i].fixed_low;
+    EXPECT_EQ(got, want) << "sample " << v << " (entry " << i << ")";
+    gpu::kernel_probe_entry cpu = entries[i];
+    f32::run_kernel_probe(cpu);
+    EXPECT_EQ(std::uint64_t(cpu.fixed_high) << 32 | cpu.fixed_low, want)
+        << "float compilation, " << v;
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // that slows down when it heats up) are tried too.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -154,6 +155,71 @@ TEST(Pacer, TimesThatAreNotNumbersChangeNothing) {
   p.measured(std::numeric_limits<double>::infinity(), 1);
   EXPECT_EQ(p.samples_per_dispatch(), d / 2);
   expect_sane(p);
+}
+
+// Before anything is measured, a dispatch of as many pixels as the pacer allows runs at most the
+// pacing's first work (pixels times loop budget), on any device kind and any band: a GPU's first
+// dispatch over a 4K image cannot run into a watchdog.
+TEST(Pacer, EveryFirstDispatchIsBoundedBeforeAnythingIsMeasured) {
+  for (const bool cpu : {false, true}) {
+    const pacing t = pacing_for(cpu);
+    const pacer p(t);
+    for (const std::uint64_t band : {1ull, 1200ull, 1200ull * 675, 3840ull * 2160, 1ull << 30}) {
+      const std::uint64_t pixels = std::min(band, p.pixel_allowance());
+      EXPECT_LE(pixels * p.loop_budget(pixels), t.first_work) << band << " pixels wanted";
+      EXPECT_GE(p.loop_budget(pixels), pacer::first_loop_budget);
+    }
+    EXPECT_GE(p.pixel_allowance(), 1u << 14) << "a GPU wants many invocations a dispatch";
+  }
+}
+
+// The work grows on a fast device and shrinks on a slow one, so that a dispatch of the allowed
+// pixels at their budget stays inside the targets even when every invocation uses its whole
+// budget.
+TEST(Pacer, TheWorkFollowsTheDispatchTimes) {
+  const pacing t = pacing_for(false);
+  pacer p(t);
+  const auto worst_case = [&](double per_iteration) {  // seconds of one dispatch
+    const std::uint64_t pixels = p.pixel_allowance();
+    return double(pixels) * p.loop_budget(pixels) * per_iteration;
+  };
+  for (int k = 0; k < 60; ++k) p.measured(worst_case(1e-12), 1);
+  EXPECT_GT(p.work(), t.first_work);
+  EXPECT_LE(worst_case(1e-12), t.dispatch_shrink);
+  int submissions = 0;
+  while (worst_case(1e-10) > t.dispatch_shrink) {  // a hundred times slower
+    p.measured(worst_case(1e-10), 1);
+    ASSERT_LT(++submissions, 10) << p.work() << " iterations a dispatch";
+  }
+}
+
+// A sample that needs more than its budget raises the lowest budget fourfold, up to the highest;
+// one that needs more than the highest cannot be drawn (the engine fails the render).
+TEST(Pacer, StarvedSamplesRaiseTheBudgetUpToTheHighest) {
+  pacer p(pacing_for(false));
+  const std::uint64_t many = 1ull << 40;  // pixels: the budget is the lowest
+  EXPECT_EQ(p.loop_budget(many), pacer::first_loop_budget);
+  std::uint32_t budget = p.loop_budget(many);
+  int raises = 0;
+  while (p.starved(budget)) {
+    EXPECT_EQ(p.loop_budget(many), std::min(4 * budget, pacer::max_loop_budget));
+    budget = p.loop_budget(many);
+    ASSERT_LT(++raises, 5);
+  }
+  EXPECT_EQ(budget, pacer::max_loop_budget);
+  EXPECT_EQ(p.highest_loop_budget(), pacer::max_loop_budget);
+  EXPECT_LE(p.pixel_allowance() * pacer::max_loop_budget, p.work());
+  // A starvation reported late, under a budget lower than the lowest now, lowers nothing.
+  EXPECT_TRUE(p.starved(pacer::first_loop_budget));
+  EXPECT_EQ(p.loop_budget(many), pacer::max_loop_budget);
+}
+
+// A fixed budget (tests) is the only budget: a starved sample under it fails.
+TEST(Pacer, AFixedBudgetIsTheOnlyOne) {
+  pacer p(pacing_for(true), 0, 0, 400);
+  EXPECT_EQ(p.loop_budget(1), 400u);
+  EXPECT_EQ(p.loop_budget(1ull << 40), 400u);
+  EXPECT_FALSE(p.starved(400));
 }
 
 }  // namespace

@@ -520,7 +520,24 @@ TEST_F(XvfbTest, ADeviceThatCannotPresentExits1NamingIt) {
       60s, {"view", "--scene", "seed", "--spp", "1", "--screenshot", shot}, with_layer);
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("rtvk: error: the Vulkan device "), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("cannot present to the window from its compute queue"), std::string::npos)
+  EXPECT_NE(r.err.find("cannot present to the window from any of its queues"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+  EXPECT_FALSE(std::filesystem::exists(shot));
+}
+
+// A device whose only presenting queue cannot draw (the viewer blits, a graphics command, on the
+// queue it presents from): exit 1 saying so, not a blit on a queue that cannot run it.
+TEST_F(XvfbTest, ADeviceThatPresentsOnlyFromAComputeQueueExits1NamingIt) {
+  const test::temp_dir dir;
+  const std::string shot = (dir.path() / "never.png").string();
+  std::vector<std::string> with_layer = env();
+  for (const std::string& e : test::fault_environment("no-graphics-queue")) with_layer.push_back(e);
+  const test::process_result r = test::run_rtvk_within(
+      60s, {"view", "--scene", "seed", "--spp", "1", "--screenshot", shot}, with_layer);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("presents to the window only from queues that cannot also compute and draw"),
+            std::string::npos)
       << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
   EXPECT_FALSE(std::filesystem::exists(shot));

@@ -39,23 +39,38 @@ nlohmann::ordered_json to_json(const gpu::device_info& d, bool chosen) {
           {"chosen", chosen}};
 }
 
+void print_devices(const devices_options& o, const std::vector<gpu::device_info>& devices,
+                   std::size_t chosen, const std::string& selector, const std::string& source);
+
 int show_devices(const devices_options& o) {
   const gpu::vulkan_instance instance(o.validate);
   const auto devices = gpu::list_devices(instance.get());
   if (devices.empty()) throw gpu::no_device_error("no Vulkan device found");
   std::string source;
   const std::string selector = device_selector(o.device, source);
-  const std::size_t chosen = gpu::select_device(devices, selector, source);
+  std::size_t chosen = devices.size();  // none: every device is listed, with why it cannot render
+  try {
+    chosen = gpu::select_device(devices, selector, source);
+  } catch (const std::exception&) {  // no usable device, or the selected one is not
+    print_devices(o, devices, chosen, selector, source);
+    throw;
+  }
+  print_devices(o, devices, chosen, selector, source);
+  return 0;
+}
+
+void print_devices(const devices_options& o, const std::vector<gpu::device_info>& devices,
+                   std::size_t chosen, const std::string& selector, const std::string& source) {
   if (o.json) {
     nlohmann::ordered_json out = nlohmann::ordered_json::array();
     for (const auto& d : devices) out.push_back(to_json(d, d.index == chosen));
     std::printf("%s\n", out.dump(2).c_str());
-    return 0;
+    return;
   }
   std::fputs(gpu::describe_devices(devices, chosen).c_str(), stdout);
-  std::printf("(* = the device rtvk renders on%s)\n",
-              selector.empty() ? " by default" : (" with " + source + " " + selector).c_str());
-  return 0;
+  if (chosen < devices.size())
+    std::printf("(* = the device rtvk renders on%s)\n",
+                selector.empty() ? " by default" : (" with " + source + " " + selector).c_str());
 }
 
 // No loader, no driver or no device: no_device_error (exit 1), after an empty JSON array when

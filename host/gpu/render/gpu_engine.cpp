@@ -90,13 +90,13 @@ void check_views(const std::vector<camera>& views, const render_window& win) {
   check_window(win, views[0].image_width(), views[0].image_height());
 }
 
-// Fails the render when any invocation ran out of its loop budget on a single sample.
-void check_overrun(const render_status& st, std::uint32_t budget, const device_info& dev) {
-  if (st.overrun_pixels > 0)
-    throw loop_budget_error(std::to_string(st.overrun_pixels) + " pixel samples needed more than " +
-                            std::to_string(budget) + " loop iterations on " + dev.name +
-                            " (lavapipe silently stops loops at 65,535, so rtvk stops first and "
-                            "writes no image): lower --depth or use fewer spheres");
+// A sample needed more than the largest loop budget: the render fails rather than show it.
+loop_budget_error overrun(const render_status& st, std::uint32_t budget, const device_info& dev) {
+  return loop_budget_error(
+      std::to_string(st.starved_pixels) + " pixel samples needed more than " +
+      std::to_string(budget) + " loop iterations on " + dev.name +
+      " (lavapipe silently stops loops at 65,535, so rtvk stops first, on every device, and "
+      "writes no image): lower --depth or use fewer spheres");
 }
 
 // The brightest channel value a path can bring back: the sky's (every attenuation is at most 1),
@@ -110,7 +110,6 @@ double brightest(const sky& background) {
 // The push constants every dispatch of a render shares; the band and target fields are set for
 // each pass.
 render_push make_push(const sky& background, const render_settings& rs, const render_window& win,
-                      const gpu_render_options& options, const device_info& dev,
                       std::uint32_t sphere_count, int exponent) {
   render_push push{};
   push.sky_horizon = vec3(background.horizon);
@@ -119,7 +118,6 @@ render_push make_push(const sky& background, const render_settings& rs, const re
   push.sample_begin = std::uint32_t(win.sample_begin);
   push.seed = rs.seed;
   push.max_depth = std::uint32_t(rs.max_depth);
-  push.loop_budget = options.loop_budget ? options.loop_budget : default_loop_budget(dev);
   push.region_x0 = std::uint32_t(win.x);
   push.region_width = std::uint32_t(win.width);
   push.sum_scale = std::ldexp(1.0f, exponent);
@@ -145,24 +143,26 @@ std::vector<buffer_binding> tonemap_bindings(const render_targets& t) {
 }
 
 // tonemap.comp over `pixels` sums: 64 a workgroup, in rows of workgroups within the device's
-// workgroup count limit.
+// workgroup count limit (and tiles of those rows, by compute_pipeline::dispatch).
 void record_tonemap(VkCommandBuffer cb, const compute_pipeline& tonemap, VkDeviceSize pixels,
                     const device_info& dev) {
-  tonemap.bind(cb);
-  const tonemap_push tp{std::uint32_t(pixels)};
-  tonemap.push(cb, &tp, sizeof tp);
   const VkDeviceSize groups = (pixels + 63) / 64;
   if (groups == 0) return;
   const VkDeviceSize row = std::min<VkDeviceSize>(groups, dev.limits.maxComputeWorkGroupCount[0]);
-  vkCmdDispatch(cb, std::uint32_t(row), std::uint32_t((groups + row - 1) / row), 1);
+  tonemap.bind(cb);
+  const tonemap_push tp{std::uint32_t(pixels), std::uint32_t(row * 64)};
+  tonemap.push(cb, &tp, sizeof tp);
+  tonemap.dispatch(cb, {std::uint32_t(row), std::uint32_t((groups + row - 1) / row), 1});
 }
 
-// Where one band is in the whole render, for progress and messages.
+// One band: rows of a group of views, drawn with all their samples before the next. Where it is
+// in the whole render, for progress and messages.
 struct band_pass {
-  std::size_t group, groups;  // view group, of how many
-  std::uint32_t band, bands;  // band of the group, of how many
-  std::uint32_t views;        // views in the group (the dispatch's z size)
-  std::uint32_t y0, rows;     // image rows the band covers
+  std::size_t first_view;          // of the render's views
+  std::uint32_t views;             // views in the group (the dispatch's z size)
+  std::uint32_t y0, rows;          // image rows the band covers
+  std::uint64_t view_rows_before;  // rows of all views drawn before this band
+  std::uint64_t view_rows;         // rows of all views in the render
   VkDeviceSize pixels() const { return VkDeviceSize(views) * rows; }  // times the width
 };
 
@@ -211,6 +211,10 @@ class band_renderer {
     std::uint32_t target = 0;        // asked of every pixel so far
     std::uint32_t final_passes = 0;  // completed submissions asking for the last target
     bool first = true;
+    // Each pass at the last target moves every unfinished pixel on by a sample at least, unless
+    // the pixel starved and the budget grows (a few times at most): more passes than that would
+    // mean none moves any more.
+    const std::uint32_t most_final_passes = samples + 16;
     for (;;) {
       if (e_.options.engine.cancelled && e_.options.engine.cancelled()) {
         e_.ctx.wait_all();
@@ -228,9 +232,7 @@ class band_renderer {
         finish(done, stats);
         if (progress) progress(progress_value(b, done.target));
         if (done.complete && unfinished() == 0) return;
-        // Each pass at the last target moves every unfinished pixel on by a sample at least (one
-        // that cannot is an overrun): more passes than samples would mean none moves any more.
-        if (done.complete && ++final_passes > samples)
+        if (done.complete && ++final_passes > most_final_passes)
           throw std::runtime_error(
               "the GPU render stopped advancing: " + std::to_string(unfinished()) +
               " pixels still unfinished after " + std::to_string(final_passes) + " passes on " +
@@ -241,16 +243,19 @@ class band_renderer {
 
  private:
   render_cancelled cancelled(const band_pass& b, std::uint32_t done) const {
-    return render_cancelled("stopped after " + std::to_string(done) + " of " +
-                            std::to_string(win_.samples()) + " samples per pixel of band " +
-                            std::to_string(b.band + 1) + " of " + std::to_string(b.bands) +
-                            " of view group " + std::to_string(b.group + 1) + " of " +
-                            std::to_string(b.groups));
+    return render_cancelled(
+        "stopped after " + std::to_string(done) + " of " + std::to_string(win_.samples()) +
+        " samples per pixel of rows " + std::to_string(b.y0) + " to " +
+        std::to_string(b.y0 + b.rows - 1) + " of view " + std::to_string(b.first_view + 1) +
+        (b.views > 1 ? " to " + std::to_string(b.first_view + b.views) : std::string()) + " of " +
+        std::to_string(b.view_rows / std::uint64_t(win_.height)));
   }
 
+  // Samples per pixel of the whole render done, as if every pixel had the same share.
   int progress_value(const band_pass& b, std::uint32_t target) const {
-    const std::int64_t passes = std::int64_t(b.groups) * b.bands;
-    return int((std::int64_t(b.group * b.bands + b.band) * win_.samples() + target) / passes);
+    const std::uint64_t done =
+        b.view_rows_before * std::uint64_t(win_.samples()) + std::uint64_t(b.pixels()) * target;
+    return int(done / b.view_rows);
   }
 
   std::uint32_t unfinished() {
@@ -260,9 +265,10 @@ class band_renderer {
   in_flight submit(const band_pass& b, bool first, std::uint32_t from, std::uint32_t to,
                    bool last) {
     const std::uint32_t step = e_.pace.samples_per_dispatch();
-    const std::uint32_t dispatches = std::max(1u, (to - from + step - 1) / step);
-    const std::uint64_t ticket =
-        e_.ctx.submit([&](VkCommandBuffer cb) { record(cb, b, first, from, to, step, last); });
+    push_.loop_budget = e_.pace.loop_budget(VkDeviceSize(win_.width) * b.pixels());
+    std::uint32_t dispatches = 0;
+    const std::uint64_t ticket = e_.ctx.submit(
+        [&](VkCommandBuffer cb) { dispatches = record(cb, b, first, from, to, step, last); });
     e_.drawn = true;
     return {ticket, to, last, dispatches, std::chrono::steady_clock::now()};
   }
@@ -276,22 +282,26 @@ class band_renderer {
       ++stats->submissions;
       stats->gpu_seconds += device_seconds;
     }
-    check_overrun(*static_cast<const render_status*>(e_.targets.status.read()), push_.loop_budget,
-                  e_.ctx.device());
+    // A sample that did not fit its budget is drawn again under a larger one; one that did not
+    // fit the largest fails the render.
+    const auto& st = *static_cast<const render_status*>(e_.targets.status.read());
+    if (st.starved_pixels > 0 && !e_.pace.starved(st.starved_budget))
+      throw overrun(st, st.starved_budget, e_.ctx.device());
     // Device time where there is a timer: the wall time includes waiting behind the other
     // submission in flight.
     e_.pace.measured(e_.timer.available() ? device_seconds : wall, f.dispatches);
   }
 
-  // Before a band's first samples: cleared sums, and for a render's first band a cleared
-  // overrun count.
-  void record_start(VkCommandBuffer cb, bool first_band) const {
+  // Before a band's first samples: cleared sums and status.
+  void record_start(VkCommandBuffer cb) const {
     if (e_.drawn) {  // the previous band's shader writes and copies out of these buffers come first
       barrier(cb, compute_stage | transfer_stage,
               shader_rw | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
               transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
     }
-    if (first_band) vkCmdFillBuffer(cb, e_.targets.status.get(), 0, VK_WHOLE_SIZE, 0);
+    // Cleared for every band: a starved count is the band's to act on (the budget it raised
+    // carries over in the pacer).
+    vkCmdFillBuffer(cb, e_.targets.status.get(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, e_.targets.sums.get(), 0, VK_WHOLE_SIZE, 0);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
   }
@@ -319,12 +329,13 @@ class band_renderer {
   // One submission: dispatches bringing every pixel from `from` up to `to` samples, `step` at a
   // time. When `to` is the band's last target, the unfinished count is cleared before the last
   // dispatch (so it counts only that one) and the readback follows.
-  void record(VkCommandBuffer cb, const band_pass& b, bool first, std::uint32_t from,
-              std::uint32_t to, std::uint32_t step, bool last) {
+  // Returns the dispatches recorded.
+  std::uint32_t record(VkCommandBuffer cb, const band_pass& b, bool first, std::uint32_t from,
+                       std::uint32_t to, std::uint32_t step, bool last) {
     const std::uint64_t ticket = e_.ctx.next_ticket();
     e_.timer.record_begin(cb, ticket);
     if (first) {
-      record_start(cb, b.group == 0 && b.band == 0);
+      record_start(cb);
     } else {  // the previous submission's samples are in the sums this one adds to (and a
               // catch-up pass copies into the readback again)
       barrier(
@@ -333,6 +344,7 @@ class band_renderer {
           compute_stage | transfer_stage, shader_rw | VK_ACCESS_TRANSFER_WRITE_BIT);
     }
     std::uint32_t t = from;
+    std::uint32_t dispatches = 0;
     bool first_dispatch = true;
     do {
       t = std::min(to, t + step);
@@ -348,14 +360,15 @@ class band_renderer {
       pipeline_.bind(cb);
       push_.sample_target = t;
       pipeline_.push(cb, &push_, sizeof push_);
-      vkCmdDispatch(cb, (push_.region_width + e_.wg[0] - 1) / e_.wg[0],
-                    (push_.band_rows + e_.wg[1] - 1) / e_.wg[1], b.views);
+      dispatches += pipeline_.dispatch(cb, {(push_.region_width + e_.wg[0] - 1) / e_.wg[0],
+                                            (push_.band_rows + e_.wg[1] - 1) / e_.wg[1], b.views});
     } while (t < to);
     if (last) record_readback(cb, b);
     barrier(cb, compute_stage | transfer_stage,
             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
     e_.timer.record_end(cb, ticket);
+    return dispatches;
   }
 
   engine_parts e_;  // the engine's context, targets, timer, options and carried-over state
@@ -400,7 +413,7 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       timer_(ctx),
       exponent_(rtvk::sum_exponent(brightest(s.sky))),
       pacer_(pacing_for(cpu_device(ctx.device())), options.samples_per_dispatch,
-             options.samples_per_submission) {
+             options.samples_per_submission, options.loop_budget) {
   upload();
   setup_seconds_ = seconds_since(start_);
 }
@@ -528,20 +541,26 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
       std::any_of(views.begin(), views.end(), [](const camera& c) { return c.lens_radius() > 0; });
   band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, pacer_},
                       pipeline_for(rs.jitter, lens, count_rays), tonemap,
-                      make_push(sky_, rs, win, options_, dev, scene_.sphere_count(), exponent_),
-                      win);
+                      make_push(sky_, rs, win, scene_.sphere_count(), exponent_), win);
 
+  // Bands as large as memory allows (layout) and the pacer's work allows now: a dispatch's work
+  // is bounded by its pixels times its loop budget, so the first bands of a render on a device
+  // not measured yet are small, and grow as the measured times allow.
+  const VkDeviceSize width = VkDeviceSize(win.width), height = VkDeviceSize(win.height);
   band_pass b{};
-  b.bands = (std::uint32_t(win.height) + layout.band_rows - 1) / layout.band_rows;
-  b.groups = (views.size() + layout.views_per_group - 1) / layout.views_per_group;
-  for (b.group = 0; b.group < b.groups; ++b.group) {
-    const std::size_t first_view = b.group * layout.views_per_group;
-    b.views =
-        std::uint32_t(std::min<std::size_t>(layout.views_per_group, views.size() - first_view));
-    write_cameras(targets.cameras, views, first_view, b.views);
-    for (b.band = 0; b.band < b.bands; ++b.band) {
-      b.y0 = std::uint32_t(win.y) + b.band * layout.band_rows;
-      b.rows = std::min(layout.band_rows, std::uint32_t(win.height) - b.band * layout.band_rows);
+  b.view_rows = views.size() * height;
+  for (b.first_view = 0; b.first_view < views.size(); b.first_view += b.views) {
+    const VkDeviceSize whole_views = pacer_.pixel_allowance() / (width * height);
+    b.views = std::uint32_t(std::clamp<VkDeviceSize>(
+        whole_views, 1,
+        std::min<VkDeviceSize>(layout.views_per_group, views.size() - b.first_view)));
+    write_cameras(targets.cameras, views, b.first_view, b.views);
+    for (std::uint32_t y = 0; y < std::uint32_t(win.height); y += b.rows) {
+      b.rows = b.views > 1 ? std::uint32_t(win.height)
+                           : std::uint32_t(std::clamp<VkDeviceSize>(
+                                 pacer_.pixel_allowance() / width, 1,
+                                 std::min<VkDeviceSize>(layout.band_rows, height - y)));
+      b.y0 = std::uint32_t(win.y) + y;
       try {
         bands.draw(b, progress, stats);
       } catch (...) {
@@ -554,7 +573,8 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
         const std::size_t n = std::size_t(win.width) * b.pixels();
         for (std::size_t i = 0; i < n; ++i) stats->rays += sums[i].rays;
       }
-      sink(first_view, b.views, int(b.y0) - win.y, int(b.rows), data);
+      sink(b.first_view, b.views, int(b.y0) - win.y, int(b.rows), data);
+      b.view_rows_before += b.pixels();
     }
   }
 }

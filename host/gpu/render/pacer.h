@@ -12,39 +12,74 @@ namespace rtvk::gpu {
 // submissions short enough for progress and Ctrl-C. On a CPU device (lavapipe) nothing waits on
 // a dispatch, and an invocation tracing more of its samples keeps its SIMD lanes busier (a lane
 // whose path ends starts its next sample while the others bounce), so dispatches may take a
-// quarter second and, from 8 samples a pixel on, bands are kept small enough that one dispatch
-// can take all of a band's samples: about 2^18 pixel samples a band (2^15 pixels at least).
-// With fewer samples there is little to gain, and many views in one dispatch (an animation's
-// frames) do better: one band, one wait and one readback for all of them.
+// tenth of a second or more (submissions a quarter to a second: well inside a 2-second watchdog,
+// which tests/view/layers plays on lavapipe) and, from 8 samples a pixel on, bands are kept small
+// enough that one dispatch can take all of a band's samples: about 2^18 pixel samples a band (2^15
+// pixels at least). With fewer samples there is little to gain, and many views in one dispatch (an
+// animation's frames) do better: one band, one wait and one readback for all of them. Before
+// anything was measured, a dispatch may run at most `first_work` loop iterations in all (its pixels
+// times its loop budget): on the slowest device rtvk expects of its kind, a small fraction of a
+// second, far inside Windows' 2-second watchdog (TDR) and Linux's GPU job timeouts.
 struct pacing {
   double dispatch_grow, dispatch_shrink;      // seconds of device time per dispatch
   double submission_grow, submission_shrink;  // seconds per submission
   bool small_bands;                           // bands sized to the sample count, as above
+  std::uint64_t first_work;                   // loop iterations a first dispatch may run
 };
 
-// The targets for a CPU device (lavapipe) or for any other.
+// The targets for a CPU device (lavapipe) or for any other. lavapipe runs about 3e8 iterations a
+// second on two cores, so 2^26 is at most a quarter second there; on a GPU, as long on an old
+// integrated one and a millisecond on a discrete one. At the first loop budget that is 2^18
+// pixels: a 512x512 band, or the frames of a small animation in one dispatch.
 constexpr pacing pacing_for(bool cpu_device) {
-  return cpu_device ? pacing{0.25, 1.0, 0.5, 2.0, true} : pacing{0.004, 0.016, 0.1, 0.4, false};
+  return cpu_device ? pacing{0.1, 0.4, 0.25, 1.0, true, 1ull << 26}
+                    : pacing{0.004, 0.016, 0.1, 0.4, false, 1ull << 26};
 }
 
-// Samples per dispatch and per submission. Both start at one and double while the measured times
+// Samples per dispatch and per submission, and how much work one dispatch may do. The samples
+// per dispatch and per submission start at one and double while the measured times
 // are below the targets' grow bounds, halve while above their shrink bounds (a grow bound at most
 // half its shrink bound keeps a steady device steady), and carry over from one render to the
 // next. A submission holds at least one dispatch's samples and at most max_dispatches
 // dispatches. Fixed sizes (--samples-per-dispatch and per submission, for tests) are never
 // changed.
+// The work is what bounds a dispatch's time before it runs, whatever the scene: an invocation
+// stops after its loop budget (render.comp) and the next dispatch goes on from there, so a
+// dispatch of P pixels runs at most P x budget iterations. The work starts at the pacing's
+// first_work and doubles or halves with the dispatch times as the samples do; a dispatch is given
+// as many pixels as the work allows at the lowest budget (a GPU wants many invocations), and
+// the budget grows only once a dispatch's pixels are all it was asked for. The lowest budget
+// starts at first_loop_budget and grows fourfold whenever some sample needed more
+// (`starved`), up to max_loop_budget, where a sample that does not fit fails the render.
 class pacer {
  public:
   static constexpr std::uint32_t max_samples = 1u << 20;  // either size
   static constexpr std::uint32_t max_dispatches = 256;    // dispatches in one submission
+  // lavapipe silently stops loops at 65,535 iterations per invocation; the same bound on every
+  // device keeps a render that works on one working on all.
+  static constexpr std::uint32_t max_loop_budget = 60'000;
+  static constexpr std::uint32_t first_loop_budget = 256;
+  static constexpr std::uint64_t max_work = 1ull << 40;  // loop iterations per dispatch
 
   // Paced toward `targets`; or, when either fixed size is not 0, fixed: per dispatch
-  // max(1, fixed_per_dispatch), per submission at least that and fixed_per_submission.
+  // max(1, fixed_per_dispatch), per submission at least that and fixed_per_submission. A fixed
+  // loop budget (not 0) is the lowest and the highest budget.
   explicit pacer(const pacing& targets, std::uint32_t fixed_per_dispatch = 0,
-                 std::uint32_t fixed_per_submission = 0);
+                 std::uint32_t fixed_per_submission = 0, std::uint32_t fixed_loop_budget = 0);
 
   std::uint32_t samples_per_dispatch() const { return per_dispatch_; }
   std::uint32_t samples_per_submission() const { return per_submission_; }
+  std::uint64_t work() const { return work_; }  // loop iterations one dispatch may run
+  // Pixels one dispatch may draw: the work at the lowest budget (at least one).
+  std::uint64_t pixel_allowance() const;
+  // The loop budget for a dispatch of `pixels`: the work shared among them, within the lowest
+  // and the highest budget.
+  std::uint32_t loop_budget(std::uint64_t pixels) const;
+  std::uint32_t highest_loop_budget() const { return highest_budget_; }
+  // Some sample needed more than `budget` iterations: the lowest budget becomes four times
+  // that, up to the highest. False when `budget` was already the highest: the sample cannot be
+  // drawn on any device.
+  bool starved(std::uint32_t budget);
 
   // A submission of `dispatches` dispatches took `seconds` (device time where the device has a
   // timer: wall time includes the wait behind the other submission in flight). A time that is not
@@ -56,6 +91,9 @@ class pacer {
   bool fixed_;                        // sizes given, not paced
   std::uint32_t per_dispatch_ = 1;    // samples per dispatch
   std::uint32_t per_submission_ = 1;  // samples per submission
+  std::uint64_t work_;                // loop iterations per dispatch
+  std::uint32_t lowest_budget_;       // loop iterations per invocation and dispatch, at least
+  std::uint32_t highest_budget_;      // and at most
 };
 
 }  // namespace rtvk::gpu

@@ -22,7 +22,7 @@ void run_in_place(gpu_context& ctx, std::span<const std::uint32_t> spirv, void* 
   const compute_pipeline pipeline(ctx, spirv, bindings, 0);
   ctx.submit_and_wait([&](VkCommandBuffer cb) {
     pipeline.bind(cb);
-    vkCmdDispatch(cb, groups, 1, 1);
+    pipeline.dispatch(cb, {groups, 1, 1});
     VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -90,7 +90,7 @@ std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s,
                          0, 1, &upload, 0, nullptr, 0, nullptr);
     pipeline.bind(cb);
     pipeline.push(cb, &push, sizeof push);
-    vkCmdDispatch(cb, std::uint32_t((entries.size() + 63) / 64), 1, 1);
+    pipeline.dispatch(cb, {std::uint32_t((entries.size() + 63) / 64), 1, 1});
     VkMemoryBarrier done{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     done.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     done.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

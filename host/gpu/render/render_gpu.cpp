@@ -4,13 +4,6 @@
 
 namespace rtvk::gpu {
 
-std::uint32_t default_loop_budget(const device_info& d) {
-  // By driver ID; a device too old to report one is known by its name.
-  const bool llvmpipe = d.driver_id == VK_DRIVER_ID_MESA_LLVMPIPE ||
-                        (d.driver_id == VkDriverId(0) && d.name.rfind("llvmpipe", 0) == 0);
-  return llvmpipe ? 60'000u : 0xffffffffu;
-}
-
 framebuffer render_gpu(gpu_context& ctx, const camera& cam, const scene& s,
                        const render_settings& rs, const sample_progress& progress,
                        const gpu_render_options& options, render_stats* stats) {

@@ -20,11 +20,6 @@ class loop_budget_error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Most loop iterations one invocation (one sample of one pixel) may run on this device.
-// lavapipe stops every loop silently after 65,535 iterations in total per invocation, so rtvk
-// stops first, at 60,000, and reports it; other devices have no such cap.
-std::uint32_t default_loop_budget(const device_info& d);
-
 // The largest accumulation buffer a render allocates unless told otherwise (or the device's
 // storage buffer limit, if smaller), bytes.
 inline constexpr std::uint64_t default_band_bytes = 64u << 20;
@@ -32,7 +27,7 @@ inline constexpr std::uint64_t default_band_bytes = 64u << 20;
 // How the GPU does the work: the backend-neutral options plus what only the GPU has.
 struct gpu_render_options {
   engine_options engine = {};     // BVH or not, ray counting, cancellation
-  std::uint32_t loop_budget = 0;  // most loop iterations per invocation; 0: the device's
+  std::uint32_t loop_budget = 0;  // loop iterations per invocation, fixed; 0: paced (pacer.h)
   std::uint64_t band_bytes = 0;   // largest accumulation buffer; 0: default_band_bytes
   // Samples per dispatch and per submission; 0: adapted to the measured times (tests fix them).
   std::uint32_t samples_per_dispatch = 0;

@@ -1,5 +1,7 @@
 #include "compute_pipeline.h"
 
+#include <algorithm>
+
 #include "vk_error.h"
 
 namespace rtvk::gpu {
@@ -59,6 +61,7 @@ unique_pipeline make_pipeline(VkDevice dev, VkPipelineLayout layout,
   info.stage.pName = "main";
   info.stage.pSpecializationInfo = entries.empty() ? nullptr : &spec;
   info.layout = layout;
+  info.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT;  // dispatch() tiles over the count limits
   VkPipeline pipeline = VK_NULL_HANDLE;
   vk_check(vkCreateComputePipelines(dev, cache, 1, &info, nullptr, &pipeline),
            "vkCreateComputePipelines");
@@ -146,6 +149,22 @@ void compute_pipeline::bind(VkCommandBuffer cb) const {
 
 void compute_pipeline::push(VkCommandBuffer cb, const void* data, std::uint32_t bytes) const {
   vkCmdPushConstants(cb, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, bytes, data);
+}
+
+std::uint32_t compute_pipeline::dispatch(VkCommandBuffer cb,
+                                         const std::array<std::uint32_t, 3>& groups) const {
+  const std::uint32_t* most = ctx_.device().limits.maxComputeWorkGroupCount;
+  std::array<std::uint32_t, 3> step{};
+  for (int i = 0; i < 3; ++i) step[i] = std::max(1u, std::min(groups[i], most[i]));
+  std::uint32_t count = 0;
+  for (std::uint32_t z = 0; z < groups[2]; z += step[2])
+    for (std::uint32_t y = 0; y < groups[1]; y += step[1])
+      for (std::uint32_t x = 0; x < groups[0]; x += step[0]) {
+        vkCmdDispatchBase(cb, x, y, z, std::min(step[0], groups[0] - x),
+                          std::min(step[1], groups[1] - y), std::min(step[2], groups[2] - z));
+        ++count;
+      }
+  return count;
 }
 
 }  // namespace rtvk::gpu

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -35,6 +36,10 @@ class compute_pipeline {
   // Binds the pipeline and its descriptor set.
   void bind(VkCommandBuffer cb) const;
   void push(VkCommandBuffer cb, const void* data, std::uint32_t bytes) const;
+  // vkCmdDispatch of `groups` workgroups in x, y and z, split into tiles within the device's
+  // maxComputeWorkGroupCount (vkCmdDispatchBase, so gl_GlobalInvocationID is as one dispatch
+  // would number it). Returns how many dispatches it recorded.
+  std::uint32_t dispatch(VkCommandBuffer cb, const std::array<std::uint32_t, 3>& groups) const;
 
  private:
   const gpu_context& ctx_;  // tells whether the device may still be using the pipeline

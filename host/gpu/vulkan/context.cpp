@@ -25,6 +25,29 @@ void apply_caps(const device_limit_caps& caps, device_info& d,
     cap<VkDeviceSize>(memory.memoryHeaps[h].size, caps.heap_size);
 }
 
+// The family a window's frames go through: the viewer renders, blits (a graphics command) and
+// presents on one queue, so it needs a family with compute and graphics that presents to the
+// surface.
+std::uint32_t presenting_family(const device_info& d, VkSurfaceKHR surface) {
+  if (!has_device_extension(d.handle, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+    throw std::runtime_error("the Vulkan device " + d.name + " cannot present to the window (no " +
+                             VK_KHR_SWAPCHAIN_EXTENSION_NAME + ")");
+  const VkQueueFlags needs = VK_QUEUE_COMPUTE_BIT | VK_QUEUE_GRAPHICS_BIT;
+  bool any_presents = false;
+  for (std::uint32_t k = 0; k < d.queue_families.size(); ++k) {
+    if (d.queue_families[k].queueCount == 0) continue;
+    VkBool32 presents = VK_FALSE;
+    vk_check(vkGetPhysicalDeviceSurfaceSupportKHR(d.handle, k, surface, &presents),
+             "vkGetPhysicalDeviceSurfaceSupportKHR");
+    any_presents = any_presents || presents;
+    if (presents && (d.queue_families[k].queueFlags & needs) == needs) return k;
+  }
+  throw std::runtime_error(
+      "the Vulkan device " + d.name +
+      (any_presents ? " presents to the window only from queues that cannot also compute and draw"
+                    : " cannot present to the window from any of its queues"));
+}
+
 }  // namespace
 
 gpu_context::gpu_context(const gpu_options& options)
@@ -34,13 +57,7 @@ gpu_context::gpu_context(const gpu_options& options)
   const device_info& d = devices_[chosen_];
   if (options.make_surface) {
     surface_ = unique_surface(instance_.get(), options.make_surface(instance_.get()));
-    VkBool32 presents = VK_FALSE;
-    vk_check(vkGetPhysicalDeviceSurfaceSupportKHR(d.handle, d.compute_queue_family, surface_.get(),
-                                                  &presents),
-             "vkGetPhysicalDeviceSurfaceSupportKHR");
-    if (!presents || !has_device_extension(d.handle, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
-      throw std::runtime_error("the Vulkan device " + d.name +
-                               " cannot present to the window from its compute queue");
+    use_queue_family(devices_[chosen_], presenting_family(d, surface_.get()));
   }
   vkGetPhysicalDeviceMemoryProperties(d.handle, &memory_);
   apply_caps(options.caps, devices_[chosen_], memory_);

@@ -29,7 +29,8 @@ struct gpu_options {
   device_limit_caps caps;                            // tests only
   // Presenting to a window (rtvk view): the instance extensions its window system needs, and
   // what makes the window's surface once the instance exists. The chosen device must then
-  // present from its compute queue, and gets VK_KHR_swapchain.
+  // present from a queue family that can also compute and draw (the viewer blits), which then
+  // takes every submission, and gets VK_KHR_swapchain.
   std::vector<std::string> instance_extensions;
   std::function<VkSurfaceKHR(VkInstance)> make_surface;
 };

@@ -52,6 +52,9 @@ void describe_ray_tracing(VkPhysicalDevice dev, const std::vector<VkExtensionPro
   d.ray_tracing_pipelines = d.acceleration_structures && rt.rayTracingPipeline == VK_TRUE;
 }
 
+device_info describe_queues(VkPhysicalDevice dev, const VkPhysicalDeviceProperties& props,
+                            device_info& d);
+
 device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
   VkPhysicalDeviceProperties props{};
   vkGetPhysicalDeviceProperties(dev, &props);
@@ -65,16 +68,22 @@ device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
   d.api_version = props.apiVersion;
   d.limits = props.limits;
 
+  std::memcpy(d.pipeline_cache_uuid, props.pipelineCacheUUID, VK_UUID_SIZE);
+  d.device_id = props.deviceID;
+  // Vulkan 1.1's queries only on a 1.1 device: on a 1.0 one, vkGetPhysicalDeviceProperties2 is
+  // not the device's to answer (the device is listed, as unusable, below).
+  if (props.apiVersion < VK_API_VERSION_1_1) return describe_queues(dev, props, d);
+  VkPhysicalDeviceIDProperties ids{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ID_PROPERTIES};
   VkPhysicalDeviceMaintenance3Properties maintenance3{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES, &ids};
   VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES,
                                               &maintenance3};
   VkPhysicalDeviceProperties2 with_subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
   with_subgroup.pNext = &subgroup;
   vkGetPhysicalDeviceProperties2(dev, &with_subgroup);
   d.subgroup_size = std::max(1u, subgroup.subgroupSize);
-  if (props.apiVersion >= VK_API_VERSION_1_1)
-    d.max_allocation_size = maintenance3.maxMemoryAllocationSize;
+  d.max_allocation_size = maintenance3.maxMemoryAllocationSize;
+  std::memcpy(d.driver_uuid, ids.driverUUID, VK_UUID_SIZE);
 
   const auto exts = device_extensions(dev);
   if (props.apiVersion >= VK_API_VERSION_1_2 ||
@@ -88,22 +97,23 @@ device_info describe(VkPhysicalDevice dev, std::uint32_t index) {
     d.driver_info = driver.driverInfo;
   }
   describe_ray_tracing(dev, exts, d);
+  return describe_queues(dev, props, d);
+}
 
+// The compute queue family, or why the device cannot render.
+device_info describe_queues(VkPhysicalDevice dev, const VkPhysicalDeviceProperties& props,
+                            device_info& d) {
   std::uint32_t n = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(dev, &n, nullptr);
-  std::vector<VkQueueFamilyProperties> families(n);
-  vkGetPhysicalDeviceQueueFamilyProperties(dev, &n, families.data());
-  const auto compute = std::find_if(families.begin(), families.end(), [](const auto& f) {
-    return (f.queueFlags & VK_QUEUE_COMPUTE_BIT) && f.queueCount > 0;
-  });
+  d.queue_families.resize(n);
+  vkGetPhysicalDeviceQueueFamilyProperties(dev, &n, d.queue_families.data());
+  const std::uint32_t compute = compute_family(d.queue_families);
   if (props.apiVersion < VK_API_VERSION_1_1)
     d.unusable_reason = "supports only Vulkan " + version_string(props.apiVersion);
-  else if (compute == families.end())
+  else if (compute == no_queue_family)
     d.unusable_reason = "has no compute queue";
-  else {
-    d.compute_queue_family = std::uint32_t(compute - families.begin());
-    d.timestamp_valid_bits = compute->timestampValidBits;
-  }
+  else
+    use_queue_family(d, compute);
   return d;
 }
 
@@ -141,6 +151,17 @@ std::string yes_no(bool b) {
 }
 
 }  // namespace
+
+std::uint32_t compute_family(const std::vector<VkQueueFamilyProperties>& families) {
+  std::uint32_t first = no_queue_family;
+  for (std::uint32_t k = 0; k < families.size(); ++k) {
+    const VkQueueFlags f = families[k].queueFlags;
+    if (!(f & VK_QUEUE_COMPUTE_BIT) || families[k].queueCount == 0) continue;
+    if (!(f & VK_QUEUE_GRAPHICS_BIT)) return k;
+    if (first == no_queue_family) first = k;
+  }
+  return first;
+}
 
 bool has_device_extension(VkPhysicalDevice dev, const char* name) {
   return has(device_extensions(dev), name);
@@ -240,9 +261,13 @@ std::size_t default_device(const std::vector<device_info>& devices) {
     if (best == devices.size() || type_rank(devices[i].type) < type_rank(devices[best].type))
       best = i;
   }
-  if (best == devices.size())
-    throw no_device_error(devices.empty() ? "no Vulkan device found"
-                                          : "no usable Vulkan device (need 1.1 with compute)");
+  if (best == devices.size()) {
+    std::string found;
+    for (const device_info& d : devices) found += "; " + d.name + " " + d.unusable_reason;
+    throw no_device_error(devices.empty()
+                              ? "no Vulkan device found"
+                              : "no usable Vulkan device (need 1.1 with compute" + found + ")");
+  }
   return best;
 }
 
@@ -296,6 +321,11 @@ std::string describe_devices(const std::vector<device_info>& devices, std::size_
            ", acceleration structures: " + yes_no(d.acceleration_structures) + "\n";
   }
   return out;
+}
+
+void use_queue_family(device_info& d, std::uint32_t family) {
+  d.compute_queue_family = family;
+  d.timestamp_valid_bits = d.queue_families.at(family).timestampValidBits;
 }
 
 }  // namespace rtvk::gpu

@@ -15,24 +15,41 @@ struct device_info {
   std::string name;  // deviceName
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
   std::uint32_t vendor_id = 0;             // PCI vendor ID
+  std::uint32_t device_id = 0;             // vendor's device ID
   VkDriverId driver_id = VkDriverId(0);    // from VkPhysicalDeviceDriverProperties; 0: unknown
   std::string driver_name;                 // ditto ("llvmpipe", "NVIDIA", "radv"), or empty
   std::string driver_info;                 // ditto ("Mesa 25.0.7", "550.54.14"), or empty
   std::uint32_t driver_version = 0;        // vendor-encoded
   std::uint32_t api_version = 0;           // highest Vulkan version the device supports
-  std::uint32_t compute_queue_family = 0;  // first family with compute, when usable
+  std::uint32_t compute_queue_family = 0;  // the family rtvk submits to (use_queue_family)
   std::uint32_t timestamp_valid_bits = 0;  // of that family's timestamps; 0: it has none
-  std::uint32_t subgroup_size = 1;         // invocations that run in lockstep (a warp, a wave)
-  std::string unusable_reason;             // empty when rtvk can render on it
-  VkPhysicalDeviceLimits limits{};         // for workgroup and buffer sizes
-  VkDeviceSize max_allocation_size = 0;    // largest single allocation (Vulkan 1.1's
-                                           // maintenance3); 0 when the device does not say
-  bool acceleration_structures = false;    // VK_KHR_acceleration_structure, extension and feature
-  bool ray_queries = false;                // VK_KHR_ray_query, ditto
-  bool ray_tracing_pipelines = false;      // VK_KHR_ray_tracing_pipeline, ditto
+  std::vector<VkQueueFamilyProperties> queue_families;  // as the device lists them
+  std::uint32_t subgroup_size = 1;       // invocations that run in lockstep (a warp, a wave)
+  std::string unusable_reason;           // empty when rtvk can render on it
+  VkPhysicalDeviceLimits limits{};       // for workgroup and buffer sizes
+  VkDeviceSize max_allocation_size = 0;  // largest single allocation (Vulkan 1.1's
+                                         // maintenance3); 0 when the device does not say
+  bool acceleration_structures = false;  // VK_KHR_acceleration_structure, extension and feature
+  bool ray_queries = false;              // VK_KHR_ray_query, ditto
+  bool ray_tracing_pipelines = false;    // VK_KHR_ray_tracing_pipeline, ditto
+  std::uint8_t pipeline_cache_uuid[VK_UUID_SIZE] = {};  // the driver's cache compatibility
+  std::uint8_t driver_uuid[VK_UUID_SIZE] = {};  // the driver build (Vulkan 1.1); 0s: unknown
 };
 
+// No queue family: the device has none of the kind asked for.
+inline constexpr std::uint32_t no_queue_family = ~0u;
+
+// Every device the instance offers. Each one's compute_queue_family is a compute-only family
+// where it has one (asynchronous compute: rendering there does not hold up the desktop's
+// drawing), else its first family with compute.
 std::vector<device_info> list_devices(VkInstance instance);
+
+// The family rtvk computes on: one with compute and no graphics where the device has one (AMD's
+// and NVIDIA's asynchronous compute queues), else the first with compute; no_queue_family if none.
+std::uint32_t compute_family(const std::vector<VkQueueFamilyProperties>& families);
+
+// Makes `family` the one rtvk submits to (and times with).
+void use_queue_family(device_info& d, std::uint32_t family);
 
 // Whether the device offers the named extension.
 bool has_device_extension(VkPhysicalDevice dev, const char* name);

@@ -4,6 +4,20 @@
 //                                (vkGetPhysicalDeviceSurfaceSupportKHR says VK_FALSE)
 //   lose-device-at-submit:N      the Nth vkQueueSubmit and every later one: VK_ERROR_DEVICE_LOST
 //   lose-device-after-present:N  every vkQueueSubmit after the Nth present: VK_ERROR_DEVICE_LOST
+//   watchdog:MS                  a submission that keeps the queue busy for more than MS
+//                                milliseconds loses the device, as Windows' 2-second TDR and
+//                                Linux's amdgpu/i915 job timeouts do: that submission and every
+//                                later one return VK_ERROR_DEVICE_LOST. Each submission is
+//                                waited for before the call returns, so it is timed alone.
+//   workgroup-count:N            every device says its maxComputeWorkGroupCount is N in x, y and z,
+//                                and a dispatch of more workgroups than that in any dimension
+//                                loses the device at the next vkQueueSubmit (a real driver's
+//                                behaviour past its limits is undefined)
+//   no-graphics-queue            every queue family says it cannot do graphics (a compute-only
+//                                device, or a driver that presents from its compute queue)
+//   vulkan-1.0                   every device says it supports only Vulkan 1.0.0, and a call of
+//                                vkGetPhysicalDeviceProperties2 or vkGetPhysicalDeviceFeatures2
+//                                for it (functions such a device does not have) aborts the process
 //   disguise-device              every device says it is a discrete GPU named "rtvk disguised
 //                                GPU" whose driver is NVIDIA's (ID, name and info), so tests
 //                                see a loader that offers no software device
@@ -11,6 +25,8 @@
 #include <vulkan/vk_layer.h>
 
 #include <atomic>
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -21,12 +37,19 @@ PFN_vkGetInstanceProcAddr next_instance_proc = nullptr;  // the next layer's, or
 PFN_vkGetDeviceProcAddr next_device_proc = nullptr;
 PFN_vkQueueSubmit next_queue_submit = nullptr;
 PFN_vkQueuePresentKHR next_queue_present = nullptr;
+PFN_vkQueueWaitIdle next_queue_wait_idle = nullptr;
+PFN_vkCmdDispatch next_dispatch = nullptr;
+PFN_vkCmdDispatchBase next_dispatch_base = nullptr;
 // Looked up while the instance is made: later, the loader's answer would be the top of the chain,
 // which leads back here.
 PFN_vkGetPhysicalDeviceProperties next_properties = nullptr;
 PFN_vkGetPhysicalDeviceProperties2 next_properties2 = nullptr;
+PFN_vkGetPhysicalDeviceQueueFamilyProperties next_queue_families = nullptr;
+PFN_vkGetPhysicalDeviceFeatures2 next_features2 = nullptr;
 VkInstance created_instance = VK_NULL_HANDLE;
 std::atomic<long> submits{0}, presents{0};
+std::atomic<bool> watchdog_fired{false};
+std::atomic<bool> dispatched_past_limit{false};
 
 // The fault's count when RTVK_TEST_FAULT is "name:N", 0 when it is another fault or none.
 long fault_count(const char* name) {
@@ -65,6 +88,10 @@ VKAPI_ATTR VkResult VKAPI_CALL create_instance(const VkInstanceCreateInfo* info,
       next_instance_proc(*instance, "vkGetPhysicalDeviceProperties"));
   next_properties2 = reinterpret_cast<PFN_vkGetPhysicalDeviceProperties2>(
       next_instance_proc(*instance, "vkGetPhysicalDeviceProperties2"));
+  next_queue_families = reinterpret_cast<PFN_vkGetPhysicalDeviceQueueFamilyProperties>(
+      next_instance_proc(*instance, "vkGetPhysicalDeviceQueueFamilyProperties"));
+  next_features2 = reinterpret_cast<PFN_vkGetPhysicalDeviceFeatures2>(
+      next_instance_proc(*instance, "vkGetPhysicalDeviceFeatures2"));
   return r;
 }
 
@@ -83,6 +110,11 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical,
   if (r != VK_SUCCESS) return r;
   next_queue_submit =
       reinterpret_cast<PFN_vkQueueSubmit>(next_device_proc(*device, "vkQueueSubmit"));
+  next_queue_wait_idle =
+      reinterpret_cast<PFN_vkQueueWaitIdle>(next_device_proc(*device, "vkQueueWaitIdle"));
+  next_dispatch = reinterpret_cast<PFN_vkCmdDispatch>(next_device_proc(*device, "vkCmdDispatch"));
+  next_dispatch_base =
+      reinterpret_cast<PFN_vkCmdDispatchBase>(next_device_proc(*device, "vkCmdDispatchBase"));
   next_queue_present =  // null without VK_KHR_swapchain
       reinterpret_cast<PFN_vkQueuePresentKHR>(next_device_proc(*device, "vkQueuePresentKHR"));
   return r;
@@ -104,15 +136,33 @@ void disguise(VkPhysicalDeviceProperties& p) {
   std::strncpy(p.deviceName, "rtvk disguised GPU", VK_MAX_PHYSICAL_DEVICE_NAME_SIZE);
 }
 
+void cap_workgroup_count(VkPhysicalDeviceProperties& p) {
+  const long most = fault_count("workgroup-count");
+  if (most <= 0) return;
+  for (uint32_t& count : p.limits.maxComputeWorkGroupCount) count = uint32_t(most);
+}
+
+// A Vulkan 1.0 device has no vkGetPhysicalDeviceProperties2 or Features2: calling them for it is
+// what crashes on a real one.
+void refuse_on_vulkan_1_0(const char* call) {
+  if (!fault_is("vulkan-1.0")) return;
+  std::fprintf(stderr, "rtvk test layer: %s called for a Vulkan 1.0 device\n", call);
+  std::abort();
+}
+
 VKAPI_ATTR void VKAPI_CALL device_properties(VkPhysicalDevice physical,
                                              VkPhysicalDeviceProperties* props) {
   next_properties(physical, props);
+  cap_workgroup_count(*props);
+  if (fault_is("vulkan-1.0")) props->apiVersion = VK_API_VERSION_1_0;
   if (fault_is("disguise-device")) disguise(*props);
 }
 
 VKAPI_ATTR void VKAPI_CALL device_properties2(VkPhysicalDevice physical,
                                               VkPhysicalDeviceProperties2* props) {
+  refuse_on_vulkan_1_0("vkGetPhysicalDeviceProperties2");
   next_properties2(physical, props);
+  cap_workgroup_count(props->properties);
   if (!fault_is("disguise-device")) return;
   disguise(props->properties);
   for (auto* s = static_cast<VkBaseOutStructure*>(props->pNext); s; s = s->pNext) {
@@ -124,12 +174,63 @@ VKAPI_ATTR void VKAPI_CALL device_properties2(VkPhysicalDevice physical,
   }
 }
 
+VKAPI_ATTR void VKAPI_CALL device_features2(VkPhysicalDevice physical,
+                                            VkPhysicalDeviceFeatures2* features) {
+  refuse_on_vulkan_1_0("vkGetPhysicalDeviceFeatures2");
+  next_features2(physical, features);
+}
+
+VKAPI_ATTR void VKAPI_CALL queue_families(VkPhysicalDevice physical, uint32_t* count,
+                                          VkQueueFamilyProperties* families) {
+  next_queue_families(physical, count, families);
+  if (!families || !fault_is("no-graphics-queue")) return;
+  for (uint32_t k = 0; k < *count; ++k) families[k].queueFlags &= ~VK_QUEUE_GRAPHICS_BIT;
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL queue_submit(VkQueue queue, uint32_t count,
                                             const VkSubmitInfo* submits_info, VkFence fence) {
   const long at = fault_count("lose-device-at-submit");
   const long after = fault_count("lose-device-after-present");
   if ((at > 0 && ++submits >= at) || (after > 0 && presents >= after)) return VK_ERROR_DEVICE_LOST;
-  return next_queue_submit(queue, count, submits_info, fence);
+  if (dispatched_past_limit) return VK_ERROR_DEVICE_LOST;
+  const long watchdog_ms = fault_count("watchdog");
+  if (watchdog_ms <= 0) return next_queue_submit(queue, count, submits_info, fence);
+  if (watchdog_fired) return VK_ERROR_DEVICE_LOST;
+  // Whatever ran before this submission is done (each is waited for here), so the time from the
+  // call to an idle queue is this submission's alone.
+  const auto start = std::chrono::steady_clock::now();
+  const VkResult r = next_queue_submit(queue, count, submits_info, fence);
+  if (r != VK_SUCCESS) return r;
+  const VkResult idle = next_queue_wait_idle(queue);
+  if (idle != VK_SUCCESS) return idle;
+  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                      std::chrono::steady_clock::now() - start)
+                      .count();
+  if (ms <= watchdog_ms) return VK_SUCCESS;
+  watchdog_fired = true;
+  std::fprintf(stderr,
+               "rtvk test layer: a submission kept the queue busy for %ld ms (watchdog: %ld ms)\n",
+               long(ms), watchdog_ms);
+  return VK_ERROR_DEVICE_LOST;
+}
+
+void check_workgroup_count(uint32_t x, uint32_t y, uint32_t z) {
+  const long most = fault_count("workgroup-count");
+  if (most <= 0 || (x <= uint32_t(most) && y <= uint32_t(most) && z <= uint32_t(most))) return;
+  if (!dispatched_past_limit.exchange(true))
+    std::fprintf(stderr, "rtvk test layer: a dispatch of %u x %u x %u workgroups (limit: %ld)\n", x,
+                 y, z, most);
+}
+
+VKAPI_ATTR void VKAPI_CALL dispatch(VkCommandBuffer cb, uint32_t x, uint32_t y, uint32_t z) {
+  check_workgroup_count(x, y, z);
+  next_dispatch(cb, x, y, z);
+}
+
+VKAPI_ATTR void VKAPI_CALL dispatch_base(VkCommandBuffer cb, uint32_t bx, uint32_t by, uint32_t bz,
+                                         uint32_t x, uint32_t y, uint32_t z) {
+  check_workgroup_count(x, y, z);
+  next_dispatch_base(cb, bx, by, bz, x, y, z);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL queue_present(VkQueue queue, const VkPresentInfoKHR* info) {
@@ -146,6 +247,9 @@ PFN_vkVoidFunction own_function(const char* name) {
   if (is("vkCreateDevice")) return reinterpret_cast<PFN_vkVoidFunction>(create_device);
   if (is("vkQueueSubmit")) return reinterpret_cast<PFN_vkVoidFunction>(queue_submit);
   if (is("vkQueuePresentKHR")) return reinterpret_cast<PFN_vkVoidFunction>(queue_present);
+  if (is("vkCmdDispatch")) return reinterpret_cast<PFN_vkVoidFunction>(dispatch);
+  if (is("vkCmdDispatchBase") || is("vkCmdDispatchBaseKHR"))
+    return reinterpret_cast<PFN_vkVoidFunction>(dispatch_base);
   return nullptr;
 }
 
@@ -159,6 +263,10 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL get_instance_proc(VkInstance instance, 
     return reinterpret_cast<PFN_vkVoidFunction>(device_properties);
   if (is("vkGetPhysicalDeviceProperties2") || is("vkGetPhysicalDeviceProperties2KHR"))
     return reinterpret_cast<PFN_vkVoidFunction>(device_properties2);
+  if (is("vkGetPhysicalDeviceFeatures2") || is("vkGetPhysicalDeviceFeatures2KHR"))
+    return reinterpret_cast<PFN_vkVoidFunction>(device_features2);
+  if (is("vkGetPhysicalDeviceQueueFamilyProperties"))
+    return reinterpret_cast<PFN_vkVoidFunction>(queue_families);
   if (PFN_vkVoidFunction own = own_function(name)) return own;
   return next_instance_proc ? next_instance_proc(instance, name) : nullptr;
 }
