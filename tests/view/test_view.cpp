@@ -509,38 +509,34 @@ TEST_F(XvfbTest, MinimizedItRendersNothingAndRestoredItGoesOn) {
   EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
 }
 
-// Under a test layer that says no queue can present (tests/view/layers), the device is refused
-// by name before anything is rendered.
-TEST_F(XvfbTest, ADeviceThatCannotPresentExits1NamingIt) {
+// Under a test layer fault (tests/view/layers) that leaves no queue the viewer can use, the
+// device is refused by name before anything is rendered: exit 1, one line saying `why`, no
+// screenshot.
+void expect_refused(const std::vector<std::string>& env, const std::string& fault,
+                    const std::string& why) {
   const test::temp_dir dir;
   const std::string shot = (dir.path() / "never.png").string();
-  std::vector<std::string> with_layer = env();
-  for (const std::string& e : test::fault_environment("no-present")) with_layer.push_back(e);
+  std::vector<std::string> with_layer = env;
+  for (const std::string& e : test::fault_environment(fault)) with_layer.push_back(e);
   const test::process_result r = test::run_rtvk_within(
       60s, {"view", "--scene", "seed", "--spp", "1", "--screenshot", shot}, with_layer);
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("rtvk: error: the Vulkan device "), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("cannot present to the window from any of its queues"), std::string::npos)
-      << r.err;
+  EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
   EXPECT_FALSE(std::filesystem::exists(shot));
 }
 
-// A device whose only presenting queue cannot draw (the viewer blits, a graphics command, on the
-// queue it presents from): exit 1 saying so, not a blit on a queue that cannot run it.
+// No queue can present.
+TEST_F(XvfbTest, ADeviceThatCannotPresentExits1NamingIt) {
+  expect_refused(env(), "no-present", "cannot present to the window from any of its queues");
+}
+
+// The only presenting queue cannot draw (the viewer blits, a graphics command, on the queue it
+// presents from): refused, not a blit on a queue that cannot run it.
 TEST_F(XvfbTest, ADeviceThatPresentsOnlyFromAComputeQueueExits1NamingIt) {
-  const test::temp_dir dir;
-  const std::string shot = (dir.path() / "never.png").string();
-  std::vector<std::string> with_layer = env();
-  for (const std::string& e : test::fault_environment("no-graphics-queue")) with_layer.push_back(e);
-  const test::process_result r = test::run_rtvk_within(
-      60s, {"view", "--scene", "seed", "--spp", "1", "--screenshot", shot}, with_layer);
-  EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_NE(r.err.find("presents to the window only from queues that cannot also compute and draw"),
-            std::string::npos)
-      << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
-  EXPECT_FALSE(std::filesystem::exists(shot));
+  expect_refused(env(), "no-graphics-queue",
+                 "presents to the window only from queues that cannot also compute and draw");
 }
 
 // A device lost after the window has shown a few frames: exit 1 naming the call, the result and
