@@ -57,20 +57,25 @@ path_state pixel_path(camera_ubo cam, uvec2 pixel, uint j, uint sample_index) {
   return start_path(r, s);
 }
 
-// 64-bit integer addition on (low, high) words.
-uvec2 add_fixed(uvec2 a, uvec2 b) {
-  uint carry;
-  uint low = uaddCarry(a.x, b.x, carry);
-  return uvec2(low, a.y + b.y + carry);
+// Adds x, a 96-bit integer as (low, high, top) words, to a channel's sum: (low, high) and top.
+void add_fixed(inout uvec2 sum, inout uint top, uvec3 x) {
+  uint carry_low, carry_high, carry_sum;
+  sum.x = uaddCarry(sum.x, x.x, carry_low);
+  sum.y = uaddCarry(sum.y, x.y, carry_high);
+  sum.y = uaddCarry(sum.y, carry_low, carry_sum);
+  top += x.z + carry_high + carry_sum;
 }
 
-// Adds one sample's color (and its rays, when counted) to the pixel's sums.
-void add_sample(inout pixel_sum acc, vec3 c, uint rays) {
-  acc.r = add_fixed(acc.r, to_fixed(c.r, pc.sample_limit, pc.sum_scale));
-  acc.g = add_fixed(acc.g, to_fixed(c.g, pc.sample_limit, pc.sum_scale));
-  acc.b = add_fixed(acc.b, to_fixed(c.b, pc.sample_limit, pc.sum_scale));
+// Adds one sample's color (and its rays, when counted) to the pixel's sums; returns whether a
+// channel was past the limit (sum_overflows: the render fails rather than clamp it).
+bool add_sample(inout pixel_sum acc, vec3 c, uint rays) {
+  add_fixed(acc.r, acc.r_top, to_fixed(c.r, pc.sample_limit, pc.sum_scale));
+  add_fixed(acc.g, acc.g_top, to_fixed(c.g, pc.sample_limit, pc.sum_scale));
+  add_fixed(acc.b, acc.b_top, to_fixed(c.b, pc.sample_limit, pc.sum_scale));
   if (count_rays) acc.rays += rays;
   ++acc.samples;
+  return sum_overflows(c.r, pc.sample_limit) || sum_overflows(c.g, pc.sample_limit) ||
+         sum_overflows(c.b, pc.sample_limit);
 }
 
 void main() {
@@ -92,13 +97,14 @@ void main() {
   uint first = acc.samples;
   uint iterations = 0u;
   uint rays = 0u;  // of the path in flight
+  uint overflowed = 0u;  // samples past the limit
   path_state p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   while (true) {
     precise vec3 c;
     bool ended = ray_color_step(p, c, iterations, rays);
     if (iterations > pc.loop_budget) break;  // the path in flight is dropped and drawn again
     if (!ended) continue;
-    add_sample(acc, c, rays);
+    if (add_sample(acc, c, rays)) ++overflowed;
     rays = 0u;
     if (acc.samples >= pc.sample_target) break;
     p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
@@ -111,5 +117,6 @@ void main() {
       return;
     }
   }
+  if (overflowed != 0u) atomicAdd(status.overflowed_samples, overflowed);
   sums[index] = acc;
 }

@@ -2,7 +2,7 @@
 // One invocation per pixel turns the pixel's exact sums into 8-bit RGBA, bit for bit what
 // encode_sum (host/base/byte_encoding.cpp) gives on the host: integer comparisons against the
 // render's thresholds, no float rounding that could differ between devices. A render then reads
-// back 4 bytes a pixel instead of 32, and a window can show the same bytes.
+// back 4 bytes a pixel instead of 48, and a window can show the same bytes.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 
@@ -17,9 +17,11 @@ layout(std430, set = 0, binding = RTVK_BINDING_THRESHOLDS) readonly buffer thres
 };
 layout(push_constant) uniform push_block { tonemap_push pc; };
 
-// sum >= thresholds[k] * samples, in 64-bit integers made of (low, high) words. The product
-// fits 64 bits: thresholds are at most 2^42 and samples at most 2^20.
-bool at_least(uvec2 sum, uint k, uint samples) {
+// sum >= thresholds[k] * samples, for a 96-bit sum of (low, high) words and a top word. The
+// product fits 64 bits: thresholds are at most 2^42 and samples at most 2^20; a sum with a top
+// word is larger.
+bool at_least(uvec2 sum, uint top, uint k, uint samples) {
+  if (top != 0u) return true;
   uvec2 t = thresholds[k];
   uint high, low;
   umulExtended(t.x, samples, high, low);
@@ -28,13 +30,13 @@ bool at_least(uvec2 sum, uint k, uint samples) {
 }
 
 // Mirrors encode_sum: the largest k with sum >= thresholds[k] * samples.
-uint encode_sum(uvec2 sum, uint samples) {
+uint encode_sum(uvec2 sum, uint top, uint samples) {
   if (samples == 0u) return 0u;
   uint lo = 0u;
   uint hi = 255u;
   while (lo < hi) {
     uint mid = (lo + hi + 1u) / 2u;
-    if (at_least(sum, mid, samples))
+    if (at_least(sum, top, mid, samples))
       lo = mid;
     else
       hi = mid - 1u;
@@ -47,8 +49,8 @@ void main() {
   uint i = gl_GlobalInvocationID.y * pc.row_invocations + gl_GlobalInvocationID.x;
   if (i >= pc.pixels) return;
   pixel_sum p = sums[i];
-  uint r = encode_sum(p.r, p.samples);
-  uint g = encode_sum(p.g, p.samples);
-  uint b = encode_sum(p.b, p.samples);
+  uint r = encode_sum(p.r, p.r_top, p.samples);
+  uint g = encode_sum(p.g, p.g_top, p.samples);
+  uint b = encode_sum(p.b, p.b_top, p.samples);
   rgba[i] = r | (g << 8) | (b << 16) | (255u << 24);
 }

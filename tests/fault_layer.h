@@ -2,7 +2,9 @@
 // The environment that loads the test layer of tests/view/layers into rtvk with one fault: the
 // device cannot present ("no-present"), is lost ("lose-device-at-submit:N",
 // "lose-device-after-present:N"), loses itself when one submission runs longer than a watchdog
-// allows ("watchdog:MS"), or says it is an NVIDIA GPU ("disguise-device").
+// allows ("watchdog:MS"), or says it is an NVIDIA GPU ("disguise-device"), has a discrete GPU's
+// memory ("discrete-memory") or a memory budget ("memory-budget:KIB"); the layer's source lists
+// every fault.
 #include <string>
 #include <vector>
 

@@ -31,12 +31,12 @@ byte_thresholds make_byte_thresholds(double gamma, int exponent) {
   return t;
 }
 
-std::uint8_t encode_sum(std::uint64_t sum, std::uint32_t samples, const byte_thresholds& t) {
+std::uint8_t encode_sum(exact_sum sum, std::uint32_t samples, const byte_thresholds& t) {
   if (samples == 0) return 0;
   std::uint32_t lo = 0, hi = 255;
   while (lo < hi) {
     const std::uint32_t mid = (lo + hi + 1) / 2;
-    if (sum >= t[mid] * samples)  // < 2^63: thresholds <= 2^42, samples <= 2^20
+    if (sum >= exact_sum(t[mid]) * samples)
       lo = mid;
     else
       hi = mid - 1;

@@ -2,6 +2,8 @@
 #include <array>
 #include <cstdint>
 
+#include "sample_sum.h"
+
 namespace rtvk {
 
 // One channel to 8 bits as the lesson writes it: int(255.999 * c), after clamping to [0, 1].
@@ -25,6 +27,6 @@ byte_thresholds make_byte_thresholds(double gamma, int exponent);
 
 // The byte for a sum of `samples` samples (0 when there are none), by binary search over the
 // thresholds, exactly as tonemap.comp does it.
-std::uint8_t encode_sum(std::uint64_t sum, std::uint32_t samples, const byte_thresholds& t);
+std::uint8_t encode_sum(exact_sum sum, std::uint32_t samples, const byte_thresholds& t);
 
 }  // namespace rtvk

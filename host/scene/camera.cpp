@@ -115,7 +115,10 @@ camera::camera(const camera_pose& pose, double aspect_ratio, int image_width)
   f.origin = pose.lookfrom;
   f.horizontal = pose.focus_dist * viewport_width * u;
   f.vertical = pose.focus_dist * viewport_height * v;
-  f.lower_left = f.origin - divide(f.horizontal, 2) - divide(f.vertical, 2) - pose.focus_dist * w;
+  // From the eye to the lower-left corner without going through the scene's origin: no
+  // cancellation however far the camera stands (the GPU gets it in float as it is).
+  f.to_lower_left = -divide(f.horizontal, 2) - divide(f.vertical, 2) - pose.focus_dist * w;
+  f.lower_left = f.origin + f.to_lower_left;
   f.lens_u = u;
   f.lens_v = v;
   f.axis_w = w;

@@ -32,10 +32,10 @@ namespace {
 // on how the samples were batched (the same bits as one render of all of them). Batches cover
 // bands of rows, so rows may briefly hold one pass more than others.
 struct accumulation {
-  int width = 0, height = 0;        // pixels
-  int samples = 0;                  // per pixel in every row: the passes completed
-  std::vector<int> row_samples;     // per row, from the top
-  std::vector<std::uint64_t> sums;  // 3 per pixel: r, g, b
+  int width = 0, height = 0;     // pixels
+  int samples = 0;               // per pixel in every row: the passes completed
+  std::vector<int> row_samples;  // per row, from the top
+  std::vector<exact_sum> sums;   // 3 per pixel: r, g, b
 
   void reset(int w, int h) {
     width = w;
@@ -46,13 +46,12 @@ struct accumulation {
   }
   // Adds `count` samples of rows [row, row + batch.height).
   void add(const gpu::sum_image& batch, int row, int count) {
-    const auto word = [](gpu::uvec2 v) { return std::uint64_t(v.y) << 32 | v.x; };
     const std::size_t first = std::size_t(row) * std::size_t(width);
     parallel_for(batch.pixels.size(), 0, 4096, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
-        sums[3 * (first + i)] += word(batch.pixels[i].r);
-        sums[3 * (first + i) + 1] += word(batch.pixels[i].g);
-        sums[3 * (first + i) + 2] += word(batch.pixels[i].b);
+        sums[3 * (first + i)] += gpu::red_sum(batch.pixels[i]);
+        sums[3 * (first + i) + 1] += gpu::green_sum(batch.pixels[i]);
+        sums[3 * (first + i) + 2] += gpu::blue_sum(batch.pixels[i]);
       }
     });
     for (int y = row; y < row + batch.height; ++y) row_samples[std::size_t(y)] += count;

@@ -14,18 +14,19 @@ RTVK_KERNELS_BEGIN
 // The camera's precomputed vectors in the compilation's `real`: the fields of camera_ubo
 // (shared_types.h, what the GPU reads) that get_ray uses, by the same names.
 struct camera_frame {
-  real3 origin;      // eye position, scene units
-  real3 horizontal;  // full viewport width as a vector, on the focus plane, scene units
-  real3 vertical;    // full viewport height as a vector, on the focus plane, scene units
-  real3 lower_left;  // lower-left corner of the viewport, scene units
-  real3 lens_u;      // unit vector to the camera's right
-  real3 lens_v;      // unit vector to the camera's up
-  real3 axis_w;      // unit vector backwards, away from what the camera looks at
-  real lens_radius;  // aperture / 2, scene units
-  real aspect;       // image width / height
-  real fisheye_fov;  // fisheye field of view across the circle, radians
-  real focus_dist;   // distance to the plane in perfect focus, scene units
-  uint projection;   // RTVK_PROJECTION_*
+  real3 origin;         // eye position, scene units
+  real3 horizontal;     // full viewport width as a vector, on the focus plane, scene units
+  real3 vertical;       // full viewport height as a vector, on the focus plane, scene units
+  real3 lower_left;     // lower-left corner of the viewport, scene units
+  real3 to_lower_left;  // lower_left - origin, formed without cancelling (in double on the host)
+  real3 lens_u;         // unit vector to the camera's right
+  real3 lens_v;         // unit vector to the camera's up
+  real3 axis_w;         // unit vector backwards, away from what the camera looks at
+  real lens_radius;     // aperture / 2, scene units
+  real aspect;          // image width / height
+  real fisheye_fov;     // fisheye field of view across the circle, radians
+  real focus_dist;      // distance to the plane in perfect focus, scene units
+  uint projection;      // RTVK_PROJECTION_*
 };
 #else
 #define camera_frame camera_ubo
@@ -59,8 +60,9 @@ inline ray get_ray(camera_frame cam, real s, real t, real2 lens) {
   precise real3 offset = cam.lens_u * rd.x + cam.lens_v * rd.y;
   if (cam.projection == RTVK_PROJECTION_PERSPECTIVE) {
     precise real3 origin = cam.origin + offset;
-    precise real3 direction =
-        cam.lower_left + s * cam.horizontal + t * cam.vertical - cam.origin - offset;
+    // From the eye, not from the scene's origin: lower_left - origin computed in float would
+    // cancel away the direction's low bits for a camera far from the origin.
+    precise real3 direction = cam.to_lower_left + s * cam.horizontal + t * cam.vertical - offset;
     return ray(origin, direction);
   }
   if (cam.projection == RTVK_PROJECTION_ORTHOGRAPHIC) {

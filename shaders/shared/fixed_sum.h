@@ -8,19 +8,32 @@
 
 RTVK_KERNELS_BEGIN
 
-// floor(c * scale) as (low word, high word), scale = 2^F: the scaling is by a power of two,
-// floor(x / 2^32) and x - h * 2^32 are exact in float, and only the bits below 2^-F are dropped.
-// c is clamped into [0, limit] first: NaN and anything negative to 0, +infinity to the limit,
-// told apart by their bits (a driver may assume no float is NaN and fold comparisons with one,
-// and uint(NaN) would corrupt the 64-bit sum).
-inline uvec2 to_fixed(float c, float limit, float scale) {
+// Whether c is past the limit (+infinity included), by the bits: for floats that are not NaN
+// and not negative the bit patterns order like the values, and a driver may assume no float is
+// NaN or infinite and fold a comparison with one. Such a sample fails the render (sample_sum.h).
+inline bool sum_overflows(float c, float limit) {
   uint bits = floatBitsToUint(c);
   bool not_a_number = (bits & 0x7fffffffu) > 0x7f800000u;
   bool negative = (bits & 0x80000000u) != 0u;
-  precise float x = (not_a_number || negative ? 0.0f : min(c, limit)) * scale;
-  precise float h = floor(x * (1.0f / 4294967296.0f));
-  precise float l = x - h * 4294967296.0f;
-  return uvec2(uint(l), uint(h));
+  return !not_a_number && !negative && bits > floatBitsToUint(limit);
+}
+
+// floor(c * scale) as (low word, high word, top word) of a 96-bit integer, scale = 2^F: the
+// scaling is by a power of two, floor(x / 2^64), floor(x / 2^32) and the differences are exact
+// in float (each keeps bits x already has), and only the bits below 2^-F are dropped. NaN,
+// negatives and values past the limit add 0, told apart by their bits (uint(NaN) would corrupt
+// the sum).
+inline uvec3 to_fixed(float c, float limit, float scale) {
+  uint bits = floatBitsToUint(c);
+  bool not_a_number = (bits & 0x7fffffffu) > 0x7f800000u;
+  bool negative = (bits & 0x80000000u) != 0u;
+  bool zero = not_a_number || negative || sum_overflows(c, limit);
+  precise float x = (zero ? 0.0f : c) * scale;
+  precise float t = floor(x * (1.0f / 18446744073709551616.0f));
+  precise float r = x - t * 18446744073709551616.0f;
+  precise float h = floor(r * (1.0f / 4294967296.0f));
+  precise float l = r - h * 4294967296.0f;
+  return uvec3(uint(l), uint(h), uint(t));
 }
 
 RTVK_KERNELS_END

@@ -47,6 +47,7 @@ using real2 = glm::vec<2, real>;
 using real3 = glm::vec<3, real>;
 using uint = std::uint32_t;
 using uvec2 = glm::uvec2;
+using uvec3 = glm::uvec3;
 // The GLSL built-ins the kernels call.
 using glm::max;
 using glm::min;

@@ -39,9 +39,12 @@ inline void run_kernel_probe(INOUT(kernel_probe_entry) e) {
   precise real2 disk = random_in_unit_disk(real(rnd(s, 0u)), real(rnd(s, 1u)));
   e.disk_x = disk.x;
   e.disk_y = disk.y;
-  uvec2 words = to_fixed(e.sample_value, float(RTVK_PROBE_SAMPLE_LIMIT), 1048576.0f);
+  uvec3 words =
+      to_fixed(e.sample_value, float(RTVK_PROBE_SAMPLE_LIMIT), float(RTVK_PROBE_SUM_SCALE));
   e.fixed_low = words.x;
   e.fixed_high = words.y;
+  e.fixed_top = words.z;
+  e.overflows = sum_overflows(e.sample_value, float(RTVK_PROBE_SAMPLE_LIMIT)) ? 1u : 0u;
 }
 
 RTVK_KERNELS_END

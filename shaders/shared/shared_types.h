@@ -65,20 +65,22 @@ using uvec2 = glm::uvec2;
 
 // std140. Each vec3 takes a 16-byte slot; the scalar after it packs into the slot's last 4 bytes.
 struct camera_ubo {
-  vec3 origin;        // eye position, scene units
-  uint image_width;   // pixels
-  vec3 horizontal;    // full viewport width as a vector, scene units
-  uint image_height;  // pixels
-  vec3 vertical;      // full viewport height as a vector, scene units
-  float lens_radius;  // aperture / 2, scene units
-  vec3 lower_left;    // lower-left corner of the viewport, scene units
-  uint projection;    // RTVK_PROJECTION_*
-  vec3 lens_u;        // unit vector to the camera's right
-  float aspect;       // image width / height
-  vec3 lens_v;        // unit vector to the camera's up
-  float fisheye_fov;  // fisheye field of view across the circle, radians
-  vec3 axis_w;        // unit vector backwards, away from what the camera looks at
-  float focus_dist;   // distance to the plane in perfect focus, scene units
+  vec3 origin;         // eye position, scene units
+  uint image_width;    // pixels
+  vec3 horizontal;     // full viewport width as a vector, scene units
+  uint image_height;   // pixels
+  vec3 vertical;       // full viewport height as a vector, scene units
+  float lens_radius;   // aperture / 2, scene units
+  vec3 lower_left;     // lower-left corner of the viewport, scene units
+  uint projection;     // RTVK_PROJECTION_*
+  vec3 lens_u;         // unit vector to the camera's right
+  float aspect;        // image width / height
+  vec3 lens_v;         // unit vector to the camera's up
+  float fisheye_fov;   // fisheye field of view across the circle, radians
+  vec3 axis_w;         // unit vector backwards, away from what the camera looks at
+  float focus_dist;    // distance to the plane in perfect focus, scene units
+  vec3 to_lower_left;  // lower_left - origin, formed in double on the host, scene units
+  uint pad;            // unused
 };
 
 // std430 array element: 32 bytes. With the BVH the buffer holds the spheres in its leaf order,
@@ -134,17 +136,22 @@ struct render_push {
   uint region_width;   // columns drawn; the image buffers hold, per view, band_rows x this
   uint sample_target;  // samples of the window each pixel has after this dispatch
   float sum_scale;     // 2^F: a sample's channel c adds floor(c * sum_scale) (sample_sum.h)
-  float sample_limit;  // largest channel value a sample adds (sum_sample_limit)
+  float sample_limit;  // largest channel value a sample may add (sum_sample_limit); past it the
+                       // sample overflows and the render fails
 };
 
-// std430 array element: one pixel's exact running sums, 32 bytes. Each channel is a 64-bit
-// fixed-point number, (low word, high word), of F fractional bits (sample_sum.h).
+// std430 array element: one pixel's exact running sums, 48 bytes. Each channel is a 96-bit
+// fixed-point number of F fractional bits (sample_sum.h): (low word, high word) and a top word.
 struct pixel_sum {
-  uvec2 r;       // sum of floor(red * 2^F)
+  uvec2 r;       // sum of floor(red * 2^F), bits 0-63
   uvec2 g;       // green, likewise
   uvec2 b;       // blue, likewise
   uint samples;  // samples of the window added so far
   uint rays;     // rays traced for them (when counted)
+  uint r_top;    // bits 64-95 of the red sum
+  uint g_top;    // of the green sum
+  uint b_top;    // of the blue sum
+  uint pad;      // unused
 };
 
 // Push constants of tonemap.comp (std430).
@@ -156,10 +163,10 @@ struct tonemap_push {
 
 // std430: written by the shader when something went wrong.
 struct render_status {
-  uint starved_pixels;     // invocations whose first sample alone overran loop_budget
-  uint unfinished_pixels;  // invocations that stopped short of sample_target (counted per pass)
-  uint starved_budget;     // the largest loop_budget under which some invocation starved
-  uint pad;                // unused
+  uint starved_pixels;      // invocations whose first sample alone overran loop_budget
+  uint unfinished_pixels;   // invocations that stopped short of sample_target (counted per pass)
+  uint starved_budget;      // the largest loop_budget under which some invocation starved
+  uint overflowed_samples;  // samples with a channel past sample_limit (the render fails)
 };
 
 // std430, read and written by probe.comp: the host fills uv, the shader fills the rest.
@@ -229,11 +236,17 @@ struct kernel_probe_entry {
   vec3 direction_out;  // out: the scattered ray's direction
   float sample_value;  // in: a sample's channel for to_fixed (fixed_sum.h)
   vec3 sky;            // out: sky_color(direction, the book's white and blue)
-  uint fixed_low;      // out: to_fixed(sample_value, RTVK_PROBE_SAMPLE_LIMIT, 2^20), low word
+  uint fixed_low;      // out: to_fixed(sample_value, RTVK_PROBE_SUM_SCALE), low word
   vec3 ball;           // out: random_in_unit_sphere(rnd 0, rnd 1, rnd 2)
   uint fixed_high;     // out: and its high word
+  uint fixed_top;      // out: and its top word
+  uint overflows;      // out: 1 when sum_overflows(sample_value, RTVK_PROBE_SAMPLE_LIMIT)
+  uint pad0;           // unused
+  uint pad1;           // unused
 };
-#define RTVK_PROBE_SAMPLE_LIMIT 65536.0  // the kernel probe's to_fixed limit (scale: 2^20)
+// The kernel probe's to_fixed scale and limit: a render's, F = 42 (sample_sum.h).
+#define RTVK_PROBE_SUM_SCALE 4398046511104.0  // 2^42
+#define RTVK_PROBE_SAMPLE_LIMIT 8589934592.0  // 2^33
 
 #ifdef __cplusplus
 static_assert(offsetof(camera_ubo, origin) == 0);
@@ -250,7 +263,8 @@ static_assert(offsetof(camera_ubo, lens_v) == 80);
 static_assert(offsetof(camera_ubo, fisheye_fov) == 92);
 static_assert(offsetof(camera_ubo, axis_w) == 96);
 static_assert(offsetof(camera_ubo, focus_dist) == 108);
-static_assert(sizeof(camera_ubo) == 112);
+static_assert(offsetof(camera_ubo, to_lower_left) == 112);
+static_assert(sizeof(camera_ubo) == 128);
 static_assert(offsetof(gpu_sphere, center) == 0);
 static_assert(offsetof(gpu_sphere, radius) == 12);
 static_assert(offsetof(gpu_sphere, material) == 16);
@@ -281,11 +295,13 @@ static_assert(offsetof(pixel_sum, g) == 8);
 static_assert(offsetof(pixel_sum, b) == 16);
 static_assert(offsetof(pixel_sum, samples) == 24);
 static_assert(offsetof(pixel_sum, rays) == 28);
-static_assert(sizeof(pixel_sum) == 32);
+static_assert(offsetof(pixel_sum, g_top) == 36);
+static_assert(offsetof(pixel_sum, b_top) == 40);
 static_assert(offsetof(tonemap_push, row_invocations) == 4);
 static_assert(sizeof(tonemap_push) == 8);
 static_assert(offsetof(render_status, unfinished_pixels) == 4);
 static_assert(offsetof(render_status, starved_budget) == 8);
+static_assert(offsetof(render_status, overflowed_samples) == 12);
 static_assert(RTVK_MAX_VIEWS * sizeof(camera_ubo) <= 16384);
 static_assert(offsetof(bvh_node, x) == 0);
 static_assert(offsetof(bvh_node, y) == 16);
@@ -335,7 +351,11 @@ static_assert(offsetof(kernel_probe_entry, sky) == 128);
 static_assert(offsetof(kernel_probe_entry, fixed_low) == 140);
 static_assert(offsetof(kernel_probe_entry, fixed_high) == 156);
 static_assert(offsetof(kernel_probe_entry, ball) == 144);
-static_assert(sizeof(kernel_probe_entry) == 160);
+static_assert(offsetof(kernel_probe_entry, fixed_top) == 160);
+static_assert(offsetof(kernel_probe_entry, overflows) == 164);
+static_assert(sizeof(kernel_probe_entry) == 176);
+static_assert(offsetof(pixel_sum, r_top) == 32);
+static_assert(sizeof(pixel_sum) == 48);
 }  // namespace rtvk::gpu
 #endif
 

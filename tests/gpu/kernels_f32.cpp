@@ -22,6 +22,7 @@ ray_f get_ray(const gpu::camera_ubo& cam, float s, float t, glm::vec2 lens) {
   f.horizontal = cam.horizontal;
   f.vertical = cam.vertical;
   f.lower_left = cam.lower_left;
+  f.to_lower_left = cam.to_lower_left;
   f.lens_u = cam.lens_u;
   f.lens_v = cam.lens_v;
   f.axis_w = cam.axis_w;

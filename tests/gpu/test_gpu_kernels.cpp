@@ -17,6 +17,7 @@
 #include "packing.h"
 #include "probe.h"
 #include "random.h"
+#include "sample_sum.h"
 
 namespace rtvk {
 namespace {
@@ -93,6 +94,31 @@ TEST_F(GpuKernels, GetRayIsTheFloatCompilation) {
         }
       }
     }
+  }
+}
+
+// A camera a million units from the scene's origin, looking at something near it: the ray
+// directions the device forms are the double camera's to float precision (the corner direction
+// is formed in double on the host). Formed on the device as lower_left - origin, in float, they
+// were up to 0.027 rad off here (measured): the float spacing at 10^6 is 0.0625 units.
+TEST_F(GpuKernels, AFarCameraKeepsItsRayDirections) {
+  const std::array<glm::vec4, RTVK_PROBE_POINTS> uv = {
+      glm::vec4(0, 0, 0, 0), glm::vec4(1, 0.25f, 0, 0), glm::vec4(0.3f, 1, 0, 0),
+      glm::vec4(0.9f, 0.6f, 0.6f, -0.3f), glm::vec4(0.5f, 0.5f, -0.25f, 0.5f)};
+  camera_pose pose;
+  pose.lookfrom = point3(1e6 + 0.3, -1e6 + 0.7, 1e6 + 0.1);
+  pose.lookat = pose.lookfrom + vec3(-1, -0.5, -2);
+  pose.vfov = 30;
+  pose.focus_dist = 2;
+  pose.aperture = 0.01;
+  const camera cam(pose, 1.5, 300);
+  const gpu::probe_io io = gpu::run_probe(gpu(), cam, uv);
+  for (int k = 0; k < RTVK_PROBE_POINTS; ++k) {
+    const ray want = cam.get_ray(uv[k].x, uv[k].y, glm::dvec2(uv[k].z, uv[k].w));
+    const glm::dvec3 got = glm::dvec3(glm::vec3(io.direction[k]));
+    const double angle = std::acos(
+        std::clamp(glm::dot(glm::normalize(got), glm::normalize(want.direction)), -1.0, 1.0));
+    EXPECT_LE(angle, 1e-6) << "probe point " << k;
   }
 }
 
@@ -195,13 +221,16 @@ TEST_F(GpuKernels, ScatterSkyAndSamplersAreTheFloatCompilation) {
   EXPECT_LE(worst, 2e-5);
 }
 
-// A sample's channel as the device adds it to the exact sums (to_fixed, fixed_sum.h, the code
-// render.comp runs), on the values a render rarely makes: NaN (either sign), infinities,
-// negatives, -0, subnormals, past the limit, and a thousand ordinary ones. NaN and negatives add
-// 0, +infinity the limit, the rest floor(c * 2^20) exactly, as the host's double arithmetic says;
-// guards written with bit tests, not with comparisons a driver may fold when it assumes no NaN.
+// A sample's channel as the device adds it to the exact sums (to_fixed and sum_overflows,
+// fixed_sum.h, the code render.comp runs), on the values a render rarely makes: NaN (either
+// sign), infinities, negatives, -0, subnormals, the limit and past it, and a thousand values from
+// 1e-8 to 1e10 (one to three words). NaN and negatives add 0 and do not overflow; +infinity and
+// anything past the limit overflow (the render fails) and add 0; the rest add floor(c * 2^42)
+// exactly, as the host's integer arithmetic (sample_sum.h) says. Guards are bit tests, not
+// comparisons a driver may fold when it assumes no NaN.
 TEST_F(GpuKernels, SamplesThatAreNotNumbersOrNotFiniteAddWhatTheRuleSays) {
   const float inf = std::numeric_limits<float>::infinity();
+  const float limit = float(RTVK_PROBE_SAMPLE_LIMIT);
   std::vector<float> values{std::numeric_limits<float>::quiet_NaN(),
                             -std::numeric_limits<float>::quiet_NaN(),
                             std::numeric_limits<float>::signaling_NaN(),
@@ -212,12 +241,18 @@ TEST_F(GpuKernels, SamplesThatAreNotNumbersOrNotFiniteAddWhatTheRuleSays) {
                             -1.0f,
                             1e-40f,
                             std::numeric_limits<float>::min(),
-                            float(RTVK_PROBE_SAMPLE_LIMIT),
-                            std::nextafter(float(RTVK_PROBE_SAMPLE_LIMIT), inf),
+                            0x1p-42f,
+                            0x1p-43f,
+                            0x1.fffffep31f,  // just below 2^32: two full words
+                            0x1p32f,
+                            0x1.fffffep63f,
+                            0x1p64f,  // the top word's first bit (a 1e6 sample's sum reaches it)
+                            limit,
+                            std::nextafter(limit, inf),
                             1e30f,
                             std::numeric_limits<float>::max()};
   std::mt19937 gen(3);
-  std::uniform_real_distribution<float> log_value(-8, 5);
+  std::uniform_real_distribution<float> log_value(-8, 10);
   for (int i = 0; i < 1000; ++i) values.push_back(std::pow(10.0f, log_value(gen)));
   std::vector<gpu::kernel_probe_entry> entries;
   for (float v : values) {
@@ -229,18 +264,27 @@ TEST_F(GpuKernels, SamplesThatAreNotNumbersOrNotFiniteAddWhatTheRuleSays) {
   }
   const auto out = gpu::run_kernel_probe(gpu(), entries);
   ASSERT_EQ(out.size(), entries.size());
+  const auto words = [](const gpu::kernel_probe_entry& e) {
+    return channel_sum(e.fixed_low, e.fixed_high, e.fixed_top);
+  };
+  int overflowing = 0, three_words = 0;
   for (std::size_t i = 0; i < out.size(); ++i) {
     const float v = values[i];
-    const double clamped =
-        std::isnan(v) || std::signbit(v) ? 0.0 : std::min(double(v), RTVK_PROBE_SAMPLE_LIMIT);
-    const auto want = std::uint64_t(std::floor(clamped * 1048576.0));
-    const std::uint64_t got = std::uint64_t(out[i].fixed_high) << 32 | out[i].fixed_low;
-    EXPECT_EQ(got, want) << "sample " << v << " (entry " << i << ")";
+    const bool over = !std::isnan(v) && v > limit;
+    const exact_sum want = std::isnan(v) || std::signbit(v) || over
+                               ? 0
+                               : exact_sum(std::floor(std::ldexp(double(v), 42)));
+    overflowing += over;
+    three_words += (want >> 64) != 0;
+    EXPECT_TRUE(words(out[i]) == want) << "sample " << v << " (entry " << i << ")";
+    EXPECT_EQ(out[i].overflows, over ? 1u : 0u) << "sample " << v;
+    EXPECT_TRUE(to_fixed(v, 42) == want && sum_overflows(v, 42) == over) << "sample_sum.h, " << v;
     gpu::kernel_probe_entry cpu = entries[i];
     f32::run_kernel_probe(cpu);
-    EXPECT_EQ(std::uint64_t(cpu.fixed_high) << 32 | cpu.fixed_low, want)
-        << "float compilation, " << v;
+    EXPECT_TRUE(words(cpu) == want) << "float compilation, " << v;
   }
+  EXPECT_GE(overflowing, 10);
+  EXPECT_GE(three_words, 100);
 }
 
 }  // namespace

@@ -52,20 +52,20 @@ TEST_F(GpuLimits, AStorageBufferAboveTheRangeIsRefused) {
 TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
   const scene s = two_thousand_spheres();
   EXPECT_EQ(render_with(s, {.storage_range = 200 << 10}), "") << "everything fits 200 KiB";
-  // The scene's upload copies share one allocation: 2001 spheres (62.5 KiB), the materials
-  // 1999 BVH nodes (125 KiB).
+  // lavapipe's memory is the host's: the scene is written in place, its three arrays in one
+  // allocation: 2001 spheres (62.5 KiB), the materials, 1999 BVH nodes (125 KiB).
   EXPECT_NE(render_with(s, {.allocation_size = 150 << 10})
-                .find("the spheres' upload copy and the materials' upload copy and the BVH's "
-                      "upload copy need 189.562 KiB in one memory allocation"),
+                .find("the sphere array and the material array and the BVH need 189.562 KiB in "
+                      "one memory allocation"),
             std::string::npos);
   EXPECT_EQ(render_with(s, {.allocation_size = 200 << 10}), "");
-  // Five allocations in all: the scene's upload copies and arrays, the targets' device-local,
-  // upload and readback buffers.
-  EXPECT_EQ(render_with(s, {.allocations = 5}), "");
+  // Three allocations in all: the scene's arrays, the targets' device-local and readback
+  // buffers.
+  EXPECT_EQ(render_with(s, {.allocations = 3}), "");
   EXPECT_NE(
-      render_with(s, {.allocations = 4}).find("the render needs 5 memory allocations; device '"),
+      render_with(s, {.allocations = 2}).find("the render needs 3 memory allocations; device '"),
       std::string::npos);
-  EXPECT_NE(render_with(s, {.heap_size = 256 << 10}).find("of memory heap 0; device '"),
+  EXPECT_NE(render_with(s, {.heap_size = 128 << 10}).find("of memory heap 0; device '"),
             std::string::npos);
 }
 

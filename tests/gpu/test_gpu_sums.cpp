@@ -19,18 +19,21 @@ namespace {
 
 class GpuSums : public test::GpuTest {};
 
-std::uint64_t word(gpu::uvec2 w) {
-  return std::uint64_t(w.y) << 32 | w.x;
+std::string text(exact_sum s) {  // for messages
+  std::string digits;
+  do digits.insert(digits.begin(), char('0' + int(s % 10)));
+  while ((s /= 10) != 0);
+  return digits;
 }
 
 bool same_sums(const gpu::sum_image& a, const gpu::sum_image& b, std::string& why) {
   if (a.pixels.size() != b.pixels.size()) return why = "sizes differ", false;
   for (std::size_t i = 0; i < a.pixels.size(); ++i) {
     const gpu::pixel_sum &p = a.pixels[i], &q = b.pixels[i];
-    if (word(p.r) != word(q.r) || word(p.g) != word(q.g) || word(p.b) != word(q.b) ||
-        p.samples != q.samples) {
-      why = "pixel " + std::to_string(i) + ": red " + std::to_string(word(p.r)) + " vs " +
-            std::to_string(word(q.r)) + ", samples " + std::to_string(p.samples) + " vs " +
+    if (gpu::red_sum(p) != gpu::red_sum(q) || gpu::green_sum(p) != gpu::green_sum(q) ||
+        gpu::blue_sum(p) != gpu::blue_sum(q) || p.samples != q.samples) {
+      why = "pixel " + std::to_string(i) + ": red " + text(gpu::red_sum(p)) + " vs " +
+            text(gpu::red_sum(q)) + ", samples " + std::to_string(p.samples) + " vs " +
             std::to_string(q.samples);
       return false;
     }
@@ -75,7 +78,9 @@ TEST_F(GpuSums, SampleRangesAddUpToTheWholeExactly) {
   const gpu::sum_image first = engine.render_sums({cam}, s.render, {0, 0, w, h, 0, 13})[0];
   const gpu::sum_image rest = engine.render_sums({cam}, s.render, {0, 0, w, h, 13, 40})[0];
   for (std::size_t i = 0; i < whole.pixels.size(); ++i) {
-    EXPECT_EQ(word(first.pixels[i].g) + word(rest.pixels[i].g), word(whole.pixels[i].g)) << i;
+    EXPECT_TRUE(gpu::green_sum(first.pixels[i]) + gpu::green_sum(rest.pixels[i]) ==
+                gpu::green_sum(whole.pixels[i]))
+        << i;
     EXPECT_EQ(first.pixels[i].samples + rest.pixels[i].samples, 40u) << i;
   }
 }
@@ -94,9 +99,9 @@ TEST_F(GpuSums, BytesEncodedOnTheDeviceAreTheHostsEncodingOfTheSameSums) {
     int mismatches = 0;
     for (std::size_t i = 0; i < sums.pixels.size(); ++i) {
       const gpu::pixel_sum& p = sums.pixels[i];
-      const std::uint8_t want[3] = {encode_sum(word(p.r), p.samples, t),
-                                    encode_sum(word(p.g), p.samples, t),
-                                    encode_sum(word(p.b), p.samples, t)};
+      const std::uint8_t want[3] = {encode_sum(gpu::red_sum(p), p.samples, t),
+                                    encode_sum(gpu::green_sum(p), p.samples, t),
+                                    encode_sum(gpu::blue_sum(p), p.samples, t)};
       for (int k = 0; k < 3; ++k) mismatches += bytes.rgb[3 * i + k] != want[k];
     }
     EXPECT_EQ(mismatches, 0);
@@ -118,9 +123,12 @@ TEST_F(GpuSums, TheDevicesEncodingIsTheHostsAtEveryThreshold) {
     SCOPED_TRACE("gamma " + std::to_string(gamma));
     const byte_thresholds t = make_byte_thresholds(gamma, f);
     std::vector<gpu::pixel_sum> sums;
-    const auto add = [&](std::uint64_t r, std::uint64_t g, std::uint64_t b, std::uint32_t n) {
-      const auto w = [](std::uint64_t v) { return gpu::uvec2(std::uint32_t(v), v >> 32); };
-      sums.push_back({w(r), w(g), w(b), n, 0});
+    const auto add = [&](exact_sum r, exact_sum g, exact_sum b, std::uint32_t n) {
+      const auto w = [](exact_sum v) {
+        return gpu::uvec2(std::uint32_t(v), std::uint32_t(std::uint64_t(v) >> 32));
+      };
+      const auto top = [](exact_sum v) { return std::uint32_t(v >> 64); };
+      sums.push_back({w(r), w(g), w(b), n, 0, top(r), top(g), top(b), 0});
     };
     for (int k = 1; k < 256; ++k)
       for (std::uint32_t n : {1u, 3u, 1000u, 1u << 20}) {
@@ -133,18 +141,23 @@ TEST_F(GpuSums, TheDevicesEncodingIsTheHostsAtEveryThreshold) {
       add(any(), any(), any(), n);
     }
     add(123, 456, 789, 0);  // no samples: black
+    // Sums past 64 bits (lamps): white, whatever the low words say; and just below 2^64.
+    for (std::uint32_t n : {1u, 1000u, 1u << 20}) {
+      add(exact_sum(1) << 64, exact_sum(3) << 90 | 12345, (exact_sum(1) << 64) - 1, n);
+      add(exact_sum(0xffffffffu) << 64 | 7, exact_sum(t[200]) * n, exact_sum(1) << 80, n);
+    }
     const std::vector<std::uint32_t> rgba = engine.encode_sums(sums, gamma);
     ASSERT_EQ(rgba.size(), sums.size());
     int mismatches = 0;
     for (std::size_t i = 0; i < sums.size(); ++i) {
       const gpu::pixel_sum& p = sums[i];
-      const std::uint32_t want = encode_sum(word(p.r), p.samples, t) |
-                                 encode_sum(word(p.g), p.samples, t) << 8 |
-                                 encode_sum(word(p.b), p.samples, t) << 16 | 0xffu << 24;
+      const std::uint32_t want = encode_sum(gpu::red_sum(p), p.samples, t) |
+                                 encode_sum(gpu::green_sum(p), p.samples, t) << 8 |
+                                 encode_sum(gpu::blue_sum(p), p.samples, t) << 16 | 0xffu << 24;
       if (rgba[i] != want && ++mismatches <= 5)
-        ADD_FAILURE() << "sums " << word(p.r) << ", " << word(p.g) << ", " << word(p.b) << " of "
-                      << p.samples << " samples: device " << std::hex << rgba[i] << ", host "
-                      << want;
+        ADD_FAILURE() << "sums " << text(gpu::red_sum(p)) << ", " << text(gpu::green_sum(p)) << ", "
+                      << text(gpu::blue_sum(p)) << " of " << p.samples << " samples: device "
+                      << std::hex << rgba[i] << ", host " << want;
     }
     EXPECT_EQ(mismatches, 0);
   }
@@ -163,15 +176,73 @@ TEST_F(GpuSums, EncodingSpreadsOverRowsOfWorkgroupsWhenOneRowWouldPassTheLimit) 
   for (std::uint32_t i = 0; i < 1000; ++i) {
     const std::uint64_t v = std::uint64_t(i) << 32;  // means from 0 to about 2^-10 * 1000
     sums.push_back({gpu::uvec2(0, std::uint32_t(v >> 32)), gpu::uvec2(0, 0),
-                    gpu::uvec2(0, std::uint32_t(v >> 32)), 1, 0});
+                    gpu::uvec2(0, std::uint32_t(v >> 32)), 1, 0, 0, 0, 0, 0});
   }
   const std::vector<std::uint32_t> rgba = engine.encode_sums(sums, 2);
   ASSERT_EQ(rgba.size(), sums.size());
   for (std::size_t i = 0; i < sums.size(); ++i) {
-    const std::uint32_t byte = encode_sum(word(sums[i].r), 1, t);
+    const std::uint32_t byte = encode_sum(gpu::red_sum(sums[i]), 1, t);
     ASSERT_EQ(rgba[i], byte | byte << 16 | 0xffu << 24) << "sum " << i;
   }
   EXPECT_EQ(ctx.validation_messages(), 0u);
+}
+
+// A lamp-bright sky (10^6) around a sphere so dark (albedo 10^-12) that the samples hitting it
+// are 10^-6: pixels on its silhouette mix the two, and 64 samples of 10^6 need more than 64
+// bits at F = 42. Neither end may be clamped or rounded away (a 64-bit sum fitted to 10^6 keeps
+// 22 fractional bits: 10^-6 would come out 4.6% short), the sums must not depend on batching or
+// on how the sample range is split, and every pixel's mean is the CPU's (double) one.
+TEST_F(GpuSums, SamplesOfAMillionAndAMillionthMixedAreSummedExactly) {
+  scene s;
+  s.name = "bright and dim";
+  main_camera(s).pose.lookfrom = point3(0, 0, 3);
+  main_camera(s).pose.lookat = point3(0, 0, 0);
+  main_camera(s).pose.vfov = 60;
+  s.render.width = 32;
+  s.render.aspect = 1;
+  s.render.spp = 64;
+  s.render.jitter = true;
+  s.render.max_depth = 4;
+  s.sky = {color(1e6), color(1e6)};
+  s.materials = {{"dark", {material_type::lambertian, color(1e-12), 0, 1.5}}};
+  s.spheres = {sphere(point3(0, 0, 0), 1, 0)};
+  const camera cam = test::scene_camera(s);
+  const render_window win = whole_render(32, 32, 64);
+  gpu::gpu_engine engine(gpu(), s);
+  const gpu::sum_image whole = engine.render_sums({cam}, s.render, win)[0];
+  EXPECT_EQ(whole.exponent, 42);
+
+  // Split sample ranges and other batchings add up to the same bits.
+  const gpu::sum_image first = engine.render_sums({cam}, s.render, {0, 0, 32, 32, 0, 23})[0];
+  const gpu::sum_image rest = engine.render_sums({cam}, s.render, {0, 0, 32, 32, 23, 64})[0];
+  const gpu::sum_image one_at_a_time =
+      gpu::gpu_engine(gpu(), s, {.samples_per_dispatch = 1, .samples_per_submission = 3})
+          .render_sums({cam}, s.render, win)[0];
+  std::string why;
+  EXPECT_TRUE(same_sums(one_at_a_time, whole, why)) << why;
+  int past_64_bits = 0, all_dim = 0, mixed = 0, k_differs = 0;
+  const framebuffer cpu = render_cpu(cam, s, s.render);
+  for (std::size_t i = 0; i < whole.pixels.size(); ++i) {
+    const gpu::pixel_sum& p = whole.pixels[i];
+    ASSERT_TRUE(gpu::red_sum(first.pixels[i]) + gpu::red_sum(rest.pixels[i]) == gpu::red_sum(p))
+        << "pixel " << i;
+    past_64_bits += p.r_top != 0;
+    const double mean = sum_mean(gpu::red_sum(p), p.samples, whole.exponent);
+    const double want = cpu.at(int(i % 32), int(i / 32)).r;
+    // Samples that missed the sphere: each brings 10^6, each hit 10^-6.
+    const long k = std::lround(mean * 64 / 1e6), k_cpu = std::lround(want * 64 / 1e6);
+    if (k != k_cpu) {
+      ++k_differs;  // a grazing ray decided differently in float and in double
+      continue;
+    }
+    all_dim += k == 0;
+    mixed += k > 0 && k < 64;
+    EXPECT_NEAR(mean, want, 1e-6 * want) << "pixel " << i << ", " << k << " of 64 missed";
+  }
+  EXPECT_GT(past_64_bits, 600);
+  EXPECT_GT(all_dim, 200);
+  EXPECT_GT(mixed, 40);
+  EXPECT_LE(k_differs, 3);
 }
 
 TEST_F(GpuSums, AMillionSamplesOfTheSeedImageAreTheCpusWithinOneLevel) {

@@ -13,6 +13,7 @@
 #include "compute_pipeline.h"
 #include "elapsed.h"
 #include "errors.h"
+#include "format.h"
 #include "gpu_scene.h"
 #include "packing.h"
 #include "parallel.h"
@@ -97,6 +98,14 @@ loop_budget_error overrun(const render_status& st, std::uint32_t budget, const d
       std::to_string(budget) + " loop iterations on " + dev.name +
       " (lavapipe silently stops loops at 65,535, so rtvk stops first, on every device, and "
       "writes no image): lower --depth or use fewer spheres");
+}
+
+// Samples past the exact sums' limit: the render fails rather than clamp them into bias.
+sample_overflow_error overflow(const render_status& st, float limit) {
+  return sample_overflow_error(
+      std::to_string(st.overflowed_samples) + " samples had a channel above " +
+      format_number(limit) +
+      " (or not finite), more than rtvk's exact sums hold; no image was written");
 }
 
 // The brightest channel value a path can bring back: the sky's (every attenuation is at most 1),
@@ -202,6 +211,12 @@ class band_renderer {
                 const compute_pipeline* tonemap, const render_push& push, const render_window& win)
       : e_(engine), pipeline_(pipeline), tonemap_(tonemap), push_(push), win_(win) {}
 
+  // The cameras of the views the next bands draw (written into the command stream).
+  void set_views(const std::vector<camera>& views, std::size_t first, std::uint32_t count) {
+    cameras_.resize(count);
+    for (std::uint32_t v = 0; v < count; ++v) cameras_[v] = to_ubo(views[first + v]);
+  }
+
   // Every sample of the band; `progress` is called with samples done over all passes.
   void draw(const band_pass& b, const sample_progress& progress, render_stats* stats) {
     push_.band_y0 = b.y0;
@@ -259,7 +274,7 @@ class band_renderer {
   }
 
   std::uint32_t unfinished() {
-    return static_cast<const render_status*>(e_.targets.status.read())->unfinished_pixels;
+    return static_cast<const render_status*>(e_.targets.status_readback.read())->unfinished_pixels;
   }
 
   in_flight submit(const band_pass& b, bool first, std::uint32_t from, std::uint32_t to,
@@ -284,9 +299,10 @@ class band_renderer {
     }
     // A sample that did not fit its budget is drawn again under a larger one; one that did not
     // fit the largest fails the render.
-    const auto& st = *static_cast<const render_status*>(e_.targets.status.read());
+    const auto& st = *static_cast<const render_status*>(e_.targets.status_readback.read());
     if (st.starved_pixels > 0 && !e_.pace.starved(st.starved_budget))
       throw overrun(st, st.starved_budget, e_.ctx.device());
+    if (st.overflowed_samples > 0) throw overflow(st, push_.sample_limit);
     // Device time where there is a timer: the wall time includes waiting behind the other
     // submission in flight.
     e_.pace.measured(e_.timer.available() ? device_seconds : wall, f.dispatches);
@@ -299,11 +315,16 @@ class band_renderer {
               shader_rw | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
               transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
     }
+    // The group's cameras, in the command stream (no host-visible memory for the shader to
+    // read; 16 KiB at most, within vkCmdUpdateBuffer's 64 KiB).
+    vkCmdUpdateBuffer(cb, e_.targets.cameras.get(), 0, cameras_.size() * sizeof(camera_ubo),
+                      cameras_.data());
     // Cleared for every band: a starved count is the band's to act on (the budget it raised
     // carries over in the pacer).
     vkCmdFillBuffer(cb, e_.targets.status.get(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, e_.targets.sums.get(), 0, VK_WHOLE_SIZE, 0);
-    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
+    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage,
+            shader_rw | VK_ACCESS_UNIFORM_READ_BIT);
   }
 
   // After a band's last samples: the sums, or the bytes tonemap.comp makes of them, copied to
@@ -364,6 +385,12 @@ class band_renderer {
                                             (push_.band_rows + e_.wg[1] - 1) / e_.wg[1], b.views});
     } while (t < to);
     if (last) record_readback(cb, b);
+    // The status the shader counted on the device, copied out for finish() to read.
+    barrier(cb, compute_stage | transfer_stage,
+            VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, transfer_stage,
+            VK_ACCESS_TRANSFER_READ_BIT);
+    const VkBufferCopy status{0, 0, sizeof(render_status)};
+    vkCmdCopyBuffer(cb, e_.targets.status.get(), e_.targets.status_readback.get(), 1, &status);
     barrier(cb, compute_stage | transfer_stage,
             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
@@ -376,15 +403,8 @@ class band_renderer {
   const compute_pipeline* tonemap_;  // encodes the readback to bytes; null: sums
   render_push push_;                 // band and target fields change per dispatch
   const render_window& win_;         // region and sample range of every view
+  std::vector<camera_ubo> cameras_;  // of the views the bands draw (set_views)
 };
-
-// The camera block for views [first, first + count).
-void write_cameras(gpu_buffer& cameras, const std::vector<camera>& views, std::size_t first,
-                   std::uint32_t count) {
-  std::vector<camera_ubo> ubos(RTVK_MAX_VIEWS);
-  for (std::uint32_t v = 0; v < count; ++v) ubos[v] = to_ubo(views[first + v]);
-  cameras.write(ubos.data(), ubos.size() * sizeof(camera_ubo));  // no submission is in flight
-}
 
 // Runs body(row) for rows [0, rows) on every core: readback conversion should not leave all but
 // one idle.
@@ -402,7 +422,7 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       options_(options),
       scene_name_(s.name),
       sky_(s.sky),
-      scene_buffers_(gpu_scene::buffers(s, options.engine.use_bvh)),
+      scene_buffers_(gpu_scene::buffers(ctx, s, options.engine.use_bvh)),
       wg_(workgroup_size(ctx.device())),
       // The limits first, with the smallest targets: larger ones are checked when asked for.
       scene_(
@@ -484,7 +504,12 @@ void gpu_engine::write_thresholds(double gamma) {
   std::vector<uvec2> words(t.size());
   for (std::size_t k = 0; k < t.size(); ++k)
     words[k] = uvec2(std::uint32_t(t[k]), std::uint32_t(t[k] >> 32));
-  targets_->thresholds.write(words.data(), words.size() * sizeof(uvec2));  // nothing in flight
+  ctx_.submit_and_wait([&](VkCommandBuffer cb) {  // nothing is in flight
+    vkCmdUpdateBuffer(cb, targets_->thresholds.get(), 0, words.size() * sizeof(uvec2),
+                      words.data());
+    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage,
+            VK_ACCESS_SHADER_READ_BIT);
+  });
   thresholds_gamma_ = gamma;
 }
 
@@ -495,7 +520,7 @@ std::vector<std::uint32_t> gpu_engine::encode_sums(const std::vector<pixel_sum>&
   const compute_pipeline& tonemap = tonemap_pipeline();
   write_thresholds(gamma);
   const VkDeviceSize bytes = sums.size() * sizeof(pixel_sum);
-  gpu_buffer staging(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, memory_use::upload);
+  gpu_buffer staging(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, memory_use::staging);
   staging.write(sums.data(), bytes);
   ctx_.submit_and_wait([&](VkCommandBuffer cb) {
     if (drawn_)
@@ -554,7 +579,7 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
     b.views = std::uint32_t(std::clamp<VkDeviceSize>(
         whole_views, 1,
         std::min<VkDeviceSize>(layout.views_per_group, views.size() - b.first_view)));
-    write_cameras(targets.cameras, views, b.first_view, b.views);
+    bands.set_views(views, b.first_view, b.views);
     for (std::uint32_t y = 0; y < std::uint32_t(win.height); y += b.rows) {
       b.rows = b.views > 1 ? std::uint32_t(win.height)
                            : std::uint32_t(std::clamp<VkDeviceSize>(
@@ -593,12 +618,10 @@ std::vector<framebuffer> gpu_engine::render_views(const std::vector<camera>& vie
            framebuffer& fb = out[first + std::size_t(r / rows)];
            const pixel_sum* p = sums + std::size_t(r) * std::size_t(win.width);
            const int y = row0 + r % rows;
-           for (int x = 0; x < win.width; ++x, ++p) {
-             const auto word = [](uvec2 w) { return std::uint64_t(w.y) << 32 | w.x; };
+           for (int x = 0; x < win.width; ++x, ++p)
              fb.at(x, y) =
-                 color(sum_mean(word(p->r), p->samples, f), sum_mean(word(p->g), p->samples, f),
-                       sum_mean(word(p->b), p->samples, f));
-           }
+                 color(sum_mean(red_sum(*p), p->samples, f), sum_mean(green_sum(*p), p->samples, f),
+                       sum_mean(blue_sum(*p), p->samples, f));
          });
        });
   return out;

@@ -21,6 +21,7 @@
 #include "render_gpu.h"
 #include "render_settings.h"
 #include "render_targets.h"
+#include "sample_sum.h"
 #include "scene.h"
 
 namespace rtvk::gpu {
@@ -32,6 +33,17 @@ struct sum_image {
   int exponent = 0;               // F: fractional bits of the sums
   std::vector<pixel_sum> pixels;  // row-major from the window's top
 };
+
+// A pixel's channel sums, as integers.
+inline exact_sum red_sum(const pixel_sum& p) {
+  return channel_sum(p.r.x, p.r.y, p.r_top);
+}
+inline exact_sum green_sum(const pixel_sum& p) {
+  return channel_sum(p.g.x, p.g.y, p.g_top);
+}
+inline exact_sum blue_sum(const pixel_sum& p) {
+  return channel_sum(p.b.x, p.b.y, p.b_top);
+}
 
 // A scene set up on one device once -- spheres, materials and BVH uploaded, pipelines built on
 // first use -- and then drawn as often as a run asks: every view, frame, band, region and
@@ -59,7 +71,7 @@ class gpu_engine {
                                         const sample_progress& progress = {},
                                         render_stats* stats = nullptr);
   // The same render encoded to 8 bits on the device (tonemap.comp, with rs.gamma): bit for bit
-  // encode_sum of render_sums' sums, and 4 bytes a pixel read back instead of 32.
+  // encode_sum of render_sums' sums, and 4 bytes a pixel read back instead of 48.
   std::vector<image_rgb8> render_encoded(const std::vector<camera>& views,
                                          const render_settings& rs, const render_window& win,
                                          const sample_progress& progress = {},

@@ -44,19 +44,26 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh)
 gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
     : sphere_count_(std::uint32_t(a.spheres.size())),
       build_seconds_(a.build_seconds),
-      staging_specs_{{bytes_of(a.spheres), VK_BUFFER_USAGE_TRANSFER_SRC_BIT},
-                     {bytes_of(a.materials), VK_BUFFER_USAGE_TRANSFER_SRC_BIT},
-                     {bytes_of(a.nodes), VK_BUFFER_USAGE_TRANSFER_SRC_BIT}},
-      staging_(ctx, memory_use::upload, staging_specs_),
-      arrays_(ctx, memory_use::device_local,
-              with_usage(staging_specs_,
-                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT)) {
-  write_array(staging_[0], a.spheres);
-  write_array(staging_[1], a.materials);
-  write_array(staging_[2], a.nodes);
+      specs_{{bytes_of(a.spheres), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.nodes), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
+      staging_(
+          host_writes_device_memory(ctx)
+              ? std::nullopt
+              : std::optional<buffer_set>(std::in_place, ctx, memory_use::staging,
+                                          with_usage(specs_, VK_BUFFER_USAGE_TRANSFER_SRC_BIT))),
+      arrays_(ctx, staging_ ? memory_use::device_local : memory_use::device_mapped,
+              staging_ ? with_usage(specs_, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                VK_BUFFER_USAGE_TRANSFER_DST_BIT)
+                       : specs_) {
+  buffer_set& to = staging_ ? *staging_ : arrays_;
+  write_array(to[0], a.spheres);
+  write_array(to[1], a.materials);
+  write_array(to[2], a.nodes);
 }
 
-std::vector<buffer_request> gpu_scene::buffers(const scene& s, bool use_bvh) {
+std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const scene& s,
+                                               bool use_bvh) {
   // The BVH at its largest: N - 1 interior nodes for N >= 2 spheres (one per leaf but one), the
   // root alone for one.
   const VkDeviceSize n = s.spheres.size();
@@ -66,18 +73,23 @@ std::vector<buffer_request> gpu_scene::buffers(const scene& s, bool use_bvh) {
   const bool tree = use_bvh && n > 0;
   const VkDeviceSize nodes = (tree ? std::max<VkDeviceSize>(n - 1, 1) : 1) * sizeof(bvh_node);
   using u = memory_use;
-  return {{"the spheres' upload copy", spheres, false, u::upload, staging_set},
+  if (host_writes_device_memory(ctx))
+    return {{"the sphere array", spheres, true, u::device_mapped, array_set},
+            {"the material array", materials, true, u::device_mapped, array_set},
+            {"the BVH", nodes, true, u::device_mapped, array_set}};
+  return {{"the spheres' upload copy", spheres, false, u::staging, staging_set},
           {"the sphere array", spheres, true, u::device_local, array_set},
-          {"the materials' upload copy", materials, false, u::upload, staging_set},
+          {"the materials' upload copy", materials, false, u::staging, staging_set},
           {"the material array", materials, true, u::device_local, array_set},
-          {"the BVH's upload copy", nodes, false, u::upload, staging_set},
+          {"the BVH's upload copy", nodes, false, u::staging, staging_set},
           {"the BVH", nodes, true, u::device_local, array_set}};
 }
 
 void gpu_scene::record_upload(VkCommandBuffer cb) const {
-  for (std::size_t i = 0; i < staging_specs_.size(); ++i) {
-    const VkBufferCopy copy{0, 0, staging_specs_[i].size};
-    vkCmdCopyBuffer(cb, staging_[i].get(), arrays_[i].get(), 1, &copy);
+  if (!staging_) return;
+  for (std::size_t i = 0; i < specs_.size(); ++i) {
+    const VkBufferCopy copy{0, 0, specs_[i].size};
+    vkCmdCopyBuffer(cb, (*staging_)[i].get(), arrays_[i].get(), 1, &copy);
   }
 }
 

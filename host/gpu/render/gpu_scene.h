@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "buffer.h"
@@ -13,17 +14,21 @@ namespace rtvk::gpu {
 
 // The scene on the device: its spheres and materials in the shared header's layout, and the BVH
 // over the spheres (an empty one when the render tests every sphere). With the BVH the spheres
-// are stored in its leaf order, each with its scene index; without it, in scene order. Filled on
-// the host when made, in two memory allocations (the upload copies, the device-local arrays);
-// the copies to the device are recorded into the first submission.
+// are stored in its leaf order, each with its scene index; without it, in scene order. Where the
+// host can write the device's main memory (unified memory, resizable BAR:
+// host_writes_device_memory) the arrays are written there in place, once; elsewhere they are
+// written to host-visible copies, and the copies to the device-local arrays are recorded into
+// the first submission.
 class gpu_scene {
  public:
   gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh);
 
   // The buffers a gpu_scene of `s` allocates, at their largest, for check_device_fits.
-  static std::vector<buffer_request> buffers(const scene& s, bool use_bvh);
+  static std::vector<buffer_request> buffers(const gpu_context& ctx, const scene& s, bool use_bvh);
 
+  // The copies to the device, when the arrays were not written in place (else nothing).
   void record_upload(VkCommandBuffer cb) const;
+  bool in_place() const { return !staging_; }  // written straight into device memory
 
   std::uint32_t sphere_count() const { return sphere_count_; }
   double build_seconds() const { return build_seconds_; }
@@ -42,11 +47,11 @@ class gpu_scene {
   static host_arrays build(const scene& s, bool use_bvh);
   gpu_scene(const gpu_context& ctx, const host_arrays& a);
 
-  std::uint32_t sphere_count_;              // spheres the scene has
-  double build_seconds_;                    // building the BVH took
-  std::vector<buffer_spec> staging_specs_;  // spheres, materials, nodes: sizes for the copies
-  buffer_set staging_;                      // host copies
-  buffer_set arrays_;                       // what the shader reads
+  std::uint32_t sphere_count_;         // spheres the scene has
+  double build_seconds_;               // building the BVH took
+  std::vector<buffer_spec> specs_;     // spheres, materials, nodes: sizes for the copies
+  std::optional<buffer_set> staging_;  // host copies; none when written in place
+  buffer_set arrays_;                  // what the shader reads
 };
 
 }  // namespace rtvk::gpu

@@ -9,6 +9,7 @@ camera_ubo to_ubo(const camera& cam) {
   u.horizontal = vec3(f.horizontal);
   u.vertical = vec3(f.vertical);
   u.lower_left = vec3(f.lower_left);
+  u.to_lower_left = vec3(f.to_lower_left);
   u.lens_u = vec3(f.lens_u);
   u.lens_v = vec3(f.lens_v);
   u.axis_w = vec3(f.axis_w);

@@ -20,6 +20,13 @@ class loop_budget_error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A sample had a channel past the exact sums' limit (sum_sample_limit, sample_sum.h): the
+// render fails rather than clamp it into a biased image.
+class sample_overflow_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // The largest accumulation buffer a render allocates unless told otherwise (or the device's
 // storage buffer limit, if smaller), bytes.
 inline constexpr std::uint64_t default_band_bytes = 64u << 20;

@@ -8,10 +8,12 @@
 
 namespace rtvk::gpu {
 
-// Where one group of views draws a band of rows: the camera block, the exact sums the
-// dispatches accumulate into (pixel_sum), the 8-bit pixels tonemap.comp encodes them to and the
-// thresholds it encodes with, the status block that reports loop-budget overruns and unfinished
-// pixels, and a host-visible copy to read sums or bytes back.
+// Where one group of views draws a band of rows, all in device-local memory: the camera block,
+// the exact sums the dispatches accumulate into (pixel_sum), the 8-bit pixels tonemap.comp
+// encodes them to and the thresholds it encodes with, the status block the shader counts
+// loop-budget overruns and unfinished pixels in (atomics stay on the device); and host-visible
+// copies to read the sums or bytes, and the status, back. The host fills the camera block and
+// the thresholds with vkCmdUpdateBuffer, inside the command stream.
 struct render_targets {
   // `pixels`: the largest band's pixels over all its views.
   render_targets(const gpu_context& ctx, VkDeviceSize pixels);
@@ -24,17 +26,17 @@ struct render_targets {
   VkDeviceSize pixels;  // what the buffers hold
 
  private:
-  buffer_set device_;  // sums, bytes
-  buffer_set upload_;  // cameras, thresholds
-  buffer_set host_;    // readback, status
+  buffer_set device_;  // sums, bytes, cameras, thresholds, status
+  buffer_set host_;    // readback, status_readback
 
  public:
-  gpu_buffer& cameras;     // camera_ubo per view of the group (uniform)
-  gpu_buffer& sums;        // pixel_sum per pixel (storage)
-  gpu_buffer& bytes;       // RGBA8 per pixel (storage)
-  gpu_buffer& thresholds;  // byte_thresholds as uvec2[256] (storage, written by the host)
-  gpu_buffer& readback;    // sums or bytes, copied back
-  gpu_buffer& status;      // render_status (storage, host-visible)
+  gpu_buffer& cameras;          // camera_ubo per view of the group (uniform)
+  gpu_buffer& sums;             // pixel_sum per pixel (storage)
+  gpu_buffer& bytes;            // RGBA8 per pixel (storage)
+  gpu_buffer& thresholds;       // byte_thresholds as uvec2[256] (storage)
+  gpu_buffer& status;           // render_status (storage)
+  gpu_buffer& readback;         // sums or bytes, copied back
+  gpu_buffer& status_readback;  // render_status, copied back after every submission
 };
 
 }  // namespace rtvk::gpu

@@ -35,16 +35,38 @@ VkDeviceSize align_up(VkDeviceSize v, VkDeviceSize a) {
 }  // namespace
 
 std::uint32_t memory_type_for(const gpu_context& ctx, std::uint32_t type_bits, memory_use use) {
+  const VkMemoryPropertyFlags device = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
   const VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
+  const VkMemoryPropertyFlags coherent = VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
   switch (use) {
     case memory_use::device_local:
-      return ctx.memory_type(type_bits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+      return ctx.memory_type(type_bits, 0, device, host);
     case memory_use::upload:
-      return ctx.memory_type(type_bits, host | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+      return ctx.memory_type(type_bits, host | coherent, device);
+    case memory_use::staging:
+      return ctx.memory_type(type_bits, host | coherent, 0, device);
     case memory_use::readback:
-      return ctx.memory_type(type_bits, host, VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
+      return ctx.memory_type(type_bits, host, VK_MEMORY_PROPERTY_HOST_CACHED_BIT, device);
+    case memory_use::device_mapped:
+      return ctx.memory_type(type_bits, device | host | coherent);
   }
   return ctx.memory_type(type_bits, 0);
+}
+
+bool host_writes_device_memory(const gpu_context& ctx) {
+  const VkPhysicalDeviceMemoryProperties& m = ctx.memory_properties();
+  const VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT |
+                                     VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                     VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  VkDeviceSize largest = 0;  // the largest device-local heap
+  for (std::uint32_t h = 0; h < m.memoryHeapCount; ++h)
+    if (m.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+      largest = std::max(largest, m.memoryHeaps[h].size);
+  for (std::uint32_t i = 0; i < m.memoryTypeCount; ++i)
+    if ((m.memoryTypes[i].propertyFlags & want) == want &&
+        m.memoryHeaps[m.memoryTypes[i].heapIndex].size >= largest)
+      return true;
+  return false;
 }
 
 gpu_buffer::gpu_buffer(const gpu_context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
@@ -58,7 +80,7 @@ gpu_buffer::gpu_buffer(const gpu_context& ctx, VkDeviceSize size, VkBufferUsageF
   bound_ = memory_.get();
   buffer_ = std::move(owned);
   vk_check(vkBindBufferMemory(device_, buffer_.get(), bound_, 0), "vkBindBufferMemory");
-  if (use != memory_use::device_local) {
+  if (use != memory_use::device_local) {  // every other use is host-visible
     coherent_ = ctx.memory_type_has(type, VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     vk_check(vkMapMemory(device_, bound_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
   }

@@ -9,17 +9,34 @@
 
 namespace rtvk::gpu {
 
+// What a buffer is for, which decides the memory type it lives in (memory_type_for): by
+// property preference, among the types its buffers allow, never a protected, lazily allocated
+// or AMD device-coherent one where another fits.
 enum class memory_use {
-  device_local,  // read and written by shaders; filled and read back by copies
-  upload,        // written by the host, read by the device (host-visible, coherent)
-  readback,      // written by the device, read by the host (host-visible, cached if possible)
+  device_local,   // read and written by shaders, filled and read back by copies: device-local,
+                  // not host-visible where there is a choice (the host-visible window is scarce)
+  upload,         // written by the host, read by shaders every dispatch (the camera block, the
+                  // byte thresholds): host-visible and coherent, device-local where it can be
+                  // (ReBAR, unified memory, the 256 MiB BAR window)
+  staging,        // written by the host once and copied: host-visible and coherent, not device-
+                  // local where there is a choice
+  readback,       // written by copies, read by the host: host-visible, host-cached if possible,
+                  // not device-local where there is a choice (reading VRAM over PCIe is slow)
+  device_mapped,  // read by shaders, written once by the host in place: device-local, host-
+                  // visible and coherent (ReBAR, unified memory; see host_writes_device_memory)
 };
 
 // The memory type a buffer of `use` lives in, among those `type_bits` allows.
 std::uint32_t memory_type_for(const gpu_context& ctx, std::uint32_t type_bits, memory_use use);
 
-// A buffer, persistently mapped unless device-local: with its own memory allocation, or placed
-// in a buffer_set's.
+// Whether the host can write the device's main memory directly: a device-local, host-visible,
+// coherent type in the largest device-local heap (unified memory, or a discrete GPU with
+// resizable BAR), so uploads need no second copy. The 256 MiB BAR window of other discrete GPUs
+// is a heap of its own and does not count.
+bool host_writes_device_memory(const gpu_context& ctx);
+
+// A buffer, persistently mapped unless it is a device_local one: with its own memory allocation, or
+// placed in a buffer_set's.
 class gpu_buffer {
  public:
   gpu_buffer(const gpu_context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, memory_use use);

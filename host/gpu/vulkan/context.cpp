@@ -1,6 +1,8 @@
 #include "context.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cstring>
 
 #include "format.h"
@@ -120,15 +122,49 @@ gpu_context::~gpu_context() {
 }
 
 std::uint32_t gpu_context::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
-                                       VkMemoryPropertyFlags preferred) const {
-  for (const VkMemoryPropertyFlags want : {required | preferred, required}) {
-    for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
-      if ((type_bits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & want) == want)
-        return i;
-    }
+                                       VkMemoryPropertyFlags preferred,
+                                       VkMemoryPropertyFlags avoided) const {
+  // Never chosen while another type fits: memory the host cannot read back normally, or that
+  // may not exist until used.
+  const VkMemoryPropertyFlags odd =
+      VK_MEMORY_PROPERTY_PROTECTED_BIT | VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT |
+      VK_MEMORY_PROPERTY_DEVICE_COHERENT_BIT_AMD | VK_MEMORY_PROPERTY_DEVICE_UNCACHED_BIT_AMD;
+  // Ranked by: no odd property, the preferred ones present, the avoided ones absent, the
+  // driver's order (drivers list their best type of a kind first).
+  const auto rank = [&](VkMemoryPropertyFlags f) {
+    return std::array<int, 3>{(f & odd & ~required) == 0,
+                              std::popcount(std::uint32_t(f & preferred)),
+                              -std::popcount(std::uint32_t(f & avoided))};
+  };
+  std::uint32_t best = ~0u;
+  for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+    const VkMemoryPropertyFlags f = memory_.memoryTypes[i].propertyFlags;
+    if (!(type_bits & (1u << i)) || (f & required) != required) continue;
+    if (best == ~0u || rank(f) > rank(memory_.memoryTypes[best].propertyFlags)) best = i;
   }
+  if (best != ~0u) return best;
   throw std::runtime_error("no memory type with property flags " + std::to_string(required) +
                            " on " + device().name);
+}
+
+std::vector<gpu_context::heap_room> gpu_context::heap_rooms() const {
+  std::vector<heap_room> out;
+  for (std::uint32_t h = 0; h < memory_.memoryHeapCount; ++h)
+    out.push_back({memory_.memoryHeaps[h].size, false});  // already capped by apply_caps
+  if (!has_device_extension(device().handle, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME)) return out;
+  VkPhysicalDeviceMemoryBudgetPropertiesEXT budget{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_BUDGET_PROPERTIES_EXT};
+  VkPhysicalDeviceMemoryProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PROPERTIES_2};
+  props.pNext = &budget;
+  vkGetPhysicalDeviceMemoryProperties2(device().handle, &props);
+  for (std::uint32_t h = 0; h < memory_.memoryHeapCount && h < VK_MAX_MEMORY_HEAPS; ++h) {
+    // A driver may report a budget below what is in use (another process grew): no room.
+    VkDeviceSize room =
+        budget.heapBudget[h] > budget.heapUsage[h] ? budget.heapBudget[h] - budget.heapUsage[h] : 0;
+    if (budget.heapBudget[h] == 0) continue;  // no figure for this heap
+    if (room < out[h].bytes) out[h] = {room, true};
+  }
+  return out;
 }
 
 bool gpu_context::memory_type_has(std::uint32_t type, VkMemoryPropertyFlags flags) const {

@@ -66,9 +66,18 @@ class gpu_context {
   void check_validation(const std::string& consequence = "") const;
 
   // A memory type allowed by type_bits with all `required` flags, preferring one that also has
-  // `preferred`. Throws when there is none.
+  // `preferred` and then one without `avoided`. Throws when there is none.
   std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
-                            VkMemoryPropertyFlags preferred = 0) const;
+                            VkMemoryPropertyFlags preferred = 0,
+                            VkMemoryPropertyFlags avoided = 0) const;
+  // What this process may still allocate in each memory heap, bytes: VK_EXT_memory_budget's
+  // budget less what the process uses where the device has it (asked anew each call: other
+  // processes change it), else the heap's size. `from_budget` says which.
+  struct heap_room {
+    VkDeviceSize bytes;  // may still be allocated
+    bool from_budget;    // VK_EXT_memory_budget's figure, not the heap's size
+  };
+  std::vector<heap_room> heap_rooms() const;
   bool memory_type_has(std::uint32_t type, VkMemoryPropertyFlags flags) const;
   const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_; }
 

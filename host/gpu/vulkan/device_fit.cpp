@@ -11,20 +11,7 @@ namespace {
 // The heap gpu_buffer's memory for `use` comes from (the memory type it would pick for a buffer
 // that any type can hold).
 std::uint32_t heap_for(const gpu_context& ctx, memory_use use) {
-  const VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
-  std::uint32_t type = 0;
-  switch (use) {
-    case memory_use::device_local:
-      type = ctx.memory_type(~0u, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-      break;
-    case memory_use::upload:
-      type = ctx.memory_type(~0u, host | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-      break;
-    case memory_use::readback:
-      type = ctx.memory_type(~0u, host, VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
-      break;
-  }
-  return ctx.memory_properties().memoryTypes[type].heapIndex;
+  return ctx.memory_properties().memoryTypes[memory_type_for(ctx, ~0u, use)].heapIndex;
 }
 
 }  // namespace
@@ -65,12 +52,13 @@ void check_device_fits(const gpu_context& ctx, const std::vector<buffer_request>
     throw usage_error(subject + ": the render needs " + std::to_string(allocations.size()) +
                       " memory allocations; " + device + " allows " +
                       std::to_string(dev.limits.maxMemoryAllocationCount));
+  const std::vector<gpu_context::heap_room> rooms = ctx.heap_rooms();
   for (const auto& [heap, bytes] : per_heap) {
-    const VkDeviceSize size = ctx.memory_properties().memoryHeaps[heap].size;
-    if (bytes > size)
+    const gpu_context::heap_room room = rooms[heap];
+    if (bytes > room.bytes)
       throw usage_error(subject + ": the render needs " + format_bytes(bytes) + " of memory heap " +
-                        std::to_string(heap) + "; " + device + " has " + format_bytes(size) +
-                        " there");
+                        std::to_string(heap) + "; " + device + " has " + format_bytes(room.bytes) +
+                        (room.from_budget ? " of it to spare (VK_EXT_memory_budget)" : " there"));
   }
 }
 

@@ -21,15 +21,27 @@
 //   disguise-device              every device says it is a discrete GPU named "rtvk disguised
 //                                GPU" whose driver is NVIDIA's (ID, name and info), so tests
 //                                see a loader that offers no software device
+//   discrete-memory              every device says its memory is a discrete GPU's without a
+//                                host-visible window: type 0 device-local only (heap 0), types
+//                                1 and 2 host-visible and coherent, 2 also cached (heap 1); a
+//                                vkMapMemory of type 0 fails, and a storage or uniform buffer in
+//                                host memory bound for a shader loses the device at the next
+//                                vkQueueSubmit (on a real one it crosses PCIe at every access)
+//   memory-budget:KIB            every device has VK_EXT_memory_budget and says each heap's
+//                                budget is KIB KiB, none of it in use
 // The chain is kept in globals: a test process of rtvk makes one instance and one device.
 #include <vulkan/vk_layer.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <string>
+#include <unordered_map>
+#include <vector>
 
 namespace {
 
@@ -46,10 +58,23 @@ PFN_vkGetPhysicalDeviceProperties next_properties = nullptr;
 PFN_vkGetPhysicalDeviceProperties2 next_properties2 = nullptr;
 PFN_vkGetPhysicalDeviceQueueFamilyProperties next_queue_families = nullptr;
 PFN_vkGetPhysicalDeviceFeatures2 next_features2 = nullptr;
+PFN_vkGetPhysicalDeviceMemoryProperties next_memory = nullptr;
+PFN_vkGetPhysicalDeviceMemoryProperties2 next_memory2 = nullptr;
+PFN_vkEnumerateDeviceExtensionProperties next_device_extensions = nullptr;
+PFN_vkGetBufferMemoryRequirements next_buffer_requirements = nullptr;
+PFN_vkAllocateMemory next_allocate = nullptr;
+PFN_vkMapMemory next_map = nullptr;
+PFN_vkBindBufferMemory next_bind_buffer = nullptr;
+PFN_vkUpdateDescriptorSets next_update_descriptors = nullptr;
 VkInstance created_instance = VK_NULL_HANDLE;
 std::atomic<long> submits{0}, presents{0};
 std::atomic<bool> watchdog_fired{false};
 std::atomic<bool> dispatched_past_limit{false};
+std::atomic<bool> shader_reads_host_memory{false};
+// discrete-memory: the type each allocation was made from, and the allocation each buffer is in.
+std::mutex memory_mutex;
+std::unordered_map<std::uint64_t, std::uint32_t> memory_type_of;
+std::unordered_map<std::uint64_t, std::uint64_t> memory_of_buffer;
 
 // The fault's count when RTVK_TEST_FAULT is "name:N", 0 when it is another fault or none.
 long fault_count(const char* name) {
@@ -92,6 +117,12 @@ VKAPI_ATTR VkResult VKAPI_CALL create_instance(const VkInstanceCreateInfo* info,
       next_instance_proc(*instance, "vkGetPhysicalDeviceQueueFamilyProperties"));
   next_features2 = reinterpret_cast<PFN_vkGetPhysicalDeviceFeatures2>(
       next_instance_proc(*instance, "vkGetPhysicalDeviceFeatures2"));
+  next_memory = reinterpret_cast<PFN_vkGetPhysicalDeviceMemoryProperties>(
+      next_instance_proc(*instance, "vkGetPhysicalDeviceMemoryProperties"));
+  next_memory2 = reinterpret_cast<PFN_vkGetPhysicalDeviceMemoryProperties2>(
+      next_instance_proc(*instance, "vkGetPhysicalDeviceMemoryProperties2"));
+  next_device_extensions = reinterpret_cast<PFN_vkEnumerateDeviceExtensionProperties>(
+      next_instance_proc(*instance, "vkEnumerateDeviceExtensionProperties"));
   return r;
 }
 
@@ -115,6 +146,15 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical,
   next_dispatch = reinterpret_cast<PFN_vkCmdDispatch>(next_device_proc(*device, "vkCmdDispatch"));
   next_dispatch_base =
       reinterpret_cast<PFN_vkCmdDispatchBase>(next_device_proc(*device, "vkCmdDispatchBase"));
+  const auto device_function = [&](const char* name) { return next_device_proc(*device, name); };
+  next_buffer_requirements = reinterpret_cast<PFN_vkGetBufferMemoryRequirements>(
+      device_function("vkGetBufferMemoryRequirements"));
+  next_allocate = reinterpret_cast<PFN_vkAllocateMemory>(device_function("vkAllocateMemory"));
+  next_map = reinterpret_cast<PFN_vkMapMemory>(device_function("vkMapMemory"));
+  next_bind_buffer =
+      reinterpret_cast<PFN_vkBindBufferMemory>(device_function("vkBindBufferMemory"));
+  next_update_descriptors =
+      reinterpret_cast<PFN_vkUpdateDescriptorSets>(device_function("vkUpdateDescriptorSets"));
   next_queue_present =  // null without VK_KHR_swapchain
       reinterpret_cast<PFN_vkQueuePresentKHR>(next_device_proc(*device, "vkQueuePresentKHR"));
   return r;
@@ -187,12 +227,152 @@ VKAPI_ATTR void VKAPI_CALL queue_families(VkPhysicalDevice physical, uint32_t* c
   for (uint32_t k = 0; k < *count; ++k) families[k].queueFlags &= ~VK_QUEUE_GRAPHICS_BIT;
 }
 
+// discrete-memory: a discrete GPU's memory types in place of the device's own (lavapipe's one
+// type has every property, so allocations of any fake type are made from the real type 0).
+void discrete_memory(VkPhysicalDeviceMemoryProperties& m) {
+  const VkDeviceSize size = m.memoryHeaps[0].size;
+  const VkMemoryPropertyFlags host =
+      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  m = VkPhysicalDeviceMemoryProperties{};
+  m.memoryTypeCount = 3;
+  m.memoryTypes[0] = {VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0};
+  m.memoryTypes[1] = {host, 1};
+  m.memoryTypes[2] = {host | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, 1};
+  m.memoryHeapCount = 2;
+  m.memoryHeaps[0] = {size, VK_MEMORY_HEAP_DEVICE_LOCAL_BIT};
+  m.memoryHeaps[1] = {size, 0};
+}
+
+VKAPI_ATTR void VKAPI_CALL memory_properties(VkPhysicalDevice physical,
+                                             VkPhysicalDeviceMemoryProperties* m) {
+  next_memory(physical, m);
+  if (fault_is("discrete-memory")) discrete_memory(*m);
+}
+
+VKAPI_ATTR void VKAPI_CALL memory_properties2(VkPhysicalDevice physical,
+                                              VkPhysicalDeviceMemoryProperties2* m) {
+  const long budget_kib = fault_count("memory-budget");
+  // The budget structure is this layer's to fill: the driver below may not know it.
+  VkBaseOutStructure* budget = nullptr;
+  if (budget_kib > 0) {
+    for (auto* link = reinterpret_cast<VkBaseOutStructure*>(m); link->pNext; link = link->pNext)
+      if (link->pNext->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_BUDGET_PROPERTIES_EXT) {
+        budget = link->pNext;
+        link->pNext = budget->pNext;
+        break;
+      }
+  }
+  next_memory2(physical, m);
+  if (fault_is("discrete-memory")) discrete_memory(m->memoryProperties);
+  if (!budget) return;
+  budget->pNext = static_cast<VkBaseOutStructure*>(m->pNext);
+  m->pNext = budget;
+  auto* b = reinterpret_cast<VkPhysicalDeviceMemoryBudgetPropertiesEXT*>(budget);
+  for (uint32_t h = 0; h < VK_MAX_MEMORY_HEAPS; ++h) {
+    b->heapBudget[h] = h < m->memoryProperties.memoryHeapCount ? VkDeviceSize(budget_kib) << 10 : 0;
+    b->heapUsage[h] = 0;
+  }
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL device_extensions(VkPhysicalDevice physical, const char* layer,
+                                                 uint32_t* count, VkExtensionProperties* props) {
+  if (layer || fault_count("memory-budget") <= 0)
+    return next_device_extensions(physical, layer, count, props);
+  uint32_t n = 0;
+  VkResult r = next_device_extensions(physical, nullptr, &n, nullptr);
+  if (r != VK_SUCCESS) return r;
+  std::vector<VkExtensionProperties> all(n);
+  r = next_device_extensions(physical, nullptr, &n, all.data());
+  if (r != VK_SUCCESS) return r;
+  all.resize(n);
+  bool has = false;
+  for (const VkExtensionProperties& e : all)
+    has = has || std::strcmp(e.extensionName, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME) == 0;
+  if (!has) {
+    VkExtensionProperties e{};
+    std::strncpy(e.extensionName, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME, VK_MAX_EXTENSION_NAME_SIZE);
+    e.specVersion = 1;
+    all.push_back(e);
+  }
+  if (!props) {
+    *count = uint32_t(all.size());
+    return VK_SUCCESS;
+  }
+  const uint32_t copied = std::min<uint32_t>(*count, uint32_t(all.size()));
+  std::memcpy(props, all.data(), copied * sizeof(VkExtensionProperties));
+  *count = copied;
+  return copied < all.size() ? VK_INCOMPLETE : VK_SUCCESS;
+}
+
+VKAPI_ATTR void VKAPI_CALL buffer_requirements(VkDevice device, VkBuffer buffer,
+                                               VkMemoryRequirements* req) {
+  next_buffer_requirements(device, buffer, req);
+  if (fault_is("discrete-memory")) req->memoryTypeBits = 0b111;
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL allocate_memory(VkDevice device, const VkMemoryAllocateInfo* info,
+                                               const VkAllocationCallbacks* allocator,
+                                               VkDeviceMemory* memory) {
+  if (!fault_is("discrete-memory")) return next_allocate(device, info, allocator, memory);
+  VkMemoryAllocateInfo real = *info;
+  real.memoryTypeIndex = 0;
+  const VkResult r = next_allocate(device, &real, allocator, memory);
+  if (r != VK_SUCCESS) return r;
+  const std::lock_guard<std::mutex> lock(memory_mutex);
+  memory_type_of[std::uint64_t(*memory)] = info->memoryTypeIndex;
+  return r;
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL map_memory(VkDevice device, VkDeviceMemory memory,
+                                          VkDeviceSize offset, VkDeviceSize size,
+                                          VkMemoryMapFlags flags, void** data) {
+  if (fault_is("discrete-memory")) {
+    const std::lock_guard<std::mutex> lock(memory_mutex);
+    if (memory_type_of[std::uint64_t(memory)] == 0) {
+      std::fprintf(stderr, "rtvk test layer: vkMapMemory of device-local memory\n");
+      return VK_ERROR_MEMORY_MAP_FAILED;
+    }
+  }
+  return next_map(device, memory, offset, size, flags, data);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL bind_buffer(VkDevice device, VkBuffer buffer, VkDeviceMemory memory,
+                                           VkDeviceSize offset) {
+  if (fault_is("discrete-memory")) {
+    const std::lock_guard<std::mutex> lock(memory_mutex);
+    memory_of_buffer[std::uint64_t(buffer)] = std::uint64_t(memory);
+  }
+  return next_bind_buffer(device, buffer, memory, offset);
+}
+
+VKAPI_ATTR void VKAPI_CALL update_descriptors(VkDevice device, uint32_t count,
+                                              const VkWriteDescriptorSet* writes, uint32_t copies,
+                                              const VkCopyDescriptorSet* copy) {
+  if (fault_is("discrete-memory")) {
+    const std::lock_guard<std::mutex> lock(memory_mutex);
+    for (uint32_t w = 0; w < count; ++w) {
+      const VkDescriptorType t = writes[w].descriptorType;
+      if (t != VK_DESCRIPTOR_TYPE_STORAGE_BUFFER && t != VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+        continue;
+      for (uint32_t k = 0; k < writes[w].descriptorCount; ++k) {
+        const std::uint64_t memory =
+            memory_of_buffer[std::uint64_t(writes[w].pBufferInfo[k].buffer)];
+        if (memory_type_of[memory] != 0 && !shader_reads_host_memory.exchange(true))
+          std::fprintf(stderr,
+                       "rtvk test layer: binding %u reads a buffer in host memory (type %u)\n",
+                       writes[w].dstBinding, memory_type_of[memory]);
+      }
+    }
+  }
+  next_update_descriptors(device, count, writes, copies, copy);
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL queue_submit(VkQueue queue, uint32_t count,
                                             const VkSubmitInfo* submits_info, VkFence fence) {
   const long at = fault_count("lose-device-at-submit");
   const long after = fault_count("lose-device-after-present");
   if ((at > 0 && ++submits >= at) || (after > 0 && presents >= after)) return VK_ERROR_DEVICE_LOST;
-  if (dispatched_past_limit) return VK_ERROR_DEVICE_LOST;
+  if (dispatched_past_limit || shader_reads_host_memory) return VK_ERROR_DEVICE_LOST;
   const long watchdog_ms = fault_count("watchdog");
   if (watchdog_ms <= 0) return next_queue_submit(queue, count, submits_info, fence);
   if (watchdog_fired) return VK_ERROR_DEVICE_LOST;
@@ -248,6 +428,12 @@ PFN_vkVoidFunction own_function(const char* name) {
   if (is("vkQueueSubmit")) return reinterpret_cast<PFN_vkVoidFunction>(queue_submit);
   if (is("vkQueuePresentKHR")) return reinterpret_cast<PFN_vkVoidFunction>(queue_present);
   if (is("vkCmdDispatch")) return reinterpret_cast<PFN_vkVoidFunction>(dispatch);
+  if (is("vkGetBufferMemoryRequirements"))
+    return reinterpret_cast<PFN_vkVoidFunction>(buffer_requirements);
+  if (is("vkAllocateMemory")) return reinterpret_cast<PFN_vkVoidFunction>(allocate_memory);
+  if (is("vkMapMemory")) return reinterpret_cast<PFN_vkVoidFunction>(map_memory);
+  if (is("vkBindBufferMemory")) return reinterpret_cast<PFN_vkVoidFunction>(bind_buffer);
+  if (is("vkUpdateDescriptorSets")) return reinterpret_cast<PFN_vkVoidFunction>(update_descriptors);
   if (is("vkCmdDispatchBase") || is("vkCmdDispatchBaseKHR"))
     return reinterpret_cast<PFN_vkVoidFunction>(dispatch_base);
   return nullptr;
@@ -267,6 +453,12 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL get_instance_proc(VkInstance instance, 
     return reinterpret_cast<PFN_vkVoidFunction>(device_features2);
   if (is("vkGetPhysicalDeviceQueueFamilyProperties"))
     return reinterpret_cast<PFN_vkVoidFunction>(queue_families);
+  if (is("vkGetPhysicalDeviceMemoryProperties"))
+    return reinterpret_cast<PFN_vkVoidFunction>(memory_properties);
+  if (is("vkGetPhysicalDeviceMemoryProperties2") || is("vkGetPhysicalDeviceMemoryProperties2KHR"))
+    return reinterpret_cast<PFN_vkVoidFunction>(memory_properties2);
+  if (is("vkEnumerateDeviceExtensionProperties"))
+    return reinterpret_cast<PFN_vkVoidFunction>(device_extensions);
   if (PFN_vkVoidFunction own = own_function(name)) return own;
   return next_instance_proc ? next_instance_proc(instance, name) : nullptr;
 }
