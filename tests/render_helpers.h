@@ -3,6 +3,7 @@
 #include <string>
 // Short ways for tests to render a scene with its own settings on either backend.
 #include "camera.h"
+#include "image_compare.h"
 #include "quantize.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
@@ -34,6 +35,17 @@ inline scene small_scene(const std::string& name, int width, int max_spp) {
   s.render.width = width;
   s.render.spp = std::min(s.render.spp, max_spp);
   return s;
+}
+
+// What a CPU-vs-GPU comparison measured on lavapipe (Mesa 22.3.6 and 25.0.7 draw the same
+// images), less a stated margin: 3 dB of PSNR, and twice the share of pixels more than 2 levels
+// off (at least one pixel of `pixels`). monte_carlo_agreement's 40 dB floor, the rule of rtvk
+// render --backend both for any scene, would let a 20 dB regression of these through. The PSNR
+// floor stops at 70 dB: images closer than that differ in a handful of pixels by a level, which
+// another conformant device's rounding may change.
+inline agreement measured_agreement(double psnr_db, double share, int pixels) {
+  return {monte_carlo_agreement.tolerance, std::max(2 * share, 1.0 / pixels),
+          std::min(psnr_db - 3, 70.0)};
 }
 
 // Whether two framebuffers hold the same pixels, bit for bit.

@@ -2,6 +2,9 @@
 // shading: deterministic), a posed Monte Carlo view of book-final, and a keyframed fisheye path.
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <map>
+
 #include <cmath>
 
 #include "camera_path.h"
@@ -47,13 +50,23 @@ TEST_F(GpuProjections, APosedMonteCarloViewMatchesTheCpuUnderEveryModel) {
   s.render.max_depth = 10;
   camera_pose pose = main_camera(s).pose;
   pose.aperture = 0;  // the panoramic models have no lens
+  // Measured on lavapipe, per model (PSNR dB, share over 2 levels): the rule is
+  // measured_agreement of these.
+  const std::map<projection, std::pair<double, double>> measured{
+      {projection::perspective, {59.8, 0.0030}},
+      {projection::orthographic, {64.4, 0.00065}},
+      {projection::equirectangular, {std::numeric_limits<double>::infinity(), 0}},
+      {projection::fisheye_equidistant, {89.5, 0}},
+      {projection::fisheye_equisolid, {59.1, 0.0011}}};
   for (projection p : all_models) {
     SCOPED_TRACE(std::string(projection_name(p)));
     pose.projection = p;
     const camera c(pose, 2, 96);
     const image_difference d = compare_images(test::gpu_image(gpu(), s, c), test::cpu_image(s, c),
                                               monte_carlo_agreement.tolerance);
-    EXPECT_TRUE(agrees(d, monte_carlo_agreement))
+    const auto [psnr, share] = measured.at(p);
+    EXPECT_TRUE(
+        agrees(d, test::measured_agreement(psnr, share, c.image_width() * c.image_height())))
         << "PSNR " << d.psnr_db << ", " << d.share_over * 100 << "% over 2 levels";
   }
 }
