@@ -83,8 +83,8 @@ void main() {
   // region, for every view.
   if (gl_GlobalInvocationID.x >= pc.region_width || gl_GlobalInvocationID.y >= pc.band_rows) return;
   uint view = gl_GlobalInvocationID.z;
-  uint index =
-      (view * pc.band_rows + gl_GlobalInvocationID.y) * pc.region_width + gl_GlobalInvocationID.x;
+  uint index = (view * pc.band_rows + pc.sums_row0 + gl_GlobalInvocationID.y) * pc.region_width +
+               gl_GlobalInvocationID.x;
   pixel_sum acc = sums[index];
   if (acc.samples >= pc.sample_target) return;
   camera_ubo cam = cams[view];
@@ -98,6 +98,7 @@ void main() {
   uint iterations = 0u;
   uint rays = 0u;  // of the path in flight
   uint overflowed = 0u;  // samples past the limit
+  uint rays_added = 0u;  // by the samples added (when counted)
   path_state p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   while (true) {
     precise vec3 c;
@@ -105,6 +106,7 @@ void main() {
     if (iterations > pc.loop_budget) break;  // the path in flight is dropped and drawn again
     if (!ended) continue;
     if (add_sample(acc, c, rays)) ++overflowed;
+    rays_added += rays;
     rays = 0u;
     if (acc.samples >= pc.sample_target) break;
     p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
@@ -118,5 +120,9 @@ void main() {
     }
   }
   if (overflowed != 0u) atomicAdd(status.overflowed_samples, overflowed);
+  if (count_rays && rays_added != 0u) {  // a 64-bit count: the carry goes to the high word
+    uint before = atomicAdd(status.rays_low, rays_added);
+    if (before + rays_added < before) atomicAdd(status.rays_high, 1u);
+  }
   sums[index] = acc;
 }

@@ -46,8 +46,9 @@ uint encode_sum(uvec2 sum, uint top, uint samples) {
 
 void main() {
   // Rows of workgroups when one row would pass the device's workgroup count limit.
-  uint i = gl_GlobalInvocationID.y * pc.row_invocations + gl_GlobalInvocationID.x;
-  if (i >= pc.pixels) return;
+  uint k = gl_GlobalInvocationID.y * pc.row_invocations + gl_GlobalInvocationID.x;
+  if (k >= pc.pixels) return;
+  uint i = pc.first + k;  // a run of rows of a larger image (the viewer's), or all of it
   pixel_sum p = sums[i];
   uint r = encode_sum(p.r, p.r_top, p.samples);
   uint g = encode_sum(p.g, p.g_top, p.samples);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "shaders.h"
+#include "shared_types.h"
 #include "vk_error.h"
 
 namespace rtvk::view {
@@ -32,11 +34,23 @@ void fit(int src_w, int src_h, VkExtent2D target, VkOffset3D& lo, VkOffset3D& hi
 
 }  // namespace
 
+// The largest band the overlay can take: a whole image's width of text lines is far more than
+// it draws (six lines, about 100 characters), so these bound the buffers and the mask's update.
+constexpr int max_band_width = 2048, max_band_height = 256;
+constexpr VkDeviceSize max_mask_bytes = VkDeviceSize(max_band_width / 32) * max_band_height * 4;
+static_assert(max_mask_bytes <= 65536, "the mask goes in one vkCmdUpdateBuffer");
+
 presenter::presenter(gpu::gpu_context& ctx, int width, int height)
-    : ctx_(ctx), width_(width), height_(height) {
-  const VkDeviceSize bytes = VkDeviceSize(width) * VkDeviceSize(height) * 4;
-  staging_ = std::make_unique<gpu::gpu_buffer>(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                               gpu::memory_use::upload);
+    : ctx_(ctx),
+      width_(width),
+      height_(height),
+      overlay_buffers_(
+          ctx, gpu::memory_use::device_local,
+          std::vector<gpu::buffer_spec>{
+              {max_mask_bytes,
+               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT},
+              {VkDeviceSize(max_band_width) * max_band_height * 4,
+               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT}}) {
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = VK_FORMAT_R8G8B8A8_UNORM;
@@ -55,7 +69,7 @@ presenter::presenter(gpu::gpu_context& ctx, int width, int height)
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
   alloc.memoryTypeIndex =
-      ctx.memory_type(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+      gpu::memory_type_for(ctx, req.memoryTypeBits, gpu::memory_use::device_local);
   VkDeviceMemory memory = VK_NULL_HANDLE;
   gpu::vk_check(vkAllocateMemory(ctx.vk(), &alloc, nullptr, &memory), "vkAllocateMemory");
   memory_ = gpu::unique_memory(ctx.vk(), memory);
@@ -66,11 +80,54 @@ presenter::~presenter() {
   ctx_.wait_all();
 }
 
-void presenter::write(const std::uint32_t* rgba) {
-  staging_->write(rgba, std::size_t(width_) * std::size_t(height_) * 4);
+void presenter::show_from(VkBuffer bytes) {
+  if (compose_ && bytes == bound_bytes_) return;
+  const std::vector<gpu::buffer_binding> bindings{
+      {RTVK_BINDING_BYTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, bytes},
+      {RTVK_BINDING_OVERLAY_MASK, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, overlay_buffers_[0].get()},
+      {RTVK_BINDING_OVERLAY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, overlay_buffers_[1].get()}};
+  if (!compose_) {
+    compose_ = std::make_unique<gpu::compute_pipeline>(ctx_, gpu::overlay_shader(), bindings,
+                                                       sizeof(gpu::overlay_push));
+  } else {
+    ctx_.wait_all();  // the set may not change under a frame in flight
+    compose_->rebind(bindings);
+  }
+  bound_bytes_ = bytes;
 }
 
-void presenter::record(VkCommandBuffer cb, const swapchain& chain, std::uint32_t target) const {
+// overlay.comp over the band: the mask in, the composed band out, ready to copy.
+void presenter::record_overlay(VkCommandBuffer cb, const overlay_mask& overlay) const {
+  // The last frame's reads of the mask and writes of the band come first.
+  VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  before.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+  before.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
+  vkCmdUpdateBuffer(cb, overlay_buffers_[0].get(), 0, overlay.bits.size() * 4, overlay.bits.data());
+  VkMemoryBarrier ready{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  ready.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+  ready.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+  vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &ready, 0, nullptr, 0, nullptr);
+  compose_->bind(cb);
+  const gpu::overlay_push push{std::uint32_t(overlay.width), std::uint32_t(overlay.height),
+                               std::uint32_t(width_), std::uint32_t(overlay.words_per_row)};
+  compose_->push(cb, &push, sizeof push);
+  compose_->dispatch(cb, {(push.width + 63) / 64, push.height, 1});
+  VkMemoryBarrier done{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  done.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  done.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                       1, &done, 0, nullptr, 0, nullptr);
+}
+
+void presenter::record(VkCommandBuffer cb, const overlay_mask& overlay, const swapchain& chain,
+                       std::uint32_t target) const {
+  const VkBuffer bytes = bound_bytes_;
+  const bool band = overlay.width > 0 && overlay.height > 0 && overlay.width <= max_band_width &&
+                    overlay.height <= max_band_height;
+  if (band) record_overlay(cb, overlay);
   const VkImage src = image_.get(), dst = chain.image(target);
   barrier(cb, src, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
           VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
@@ -78,7 +135,18 @@ void presenter::record(VkCommandBuffer cb, const swapchain& chain, std::uint32_t
   VkBufferImageCopy copy{};
   copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   copy.imageExtent = {std::uint32_t(width_), std::uint32_t(height_), 1};
-  vkCmdCopyBufferToImage(cb, staging_->get(), src, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+  vkCmdCopyBufferToImage(cb, bytes, src, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+  if (band) {  // over the same pixels: the copies are ordered
+    barrier(cb, src, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+            VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkBufferImageCopy over{};
+    over.bufferRowLength = std::uint32_t(overlay.width);
+    over.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    over.imageExtent = {std::uint32_t(overlay.width), std::uint32_t(overlay.height), 1};
+    vkCmdCopyBufferToImage(cb, overlay_buffers_[1].get(), src, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           1, &over);
+  }
   barrier(cb, src, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
           VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
           VK_PIPELINE_STAGE_TRANSFER_BIT);

@@ -28,63 +28,26 @@
 namespace rtvk::view {
 namespace {
 
-// Exact per-pixel sums of every batch so far: integer additions, so the result does not depend
-// on how the samples were batched (the same bits as one render of all of them). Batches cover
-// bands of rows, so rows may briefly hold one pass more than others.
+// How far the accumulation is, row by row; the sums themselves and their encoding stay on the
+// device (gpu_engine::accumulate). Batches cover bands of rows, so rows may briefly hold one
+// pass more than others.
 struct accumulation {
   int width = 0, height = 0;     // pixels
   int samples = 0;               // per pixel in every row: the passes completed
   std::vector<int> row_samples;  // per row, from the top
-  std::vector<exact_sum> sums;   // 3 per pixel: r, g, b
 
   void reset(int w, int h) {
     width = w;
     height = h;
     samples = 0;
     row_samples.assign(std::size_t(h), 0);
-    sums.assign(std::size_t(w) * std::size_t(h) * 3, 0);
   }
-  // Adds `count` samples of rows [row, row + batch.height).
-  void add(const gpu::sum_image& batch, int row, int count) {
-    const std::size_t first = std::size_t(row) * std::size_t(width);
-    parallel_for(batch.pixels.size(), 0, 4096, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        sums[3 * (first + i)] += gpu::red_sum(batch.pixels[i]);
-        sums[3 * (first + i) + 1] += gpu::green_sum(batch.pixels[i]);
-        sums[3 * (first + i) + 2] += gpu::blue_sum(batch.pixels[i]);
-      }
-    });
-    for (int y = row; y < row + batch.height; ++y) row_samples[std::size_t(y)] += count;
+  // Counts `count` samples more for rows [row, row + rows).
+  void add(int row, int rows, int count) {
+    for (int y = row; y < row + rows; ++y) row_samples[std::size_t(y)] += count;
     samples = *std::min_element(row_samples.begin(), row_samples.end());
   }
 };
-
-// Rows [first, last) of the running mean as 8-bit RGB (for screenshots) and RGBA (for the
-// window), by encode_sum: the device's tonemap.comp encodes rtvk render's images bit for bit the
-// same way. Only rows that changed are encoded again.
-void encode(const accumulation& acc, const byte_thresholds& t, int first, int last, image_rgb8& rgb,
-            std::vector<std::uint32_t>& rgba) {
-  const std::size_t pixels = std::size_t(acc.width) * std::size_t(acc.height);
-  rgb.width = acc.width;
-  rgb.height = acc.height;
-  rgb.rgb.resize(pixels * 3);
-  rgba.resize(pixels);
-  const std::size_t w = std::size_t(acc.width);
-  parallel_for((std::size_t(last) - std::size_t(first)) * w, 0, 4096,
-               [&](std::size_t begin, std::size_t end) {
-                 for (std::size_t k = begin; k < end; ++k) {
-                   const std::size_t i = std::size_t(first) * w + k;
-                   const auto n = std::uint32_t(acc.row_samples[i / w]);
-                   std::uint32_t packed = 0xff000000u;
-                   for (int c = 0; c < 3; ++c) {
-                     const std::uint8_t byte = encode_sum(acc.sums[3 * i + c], n, t);
-                     rgb.rgb[3 * i + c] = byte;
-                     packed |= std::uint32_t(byte) << (8 * c);
-                   }
-                   rgba[i] = packed;
-                 }
-               });
-}
 
 // A batch is `count` samples of a band of rows. Both adapt so that a batch takes about 60 ms,
 // keeping the window above 10 frames a second on slow devices (lavapipe: bands of the image)
@@ -122,6 +85,16 @@ std::string xyz(const vec3& v) {
   return buf;
 }
 
+// The largest image of the window's aspect (at most its size) whose sums fit one of the
+// device's storage buffers: the accumulation keeps the whole image's on the device.
+void fit_accumulation(const gpu::gpu_engine& engine, int& width, int& height) {
+  const double aspect = double(width) / double(height);
+  while (width > 1 && !engine.accumulation_fits(width, height)) {
+    width = std::max(1, width * 9 / 10);
+    height = std::max(1, int(width / aspect));
+  }
+}
+
 gpu::unique_semaphore make_semaphore(VkDevice device) {
   VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
   VkSemaphore sem = VK_NULL_HANDLE;
@@ -140,9 +113,9 @@ class session {
         win_(windowing_, start_width(), start_height(), "rtvk view: " + s.name),
         ctx_(gpu_options()),
         engine_(ctx_, s, counting(options.render)),
-        thresholds_(make_byte_thresholds(s.render.gamma, engine_.sum_exponent())),
         chain_(ctx_, start_width(), start_height()),
-        acquired_(make_semaphore(ctx_.vk())),
+        frames_in_flight_{frame_slot{make_semaphore(ctx_.vk())},
+                          frame_slot{make_semaphore(ctx_.vk())}},
         rs_(s.render),
         pose_(pose) {}
 
@@ -165,14 +138,13 @@ class session {
     g.make_surface = [this](VkInstance instance) { return win_.create_surface(instance); };
     return g;
   }
-  viewer_result state() const;
+  viewer_result state();
   void apply(const window_input& in);
   void apply_key(int key);
   void focus_at(double x, double y);
   void restart() { restart_ = true; }
   bool fit_to_window(int fb_w, int fb_h);
   void render_batch();
-  void refresh_overlay();
   void show(int fb_w, int fb_h);
   std::vector<std::string> overlay_lines() const;
 
@@ -183,16 +155,19 @@ class session {
   window win_;
   gpu::gpu_context ctx_;  // with the window's surface
   gpu::gpu_engine engine_;
-  byte_thresholds thresholds_;
   swapchain chain_;
-  gpu::unique_semaphore acquired_;    // signalled when a swapchain image may be written
+  // Two frames in flight: each has the semaphore its swapchain image's acquisition signals, and
+  // the submission that waited on it (done before the semaphore is used again).
+  struct frame_slot {
+    gpu::unique_semaphore acquired;  // signalled when a swapchain image may be written
+    std::uint64_t ticket = 0;        // the submission that waits on it; 0: none yet
+  };
+  std::array<frame_slot, 2> frames_in_flight_;
   std::unique_ptr<presenter> shown_;  // the render's size
   std::unique_ptr<bvh_world> world_;  // on the CPU, made at the first focus click
   render_settings rs_;                // size and aspect as rendered now
   camera_pose pose_;                  // as moved by the controls
   accumulation acc_;
-  image_rgb8 rgb_;
-  std::vector<std::uint32_t> rgba_;
   batch_shape batch_;             // the next batch
   int pass_count_ = 0;            // samples per pixel of the pass under way
   int next_row_ = 0;              // where the pass's next band starts
@@ -202,7 +177,6 @@ class session {
   bool overlay_ = true;           // H hides it
   bool overlay_changed_ = false;  // shown or hidden, or what it says changed, since last drawn
   int title_samples_ = -1;        // samples the title shows
-  int overlay_rows_ = 0;          // rows the overlay was last drawn over
   int frames_ = 0;                // shown so far
   long long pixel_samples_ = 0;   // traced so far
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
@@ -230,14 +204,14 @@ std::vector<std::string> session::overlay_lines() const {
       "fov: + -   aperture: [ ]   focus: F+click   P C Space R K O H"};
 }
 
-viewer_result session::state() const {
+viewer_result session::state() {
   viewer_result r;
   r.pose = pose_;
   r.width = acc_.width;
   r.height = acc_.height;
   r.aspect = rs_.aspect;
   r.samples = acc_.samples;
-  r.image = rgb_;
+  if (acc_.samples > 0) r.image = engine_.read_accumulation(acc_.width, acc_.height);
   r.frames = frames_;
   r.seconds = seconds_since(started_);
   r.pixel_samples = pixel_samples_;
@@ -356,9 +330,11 @@ void session::focus_at(double x, double y) {
 // Follows the window's size when the render does; true when the render's size changed.
 bool session::fit_to_window(int fb_w, int fb_h) {
   if (!options_.size_follows_window) return false;
-  if (fb_w == rs_.width && std::abs(rs_.aspect - double(fb_w) / fb_h) < 1e-12 && acc_.width > 0)
+  int w = fb_w, h = fb_h;
+  fit_accumulation(engine_, w, h);
+  if (w == rs_.width && std::abs(rs_.aspect - double(fb_w) / fb_h) < 1e-12 && acc_.width > 0)
     return false;
-  rs_.width = fb_w;
+  rs_.width = w;
   rs_.aspect = double(fb_w) / double(fb_h);
   return true;
 }
@@ -373,42 +349,36 @@ void session::render_batch() {
   const render_window window{0,    next_row_,    acc_.width,
                              rows, acc_.samples, acc_.samples + pass_count_};
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<gpu::sum_image> sums = engine_.render_sums({cam}, rs_, window);
+  render_stats stats;
+  engine_.accumulate(cam, rs_, window, &stats);
   const double seconds = std::max(seconds_since(start), 1e-9);
-  const int row = next_row_;
-  acc_.add(sums.front(), row, pass_count_);
+  acc_.add(next_row_, rows, pass_count_);
   next_row_ = next_row_ + rows >= acc_.height ? 0 : next_row_ + rows;
   const double traced = double(acc_.width) * rows * pass_count_;
   pixel_samples_ += (long long)traced;
-  std::uint64_t rays = 0;
-  for (const gpu::pixel_sum& p : sums.front().pixels) rays += p.rays;
   samples_per_second_ = traced / seconds;
-  rays_per_second_ = double(rays) / seconds;
+  rays_per_second_ = double(stats.rays) / seconds;
   batch_.adapt(seconds, acc_.height);
-  encode(acc_, thresholds_, row, row + rows, rgb_, rgba_);
-  refresh_overlay();
 }
 
-// The rows the last overlay covered are encoded again from the sums, and the overlay drawn over
-// them (or not, when H hid it); then the image goes to the presenter.
-void session::refresh_overlay() {
-  encode(acc_, thresholds_, 0, std::min(overlay_rows_, acc_.height), rgb_, rgba_);
-  overlay_rows_ = overlay_ ? draw_overlay(rgba_, acc_.width, acc_.height, overlay_lines()) : 0;
-  shown_->write(rgba_.data());
-  overlay_changed_ = false;
-}
-
+// The accumulated image, with the overlay over it unless H hid it, into the next swapchain
+// image. The frame is not waited for: the host goes on to the next batch while it is drawn and
+// presented, and waits only before its acquisition semaphore is used again, two frames later.
 void session::show(int fb_w, int fb_h) {
+  frame_slot& slot = frames_in_flight_[std::size_t(frames_) % frames_in_flight_.size()];
+  if (slot.ticket != 0) ctx_.wait(slot.ticket);
   std::uint32_t index = 0;
-  if (!chain_.acquire(acquired_.get(), index)) {
+  if (!chain_.acquire(slot.acquired.get(), index)) {
     chain_.recreate(fb_w, fb_h);
     return;
   }
-  const std::uint64_t ticket =
-      ctx_.submit([&](VkCommandBuffer cb) { shown_->record(cb, chain_, index); },
-                  gpu::submit_sync{acquired_.get(), VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                   chain_.ready_to_present(index)});
-  ctx_.wait(ticket);
+  shown_->show_from(engine_.accumulated_bytes());
+  const overlay_mask overlay =
+      overlay_ ? draw_overlay(acc_.width, acc_.height, overlay_lines()) : overlay_mask{};
+  overlay_changed_ = false;
+  slot.ticket = ctx_.submit([&](VkCommandBuffer cb) { shown_->record(cb, overlay, chain_, index); },
+                            gpu::submit_sync{slot.acquired.get(), VK_PIPELINE_STAGE_TRANSFER_BIT,
+                                             chain_.ready_to_present(index)});
   if (!chain_.present(index)) chain_.recreate(fb_w, fb_h);
   ++frames_;
   const double since = seconds_since(last_frame_);
@@ -430,9 +400,9 @@ viewer_result session::run() {
     if (restart_) {
       const camera sized(pose_, rs_.aspect, rs_.width);
       if (sized.image_width() != acc_.width || sized.image_height() != acc_.height) {
-        rgba_.assign(std::size_t(sized.image_width()) * std::size_t(sized.image_height()),
-                     0xff000000u);  // black until the first pass reaches each row
-        rgb_ = image_rgb8{};
+        ctx_.wait_all();  // the frames in flight show the old bytes
+        // Black until the first pass reaches each row.
+        engine_.reset_accumulation(sized.image_width(), sized.image_height());
       }  // else the last view stays until the new one's rows replace it
       acc_.reset(sized.image_width(), sized.image_height());
       if (!shown_ || shown_->width() != acc_.width || shown_->height() != acc_.height)
@@ -445,15 +415,13 @@ viewer_result session::run() {
       restart_ = false;
     }
     const bool want_more = options_.target_spp == 0 || acc_.samples < options_.target_spp;
-    if (want_more && !paused_)
-      render_batch();
-    else if (overlay_changed_ && acc_.samples > 0)  // idle: nothing else would draw it
-      refresh_overlay();
+    if (want_more && !paused_) render_batch();
+
     if (acc_.samples != title_samples_) {  // how far it is, shown or not (the tests read it)
       title_samples_ = acc_.samples;
       win_.set_title("rtvk view: " + s_.name + " - " + std::to_string(acc_.samples) + " spp");
     }
-    if (!rgba_.empty()) show(fb_w, fb_h);
+    if (shown_) show(fb_w, fb_h);
     if (!want_more && options_.exit_at_target) break;
     if (!want_more || paused_) win_.wait();  // idle until something happens
   }

@@ -138,6 +138,8 @@ struct render_push {
   float sum_scale;     // 2^F: a sample's channel c adds floor(c * sum_scale) (sample_sum.h)
   float sample_limit;  // largest channel value a sample may add (sum_sample_limit); past it the
                        // sample overflows and the render fails
+  uint sums_row0;      // rows of the sums buffer before this band's first (0, or band_y0 when
+                       // the buffer holds the whole image: the viewer's accumulation)
 };
 
 // std430 array element: one pixel's exact running sums, 48 bytes. Each channel is a 96-bit
@@ -156,6 +158,7 @@ struct pixel_sum {
 
 // Push constants of tonemap.comp (std430).
 struct tonemap_push {
+  uint first;            // the first pixel_sum entry to encode (and RGBA8 entry to write)
   uint pixels;           // pixel_sum entries to encode
   uint row_invocations;  // invocations in x of the whole dispatch (a tile's gl_NumWorkGroups is
                          // less)
@@ -167,7 +170,21 @@ struct render_status {
   uint unfinished_pixels;   // invocations that stopped short of sample_target (counted per pass)
   uint starved_budget;      // the largest loop_budget under which some invocation starved
   uint overflowed_samples;  // samples with a channel past sample_limit (the render fails)
+  uint rays_low;            // rays traced for the samples added (when counted), low word
+  uint rays_high;           // and high word
 };
+
+// Push constants of overlay.comp (std430): the viewer's overlay, a band at the top left of the
+// image darkened, with white text where the mask's bits are set.
+struct overlay_push {
+  uint width;        // band's columns
+  uint height;       // band's rows
+  uint image_width;  // columns of the RGBA8 image under it
+  uint mask_words;   // 32-bit words of the mask per band row
+};
+
+#define RTVK_BINDING_OVERLAY_MASK 11  // storage buffer: uint[], overlay.comp's text, a bit a pixel
+#define RTVK_BINDING_OVERLAY 12       // storage buffer: uint[], overlay.comp's RGBA8 band
 
 // std430, read and written by probe.comp: the host fills uv, the shader fills the rest.
 struct probe_io {
@@ -289,7 +306,8 @@ static_assert(offsetof(render_push, region_width) == 56);
 static_assert(offsetof(render_push, sample_target) == 60);
 static_assert(offsetof(render_push, sum_scale) == 64);
 static_assert(offsetof(render_push, sample_limit) == 68);
-static_assert(sizeof(render_push) == 72 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, sums_row0) == 72);
+static_assert(sizeof(render_push) == 76 && sizeof(render_push) <= 128);
 static_assert(offsetof(pixel_sum, r) == 0);
 static_assert(offsetof(pixel_sum, g) == 8);
 static_assert(offsetof(pixel_sum, b) == 16);
@@ -297,8 +315,11 @@ static_assert(offsetof(pixel_sum, samples) == 24);
 static_assert(offsetof(pixel_sum, rays) == 28);
 static_assert(offsetof(pixel_sum, g_top) == 36);
 static_assert(offsetof(pixel_sum, b_top) == 40);
-static_assert(offsetof(tonemap_push, row_invocations) == 4);
-static_assert(sizeof(tonemap_push) == 8);
+static_assert(offsetof(tonemap_push, pixels) == 4);
+static_assert(offsetof(tonemap_push, row_invocations) == 8);
+static_assert(sizeof(tonemap_push) == 12);
+static_assert(offsetof(overlay_push, mask_words) == 12);
+static_assert(sizeof(overlay_push) == 16);
 static_assert(offsetof(render_status, unfinished_pixels) == 4);
 static_assert(offsetof(render_status, starved_budget) == 8);
 static_assert(offsetof(render_status, overflowed_samples) == 12);
@@ -309,7 +330,8 @@ static_assert(offsetof(bvh_node, z) == 32);
 static_assert(offsetof(bvh_node, first) == 48);
 static_assert(offsetof(bvh_node, count) == 56);
 static_assert(sizeof(bvh_node) == 64);
-static_assert(sizeof(render_status) == 16);
+static_assert(offsetof(render_status, rays_high) == 20);
+static_assert(sizeof(render_status) == 24);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
 static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);
 static_assert(sizeof(probe_io) == 48 * RTVK_PROBE_POINTS);

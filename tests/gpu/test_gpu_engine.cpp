@@ -55,6 +55,39 @@ TEST_F(GpuEngine, OneSetUpServesEveryRenderOfARunAsFreshSetUpsWould) {
   EXPECT_FALSE(test::same_pixels(a[0], b[0]));
 }
 
+// The viewer's accumulation stays on the device: passes of samples over bands of rows, in any
+// split, added to sums the engine keeps (no readback, no clear between calls) and encoded there,
+// give the bytes one render of all the samples encodes; a pass from sample 0 starts its rows
+// afresh (what was there before does not show); rays are counted on the device.
+TEST_F(GpuEngine, AnImageAccumulatedOnTheDeviceIsTheEncodedRendersBytes) {
+  const scene s = test::small_scene("book-final", 64, 6);
+  const camera cam = test::scene_camera(s);
+  const int w = cam.image_width(), h = cam.image_height();
+  gpu::gpu_engine engine(gpu(), s, {.engine = {.count_rays = true}});
+  const image_rgb8 want = engine.render_encoded({cam}, s.render, whole_render(w, h, 6))[0];
+  engine.reset_accumulation(w, h);
+  for (const std::uint8_t v : engine.read_accumulation(w, h).rgb) ASSERT_EQ(v, 0) << "not black";
+  // Something else first, from another camera: the passes from sample 0 replace it.
+  camera_pose aside = main_camera(s).pose;
+  aside.lookfrom = point3(0, 10, 1);
+  engine.accumulate(camera(aside, s.render.aspect, w), s.render, {0, 0, w, h, 0, 2});
+  struct pass {
+    int from, to;           // samples
+    std::vector<int> rows;  // band boundaries
+  };
+  render_stats stats;
+  std::uint64_t rays = 0;
+  for (const pass& p : {pass{0, 1, {0, 10, h}}, pass{1, 3, {0, h}}, pass{3, 6, {0, 7, 8, 30, h}}})
+    for (std::size_t k = 0; k + 1 < p.rows.size(); ++k) {
+      engine.accumulate(cam, s.render, {0, p.rows[k], w, p.rows[k + 1] - p.rows[k], p.from, p.to},
+                        &stats);
+      rays += stats.rays;
+    }
+  const image_rgb8 got = engine.read_accumulation(w, h);
+  EXPECT_TRUE(got.rgb == want.rgb) << "max difference " << compare_images(got, want, 0).max_abs;
+  EXPECT_GE(rays, std::uint64_t(w) * h * 6) << "every sample traces a ray at least";
+}
+
 TEST_F(GpuEngine, DeviceTimeIsMeasuredWithinTheRendersOwnTime) {
   const scene s = test::small_scene("materials", 64, 4);
   const camera cam = test::scene_camera(s);

@@ -76,21 +76,27 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
          RTVK_MEMBER(render_push, loop_budget), RTVK_MEMBER(render_push, band_y0),
          RTVK_MEMBER(render_push, band_rows), RTVK_MEMBER(render_push, region_x0),
          RTVK_MEMBER(render_push, region_width), RTVK_MEMBER(render_push, sample_target),
-         RTVK_MEMBER(render_push, sum_scale), RTVK_MEMBER(render_push, sample_limit)}}},
+         RTVK_MEMBER(render_push, sum_scale), RTVK_MEMBER(render_push, sample_limit),
+         RTVK_MEMBER(render_push, sums_row0)}}},
       {"pixel_sum",
        {sizeof(gpu::pixel_sum),
         {RTVK_MEMBER(pixel_sum, r), RTVK_MEMBER(pixel_sum, g), RTVK_MEMBER(pixel_sum, b),
          RTVK_MEMBER(pixel_sum, samples), RTVK_MEMBER(pixel_sum, rays),
          RTVK_MEMBER(pixel_sum, r_top), RTVK_MEMBER(pixel_sum, g_top),
          RTVK_MEMBER(pixel_sum, b_top), RTVK_MEMBER(pixel_sum, pad)}}},
+      {"overlay_push",
+       {sizeof(gpu::overlay_push),
+        {RTVK_MEMBER(overlay_push, width), RTVK_MEMBER(overlay_push, height),
+         RTVK_MEMBER(overlay_push, image_width), RTVK_MEMBER(overlay_push, mask_words)}}},
       {"tonemap_push",
        {sizeof(gpu::tonemap_push),
-        {RTVK_MEMBER(tonemap_push, pixels), RTVK_MEMBER(tonemap_push, row_invocations)}}},
+        {RTVK_MEMBER(tonemap_push, first), RTVK_MEMBER(tonemap_push, pixels),
+         RTVK_MEMBER(tonemap_push, row_invocations)}}},
       {"render_status",
        {sizeof(gpu::render_status),
         {RTVK_MEMBER(render_status, starved_pixels), RTVK_MEMBER(render_status, unfinished_pixels),
-         RTVK_MEMBER(render_status, starved_budget),
-         RTVK_MEMBER(render_status, overflowed_samples)}}},
+         RTVK_MEMBER(render_status, starved_budget), RTVK_MEMBER(render_status, overflowed_samples),
+         RTVK_MEMBER(render_status, rays_low), RTVK_MEMBER(render_status, rays_high)}}},
       {"probe_io",
        {sizeof(gpu::probe_io),
         {RTVK_MEMBER(probe_io, uv), RTVK_MEMBER(probe_io, direction),
@@ -260,6 +266,7 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
   const std::vector<std::pair<std::string, std::span<const std::uint32_t>>> shaders = {
       {"render.comp", gpu::render_shader()},
       {"tonemap.comp", gpu::tonemap_shader()},
+      {"overlay.comp", gpu::overlay_shader()},
       {"probe.comp", gpu::probe_shader()},
       {"rng_probe.comp", gpu::rng_probe_shader()},
       {"hit_probe.comp", gpu::hit_probe_shader()},
@@ -315,12 +322,12 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
     }
   }
   // Coverage cannot shrink unnoticed: every shared struct is checked in some shader, and the
-  // push constants (render.comp's, tonemap.comp's and world_probe.comp's) are among the blocks
-  // walked.
+  // push constants (render.comp's, tonemap.comp's, overlay.comp's and world_probe.comp's) are
+  // among the blocks walked.
   for (const auto& [name, layout] : cpp_layouts())
     EXPECT_GT(checked[name], 0) << name << " was found in no shader's buffers or push constants";
   EXPECT_GE(blocks, 15) << "uniform, storage and push-constant blocks walked";
-  EXPECT_EQ(push_blocks, 3) << "push-constant blocks walked";
+  EXPECT_EQ(push_blocks, 4) << "push-constant blocks walked";
 }
 
 // --- The camera on the GPU ---------------------------------------------------------------------

@@ -423,6 +423,22 @@ TEST_F(XvfbTest, HHidesTheOverlayAndTheWindowThenShowsTheScreenshotsPixels) {
   EXPECT_EQ(differing_bytes(without, shot, 0, 133), 0) << "with H the window shows the image";
   EXPECT_GT(differing_bytes(with_overlay, shot, 0, 20), 500) << "the overlay's first lines";
   EXPECT_EQ(differing_bytes(with_overlay, shot, 120, 133), 0) << "below the overlay: the image";
+  // In the overlay's band (composed on the device, overlay.comp) a pixel is white text or the
+  // image darkened to a quarter, nothing else.
+  int text = 0, darkened = 0, other = 0;
+  for (std::size_t i = 0; i < std::size_t(200 * 20 * 3); i += 3) {
+    const std::uint8_t* p = &with_overlay.rgb[i];
+    const std::uint8_t* q = &shot.rgb[i];
+    if (p[0] == 255 && p[1] == 255 && p[2] == 255)
+      ++text;
+    else if (p[0] == q[0] >> 2 && p[1] == q[1] >> 2 && p[2] == q[2] >> 2)
+      ++darkened;
+    else
+      ++other;
+  }
+  EXPECT_GT(text, 200);
+  EXPECT_GT(darkened, 2000);
+  EXPECT_EQ(other, 0);
 }
 
 // F + click: the distance in focus becomes that of the surface under the cursor along the view

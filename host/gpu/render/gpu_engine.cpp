@@ -153,13 +153,13 @@ std::vector<buffer_binding> tonemap_bindings(const render_targets& t) {
 
 // tonemap.comp over `pixels` sums: 64 a workgroup, in rows of workgroups within the device's
 // workgroup count limit (and tiles of those rows, by compute_pipeline::dispatch).
-void record_tonemap(VkCommandBuffer cb, const compute_pipeline& tonemap, VkDeviceSize pixels,
-                    const device_info& dev) {
+void record_tonemap(VkCommandBuffer cb, const compute_pipeline& tonemap, VkDeviceSize first,
+                    VkDeviceSize pixels, const device_info& dev) {
   const VkDeviceSize groups = (pixels + 63) / 64;
   if (groups == 0) return;
   const VkDeviceSize row = std::min<VkDeviceSize>(groups, dev.limits.maxComputeWorkGroupCount[0]);
   tonemap.bind(cb);
-  const tonemap_push tp{std::uint32_t(pixels), std::uint32_t(row * 64)};
+  const tonemap_push tp{std::uint32_t(first), std::uint32_t(pixels), std::uint32_t(row * 64)};
   tonemap.push(cb, &tp, sizeof tp);
   tonemap.dispatch(cb, {std::uint32_t(row), std::uint32_t((groups + row - 1) / row), 1});
 }
@@ -204,12 +204,21 @@ struct in_flight {
 // milliseconds of device time. Pixels whose loop budget ran out go on in the next dispatch; once
 // the last target is asked for, the renderer waits, and submits again until no pixel is unfinished.
 // The last submission of a band ends with its readback (sums, or bytes encoded by
-// tonemap_pipeline).
+// tonemap_pipeline). A band `kept` on the device (the viewer's accumulation) goes on from the
+// sums the image's buffer holds for its rows (every pixel at `target_base` samples; cleared
+// first when that is 0), and ends with those rows encoded into the image's bytes, not read back.
 class band_renderer {
  public:
   band_renderer(const engine_parts& engine, const compute_pipeline& pipeline,
-                const compute_pipeline* tonemap, const render_push& push, const render_window& win)
-      : e_(engine), pipeline_(pipeline), tonemap_(tonemap), push_(push), win_(win) {}
+                const compute_pipeline* tonemap, const render_push& push, const render_window& win,
+                bool kept)
+      : e_(engine),
+        pipeline_(pipeline),
+        tonemap_(tonemap),
+        push_(push),
+        win_(win),
+        kept_(kept),
+        target_base_(kept ? std::uint32_t(win.sample_begin) : 0) {}
 
   // The cameras of the views the next bands draw (written into the command stream).
   void set_views(const std::vector<camera>& views, std::size_t first, std::uint32_t count) {
@@ -221,6 +230,7 @@ class band_renderer {
   void draw(const band_pass& b, const sample_progress& progress, render_stats* stats) {
     push_.band_y0 = b.y0;
     push_.band_rows = b.rows;
+    push_.sums_row0 = kept_ ? b.y0 : 0;
     const std::uint32_t samples = std::uint32_t(win_.samples());
     std::deque<in_flight> pending;
     std::uint32_t target = 0;        // asked of every pixel so far
@@ -322,7 +332,13 @@ class band_renderer {
     // Cleared for every band: a starved count is the band's to act on (the budget it raised
     // carries over in the pacer).
     vkCmdFillBuffer(cb, e_.targets.status.get(), 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cb, e_.targets.sums.get(), 0, VK_WHOLE_SIZE, 0);
+    if (!kept_) {
+      vkCmdFillBuffer(cb, e_.targets.sums.get(), 0, VK_WHOLE_SIZE, 0);
+    } else if (target_base_ == 0) {  // the band's rows of the image start afresh
+      const VkDeviceSize row_bytes = VkDeviceSize(win_.width) * sizeof(pixel_sum);
+      vkCmdFillBuffer(cb, e_.targets.sums.get(), push_.band_y0 * row_bytes,
+                      push_.band_rows * row_bytes, 0);
+    }
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage,
             shader_rw | VK_ACCESS_UNIFORM_READ_BIT);
   }
@@ -333,10 +349,16 @@ class band_renderer {
     const VkDeviceSize pixels = VkDeviceSize(win_.width) * b.pixels();
     barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage | transfer_stage,
             VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+    if (kept_) {  // encoded into the image's bytes, which stay for the viewer to show
+      record_tonemap(cb, *tonemap_, VkDeviceSize(win_.width) * b.y0, pixels, e_.ctx.device());
+      barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, compute_stage | transfer_stage,
+              VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+      return;
+    }
     VkBufferCopy copy{0, 0, pixels * sizeof(pixel_sum)};
     VkBuffer from = e_.targets.sums.get();
     if (tonemap_) {
-      record_tonemap(cb, *tonemap_, pixels, e_.ctx.device());
+      record_tonemap(cb, *tonemap_, 0, pixels, e_.ctx.device());
       barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
               VK_ACCESS_TRANSFER_READ_BIT);
       copy.size = pixels * 4;
@@ -379,7 +401,7 @@ class band_renderer {
         barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
       }
       pipeline_.bind(cb);
-      push_.sample_target = t;
+      push_.sample_target = target_base_ + t;
       pipeline_.push(cb, &push_, sizeof push_);
       dispatches += pipeline_.dispatch(cb, {(push_.region_width + e_.wg[0] - 1) / e_.wg[0],
                                             (push_.band_rows + e_.wg[1] - 1) / e_.wg[1], b.views});
@@ -404,6 +426,8 @@ class band_renderer {
   render_push push_;                 // band and target fields change per dispatch
   const render_window& win_;         // region and sample range of every view
   std::vector<camera_ubo> cameras_;  // of the views the bands draw (set_views)
+  bool kept_;                        // the image's sums stay on the device (the viewer's)
+  std::uint32_t target_base_;        // samples the kept sums already hold; 0 otherwise
 };
 
 // Runs body(row) for rows [0, rows) on every core: readback conversion should not leave all but
@@ -530,7 +554,7 @@ std::vector<std::uint32_t> gpu_engine::encode_sums(const std::vector<pixel_sum>&
     const VkBufferCopy in{0, 0, bytes};
     vkCmdCopyBuffer(cb, staging.get(), t.sums.get(), 1, &in);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
-    record_tonemap(cb, tonemap, sums.size(), ctx_.device());
+    record_tonemap(cb, tonemap, 0, sums.size(), ctx_.device());
     barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
             VK_ACCESS_TRANSFER_READ_BIT);
     const VkBufferCopy out{0, 0, sums.size() * 4};
@@ -548,25 +572,32 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
                       render_stats* stats, const band_sink& sink) {
   check_views(views, win);
   const device_info& dev = ctx_.device();
-  const work_layout layout = plan_work(dev, options_, win, views.size());
+  const bool kept = kind == readback_kind::kept;
+  // Kept: the whole image's sums in one buffer, bands of any rows (accumulate checked the fit).
+  const work_layout layout = kept ? work_layout{1, std::uint32_t(win.height)}
+                                  : plan_work(dev, options_, win, views.size());
   render_targets& targets =
-      targets_for(VkDeviceSize(win.width) * layout.band_rows * layout.views_per_group);
+      kept ? targets_for(VkDeviceSize(win.width) * VkDeviceSize(views[0].image_height()))
+           : targets_for(VkDeviceSize(win.width) * layout.band_rows * layout.views_per_group);
   // One 32-bit counter per pixel: it holds at most spp * max_depth rays. Read back with the sums
-  // only (an encoded render reads back bytes).
-  const bool count_rays = options_.engine.count_rays && kind == readback_kind::sums &&
-                          std::uint64_t(win.samples()) * std::uint64_t(rs.max_depth) < (1ull << 32);
+  // only (an encoded render reads back bytes); a kept render counts them in the status block.
+  const bool count_rays =
+      options_.engine.count_rays &&
+      (kept || (kind == readback_kind::sums &&
+                std::uint64_t(win.samples()) * std::uint64_t(rs.max_depth) < (1ull << 32)));
   const compute_pipeline* tonemap = nullptr;
-  if (kind == readback_kind::bytes) {
+  if (kind != readback_kind::sums) {
     tonemap = &tonemap_pipeline();
     write_thresholds(rs.gamma);
   }
+  render_push push = make_push(sky_, rs, win, scene_.sphere_count(), exponent_);
+  if (kept) push.sample_begin = 0;  // a kept pixel's count of samples is its next sample's index
   // The BVH's build is the first render's: later ones reuse it.
   if (stats) *stats = render_stats{.build_seconds = drawn_ ? 0.0 : build_seconds()};
   const bool lens =
       std::any_of(views.begin(), views.end(), [](const camera& c) { return c.lens_radius() > 0; });
   band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, pacer_},
-                      pipeline_for(rs.jitter, lens, count_rays), tonemap,
-                      make_push(sky_, rs, win, scene_.sphere_count(), exponent_), win);
+                      pipeline_for(rs.jitter, lens, count_rays), tonemap, push, win, kept);
 
   // Bands as large as memory allows (layout) and the pacer's work allows now: a dispatch's work
   // is bounded by its pixels times its loop budget, so the first bands of a render on a device
@@ -592,6 +623,14 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
         ctx_.wait_all();  // the other submission in flight still uses the targets
         throw;
       }
+      b.view_rows_before += b.pixels();
+      if (kept) {
+        if (stats && count_rays) {
+          const auto& st = *static_cast<const render_status*>(targets.status_readback.read());
+          stats->rays += std::uint64_t(st.rays_high) << 32 | st.rays_low;
+        }
+        continue;
+      }
       const void* data = targets.readback.read();
       if (stats && count_rays) {
         const auto* sums = static_cast<const pixel_sum*>(data);
@@ -599,9 +638,61 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
         for (std::size_t i = 0; i < n; ++i) stats->rays += sums[i].rays;
       }
       sink(b.first_view, b.views, int(b.y0) - win.y, int(b.rows), data);
-      b.view_rows_before += b.pixels();
     }
   }
+}
+
+bool gpu_engine::accumulation_fits(int width, int height) const {
+  return VkDeviceSize(width) * VkDeviceSize(height) * sizeof(pixel_sum) <=
+         ctx_.device().limits.maxStorageBufferRange;
+}
+
+void gpu_engine::reset_accumulation(int width, int height) {
+  if (!accumulation_fits(width, height))
+    throw usage_error("a " + std::to_string(width) + "x" + std::to_string(height) +
+                      " accumulation needs " +
+                      format_bytes(VkDeviceSize(width) * VkDeviceSize(height) * sizeof(pixel_sum)) +
+                      " of sums in one storage buffer; device '" + ctx_.device().name +
+                      "' allows " + format_bytes(ctx_.device().limits.maxStorageBufferRange));
+  const render_targets& t = targets_for(VkDeviceSize(width) * VkDeviceSize(height));
+  ctx_.submit_and_wait([&](VkCommandBuffer cb) {
+    if (drawn_)
+      barrier(cb, compute_stage | transfer_stage, shader_rw | VK_ACCESS_TRANSFER_READ_BIT,
+              transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdFillBuffer(cb, t.bytes.get(), 0, VkDeviceSize(width) * VkDeviceSize(height) * 4,
+                    0xff000000u);
+    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage | transfer_stage,
+            shader_rw | VK_ACCESS_TRANSFER_READ_BIT);
+  });
+}
+
+void gpu_engine::accumulate(const camera& cam, const render_settings& rs, const render_window& win,
+                            render_stats* stats) {
+  if (win.x != 0 || win.width != cam.image_width())
+    throw std::invalid_argument("accumulate: the window must span the image's width");
+  if (!accumulation_fits(cam.image_width(), cam.image_height()) ||
+      targets_->pixels < VkDeviceSize(cam.image_width()) * VkDeviceSize(cam.image_height()))
+    reset_accumulation(cam.image_width(), cam.image_height());  // throws when it cannot fit
+  draw({cam}, rs, win, readback_kind::kept, {}, stats, {});
+}
+
+image_rgb8 gpu_engine::read_accumulation(int width, int height) {
+  const VkDeviceSize pixels = VkDeviceSize(width) * VkDeviceSize(height);
+  if (targets_->pixels < pixels) throw std::invalid_argument("read_accumulation: no such image");
+  ctx_.submit_and_wait([&](VkCommandBuffer cb) {
+    barrier(cb, compute_stage | transfer_stage,
+            VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, transfer_stage,
+            VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+    const VkBufferCopy copy{0, 0, pixels * 4};
+    vkCmdCopyBuffer(cb, targets_->bytes.get(), targets_->readback.get(), 1, &copy);
+    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+            VK_ACCESS_HOST_READ_BIT);
+  });
+  const auto* rgba = static_cast<const std::uint8_t*>(targets_->readback.read());
+  image_rgb8 out{width, height, std::vector<std::uint8_t>(std::size_t(pixels) * 3)};
+  for (std::size_t i = 0; i < std::size_t(pixels); ++i)
+    std::copy(rgba + 4 * i, rgba + 4 * i + 3, out.rgb.begin() + std::ptrdiff_t(3 * i));
+  return out;
 }
 
 std::vector<framebuffer> gpu_engine::render_views(const std::vector<camera>& views,

@@ -81,6 +81,27 @@ class gpu_engine {
                                      const render_window& win, const sample_progress& progress = {},
                                      render_stats* stats = nullptr);
 
+  // The viewer's accumulation, kept on the device: adds samples [win.sample_begin,
+  // win.sample_end) of `cam` to rows [win.y, win.y + win.height) of the image, whose sums stay in
+  // the engine between calls (no readback, no clear; a call from sample 0 starts its rows afresh,
+  // and every pixel of the rows must hold exactly win.sample_begin samples), then encodes those
+  // rows with rs.gamma into accumulated_bytes(). The window spans the image's width. The bytes
+  // are bit for bit render_encoded's for the same samples, however the calls split them.
+  // Throws usage_error when the image's sums do not fit one storage buffer (see
+  // accumulation_fits).
+  void accumulate(const camera& cam, const render_settings& rs, const render_window& win,
+                  render_stats* stats = nullptr);
+  // Whether a width x height image's sums fit one of the device's storage buffers.
+  bool accumulation_fits(int width, int height) const;
+  // Makes room for a width x height accumulation and sets its bytes to opaque black (a new
+  // size); then accumulated_bytes() holds them. Nothing may be in flight.
+  void reset_accumulation(int width, int height);
+  // The accumulation's RGBA8 bytes (red in the low byte), row 0 at the top, on the device; the
+  // buffer changes with reset_accumulation.
+  VkBuffer accumulated_bytes() const { return targets_->bytes.get(); }
+  // Those bytes copied back, as RGB (screenshots).
+  image_rgb8 read_accumulation(int width, int height);
+
   // tonemap.comp run on the given sums with this gamma: RGBA8 per pixel (red in the low byte).
   // For tests of the encoding at its edges, where a render's sums rarely fall.
   std::vector<std::uint32_t> encode_sums(const std::vector<pixel_sum>& sums, double gamma);
@@ -91,8 +112,9 @@ class gpu_engine {
   const pipeline_cache& cache() const { return cache_; }
 
  private:
-  // What a render reads back: each band's sums, or its bytes encoded on the device.
-  enum class readback_kind { sums, bytes };
+  // What a render reads back: each band's sums, or its bytes encoded on the device; or nothing,
+  // the sums and bytes kept on the device (accumulate).
+  enum class readback_kind { sums, bytes, kept };
   // Called for each band once its readback is in host memory: the band's first view (index into
   // the render's views), views, first row (from the window's top) and rows, and the data (for
   // each view in turn, rows x window width pixel_sum or RGBA8).

@@ -5,6 +5,7 @@
 
 #include "hit_probe_spv.h"
 #include "kernel_probe_spv.h"
+#include "overlay_spv.h"
 #include "probe_spv.h"
 #include "render_spv.h"
 #include "rng_probe_spv.h"
@@ -18,6 +19,9 @@ std::span<const std::uint32_t> render_shader() {
 }
 std::span<const std::uint32_t> tonemap_shader() {
   return tonemap_spv;
+}
+std::span<const std::uint32_t> overlay_shader() {
+  return overlay_spv;
 }
 std::span<const std::uint32_t> probe_shader() {
   return probe_spv;

@@ -7,6 +7,7 @@ namespace rtvk::gpu {
 // SPIR-V compiled from shaders/ at build time and embedded in the binary.
 std::span<const std::uint32_t> render_shader();        // render.comp
 std::span<const std::uint32_t> tonemap_shader();       // tonemap.comp
+std::span<const std::uint32_t> overlay_shader();       // overlay.comp
 std::span<const std::uint32_t> probe_shader();         // probe.comp
 std::span<const std::uint32_t> rng_probe_shader();     // rng_probe.comp
 std::span<const std::uint32_t> hit_probe_shader();     // hit_probe.comp
