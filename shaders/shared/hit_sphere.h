@@ -46,9 +46,12 @@ inline void record_hit(real3 center, real radius, uint material, ray r, real t,
   precise real3 outward_normal = divide(rec.p - center, radius);
   set_face_normal(rec, r, outward_normal);
   rec.material = material;
-  // About eight float ulps of the largest coordinate involved: covers the GPU's rounding.
+  // About eight float ulps of the largest coordinate involved -- the sphere's, and the ray's
+  // origin's, which p = origin + t * direction inherits the rounding of -- covers the GPU's
+  // rounding (ScatterOrigin.RaysLeavingASphereStartOutsideIt...).
   precise real extent = max(max(abs(center.x), abs(center.y)), abs(center.z));
-  rec.offset = (extent + radius) * real(1.0 / 1048576.0);  // 2^-20
+  precise real reach = max(max(abs(r.origin.x), abs(r.origin.y)), abs(r.origin.z));
+  rec.offset = (extent + radius + reach) * real(1.0 / 1048576.0);  // 2^-20
 }
 
 RTVK_KERNELS_END

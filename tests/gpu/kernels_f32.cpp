@@ -39,6 +39,12 @@ bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_ma
   return k::hit_sphere(center, radius, k::ray(r.origin, r.direction), t_min, t_max, t);
 }
 
+glm::vec3 scatter_origin(glm::vec3 center, float radius, ray_f r, float t, glm::vec3 leaving) {
+  k::hit_record rec;
+  k::record_hit(center, radius, 0u, k::ray(r.origin, r.direction), t, rec);
+  return k::scatter_origin(rec, leaving);
+}
+
 void run_kernel_probe(gpu::kernel_probe_entry& e) {
   k::run_kernel_probe(e);
 }

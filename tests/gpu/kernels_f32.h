@@ -25,6 +25,10 @@ ray_f get_ray(const gpu::camera_ubo& cam, float s, float t, glm::vec2 lens);
 // hit_sphere in float: true and the root in t, or false.
 bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_max, float& t);
 
+// record_hit at t, then scatter_origin for a ray leaving along `leaving`, in float: where the
+// GPU starts the next ray.
+glm::vec3 scatter_origin(glm::vec3 center, float radius, ray_f r, float t, glm::vec3 leaving);
+
 // run_kernel_probe (shaders/shared/kernel_probe.h) in float: what kernel_probe.comp computes.
 void run_kernel_probe(gpu::kernel_probe_entry& e);
 

@@ -53,14 +53,14 @@ void expect_agreement(gpu::gpu_context& ctx, scene s, int width, int spp, double
       << s.name << ": " << d.pixels_over << " pixels over 2 levels";
 }
 
-// Measured: 81.8 dB, 1 pixel over 2 levels of 22,400.
+// Measured: 80.0 dB, 1 pixel over 2 levels of 22,400.
 TEST_F(GpuBook, MaterialsSceneMatchesTheCpu) {
-  expect_agreement(gpu(), builtin_scene("materials"), 200, 32, 81.8, 4.5e-5);
+  expect_agreement(gpu(), builtin_scene("materials"), 200, 32, 80.0, 4.5e-5);
 }
 
-// Measured: 59.3 dB, 130 pixels (0.19%) over 2 levels.
+// Measured: 58.6 dB, 163 pixels (0.24%) over 2 levels.
 TEST_F(GpuBook, BookFinalMatchesTheCpu) {
-  expect_agreement(gpu(), builtin_scene("book-final"), 320, 8, 59.3, 0.0019);
+  expect_agreement(gpu(), builtin_scene("book-final"), 320, 8, 58.6, 0.0024);
 }
 
 // The flat material, written once (shaders/shared/ray_color.h), draws its albedo where it is

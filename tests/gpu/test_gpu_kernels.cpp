@@ -18,6 +18,7 @@
 #include "probe.h"
 #include "random.h"
 #include "sample_sum.h"
+#include "scene.h"
 
 namespace rtvk {
 namespace {
@@ -119,6 +120,52 @@ TEST_F(GpuKernels, AFarCameraKeepsItsRayDirections) {
     const double angle = std::acos(
         std::clamp(glm::dot(glm::normalize(got), glm::normalize(want.direction)), -1.0, 1.0));
     EXPECT_LE(angle, 1e-6) << "probe point " << k;
+  }
+}
+
+// Where the next ray starts, in float as the GPU computes it: every camera ray of book-final
+// (160x90, the book's camera 13 units from the origin) that hits a sphere, with the ray leaving
+// to the outside (a reflection), must start outside that sphere, measured in double. The offset
+// once counted the sphere's extent but not the ray's origin: 25 of 18,496 rays started up to
+// 2.8e-6 inside a small sphere with offsets of 1.9e-6 or less (a later ray could hit it again).
+TEST(ScatterOrigin, RaysLeavingASphereStartOutsideItHoweverFarTheirOriginWas) {
+  const scene s = builtin_scene("book-final");
+  for (const point3 eye : {point3(13, 2, 3), point3(130, 20, 30), point3(1300, 200, 300)}) {
+    SCOPED_TRACE("eye " + std::to_string(eye.x));
+    camera_pose pose = main_camera(s).pose;
+    pose.lookfrom = eye;
+    pose.vfov = 20 * 13 / eye.x;  // about the same framing
+    pose.aperture = 0;
+    const camera cam(pose, 16.0 / 9, 160);
+    const gpu::camera_ubo ubo = gpu::to_ubo(cam);
+    int hits = 0, inside = 0;
+    double deepest = 0;
+    for (int j = 0; j < cam.image_height(); ++j)
+      for (int i = 0; i < cam.image_width(); ++i) {
+        const f32::ray_f r = f32::get_ray(ubo, float(i) / (cam.image_width() - 1),
+                                          float(j) / (cam.image_height() - 1), glm::vec2(0));
+        float closest = 3.4e38f, t = 0;
+        const sphere* hit = nullptr;
+        for (const sphere& sp : s.spheres)
+          if (f32::hit_sphere(glm::vec3(sp.center), float(sp.radius), r, 0.001f, closest, t)) {
+            closest = t;
+            hit = &sp;
+          }
+        if (!hit) continue;
+        ++hits;
+        const glm::vec3 center(hit->center);
+        const glm::vec3 p = r.origin + closest * r.direction;
+        const glm::vec3 outward = glm::normalize(p - center);
+        const glm::vec3 leaving = outward;  // straight out: the scatter's side is the outside
+        const glm::vec3 o = f32::scatter_origin(center, float(hit->radius), r, closest, leaving);
+        const double depth = hit->radius - glm::length(glm::dvec3(o) - glm::dvec3(center));
+        if (depth >= 0) {
+          ++inside;
+          deepest = std::max(deepest, depth);
+        }
+      }
+    EXPECT_GT(hits, 5000);
+    EXPECT_EQ(inside, 0) << "deepest " << deepest;
   }
 }
 
