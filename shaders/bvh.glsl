@@ -1,10 +1,9 @@
-// The slab test of the GPU's binary tree. Where one source cannot serve: the CPU walks a
-// four-wide tree with SSE (host/cpu/bvh_world.cpp, host/accel/bvh.h), this shader walks the
-// binary tree two children a node in a flat loop; their math is alike (the same safe inverse,
-// origin margin and box widening), their order of visits is not. Both test spheres with the shared
-// hit_sphere and break ties to the later sphere, so each must find what a plain scan finds:
-// Accel.BvhAndThreadsGiveTheIdenticalCpuImage and GpuBook.BvhGivesTheIdenticalGpuImage.
-// Reads no buffers; the world's traversal is in world.glsl.
+// The slab test of the four-wide tree, which the CPU walks too (host/accel/wide_bvh.h): the CPU
+// tests a node's four boxes with SSE (host/cpu/bvh_world.cpp), this shader with four-lane
+// vectors; their math is alike (the same safe inverse, origin margin and box widening). Both test
+// spheres with the shared hit_sphere and break ties to the later sphere, so each must find what a
+// plain scan finds: Accel.BvhAndThreadsGiveTheIdenticalCpuImage and
+// GpuBook.BvhGivesTheIdenticalGpuImage. Reads no buffers; the world's traversal is in world.glsl.
 #ifndef RTVK_BVH_GLSL
 #define RTVK_BVH_GLSL
 #include "ray.h"
@@ -23,22 +22,20 @@ precise float origin_margin(vec3 o) {
   return max(max(abs(o.x), abs(o.y)), abs(o.z)) * (1.0 / 1048576.0);
 }
 
-// Mirrors child_entries in host/cpu/bvh_world.cpp (ray_box_entry in host/accel/bvh.h, for both
-// children at once): where the ray enters each child's box of n grown by `margin` -- x for the
-// left child, y for the right -- or -1 to cull. Lanes as in bvh_node: (left min, right min,
-// left max, right max).
-precise vec2 child_entries(vec3 o, vec3 inv_d, bvh_node n, float t_min, float t_max,
-                           float margin) {
-  precise vec4 grow = vec4(-margin, -margin, margin, margin);  // mins down, maxes up
-  precise vec4 tx = (n.x + grow - o.x) * inv_d.x;
-  precise vec4 ty = (n.y + grow - o.y) * inv_d.y;
-  precise vec4 tz = (n.z + grow - o.z) * inv_d.z;
-  precise vec2 near_x = min(tx.xy, tx.zw), far_x = max(tx.xy, tx.zw);
-  precise vec2 near_y = min(ty.xy, ty.zw), far_y = max(ty.xy, ty.zw);
-  precise vec2 near_z = min(tz.xy, tz.zw), far_z = max(tz.xy, tz.zw);
-  precise vec2 enter = max(max(near_x, near_y), max(near_z, vec2(t_min)));
-  precise vec2 leave = min(min(far_x, far_y), min(far_z, vec2(t_max)));
-  return vec2(enter.x <= leave.x ? enter.x : -1.0, enter.y <= leave.y ? enter.y : -1.0);
+// The four-wide node's children (host/cpu/bvh_world.cpp's child_entries, four lanes at once):
+// where the ray enters each child's box grown by `margin` (in `enter`), and a bit per child it
+// enters before t_max (within the lanes in use).
+uint wide_entries(vec3 o, vec3 inv_d, bvh_wide_node n, float t_min, float t_max, float margin,
+                  precise out vec4 enter) {
+  precise vec4 x0 = (n.lo_x - margin - o.x) * inv_d.x, x1 = (n.hi_x + margin - o.x) * inv_d.x;
+  precise vec4 y0 = (n.lo_y - margin - o.y) * inv_d.y, y1 = (n.hi_y + margin - o.y) * inv_d.y;
+  precise vec4 z0 = (n.lo_z - margin - o.z) * inv_d.z, z1 = (n.hi_z + margin - o.z) * inv_d.z;
+  enter = max(max(min(x0, x1), min(y0, y1)), max(min(z0, z1), vec4(t_min)));
+  precise vec4 leave = min(min(max(x0, x1), max(y0, y1)), min(max(z0, z1), vec4(t_max)));
+  bvec4 in_box = lessThanEqual(enter, leave);
+  uint bits = (in_box.x ? 1u : 0u) | (in_box.y ? 2u : 0u) | (in_box.z ? 4u : 0u) |
+              (in_box.w ? 8u : 0u);
+  return bits & n.lanes;
 }
 
 #endif

@@ -37,7 +37,7 @@ layout(std430, set = 0, binding = RTVK_BINDING_STATUS) buffer status_block {
   render_status status;
 };
 layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
-  bvh_node bvh_nodes[];
+  bvh_wide_node bvh_nodes[];
 };
 layout(push_constant) uniform push_block {
   render_push pc;

@@ -1,7 +1,8 @@
-// The closest hit over the world's spheres: through the binary BVH, or every sphere in turn as
-// hittable_list::hit does. The sphere math is the shared kernels' (hit_sphere.h); the traversal is
-// the GPU's own (bvh.glsl says why). Expects `spheres`
-// (gpu_sphere[]: in the BVH's leaf order with use_bvh, else in scene order), `bvh_nodes`, `pc`
+// The closest hit over the world's spheres: through the four-wide BVH the CPU walks too, or every
+// sphere in turn as hittable_list::hit does. The sphere math is the shared kernels'
+// (hit_sphere.h); the walk is the GPU's own (bvh.glsl says why). Expects `spheres`
+// (gpu_sphere[]: in the BVH's leaf order with use_bvh, else in scene order), `bvh_nodes`
+// (bvh_wide_node[]), `pc`
 // (render_push) and the specialization constant `use_bvh` declared by the including shader.
 #ifndef RTVK_WORLD_GLSL
 #define RTVK_WORLD_GLSL
@@ -33,30 +34,37 @@ bool visit_leaf(uint first, uint count, ray r, float t_min, precise inout float 
   return true;
 }
 
-// A remembered child on the stack: x its node index or first sphere slot, y its entry distance's
-// bits with the top bit, the float's sign bit (entry distances are never below 0), set for a
-// leaf, which holds RTVK_BVH_LEAF spheres.
-const uint stack_leaf = 0x80000000u;
+// Puts (key, id) pairs a and b in ascending order of key.
+void order_pair(inout float ka, inout uint ia, inout float kb, inout uint ib) {
+  if (kb < ka) {
+    float k = ka;
+    ka = kb;
+    kb = k;
+    uint i = ia;
+    ia = ib;
+    ib = i;
+  }
+}
 
-// As bvh_world::hit, with the binary tree: the nearest child first, remembered children behind the
-// closest hit dropped, ties to the later sphere (so the winner does not depend on the order of
-// visits, which differs from the CPU's four-wide walk), the record filled once for the winner. One node fetch brings both children's
-// boxes and references. The loop is flat -- each trip visits one node or leaf, or drops one
+// As bvh_world::hit, over the same four-wide tree: all four children's boxes tested at once, the
+// nearest entered child visited next and the others remembered with their entry distances,
+// remembered children behind the closest hit dropped, ties to the later sphere, the record
+// filled once for the winner. The loop is flat -- each trip visits one node or leaf, or drops one
 // remembered child that is now behind the closest hit -- so the invocations of a SIMD group
 // (lavapipe's 8 lanes, a warp) step together instead of waiting for each other in nested loops;
-// each trip counts one iteration against the loop budget, as each visit and each drop does on
-// the host's side of the mirror.
+// each trip counts one iteration against the loop budget. (It takes 15% less time on lavapipe
+// than the binary tree it replaced: docs/benchmarks.md.)
 bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inout uint iterations) {
   if (pc.sphere_count == 0u) return false;
   precise vec3 o = r.origin;
   precise vec3 inv_d = safe_inverse(r.direction);
   precise float margin = origin_margin(o);
   precise float box_min = t_min * (1.0 - 1.0 / 1048576.0);
-  uvec2 stack[RTVK_BVH_STACK];
+  uint stack_node[RTVK_WIDE_STACK];
+  float stack_entry[RTVK_WIDE_STACK];
   int top = 0;
-  uint next = 0u;           // the child to visit: node index, or first sphere slot
-  uint next_count = 0u;     // 0 for an interior node, else the leaf's spheres
-  float next_entry = 0.0;   // where the ray enters it (the root: 0, always visited)
+  uint next = 0u;          // the root
+  float next_entry = 0.0;  // where the ray enters it
   precise float closest = t_max;
   int best = -1;
   uint best_slot = 0u;
@@ -66,39 +74,48 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
     bool pop = true;
     if (next_entry > box_max) {
       // remembered before a closer hit was found: dropped unvisited
-    } else if (next_count == 0u) {
-      bvh_node n = bvh_nodes[next];
-      precise vec2 t = child_entries(o, inv_d, n, box_min, box_max, margin);
-      // Nearer first: a is the nearer child when the ray enters both.
-      uint a = t.x <= t.y ? 0u : 1u;
-      uint b = 1u - a;
-      if (t[a] >= 0.0 && t[b] >= 0.0) {
-        uint leaf = n.count[b] > 0u ? stack_leaf : 0u;  // over the sign bit of a -0 entry too
-        stack[top++] = uvec2(n.first[b], (floatBitsToUint(t[b]) & ~stack_leaf) | leaf);
-      }
-      if (t[a] >= 0.0 || t[b] >= 0.0) {
-        uint c = t[a] >= 0.0 ? a : b;
-        next = n.first[c];
-        next_count = n.count[c];
+    } else if ((next & RTVK_WIDE_LEAF) != 0u) {
+      test_sphere(next & ~RTVK_WIDE_LEAF, r, t_min, closest, best, best_slot);
+    } else {
+      bvh_wide_node n = bvh_nodes[next];
+      precise vec4 t;
+      uint entered = wide_entries(o, inv_d, n, box_min, box_max, margin, t);
+      if (entered != 0u) {
+        // The entered children in ascending order of entry (a sorting network: no branches to
+        // diverge on), the others last; the nearest is visited next, the rest remembered with
+        // the farthest deepest.
+        const float never = 3.402823466e+38;
+        float k0 = (entered & 1u) != 0u ? t.x : never, k1 = (entered & 2u) != 0u ? t.y : never;
+        float k2 = (entered & 4u) != 0u ? t.z : never, k3 = (entered & 8u) != 0u ? t.w : never;
+        uint i0 = 0u, i1 = 1u, i2 = 2u, i3 = 3u;
+        order_pair(k0, i0, k1, i1);
+        order_pair(k2, i2, k3, i3);
+        order_pair(k0, i0, k2, i2);
+        order_pair(k1, i1, k3, i3);
+        order_pair(k1, i1, k2, i2);
+        int count = bitCount(entered);
+        if (count > 3) {
+          stack_node[top] = n.child[i3];
+          stack_entry[top++] = k3;
+        }
+        if (count > 2) {
+          stack_node[top] = n.child[i2];
+          stack_entry[top++] = k2;
+        }
+        if (count > 1) {
+          stack_node[top] = n.child[i1];
+          stack_entry[top++] = k1;
+        }
+        next = n.child[i0];
         next_entry = 0.0;  // entered now, before any closer hit can be found
         pop = false;
       }
-    } else {
-#if RTVK_BVH_LEAF == 1
-      // One sphere: visit_leaf without its loop.
-      if (++iterations > pc.loop_budget) return false;
-      test_sphere(next, r, t_min, closest, best, best_slot);
-#else
-      if (!visit_leaf(next, next_count, r, t_min, closest, best, best_slot, iterations))
-        return false;
-#endif
     }
     if (!pop) continue;
     if (top == 0) break;
     --top;
-    next = stack[top].x;
-    next_count = (stack[top].y & stack_leaf) != 0u ? uint(RTVK_BVH_LEAF) : 0u;
-    next_entry = uintBitsToFloat(stack[top].y & ~stack_leaf);
+    next = stack_node[top];
+    next_entry = stack_entry[top];
   }
   if (best < 0) return false;
   gpu_sphere s = spheres[best_slot];

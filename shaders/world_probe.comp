@@ -11,7 +11,7 @@ layout(std430, set = 0, binding = RTVK_BINDING_SPHERES) readonly buffer sphere_b
   gpu_sphere spheres[];
 };
 layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
-  bvh_node bvh_nodes[];
+  bvh_wide_node bvh_nodes[];
 };
 layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block {
   world_probe_entry entries[];

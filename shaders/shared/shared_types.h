@@ -14,6 +14,7 @@ namespace rtvk::gpu {
 using uvec2 = glm::uvec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
 using uint = std::uint32_t;
 using uvec2 = glm::uvec2;
 #endif
@@ -117,6 +118,28 @@ struct bvh_node {
   uvec2 first;  // per child: interior node index, or the leaf's first sphere slot
   uvec2 count;  // per child: 0 for an interior node, else the leaf's spheres (> 0)
 };
+
+// std430 array element: one node of the four-wide tree the CPU walks too (host/accel/wide_bvh.h,
+// wide_node, the same 128 bytes): its children's boxes side by side per axis, lane c child c.
+// child[c]: a wide node index, or with RTVK_WIDE_LEAF set the leaf's sphere slot (one sphere);
+// `lanes` bit c: child c is in use. Node 0 is the root; nodes are stored depth first.
+struct bvh_wide_node {
+  vec4 lo_x;    // children's box minima on x, scene units (rounded outward)
+  vec4 lo_y;    // on y
+  vec4 lo_z;    // on z
+  vec4 hi_x;    // children's box maxima on x
+  vec4 hi_y;    // on y
+  vec4 hi_z;    // on z
+  uvec4 child;  // per child: wide node index, or RTVK_WIDE_LEAF | sphere slot
+  uint lanes;   // bit c: child c is in use
+  uint pad0;    // unused
+  uint pad1;    // unused
+  uint pad2;    // unused
+};
+#define RTVK_WIDE_LEAF 0x80000000u
+// Remembered children of a four-wide walk: three at most per level of its path, which is at most
+// RTVK_BVH_STACK levels long.
+#define RTVK_WIDE_STACK (3 * RTVK_BVH_STACK)
 
 // Push constants (std430): the render's settings and what changes from one dispatch to the next.
 // Each dispatch brings every pixel of the band up to `sample_target` samples of the window; an
@@ -330,6 +353,10 @@ static_assert(offsetof(bvh_node, z) == 32);
 static_assert(offsetof(bvh_node, first) == 48);
 static_assert(offsetof(bvh_node, count) == 56);
 static_assert(sizeof(bvh_node) == 64);
+static_assert(offsetof(bvh_wide_node, hi_x) == 48);
+static_assert(offsetof(bvh_wide_node, child) == 96);
+static_assert(offsetof(bvh_wide_node, lanes) == 112);
+static_assert(sizeof(bvh_wide_node) == 128);
 static_assert(offsetof(render_status, rays_high) == 20);
 static_assert(sizeof(render_status) == 24);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);

@@ -40,11 +40,11 @@ scene two_thousand_spheres() {
 }
 
 TEST_F(GpuLimits, AStorageBufferAboveTheRangeIsRefused) {
-  // 2000 spheres and the ground: 2000 interior BVH nodes of 64 bytes, 128,000 bytes in one
+  // 2000 spheres and the ground: 971 four-wide BVH nodes of 128 bytes, 124,288 bytes in one
   // storage buffer.
   const std::string refused = render_with(two_thousand_spheres(), {.storage_range = 100 << 10});
   EXPECT_EQ(refused,
-            "--scene spheres:2000: the BVH needs 125 KiB in one storage buffer; "
+            "--scene spheres:2000: the BVH needs 121.375 KiB in one storage buffer; "
             "device '" +
                 gpu().device().name + "' allows 100 KiB");
 }
@@ -53,9 +53,9 @@ TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
   const scene s = two_thousand_spheres();
   EXPECT_EQ(render_with(s, {.storage_range = 200 << 10}), "") << "everything fits 200 KiB";
   // lavapipe's memory is the host's: the scene is written in place, its three arrays in one
-  // allocation: 2001 spheres (62.5 KiB), the materials, 1999 BVH nodes (125 KiB).
+  // allocation: 2001 spheres (62.5 KiB), the materials, 971 four-wide BVH nodes (121.4 KiB).
   EXPECT_NE(render_with(s, {.allocation_size = 150 << 10})
-                .find("the sphere array and the material array and the BVH need 189.562 KiB in "
+                .find("the sphere array and the material array and the BVH need 185.938 KiB in "
                       "one memory allocation"),
             std::string::npos);
   EXPECT_EQ(render_with(s, {.allocation_size = 200 << 10}), "");

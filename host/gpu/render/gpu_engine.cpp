@@ -446,18 +446,23 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       options_(options),
       scene_name_(s.name),
       sky_(s.sky),
-      scene_buffers_(gpu_scene::buffers(ctx, s, options.engine.use_bvh)),
+      // The tree is built first: the limits are checked with its exact size.
+      host_arrays_(
+          std::make_unique<gpu_scene::host_arrays>(gpu_scene::build(s, options.engine.use_bvh))),
+      scene_buffers_(gpu_scene::buffers(ctx, *host_arrays_)),
       wg_(workgroup_size(ctx.device())),
-      // The limits first, with the smallest targets: larger ones are checked when asked for.
+      // The limits before any allocation, with the smallest targets: larger ones are checked
+      // when asked for.
       scene_(
           (check_device_fits(ctx, render_targets::buffers(scene_buffers_, 1), "--scene " + s.name),
-           gpu_scene(ctx, s, options.engine.use_bvh))),
+           gpu_scene(ctx, *host_arrays_))),
       targets_(std::make_unique<render_targets>(ctx, 1)),
       cache_(ctx, options.pipeline_cache_folder),
       timer_(ctx),
       exponent_(rtvk::sum_exponent(brightest(s.sky))),
       pacer_(pacing_for(cpu_device(ctx.device())), options.samples_per_dispatch,
              options.samples_per_submission, options.loop_budget) {
+  host_arrays_.reset();  // on the device now
   upload();
   setup_seconds_ = seconds_since(start_);
 }

@@ -135,9 +135,11 @@ class gpu_engine {
 
   std::chrono::steady_clock::time_point start_;  // construction began
   gpu_context& ctx_;
-  gpu_render_options options_;                 // as given
-  std::string scene_name_;                     // for messages
-  rtvk::sky sky_;                              // the scene's, for the push constants
+  gpu_render_options options_;  // as given
+  std::string scene_name_;      // for messages
+  rtvk::sky sky_;               // the scene's, for the push constants
+  // The scene's arrays as built on the host: kept only while the engine is made.
+  std::unique_ptr<gpu_scene::host_arrays> host_arrays_;
   std::vector<buffer_request> scene_buffers_;  // what scene_ holds, for later limit checks
   std::array<std::uint32_t, 2> wg_;            // workgroup size
   gpu_scene scene_;                            // uploaded once

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 
+#include <cstring>
 #include "bvh.h"
 #include "elapsed.h"
 #include "packing.h"
+#include "wide_bvh.h"
 
 namespace rtvk::gpu {
 namespace {
@@ -34,8 +36,13 @@ enum : int { staging_set = 1, array_set };
 gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   const auto start = std::chrono::steady_clock::now();
   const bvh tree(use_bvh ? std::span<const sphere>(s.spheres) : std::span<const sphere>());
+  const wide_bvh wide(tree);
   const double seconds = seconds_since(start);
-  return {to_gpu_spheres(s, tree.order()), to_gpu_materials(s), tree.nodes(), seconds};
+  std::vector<bvh_wide_node> nodes(wide.nodes().size());
+  static_assert(sizeof(bvh_wide_node) == sizeof(wide_node));
+  if (!nodes.empty())
+    std::memcpy(nodes.data(), wide.nodes().data(), nodes.size() * sizeof(wide_node));
+  return {to_gpu_spheres(s, tree.order()), to_gpu_materials(s), std::move(nodes), seconds};
 }
 
 gpu_scene::gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh)
@@ -62,16 +69,9 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
   write_array(to[2], a.nodes);
 }
 
-std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const scene& s,
-                                               bool use_bvh) {
-  // The BVH at its largest: N - 1 interior nodes for N >= 2 spheres (one per leaf but one), the
-  // root alone for one.
-  const VkDeviceSize n = s.spheres.size();
-  const VkDeviceSize spheres = std::max<VkDeviceSize>(n, 1) * sizeof(gpu_sphere);
-  const VkDeviceSize materials =
-      std::max<VkDeviceSize>(s.materials.size(), 1) * sizeof(gpu_material);
-  const bool tree = use_bvh && n > 0;
-  const VkDeviceSize nodes = (tree ? std::max<VkDeviceSize>(n - 1, 1) : 1) * sizeof(bvh_node);
+std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const host_arrays& a) {
+  const VkDeviceSize spheres = bytes_of(a.spheres), materials = bytes_of(a.materials),
+                     nodes = bytes_of(a.nodes);
   using u = memory_use;
   if (host_writes_device_memory(ctx))
     return {{"the sphere array", spheres, true, u::device_mapped, array_set},

@@ -12,8 +12,9 @@
 
 namespace rtvk::gpu {
 
-// The scene on the device: its spheres and materials in the shared header's layout, and the BVH
-// over the spheres (an empty one when the render tests every sphere). With the BVH the spheres
+// The scene on the device: its spheres and materials in the shared header's layout, and the
+// four-wide BVH over the spheres that the CPU walks too (none when the render tests every
+// sphere). With the BVH the spheres
 // are stored in its leaf order, each with its scene index; without it, in scene order. Where the
 // host can write the device's main memory (unified memory, resizable BAR:
 // host_writes_device_memory) the arrays are written there in place, once; elsewhere they are
@@ -21,10 +22,20 @@ namespace rtvk::gpu {
 // the first submission.
 class gpu_scene {
  public:
-  gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh);
+  // What goes to the device, made on the host.
+  struct host_arrays {
+    std::vector<gpu_sphere> spheres;      // in the BVH's leaf order, or scene order without it
+    std::vector<gpu_material> materials;  // in scene order
+    std::vector<bvh_wide_node> nodes;     // the four-wide BVH's nodes, depth first (none: empty)
+    double build_seconds;                 // building the BVH took
+  };
+  // The scene's arrays, its BVH built (over no spheres when !use_bvh).
+  static host_arrays build(const scene& s, bool use_bvh);
+  // The buffers a gpu_scene of `a` allocates, for check_device_fits.
+  static std::vector<buffer_request> buffers(const gpu_context& ctx, const host_arrays& a);
 
-  // The buffers a gpu_scene of `s` allocates, at their largest, for check_device_fits.
-  static std::vector<buffer_request> buffers(const gpu_context& ctx, const scene& s, bool use_bvh);
+  gpu_scene(const gpu_context& ctx, const host_arrays& a);
+  gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh);
 
   // The copies to the device, when the arrays were not written in place (else nothing).
   void record_upload(VkCommandBuffer cb) const;
@@ -37,16 +48,6 @@ class gpu_scene {
   VkBuffer nodes() const { return arrays_[2].get(); }
 
  private:
-  // What goes to the device, made on the host.
-  struct host_arrays {
-    std::vector<gpu_sphere> spheres;      // in the BVH's leaf order, or scene order without it
-    std::vector<gpu_material> materials;  // in scene order
-    std::vector<bvh_node> nodes;          // the BVH's interior nodes, depth first
-    double build_seconds;                 // building the BVH took
-  };
-  static host_arrays build(const scene& s, bool use_bvh);
-  gpu_scene(const gpu_context& ctx, const host_arrays& a);
-
   std::uint32_t sphere_count_;         // spheres the scene has
   double build_seconds_;               // building the BVH took
   std::vector<buffer_spec> specs_;     // spheres, materials, nodes: sizes for the copies
