@@ -35,9 +35,9 @@ bool visit_leaf(uint first, uint count, ray r, float t_min, precise inout float 
 }
 
 // Puts (key, id) pairs a and b in ascending order of key.
-void order_pair(inout float ka, inout uint ia, inout float kb, inout uint ib) {
+void order_pair(inout uint ka, inout uint ia, inout uint kb, inout uint ib) {
   if (kb < ka) {
-    float k = ka;
+    uint k = ka;
     ka = kb;
     kb = k;
     uint i = ia;
@@ -46,14 +46,23 @@ void order_pair(inout float ka, inout uint ia, inout float kb, inout uint ib) {
   }
 }
 
+// A child's sort key: the bits of its entry distance, which order like the distances for floats
+// that are not negative; NaN and infinity (a ray from infinity) become the largest finite
+// distance, still before every child not entered (which sort last). Integers, so a NaN cannot
+// make a child not entered sort among those entered and be visited (and a driver's
+// assumption of no NaN cannot break the order).
+uint sort_key(bool entered, float t) {
+  return entered ? min(floatBitsToUint(t) & 0x7fffffffu, 0x7f7fffffu) : 0xffffffffu;
+}
+
 // As bvh_world::hit, over the same four-wide tree: all four children's boxes tested at once, the
 // nearest entered child visited next and the others remembered with their entry distances,
 // remembered children behind the closest hit dropped, ties to the later sphere, the record
 // filled once for the winner. The loop is flat -- each trip visits one node or leaf, or drops one
 // remembered child that is now behind the closest hit -- so the invocations of a SIMD group
 // (lavapipe's 8 lanes, a warp) step together instead of waiting for each other in nested loops;
-// each trip counts one iteration against the loop budget. (It takes 15% less time on lavapipe
-// than the binary tree it replaced: docs/benchmarks.md.)
+// each trip counts one iteration against the loop budget. (It takes 13 to 15% less time on
+// lavapipe than the binary tree it replaced: docs/benchmarks.md.)
 bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inout uint iterations) {
   if (pc.sphere_count == 0u) return false;
   precise vec3 o = r.origin;
@@ -81,12 +90,11 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
       precise vec4 t;
       uint entered = wide_entries(o, inv_d, n, box_min, box_max, margin, t);
       if (entered != 0u) {
-        // The entered children in ascending order of entry (a sorting network: no branches to
-        // diverge on), the others last; the nearest is visited next, the rest remembered with
+        // The entered children in ascending order of entry (a sorting network on integer keys:
+        // no branches to diverge on), the others last; the nearest is visited next, the rest remembered with
         // the farthest deepest.
-        const float never = 3.402823466e+38;
-        float k0 = (entered & 1u) != 0u ? t.x : never, k1 = (entered & 2u) != 0u ? t.y : never;
-        float k2 = (entered & 4u) != 0u ? t.z : never, k3 = (entered & 8u) != 0u ? t.w : never;
+        uint k0 = sort_key((entered & 1u) != 0u, t.x), k1 = sort_key((entered & 2u) != 0u, t.y);
+        uint k2 = sort_key((entered & 4u) != 0u, t.z), k3 = sort_key((entered & 8u) != 0u, t.w);
         uint i0 = 0u, i1 = 1u, i2 = 2u, i3 = 3u;
         order_pair(k0, i0, k1, i1);
         order_pair(k2, i2, k3, i3);
@@ -96,15 +104,15 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
         int count = bitCount(entered);
         if (count > 3) {
           stack_node[top] = n.child[i3];
-          stack_entry[top++] = k3;
+          stack_entry[top++] = uintBitsToFloat(k3);
         }
         if (count > 2) {
           stack_node[top] = n.child[i2];
-          stack_entry[top++] = k2;
+          stack_entry[top++] = uintBitsToFloat(k2);
         }
         if (count > 1) {
           stack_node[top] = n.child[i1];
-          stack_entry[top++] = k1;
+          stack_entry[top++] = uintBitsToFloat(k1);
         }
         next = n.child[i0];
         next_entry = 0.0;  // entered now, before any closer hit can be found

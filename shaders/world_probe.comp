@@ -33,4 +33,5 @@ void main() {
   entries[i].t = hit ? rec.t : 0.0;
   entries[i].normal = hit ? rec.normal : vec3(0.0);
   entries[i].material = hit ? rec.material : 0u;
+  entries[i].iterations = iterations;
 }

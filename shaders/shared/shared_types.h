@@ -246,12 +246,16 @@ struct hit_probe_entry {
 // std430 array element for world_probe.comp: the host fills a ray, the shader what hit_world
 // finds along it in [0.001, max float].
 struct world_probe_entry {
-  vec3 origin;     // in: ray origin, scene units
-  float t;         // out: the closest hit's t (0 when none)
-  vec3 direction;  // in: ray direction
-  uint hit;        // out: 1 when something was hit
-  vec3 normal;     // out: the hit's normal, facing against the ray
-  uint material;   // out: the hit sphere's material index
+  vec3 origin;      // in: ray origin, scene units
+  float t;          // out: the closest hit's t (0 when none)
+  vec3 direction;   // in: ray direction
+  uint hit;         // out: 1 when something was hit
+  vec3 normal;      // out: the hit's normal, facing against the ray
+  uint material;    // out: the hit sphere's material index
+  uint iterations;  // out: loop trips the search took
+  uint pad0;        // unused
+  uint pad1;        // unused
+  uint pad2;        // unused
 };
 
 // std430 array element for kernel_probe.comp (kernel_probe.h): the host fills a hit, the ray
@@ -378,7 +382,8 @@ static_assert(offsetof(world_probe_entry, direction) == 16);
 static_assert(offsetof(world_probe_entry, hit) == 28);
 static_assert(offsetof(world_probe_entry, normal) == 32);
 static_assert(offsetof(world_probe_entry, material) == 44);
-static_assert(sizeof(world_probe_entry) == 48);
+static_assert(offsetof(world_probe_entry, iterations) == 48);
+static_assert(sizeof(world_probe_entry) == 64);
 static_assert(offsetof(kernel_probe_entry, offset) == 12);
 static_assert(offsetof(kernel_probe_entry, normal) == 16);
 static_assert(offsetof(kernel_probe_entry, front_face) == 28);

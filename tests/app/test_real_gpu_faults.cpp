@@ -64,33 +64,42 @@ TEST_F(RealGpuFaults, TheWatchdogLosesTheDevice) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// Runs `args` twice, writing `output` (a file name, maybe with {frame}) into folders "plain" and
+// "faulted" of `dir`: on the device as it is, and under the test layer's `fault`. Both must
+// succeed, the layer must have nothing to say, and every file of the plain run must be there,
+// byte for byte, from the faulted one.
+void expect_the_same_files_under(const fs::path& dir, std::vector<std::string> args,
+                                 const std::string& output, const std::string& fault) {
+  for (const char* run : {"plain", "faulted"}) fs::create_directories(dir / run);
+  args.insert(args.end(), {"-o", (dir / "plain" / output).string()});
+  const auto want = run_rtvk(args);
+  ASSERT_EQ(want.status, 0) << want.err;
+  args.back() = (dir / "faulted" / output).string();
+  const auto got = run_rtvk(args, test::fault_environment(fault));
+  ASSERT_EQ(got.status, 0) << got.err;
+  EXPECT_EQ(got.err.find("rtvk test layer"), std::string::npos) << got.err;
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "plain")) {
+    const fs::path other = dir / "faulted" / entry.path().filename();
+    EXPECT_TRUE(!bytes_of(entry.path()).empty() && bytes_of(entry.path()) == bytes_of(other))
+        << entry.path().filename();
+    ++files;
+  }
+  EXPECT_GT(files, 0);
+}
+
 // A device whose maxComputeWorkGroupCount is 3 in every dimension (the layer loses the device on
 // any dispatch past it): the render's bands, its views (an animation's frames are the dispatch's
 // z) and the device's 8-bit encoding are all tiled within it, and give the unlimited device's
 // bytes.
 TEST_F(RealGpuFaults, DispatchesStayWithinTheWorkgroupCountLimit) {
   test::temp_dir dir;
-  for (const bool animated : {false, true}) {
-    SCOPED_TRACE(animated ? "an animation" : "one image");
-    std::vector<std::string> args{"render",  "--scene", "book-final", "--backend", "gpu",
-                                  "--width", "120",     "--spp",      "3"};
-    if (animated) args.insert(args.end(), {"--frames", "0:5"});
-    const fs::path a = dir.path() / (animated ? "a-{frame}.png" : "a.png");
-    const fs::path b = dir.path() / (animated ? "b-{frame}.png" : "b.png");
-    auto plain = args;
-    plain.insert(plain.end(), {"-o", a.string()});
-    const auto want = run_rtvk(plain);
-    ASSERT_EQ(want.status, 0) << want.err;
-    auto limited = args;
-    limited.insert(limited.end(), {"-o", b.string()});
-    const auto got = run_rtvk(limited, test::fault_environment("workgroup-count:3"));
-    ASSERT_EQ(got.status, 0) << got.err;
-    for (const auto& entry : fs::directory_iterator(dir.path())) {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind("a", 0) != 0) continue;
-      EXPECT_TRUE(bytes_of(entry.path()) == bytes_of(dir.path() / ("b" + name.substr(1)))) << name;
-    }
-  }
+  const std::vector<std::string> args{"render",  "--scene", "book-final", "--backend", "gpu",
+                                      "--width", "120",     "--spp",      "3"};
+  expect_the_same_files_under(dir.path() / "one", args, "a.png", "workgroup-count:3");
+  auto frames = args;
+  frames.insert(frames.end(), {"--frames", "0:5"});
+  expect_the_same_files_under(dir.path() / "frames", frames, "a-{frame}.png", "workgroup-count:3");
 }
 
 // A discrete GPU's memory types (the layer's discrete-memory: device-local memory the host
@@ -102,34 +111,13 @@ TEST_F(RealGpuFaults, DispatchesStayWithinTheWorkgroupCountLimit) {
 // to linear sums (EXR) and an animation's frames.
 TEST_F(RealGpuFaults, OnADiscreteGpusMemoryShadersReadOnlyDeviceLocalBuffers) {
   test::temp_dir dir;
-  for (const char* kind : {"png", "exr", "frames"}) {
-    SCOPED_TRACE(kind);
-    const std::string ext = kind == std::string("exr") ? ".exr" : ".png";
-    const std::string name = kind == std::string("frames") ? "-{frame}" : "";
-    std::vector<std::string> args{"render",  "--scene", "book-final", "--backend", "gpu",
-                                  "--width", "100",     "--spp",      "3"};
-    if (kind == std::string("frames")) args.insert(args.end(), {"--frames", "0:3"});
-    const fs::path a = dir.path() / (std::string("a") + kind + name + ext);
-    const fs::path b = dir.path() / (std::string("b") + kind + name + ext);
-    auto plain = args;
-    plain.insert(plain.end(), {"-o", a.string()});
-    const auto want = run_rtvk(plain);
-    ASSERT_EQ(want.status, 0) << want.err;
-    auto discrete = args;
-    discrete.insert(discrete.end(), {"-o", b.string()});
-    const auto got = run_rtvk(discrete, test::fault_environment("discrete-memory"));
-    ASSERT_EQ(got.status, 0) << got.err;
-    EXPECT_EQ(got.err.find("rtvk test layer"), std::string::npos) << got.err;
-    const auto file = [&](const fs::path& pattern, int frame) {
-      std::string s = pattern.string();
-      const auto at = s.find("{frame}");
-      if (at != std::string::npos) s.replace(at, 7, std::to_string(frame));
-      return fs::path(s);
-    };
-    for (int f = 0; f < (kind == std::string("frames") ? 3 : 1); ++f)
-      EXPECT_TRUE(bytes_of(file(a, f)) == bytes_of(file(b, f)) && !bytes_of(file(a, f)).empty())
-          << "frame " << f;
-  }
+  const std::vector<std::string> args{"render",  "--scene", "book-final", "--backend", "gpu",
+                                      "--width", "100",     "--spp",      "3"};
+  expect_the_same_files_under(dir.path() / "png", args, "a.png", "discrete-memory");
+  expect_the_same_files_under(dir.path() / "exr", args, "a.exr", "discrete-memory");
+  auto frames = args;
+  frames.insert(frames.end(), {"--frames", "0:3"});
+  expect_the_same_files_under(dir.path() / "frames", frames, "a-{frame}.png", "discrete-memory");
 }
 
 // A device that reports VK_EXT_memory_budget (the layer adds it) with less to spare than the

@@ -150,7 +150,9 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
        {sizeof(gpu::world_probe_entry),
         {RTVK_MEMBER(world_probe_entry, origin), RTVK_MEMBER(world_probe_entry, t),
          RTVK_MEMBER(world_probe_entry, direction), RTVK_MEMBER(world_probe_entry, hit),
-         RTVK_MEMBER(world_probe_entry, normal), RTVK_MEMBER(world_probe_entry, material)}}},
+         RTVK_MEMBER(world_probe_entry, normal), RTVK_MEMBER(world_probe_entry, material),
+         RTVK_MEMBER(world_probe_entry, iterations), RTVK_MEMBER(world_probe_entry, pad0),
+         RTVK_MEMBER(world_probe_entry, pad1), RTVK_MEMBER(world_probe_entry, pad2)}}},
   };
   return layouts;
 }
