@@ -142,5 +142,30 @@ TEST_F(RealGpuFaults, ARenderPastTheMemoryBudgetIsRefusedWithExit2) {
   EXPECT_TRUE(fs::exists(out));
 }
 
+// The validation layer's synchronization checks (off by default) find no hazard in a render's
+// submissions: two in flight, the status counters copied out after each, the sums read back or
+// encoded on the device, views grouped into one dispatch. Removing the barrier before the status
+// copy makes them report a read-after-write hazard, exit 1 and no image (seen). The viewer's
+// frames are checked the same way in every XvfbTest.
+TEST_F(RealGpuFaults, SynchronizationValidationFindsNoHazard) {
+  test::temp_dir dir;
+  const std::vector<std::string> env{
+      "VK_LAYER_ENABLES=VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT"};
+  const std::vector<std::string> common{"render",  "--scene", "book-final", "--validate",
+                                        "--width", "100",     "--spp",      "3"};
+  for (const auto& [extra, output] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--backend", "gpu"}, "a.png"},
+           {{"--backend", "gpu"}, "a.exr"},
+           {{"--backend", "gpu", "--frames", "0:3"}, "a-{frame}.png"},
+           {{"--backend", "both"}, "b.png"}}) {
+    auto args = common;
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.insert(args.end(), {"-o", (dir.path() / output).string()});
+    const auto r = run_rtvk(args, env);
+    EXPECT_EQ(r.status, 0) << output << ": " << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << output << ": " << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace rtvk
