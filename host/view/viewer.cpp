@@ -1,6 +1,7 @@
 #include "viewer.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -13,12 +14,12 @@
 #include <GLFW/glfw3.h>
 
 #include "bvh_world.h"
-#include "byte_encoding.h"
 #include "camera_controls.h"
 #include "elapsed.h"
+#include "errors.h"
+#include "format.h"
 #include "gpu_engine.h"
 #include "overlay.h"
-#include "parallel.h"
 #include "presenter.h"
 #include "render_cpu.h"
 #include "swapchain.h"
@@ -117,7 +118,21 @@ class session {
         frames_in_flight_{frame_slot{make_semaphore(ctx_.vk())},
                           frame_slot{make_semaphore(ctx_.vk())}},
         rs_(s.render),
-        pose_(pose) {}
+        pose_(pose) {
+    // A size fixed by the flags must let the whole image's sums stay on the device (one that
+    // follows the window is scaled down to fit: fit_accumulation).
+    const camera sized(pose_, rs_.aspect, rs_.width);
+    if (!options_.size_follows_window &&
+        !engine_.accumulation_fits(sized.image_width(), sized.image_height()))
+      throw usage_error("--width " + std::to_string(rs_.width) + ": rtvk view keeps the whole " +
+                        std::to_string(sized.image_width()) + "x" +
+                        std::to_string(sized.image_height()) +
+                        " image's sums on the device, 48 bytes a pixel in one storage buffer, "
+                        "more than device '" +
+                        ctx_.device().name + "' allows (" +
+                        format_bytes(ctx_.device().limits.maxStorageBufferRange) +
+                        "): a smaller --width, or rtvk render");
+  }
 
   ~session() {
     ctx_.wait_all();

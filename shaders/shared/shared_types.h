@@ -105,12 +105,12 @@ struct gpu_material {
   uint pad1;    // unused
 };
 
-// std430 array element: one interior node of the bounding volume hierarchy, 64 bytes, holding
-// both children: their boxes per axis as four lanes (left min, right min, left max, right max),
-// so that one pass of 4-wide operations tests both, and for each child c (0 left, 1 right) a
-// reference. count[c] = 0: an interior node, bvh_nodes[first[c]]; else a leaf, the spheres
-// first[c] .. first[c] + count[c] - 1 of the sphere buffer (stored in leaf order). Node 0 is the
-// root; nodes are stored depth first.
+// One interior node of the binary bounding volume hierarchy the host builds (host/accel/bvh.h),
+// 64 bytes, holding both children: their boxes per axis as four lanes (left min, right min, left
+// max, right max), and for each child c (0 left, 1 right) a reference. count[c] = 0: an interior
+// node, nodes[first[c]]; else a leaf, the spheres first[c] .. first[c] + count[c] - 1 (stored in
+// leaf order). Node 0 is the root; nodes are stored depth first. Both backends walk the tree
+// collapsed four wide (bvh_wide_node below); the GPU no longer reads these.
 struct bvh_node {
   vec4 x;       // children's box corners on x, scene units (rounded outward)
   vec4 y;       // on y

@@ -474,6 +474,23 @@ TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
   EXPECT_GT(std::abs(expected - 10), 0.1) << "the click must move the focus for this to mean much";
 }
 
+// A size fixed by the flags whose sums cannot stay on the device in one storage buffer (lavapipe
+// allows 128 MiB: 2.8 megapixels) is refused by its flag, exit 2, no screenshot.
+TEST_F(XvfbTest, AFixedSizeTooLargeToAccumulateOnTheDeviceExits2NamingTheFlag) {
+  const test::temp_dir dir;
+  const std::string shot = (dir.path() / "big.png").string();
+  const test::process_result r =
+      test::run_rtvk_within(120s,
+                            {"view", "--scene", "seed", "--width", "4000", "--aspect", "1", "--spp",
+                             "1", "--screenshot", shot},
+                            env());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("rtvk: --width 4000: rtvk view keeps the whole 4000x4000 image's sums", 0),
+            0u)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(shot));
+}
+
 // The render follows the window: resized while accumulating, it restarts at the new size, and
 // what it shows is what rtvk render makes of the printed camera at that size.
 TEST_F(XvfbTest, AResizedWindowRestartsAtItsNewSize) {
