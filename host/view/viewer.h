@@ -33,10 +33,9 @@ struct viewer_result {
 
 // Opens a window and renders `s` from `pose` progressively on the chosen device: batches of
 // samples drawn by the GPU engine add exactly to per-pixel sums it keeps on the device, and after
-// each batch the running mean, encoded to 8 bits there as rtvk render encodes it, is shown. Throws usage_error
-// when there is no window system.
-// What the keys that hand the shot on do (K prints the camera, O writes a screenshot): given the
-// session's state at that moment.
+// each batch the running mean, encoded to 8 bits there as rtvk render encodes it, is shown. Throws
+// usage_error when there is no window system. What the keys that hand the shot on do (K prints the
+// camera, O writes a screenshot): given the session's state at that moment.
 struct viewer_actions {
   std::function<void(const viewer_result&)> print;       // K, and once more on exit
   std::function<void(const viewer_result&)> screenshot;  // O
