@@ -653,19 +653,18 @@ bool gpu_engine::accumulation_fits(int width, int height) const {
 }
 
 void gpu_engine::reset_accumulation(int width, int height) {
+  const VkDeviceSize pixels = VkDeviceSize(width) * VkDeviceSize(height);
   if (!accumulation_fits(width, height))
     throw usage_error("a " + std::to_string(width) + "x" + std::to_string(height) +
-                      " accumulation needs " +
-                      format_bytes(VkDeviceSize(width) * VkDeviceSize(height) * sizeof(pixel_sum)) +
+                      " accumulation needs " + format_bytes(pixels * sizeof(pixel_sum)) +
                       " of sums in one storage buffer; device '" + ctx_.device().name +
                       "' allows " + format_bytes(ctx_.device().limits.maxStorageBufferRange));
-  const render_targets& t = targets_for(VkDeviceSize(width) * VkDeviceSize(height));
+  const render_targets& t = targets_for(pixels);
   ctx_.submit_and_wait([&](VkCommandBuffer cb) {
     if (drawn_)
       barrier(cb, compute_stage | transfer_stage, shader_rw | VK_ACCESS_TRANSFER_READ_BIT,
               transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
-    vkCmdFillBuffer(cb, t.bytes.get(), 0, VkDeviceSize(width) * VkDeviceSize(height) * 4,
-                    0xff000000u);
+    vkCmdFillBuffer(cb, t.bytes.get(), 0, pixels * 4, 0xff000000u);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage | transfer_stage,
             shader_rw | VK_ACCESS_TRANSFER_READ_BIT);
   });
