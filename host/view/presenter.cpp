@@ -125,6 +125,14 @@ void presenter::record_overlay(VkCommandBuffer cb, const overlay_mask& overlay) 
 void presenter::record(VkCommandBuffer cb, const overlay_mask& overlay, const swapchain& chain,
                        std::uint32_t target) const {
   const VkBuffer bytes = bound_bytes_;
+  // The bytes were written by the compute queue's last batch, which the host waited for: on
+  // another family's queue (gpu_context::split_queues) that wait orders them and this barrier
+  // makes them visible; on one queue the engine's own barrier already did.
+  VkMemoryBarrier written{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  written.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+  vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
+                       &written, 0, nullptr, 0, nullptr);
   const bool band = overlay.width > 0 && overlay.height > 0 && overlay.width <= max_band_width &&
                     overlay.height <= max_band_height;
   if (band) record_overlay(cb, overlay);

@@ -113,7 +113,7 @@ bool swapchain::present(std::uint32_t index) {
   info.swapchainCount = 1;
   info.pSwapchains = &chain;
   info.pImageIndices = &index;
-  const VkResult r = vkQueuePresentKHR(ctx_.queue(), &info);
+  const VkResult r = vkQueuePresentKHR(ctx_.queue(gpu::queue_role::presenting), &info);
   if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) return false;
   if (r != VK_SUCCESS) throw gpu::vk_error("vkQueuePresentKHR", r);
   return true;

@@ -178,6 +178,7 @@ class session {
     std::uint64_t ticket = 0;        // the submission that waits on it; 0: none yet
   };
   std::array<frame_slot, 2> frames_in_flight_;
+  std::uint64_t last_shown_ = 0;      // the presenting queue's last frame submission
   std::unique_ptr<presenter> shown_;  // the render's size
   std::unique_ptr<bvh_world> world_;  // on the CPU, made at the first focus click
   render_settings rs_;                // size and aspect as rendered now
@@ -364,6 +365,11 @@ void session::render_batch() {
   const render_window window{0,    next_row_,    acc_.width,
                              rows, acc_.samples, acc_.samples + pass_count_};
   const auto start = std::chrono::steady_clock::now();
+  // On two queues, nothing orders the frames' reads of the bytes (presenting queue) before the
+  // batch's tonemap writes them (compute queue): the host waits for the last frame, a copy and a
+  // blit. The other way round the host already waits: the batch reads its status block back.
+  // On one queue, submission order and the engine's barriers do both.
+  if (ctx_.split_queues()) ctx_.wait(last_shown_, gpu::queue_role::presenting);
   render_stats stats;
   engine_.accumulate(cam, rs_, window, &stats);
   const double seconds = std::max(seconds_since(start), 1e-9);
@@ -381,7 +387,7 @@ void session::render_batch() {
 // presented, and waits only before its acquisition semaphore is used again, two frames later.
 void session::show(int fb_w, int fb_h) {
   frame_slot& slot = frames_in_flight_[std::size_t(frames_) % frames_in_flight_.size()];
-  if (slot.ticket != 0) ctx_.wait(slot.ticket);
+  if (slot.ticket != 0) ctx_.wait(slot.ticket, gpu::queue_role::presenting);
   std::uint32_t index = 0;
   if (!chain_.acquire(slot.acquired.get(), index)) {
     chain_.recreate(fb_w, fb_h);
@@ -393,7 +399,9 @@ void session::show(int fb_w, int fb_h) {
   overlay_changed_ = false;
   slot.ticket = ctx_.submit([&](VkCommandBuffer cb) { shown_->record(cb, overlay, chain_, index); },
                             gpu::submit_sync{slot.acquired.get(), VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                             chain_.ready_to_present(index)});
+                                             chain_.ready_to_present(index)},
+                            gpu::queue_role::presenting);
+  last_shown_ = slot.ticket;
   if (!chain_.present(index)) chain_.recreate(fb_w, fb_h);
   ++frames_;
   const double since = seconds_since(last_frame_);

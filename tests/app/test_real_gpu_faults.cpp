@@ -2,7 +2,7 @@
 // the real executable: a watchdog that loses the device when one submission runs too long
 // (Windows' TDR, Linux's GPU job timeouts), a small maxComputeWorkGroupCount enforced, a
 // discrete GPU's memory (device-local memory the host cannot map, host memory the shaders should
-// not read) and VK_EXT_memory_budget's budget.
+// not read), VK_EXT_memory_budget's budget and a compute-only queue family.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -140,6 +140,35 @@ TEST_F(RealGpuFaults, ARenderPastTheMemoryBudgetIsRefusedWithExit2) {
   const auto fits = run_rtvk(args, test::fault_environment("memory-budget:100000"));
   EXPECT_EQ(fits.status, 0) << fits.err;
   EXPECT_TRUE(fs::exists(out));
+}
+
+// A device with a compute-only queue family besides its graphics one (AMD's and NVIDIA's
+// asynchronous compute queues; the layer's compute-queue-family): every submission of a render,
+// animations included, goes to the compute-only family, none to the one the desktop draws with,
+// and the images are the one-family device's, byte for byte.
+TEST_F(RealGpuFaults, OnADeviceWithAComputeOnlyFamilyRendersSubmitOnlyThere) {
+  test::temp_dir dir;
+  for (const std::vector<std::string>& extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"--frames", "0:3"}}) {
+    std::vector<std::string> args{"render",  "--scene", "book-final", "--backend", "gpu",
+                                  "--width", "100",     "--spp",      "3"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const std::string name = extra.empty() ? "a.png" : "a-{frame}.png";
+    const fs::path plain = dir.path() / "plain", split = dir.path() / "split";
+    fs::create_directories(plain);
+    fs::create_directories(split);
+    args.insert(args.end(), {"-o", (plain / name).string()});
+    ASSERT_EQ(run_rtvk(args).status, 0);
+    args.back() = (split / name).string();
+    const auto got = run_rtvk(args, test::fault_environment("compute-queue-family"));
+    ASSERT_EQ(got.status, 0) << got.err;
+    const test::queue_submissions q = test::submissions_per_queue(got.err);
+    EXPECT_GT(q.compute_only, 0) << got.err;
+    EXPECT_EQ(q.others, 0) << got.err;
+    for (const auto& entry : fs::directory_iterator(plain))
+      EXPECT_EQ(bytes_of(entry.path()), bytes_of(split / entry.path().filename()))
+          << entry.path().filename();
+  }
 }
 
 // The validation layer's synchronization checks (off by default) find no hazard in a render's

@@ -582,6 +582,36 @@ TEST_F(XvfbTest, ADeviceThatPresentsOnlyFromAComputeQueueExits1NamingIt) {
                  "presents to the window only from queues that cannot also compute and draw");
 }
 
+// A device with a compute-only queue family besides its graphics one (the layer's
+// compute-queue-family; AMD's and NVIDIA's asynchronous compute queues): the viewer renders on
+// the compute-only family, so its batches do not hold up the desktop's drawing, and composes,
+// blits and presents on the graphics family (the layer loses the device on a blit or present
+// from the compute-only one). The two queues share the image's bytes; the screenshot is still
+// the bytes rtvk render writes. Before the split, every submission went to the graphics family.
+TEST_F(XvfbTest, OnADeviceWithAComputeOnlyFamilyTheViewerRendersThereAndPresentsFromGraphics) {
+  std::vector<std::string> env = this->env();
+  for (const std::string& e : test::fault_environment("compute-queue-family")) env.push_back(e);
+  const test::temp_dir dir;
+  const std::string shot = (dir.path() / "view.png").string();
+  const std::string direct = (dir.path() / "render.png").string();
+  const std::vector<std::string> flags{"--scene", "book-final", "--width", "200", "--spp", "8"};
+  std::vector<std::string> view{"view"};
+  view.insert(view.end(), flags.begin(), flags.end());
+  view.insert(view.end(), {"--screenshot", shot});
+  const test::process_result v = test::run_rtvk_within(120s, view, env);
+  ASSERT_EQ(v.status, 0) << v.err;
+  EXPECT_EQ(v.err.find("validation"), std::string::npos) << v.err;
+  EXPECT_EQ(v.err.find("recorded for the compute-only"), std::string::npos) << v.err;
+  const test::queue_submissions q = test::submissions_per_queue(v.err);
+  EXPECT_GT(q.compute_only, 0) << v.err;  // the batches
+  EXPECT_GT(q.others, 0) << v.err;        // the frames
+  std::vector<std::string> render{"render"};
+  render.insert(render.end(), flags.begin(), flags.end());
+  render.insert(render.end(), {"--backend", "gpu", "-q", "-o", direct});
+  ASSERT_EQ(test::run_rtvk(render).status, 0);
+  EXPECT_EQ(test::slurp(shot), test::slurp(direct)) << "the screenshot is not render's bytes";
+}
+
 // A device lost after the window has shown a few frames: exit 1 naming the call, the result and
 // the device, with no screenshot and no hang or crash on the way out.
 TEST_F(XvfbTest, ALostDeviceWhileViewingExits1AndWritesNoScreenshot) {

@@ -20,7 +20,7 @@ render_targets::render_targets(const gpu_context& ctx, VkDeviceSize pixels)
     : pixels(pixels),
       device_(ctx, memory_use::device_local,
               std::vector<buffer_spec>{{pixels * sizeof(pixel_sum), storage_copy},
-                                       {pixels * 4, storage_copy},
+                                       {pixels * 4, storage_copy, true},  // the viewer shows them
                                        {camera_bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
                                                           VK_BUFFER_USAGE_TRANSFER_DST_BIT},
                                        {threshold_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |

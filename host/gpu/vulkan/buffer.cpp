@@ -9,11 +9,20 @@ namespace rtvk::gpu {
 
 namespace {
 
-unique_buffer make_buffer(VkDevice device, VkDeviceSize size, VkBufferUsageFlags usage) {
+// `families`: the queue families that use it concurrently; empty, one queue's (exclusive). A
+// buffer has no layout or compression to lose, so concurrent sharing costs it nothing and spares
+// the queues an ownership transfer each way per use.
+unique_buffer make_buffer(VkDevice device, VkDeviceSize size, VkBufferUsageFlags usage,
+                          const std::vector<std::uint32_t>& families = {}) {
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  if (families.size() > 1) {
+    info.sharingMode = VK_SHARING_MODE_CONCURRENT;
+    info.queueFamilyIndexCount = std::uint32_t(families.size());
+    info.pQueueFamilyIndices = families.data();
+  }
   VkBuffer buffer = VK_NULL_HANDLE;
   vk_check(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
   return unique_buffer(device, buffer);
@@ -140,7 +149,8 @@ buffer_set::buffer_set(const gpu_context& ctx, memory_use use, std::span<const b
   const VkDeviceSize atom =
       use == memory_use::device_local ? 1 : ctx.device().limits.nonCoherentAtomSize;
   for (const buffer_spec& spec : specs) {
-    made.push_back(make_buffer(device, spec.size, spec.usage));
+    made.push_back(make_buffer(device, spec.size, spec.usage,
+                               spec.shared ? ctx.shared_families() : std::vector<std::uint32_t>{}));
     VkMemoryRequirements req{};
     vkGetBufferMemoryRequirements(device, made.back().get(), &req);
     offsets.push_back(align_up(end, std::max(req.alignment, atom)));

@@ -76,6 +76,8 @@ class gpu_buffer {
 struct buffer_spec {
   VkDeviceSize size;         // bytes
   VkBufferUsageFlags usage;  // what it is bound and copied as
+  bool shared = false;       // used by the presenting queue too: concurrent between the families
+                             // when they differ (gpu_context::split_queues)
 };
 
 // Several buffers of one memory use in one memory allocation, each at an offset its alignment

@@ -27,9 +27,9 @@ void apply_caps(const device_limit_caps& caps, device_info& d,
     cap<VkDeviceSize>(memory.memoryHeaps[h].size, caps.heap_size);
 }
 
-// The family a window's frames go through: the viewer renders, blits (a graphics command) and
-// presents on one queue, so it needs a family with compute and graphics that presents to the
-// surface.
+// The family a window's frames go through: the viewer composes its overlay (a dispatch), blits
+// (a graphics command) and presents there, so it needs a family with compute and graphics that
+// presents to the surface. Renders stay on the compute family.
 std::uint32_t presenting_family(const device_info& d, VkSurfaceKHR surface) {
   if (!has_device_extension(d.handle, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
     throw std::runtime_error("the Vulkan device " + d.name + " cannot present to the window (no " +
@@ -57,26 +57,32 @@ gpu_context::gpu_context(const gpu_options& options)
   devices_ = list_devices(instance_.get());
   chosen_ = select_device(devices_, options.device, options.device_source);
   const device_info& d = devices_[chosen_];
+  std::uint32_t presenting = d.compute_queue_family;
   if (options.make_surface) {
     surface_ = unique_surface(instance_.get(), options.make_surface(instance_.get()));
-    use_queue_family(devices_[chosen_], presenting_family(d, surface_.get()));
+    presenting = presenting_family(d, surface_.get());
   }
   vkGetPhysicalDeviceMemoryProperties(d.handle, &memory_);
   apply_caps(options.caps, devices_[chosen_], memory_);
 
   const float priority = 1.0f;
-  VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-  queue_info.queueFamilyIndex = d.compute_queue_family;
-  queue_info.queueCount = 1;
-  queue_info.pQueuePriorities = &priority;
+  std::vector<VkDeviceQueueCreateInfo> queue_infos;
+  for (const std::uint32_t family : {d.compute_queue_family, presenting}) {
+    if (!queue_infos.empty() && queue_infos[0].queueFamilyIndex == family) break;
+    VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queue_info.queueFamilyIndex = family;
+    queue_info.queueCount = 1;
+    queue_info.pQueuePriorities = &priority;
+    queue_infos.push_back(queue_info);
+  }
   std::vector<const char*> extensions;
   // A portability implementation must have its subset extension enabled.
   if (has_device_extension(d.handle, "VK_KHR_portability_subset"))
     extensions.push_back("VK_KHR_portability_subset");
   if (surface_.get()) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-  info.queueCreateInfoCount = 1;
-  info.pQueueCreateInfos = &queue_info;
+  info.queueCreateInfoCount = std::uint32_t(queue_infos.size());
+  info.pQueueCreateInfos = queue_infos.data();
   info.enabledExtensionCount = std::uint32_t(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   VkDevice device = VK_NULL_HANDLE;
@@ -84,17 +90,25 @@ gpu_context::gpu_context(const gpu_options& options)
   device_ = unique_device(device);
   volkLoadDevice(device);
   pin_driver_libraries();
-  vkGetDeviceQueue(device, d.compute_queue_family, 0, &queue_);
+  open_lane(compute_, d.compute_queue_family);
+  if (presenting != d.compute_queue_family) {
+    presenting_ = std::make_unique<queue_lane>();
+    open_lane(*presenting_, presenting);
+  }
+}
 
+void gpu_context::open_lane(queue_lane& l, std::uint32_t family) {
+  const VkDevice device = device_.get();
+  l.family = family;
+  vkGetDeviceQueue(device, family, 0, &l.queue);
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool_info.flags =
       VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  pool_info.queueFamilyIndex = d.compute_queue_family;
+  pool_info.queueFamilyIndex = family;
   VkCommandPool pool = VK_NULL_HANDLE;
   vk_check(vkCreateCommandPool(device, &pool_info, nullptr, &pool), "vkCreateCommandPool");
-  pool_ = unique_command_pool(device, pool);
-
-  for (slot& s : slots_) {
+  l.pool = unique_command_pool(device, pool);
+  for (slot& s : l.slots) {
     VkCommandBufferAllocateInfo cb_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     cb_info.commandPool = pool;
     cb_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -107,18 +121,28 @@ gpu_context::gpu_context(const gpu_options& options)
   }
 }
 
+void gpu_context::abandon(queue_lane& l) noexcept {
+  for (slot& s : l.slots) s.fence.release();
+  l.pool.release();
+}
+
 gpu_context::~gpu_context() {
   if (lost_) {
     // Work may still be pending on a hung device: destroying it could block or crash, and the
     // process is about to report the failure anyway. Leak rather than hang.
-    for (slot& s : slots_) s.fence.release();
-    pool_.release();
+    abandon(compute_);
+    if (presenting_) abandon(*presenting_);
     device_.release();
     surface_.release();
     instance_.abandon();
     return;
   }
   if (device_.get()) vkDeviceWaitIdle(device_.get());
+}
+
+std::vector<std::uint32_t> gpu_context::shared_families() const {
+  if (!presenting_) return {};
+  return {compute_.family, presenting_->family};
 }
 
 std::uint32_t gpu_context::memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
@@ -176,11 +200,12 @@ void gpu_context::submit_and_wait(const std::function<void(VkCommandBuffer)>& re
 }
 
 std::uint64_t gpu_context::submit(const std::function<void(VkCommandBuffer)>& record,
-                                  const submit_sync& sync) {
+                                  const submit_sync& sync, queue_role role) {
   if (lost_) throw std::runtime_error("the Vulkan device " + device().name + " is unusable");
-  const std::uint64_t ticket = submitted_ + 1;
-  slot& s = slots_[ticket % submission_slots];
-  if (s.ticket != 0) wait(s.ticket);  // its command buffer and fence are about to be reused
+  queue_lane& l = lane(role);
+  const std::uint64_t ticket = l.submitted + 1;
+  slot& s = l.slots[ticket % submission_slots];
+  if (s.ticket != 0) wait(s.ticket, role);  // its command buffer and fence are about to be reused
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vk_check(vkBeginCommandBuffer(s.cb, &begin), "vkBeginCommandBuffer");
@@ -206,21 +231,22 @@ std::uint64_t gpu_context::submit(const std::function<void(VkCommandBuffer)>& re
     submit.signalSemaphoreCount = 1;
     submit.pSignalSemaphores = &sync.signal;
   }
-  const VkResult r = vkQueueSubmit(queue_, 1, &submit, fence);
+  const VkResult r = vkQueueSubmit(l.queue, 1, &submit, fence);
   if (r != VK_SUCCESS) {
     if (r == VK_ERROR_DEVICE_LOST) lost_ = true;
     throw vk_error("vkQueueSubmit", r, "device " + device().name);
   }
-  submitted_ = s.ticket = ticket;
+  l.submitted = s.ticket = ticket;
   return ticket;
 }
 
-void gpu_context::wait(std::uint64_t ticket) {
-  if (ticket <= completed_) return;
+void gpu_context::wait(std::uint64_t ticket, queue_role role) {
+  queue_lane& l = lane(role);
+  if (ticket <= l.completed) return;
   if (lost_) throw std::runtime_error("the Vulkan device " + device().name + " is unusable");
   // Submissions on one queue complete in order, so waiting for the oldest first loses nothing.
-  for (std::uint64_t t = completed_ + 1; t <= ticket; ++t) {
-    slot& s = slots_[t % submission_slots];
+  for (std::uint64_t t = l.completed + 1; t <= ticket; ++t) {
+    slot& s = l.slots[t % submission_slots];
     if (s.ticket != t) continue;  // never submitted (a failed submit) or already reused
     const VkFence fence = s.fence.get();
     const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(options_.fence_timeout);
@@ -234,9 +260,9 @@ void gpu_context::wait(std::uint64_t ticket) {
                                                 format_number(double(ns.count()) / 1e9) + " s"
                                           : ""));
     }
-    completed_ = t;
+    l.completed = t;
   }
-  completed_ = std::max(completed_, ticket);
+  l.completed = std::max(l.completed, ticket);
 }
 
 void gpu_context::check_validation(const std::string& consequence) const {
@@ -246,12 +272,17 @@ void gpu_context::check_validation(const std::string& consequence) const {
                              consequence);
 }
 
-void gpu_context::wait_all() noexcept {
-  if (lost_ || submitted_ == completed_) return;
+void gpu_context::wait_all(queue_lane& l) noexcept {
+  if (lost_ || l.submitted == l.completed) return;
   try {
-    wait(submitted_);
+    wait(l.submitted, &l == &compute_ ? queue_role::compute : queue_role::presenting);
   } catch (...) {  // lost_ is set: the owners give their handles up
   }
+}
+
+void gpu_context::wait_all() noexcept {
+  wait_all(compute_);
+  if (presenting_) wait_all(*presenting_);
 }
 
 }  // namespace rtvk::gpu

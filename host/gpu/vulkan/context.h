@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,11 +30,18 @@ struct gpu_options {
   device_limit_caps caps;                            // tests only
   // Presenting to a window (rtvk view): the instance extensions its window system needs, and
   // what makes the window's surface once the instance exists. The chosen device must then
-  // present from a queue family that can also compute and draw (the viewer blits), which then
-  // takes every submission, and gets VK_KHR_swapchain.
+  // present from a queue family that can also compute and draw (the viewer blits and composes
+  // its overlay there), and gets VK_KHR_swapchain. Renders stay on the compute family: where
+  // that is another family (a dedicated compute queue), the context has two queues.
   std::vector<std::string> instance_extensions;
   std::function<VkSurfaceKHR(VkInstance)> make_surface;
 };
+
+// The two queues a context may have: renders go to `compute` (a compute-only family where the
+// device has one, so a long render does not hold up the desktop's drawing), a window's frames to
+// `presenting` (graphics, compute and present). Without a window, or where one family does both,
+// they are the same queue.
+enum class queue_role { compute, presenting };
 
 // Semaphores a submission waits on and signals (presentation's image acquisition and release).
 struct submit_sync {
@@ -42,7 +50,7 @@ struct submit_sync {
   VkSemaphore signal = VK_NULL_HANDLE;  // signalled when the submission completes
 };
 
-// One chosen device with its queue, command pool and fence: everything a render submits with.
+// One chosen device with its queues, command pools and fences: everything a render submits with.
 class gpu_context {
  public:
   explicit gpu_context(const gpu_options& options);
@@ -56,7 +64,16 @@ class gpu_context {
   bool lost() const { return lost_; }
   VkDevice vk() const { return device_.get(); }
   VkInstance instance() const { return instance_.get(); }
-  VkQueue queue() const { return queue_; }
+  VkQueue queue(queue_role role = queue_role::compute) const { return lane(role).queue; }
+  std::uint32_t queue_family(queue_role role = queue_role::compute) const {
+    return lane(role).family;
+  }
+  // Whether the presenting queue is another family's than the compute queue: then buffers both
+  // use are made with shared_families() (concurrent sharing), and the viewer orders the two
+  // queues' work (host/view/viewer.cpp, session::render_batch).
+  bool split_queues() const { return presenting_ != nullptr; }
+  // The families a buffer used by both queues is shared between; empty when they are one.
+  std::vector<std::uint32_t> shared_families() const;
   // The window's surface, when made with options.make_surface; else VK_NULL_HANDLE.
   VkSurfaceKHR surface() const { return surface_.get(); }
   std::uint32_t validation_messages() const { return instance_.validation_messages(); }
@@ -81,23 +98,29 @@ class gpu_context {
   bool memory_type_has(std::uint32_t type, VkMemoryPropertyFlags flags) const;
   const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_; }
 
-  // Records one command buffer, submits it and waits for the fence. A wait longer than the
-  // timeout, or a lost device, throws vk_error naming the device; the context is then unusable.
+  // Records one command buffer, submits it to the compute queue and waits for the fence. A wait
+  // longer than the timeout, or a lost device, throws vk_error naming the device; the context is
+  // then unusable.
   void submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
 
   // Submissions in flight together: up to `submission_slots` recorded and queued before the host
   // waits for the oldest, so the device has the next one while the host reads the last one.
-  // Tickets count submissions from 1; a ticket's slot is (ticket % submission_slots), and its
-  // command buffer is reused by the submission `submission_slots` later.
+  // Tickets count a queue's submissions from 1; a ticket's slot is (ticket % submission_slots),
+  // and its command buffer is reused by the submission `submission_slots` later.
   static constexpr std::uint64_t submission_slots = 2;
-  // Records and submits; first waits for the submission that last used the slot, if any.
+  // Records and submits to the role's queue; first waits for the submission that last used the
+  // slot, if any.
   std::uint64_t submit(const std::function<void(VkCommandBuffer)>& record,
-                       const submit_sync& sync = {});
-  // The ticket the next submit() returns (for recording per-slot queries).
-  std::uint64_t next_ticket() const { return submitted_ + 1; }
-  // Waits for submission `ticket` and every one before it, as submit_and_wait does.
-  void wait(std::uint64_t ticket);
-  // Waits for everything submitted (no timeout error is thrown; for clean-up on error paths).
+                       const submit_sync& sync = {}, queue_role role = queue_role::compute);
+  // The ticket the next submit() to the role's queue returns (for recording per-slot queries).
+  std::uint64_t next_ticket(queue_role role = queue_role::compute) const {
+    return lane(role).submitted + 1;
+  }
+  // Waits for submission `ticket` of the role's queue and every one before it there, as
+  // submit_and_wait does.
+  void wait(std::uint64_t ticket, queue_role role = queue_role::compute);
+  // Waits for everything submitted to either queue (no timeout error is thrown; for clean-up on
+  // error paths).
   void wait_all() noexcept;
 
  private:
@@ -108,17 +131,32 @@ class gpu_context {
   std::size_t chosen_ = 0;                     // index into devices_
   VkPhysicalDeviceMemoryProperties memory_{};  // of the chosen device
   unique_device device_;                       // logical device
-  VkQueue queue_ = VK_NULL_HANDLE;             // first queue of the compute family
-  unique_command_pool pool_;                   // command buffers for submissions
   struct slot {
-    VkCommandBuffer cb = VK_NULL_HANDLE;  // freed with pool_
+    VkCommandBuffer cb = VK_NULL_HANDLE;  // freed with its lane's pool
     unique_fence fence;                   // signalled when its submission completes
     std::uint64_t ticket = 0;             // the submission it holds; 0: none
   };
-  slot slots_[submission_slots];  // ring of submissions
-  std::uint64_t submitted_ = 0;   // tickets handed out
-  std::uint64_t completed_ = 0;   // every ticket up to this one is known complete
-  bool lost_ = false;             // a wait timed out or the device was lost
+  // One queue with its command pool and ring of submissions.
+  struct queue_lane {
+    std::uint32_t family = 0;        // queue family index
+    VkQueue queue = VK_NULL_HANDLE;  // the family's first queue
+    unique_command_pool pool;        // command buffers for submissions
+    slot slots[submission_slots];    // ring of submissions
+    std::uint64_t submitted = 0;     // tickets handed out
+    std::uint64_t completed = 0;     // every ticket up to this one is known complete
+  };
+  void open_lane(queue_lane& l, std::uint32_t family);
+  void wait_all(queue_lane& l) noexcept;
+  void abandon(queue_lane& l) noexcept;
+  queue_lane& lane(queue_role role) {
+    return role == queue_role::presenting && presenting_ ? *presenting_ : compute_;
+  }
+  const queue_lane& lane(queue_role role) const {
+    return role == queue_role::presenting && presenting_ ? *presenting_ : compute_;
+  }
+  queue_lane compute_;                      // renders (and everything, without a split)
+  std::unique_ptr<queue_lane> presenting_;  // a window's frames, when another family's
+  bool lost_ = false;                       // a wait timed out or the device was lost
 };
 
 }  // namespace rtvk::gpu

@@ -29,6 +29,15 @@
 //                                vkQueueSubmit (on a real one it crosses PCIe at every access)
 //   memory-budget:KIB            every device has VK_EXT_memory_budget and says each heap's
 //                                budget is KIB KiB, none of it in use
+//   compute-queue-family         every device has one more queue family, last, that computes
+//                                and copies but cannot draw or present (AMD's and NVIDIA's
+//                                asynchronous compute queues); its queue is the device's family
+//                                0 queue underneath, behind a handle of its own. A blit recorded
+//                                for it, or a present from it, loses the device at the next
+//                                vkQueueSubmit (graphics commands on a compute queue are
+//                                undefined); at vkDestroyDevice the layer prints how many
+//                                submissions each queue had ("rtvk test layer: submissions:
+//                                C to the compute-only family, P to the others")
 // The chain is kept in globals: a test process of rtvk makes one instance and one device.
 #include <vulkan/vk_layer.h>
 
@@ -57,6 +66,7 @@ PFN_vkCmdDispatchBase next_dispatch_base = nullptr;
 PFN_vkGetPhysicalDeviceProperties next_properties = nullptr;
 PFN_vkGetPhysicalDeviceProperties2 next_properties2 = nullptr;
 PFN_vkGetPhysicalDeviceQueueFamilyProperties next_queue_families = nullptr;
+PFN_vkGetPhysicalDeviceQueueFamilyProperties2 next_queue_families2 = nullptr;
 PFN_vkGetPhysicalDeviceFeatures2 next_features2 = nullptr;
 PFN_vkGetPhysicalDeviceMemoryProperties next_memory = nullptr;
 PFN_vkGetPhysicalDeviceMemoryProperties2 next_memory2 = nullptr;
@@ -66,11 +76,28 @@ PFN_vkAllocateMemory next_allocate = nullptr;
 PFN_vkMapMemory next_map = nullptr;
 PFN_vkBindBufferMemory next_bind_buffer = nullptr;
 PFN_vkUpdateDescriptorSets next_update_descriptors = nullptr;
+PFN_vkGetDeviceQueue next_get_queue = nullptr;
+PFN_vkCreateCommandPool next_create_pool = nullptr;
+PFN_vkAllocateCommandBuffers next_allocate_command_buffers = nullptr;
+PFN_vkCreateBuffer next_create_buffer = nullptr;
+PFN_vkCmdBlitImage next_blit = nullptr;
+PFN_vkCmdPipelineBarrier next_pipeline_barrier = nullptr;
+PFN_vkDestroyDevice next_destroy_device = nullptr;
 VkInstance created_instance = VK_NULL_HANDLE;
 std::atomic<long> submits{0}, presents{0};
 std::atomic<bool> watchdog_fired{false};
 std::atomic<bool> dispatched_past_limit{false};
 std::atomic<bool> shader_reads_host_memory{false};
+// compute-queue-family: the fake family's index (the device's family count), the handle its
+// queue has (a dispatchable object of this layer's: the loader writes its dispatch pointer in the
+// first word), the pools and command buffers made for it, submissions counted per queue.
+std::uint32_t fake_family = ~0u;
+void* fake_queue_object[2] = {};
+VkQueue real_queue_behind_fake = VK_NULL_HANDLE;
+std::unordered_map<std::uint64_t, bool> pool_is_fake;
+std::unordered_map<VkCommandBuffer, bool> cb_is_fake;
+std::atomic<long> fake_submits{0}, real_submits{0};
+std::atomic<bool> graphics_on_compute_queue{false};
 // discrete-memory: the type each allocation was made from, and the allocation each buffer is in.
 std::mutex memory_mutex;
 std::unordered_map<std::uint64_t, std::uint32_t> memory_type_of;
@@ -115,6 +142,8 @@ VKAPI_ATTR VkResult VKAPI_CALL create_instance(const VkInstanceCreateInfo* info,
       next_instance_proc(*instance, "vkGetPhysicalDeviceProperties2"));
   next_queue_families = reinterpret_cast<PFN_vkGetPhysicalDeviceQueueFamilyProperties>(
       next_instance_proc(*instance, "vkGetPhysicalDeviceQueueFamilyProperties"));
+  next_queue_families2 = reinterpret_cast<PFN_vkGetPhysicalDeviceQueueFamilyProperties2>(
+      next_instance_proc(*instance, "vkGetPhysicalDeviceQueueFamilyProperties2"));
   next_features2 = reinterpret_cast<PFN_vkGetPhysicalDeviceFeatures2>(
       next_instance_proc(*instance, "vkGetPhysicalDeviceFeatures2"));
   next_memory = reinterpret_cast<PFN_vkGetPhysicalDeviceMemoryProperties>(
@@ -137,7 +166,22 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical,
   next_device_proc = link->u.pLayerInfo->pfnNextGetDeviceProcAddr;
   link->u.pLayerInfo = link->u.pLayerInfo->pNext;
   auto create = reinterpret_cast<PFN_vkCreateDevice>(next(created_instance, "vkCreateDevice"));
-  const VkResult r = create(physical, info, allocator, device);
+  // compute-queue-family: the fake family's queue is family 0's underneath, one queue for both.
+  VkDeviceCreateInfo real = *info;
+  std::vector<VkDeviceQueueCreateInfo> queues;
+  if (fault_is("compute-queue-family")) {
+    for (uint32_t k = 0; k < info->queueCreateInfoCount; ++k) {
+      VkDeviceQueueCreateInfo q = info->pQueueCreateInfos[k];
+      if (q.queueFamilyIndex == fake_family) q.queueFamilyIndex = 0;
+      const bool known = std::any_of(queues.begin(), queues.end(), [&](const auto& e) {
+        return e.queueFamilyIndex == q.queueFamilyIndex;
+      });
+      if (!known) queues.push_back(q);
+    }
+    real.queueCreateInfoCount = uint32_t(queues.size());
+    real.pQueueCreateInfos = queues.data();
+  }
+  const VkResult r = create(physical, &real, allocator, device);
   if (r != VK_SUCCESS) return r;
   next_queue_submit =
       reinterpret_cast<PFN_vkQueueSubmit>(next_device_proc(*device, "vkQueueSubmit"));
@@ -155,6 +199,16 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical,
       reinterpret_cast<PFN_vkBindBufferMemory>(device_function("vkBindBufferMemory"));
   next_update_descriptors =
       reinterpret_cast<PFN_vkUpdateDescriptorSets>(device_function("vkUpdateDescriptorSets"));
+  next_get_queue = reinterpret_cast<PFN_vkGetDeviceQueue>(device_function("vkGetDeviceQueue"));
+  next_create_pool =
+      reinterpret_cast<PFN_vkCreateCommandPool>(device_function("vkCreateCommandPool"));
+  next_allocate_command_buffers =
+      reinterpret_cast<PFN_vkAllocateCommandBuffers>(device_function("vkAllocateCommandBuffers"));
+  next_create_buffer = reinterpret_cast<PFN_vkCreateBuffer>(device_function("vkCreateBuffer"));
+  next_blit = reinterpret_cast<PFN_vkCmdBlitImage>(device_function("vkCmdBlitImage"));
+  next_pipeline_barrier =
+      reinterpret_cast<PFN_vkCmdPipelineBarrier>(device_function("vkCmdPipelineBarrier"));
+  next_destroy_device = reinterpret_cast<PFN_vkDestroyDevice>(device_function("vkDestroyDevice"));
   next_queue_present =  // null without VK_KHR_swapchain
       reinterpret_cast<PFN_vkQueuePresentKHR>(next_device_proc(*device, "vkQueuePresentKHR"));
   return r;
@@ -162,7 +216,7 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical,
 
 VKAPI_ATTR VkResult VKAPI_CALL surface_support(VkPhysicalDevice physical, uint32_t family,
                                                VkSurfaceKHR surface, VkBool32* supported) {
-  if (fault_is("no-present")) {
+  if (fault_is("no-present") || (fault_is("compute-queue-family") && family == fake_family)) {
     *supported = VK_FALSE;
     return VK_SUCCESS;
   }
@@ -220,8 +274,50 @@ VKAPI_ATTR void VKAPI_CALL device_features2(VkPhysicalDevice physical,
   next_features2(physical, features);
 }
 
+// compute-queue-family: the device's families and, last, one that computes and copies only.
+void with_compute_family(VkPhysicalDevice physical, uint32_t* count,
+                         VkQueueFamilyProperties* families) {
+  uint32_t n = 0;
+  next_queue_families(physical, &n, nullptr);
+  std::vector<VkQueueFamilyProperties> all(n);
+  next_queue_families(physical, &n, all.data());
+  all.resize(n);
+  VkQueueFamilyProperties compute = all.at(0);
+  compute.queueFlags = VK_QUEUE_COMPUTE_BIT | VK_QUEUE_TRANSFER_BIT;
+  compute.queueCount = 1;
+  all.push_back(compute);
+  fake_family = n;
+  if (!families) {
+    *count = uint32_t(all.size());
+    return;
+  }
+  *count = std::min<uint32_t>(*count, uint32_t(all.size()));
+  std::copy(all.begin(), all.begin() + *count, families);
+}
+
+// The same for the Vulkan 1.1 query (the validation layer's): the fake family's extensions of
+// the structure are left as the caller made them.
+VKAPI_ATTR void VKAPI_CALL queue_families2(VkPhysicalDevice physical, uint32_t* count,
+                                           VkQueueFamilyProperties2* families) {
+  if (!fault_is("compute-queue-family")) return next_queue_families2(physical, count, families);
+  uint32_t n = 0;
+  next_queue_families2(physical, &n, nullptr);
+  if (!families) {
+    *count = n + 1;
+    return;
+  }
+  std::vector<VkQueueFamilyProperties> plain(n + 1);
+  uint32_t all = n + 1;
+  with_compute_family(physical, &all, plain.data());
+  uint32_t real = std::min(*count, n);
+  next_queue_families2(physical, &real, families);
+  *count = std::min(*count, n + 1);
+  for (uint32_t k = real; k < *count; ++k) families[k].queueFamilyProperties = plain[k];
+}
+
 VKAPI_ATTR void VKAPI_CALL queue_families(VkPhysicalDevice physical, uint32_t* count,
                                           VkQueueFamilyProperties* families) {
+  if (fault_is("compute-queue-family")) return with_compute_family(physical, count, families);
   next_queue_families(physical, count, families);
   if (!families || !fault_is("no-graphics-queue")) return;
   for (uint32_t k = 0; k < *count; ++k) families[k].queueFlags &= ~VK_QUEUE_GRAPHICS_BIT;
@@ -367,8 +463,126 @@ VKAPI_ATTR void VKAPI_CALL update_descriptors(VkDevice device, uint32_t count,
   next_update_descriptors(device, count, writes, copies, copy);
 }
 
+// The device's own queue behind a handle this layer gave out.
+VkQueue real_queue(VkQueue queue) {
+  return queue == reinterpret_cast<VkQueue>(fake_queue_object) ? real_queue_behind_fake : queue;
+}
+
+VKAPI_ATTR void VKAPI_CALL get_device_queue(VkDevice device, uint32_t family, uint32_t index,
+                                            VkQueue* queue) {
+  if (!fault_is("compute-queue-family") || family != fake_family)
+    return next_get_queue(device, family, index, queue);
+  next_get_queue(device, 0, 0, &real_queue_behind_fake);
+  // The loader writes its dispatch pointer (the device's) into the queues its vkGetDeviceQueue
+  // returns, and the layers below look their state up by it: the real queue never goes back
+  // through the loader, so it is written here, and the fake one's until the loader writes it.
+  *reinterpret_cast<void**>(real_queue_behind_fake) = *reinterpret_cast<void**>(device);
+  fake_queue_object[0] = *reinterpret_cast<void**>(device);
+  *queue = reinterpret_cast<VkQueue>(fake_queue_object);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL create_command_pool(VkDevice device,
+                                                   const VkCommandPoolCreateInfo* info,
+                                                   const VkAllocationCallbacks* allocator,
+                                                   VkCommandPool* pool) {
+  const bool fake = fault_is("compute-queue-family") && info->queueFamilyIndex == fake_family;
+  VkCommandPoolCreateInfo real = *info;
+  if (fake) real.queueFamilyIndex = 0;
+  const VkResult r = next_create_pool(device, &real, allocator, pool);
+  if (r != VK_SUCCESS) return r;
+  const std::lock_guard<std::mutex> lock(memory_mutex);
+  pool_is_fake[std::uint64_t(*pool)] = fake;
+  return r;
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL allocate_command_buffers(VkDevice device,
+                                                        const VkCommandBufferAllocateInfo* info,
+                                                        VkCommandBuffer* cbs) {
+  const VkResult r = next_allocate_command_buffers(device, info, cbs);
+  if (r != VK_SUCCESS) return r;
+  const std::lock_guard<std::mutex> lock(memory_mutex);
+  for (uint32_t k = 0; k < info->commandBufferCount; ++k)
+    cb_is_fake[cbs[k]] = pool_is_fake[std::uint64_t(info->commandPool)];
+  return r;
+}
+
+// A family index as the device knows it.
+uint32_t real_family(uint32_t family) {
+  return fault_is("compute-queue-family") && family == fake_family ? 0 : family;
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL create_buffer(VkDevice device, const VkBufferCreateInfo* info,
+                                             const VkAllocationCallbacks* allocator,
+                                             VkBuffer* buffer) {
+  if (info->sharingMode != VK_SHARING_MODE_CONCURRENT)
+    return next_create_buffer(device, info, allocator, buffer);
+  std::vector<uint32_t> families;
+  for (uint32_t k = 0; k < info->queueFamilyIndexCount; ++k) {
+    const uint32_t f = real_family(info->pQueueFamilyIndices[k]);
+    if (std::find(families.begin(), families.end(), f) == families.end()) families.push_back(f);
+  }
+  VkBufferCreateInfo real = *info;
+  real.queueFamilyIndexCount = uint32_t(families.size());
+  real.pQueueFamilyIndices = families.data();
+  if (families.size() < 2) {  // one family underneath: exclusive, as the device requires
+    real.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    real.queueFamilyIndexCount = 0;
+    real.pQueueFamilyIndices = nullptr;
+  }
+  return next_create_buffer(device, &real, allocator, buffer);
+}
+
+void graphics_command(VkCommandBuffer cb, const char* call) {
+  bool fake = false;
+  {
+    const std::lock_guard<std::mutex> lock(memory_mutex);
+    fake = cb_is_fake[cb];
+  }
+  if (fake && !graphics_on_compute_queue.exchange(true))
+    std::fprintf(stderr, "rtvk test layer: %s recorded for the compute-only queue family\n", call);
+}
+
+VKAPI_ATTR void VKAPI_CALL blit_image(VkCommandBuffer cb, VkImage src, VkImageLayout src_layout,
+                                      VkImage dst, VkImageLayout dst_layout, uint32_t count,
+                                      const VkImageBlit* regions, VkFilter filter) {
+  graphics_command(cb, "vkCmdBlitImage");
+  next_blit(cb, src, src_layout, dst, dst_layout, count, regions, filter);
+}
+
+VKAPI_ATTR void VKAPI_CALL pipeline_barrier(VkCommandBuffer cb, VkPipelineStageFlags src,
+                                            VkPipelineStageFlags dst, VkDependencyFlags flags,
+                                            uint32_t memory_count, const VkMemoryBarrier* memory,
+                                            uint32_t buffer_count,
+                                            const VkBufferMemoryBarrier* buffers,
+                                            uint32_t image_count,
+                                            const VkImageMemoryBarrier* images) {
+  std::vector<VkBufferMemoryBarrier> b(buffers, buffers + buffer_count);
+  std::vector<VkImageMemoryBarrier> i(images, images + image_count);
+  for (auto& x : b) {
+    x.srcQueueFamilyIndex = real_family(x.srcQueueFamilyIndex);
+    x.dstQueueFamilyIndex = real_family(x.dstQueueFamilyIndex);
+  }
+  for (auto& x : i) {
+    x.srcQueueFamilyIndex = real_family(x.srcQueueFamilyIndex);
+    x.dstQueueFamilyIndex = real_family(x.dstQueueFamilyIndex);
+  }
+  next_pipeline_barrier(cb, src, dst, flags, memory_count, memory, buffer_count, b.data(),
+                        image_count, i.data());
+}
+
+VKAPI_ATTR void VKAPI_CALL destroy_device(VkDevice device, const VkAllocationCallbacks* allocator) {
+  if (fault_is("compute-queue-family"))
+    std::fprintf(
+        stderr, "rtvk test layer: submissions: %ld to the compute-only family, %ld to the others\n",
+        long(fake_submits), long(real_submits));
+  next_destroy_device(device, allocator);
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL queue_submit(VkQueue queue, uint32_t count,
                                             const VkSubmitInfo* submits_info, VkFence fence) {
+  ++(queue == reinterpret_cast<VkQueue>(fake_queue_object) ? fake_submits : real_submits);
+  queue = real_queue(queue);
+  if (graphics_on_compute_queue) return VK_ERROR_DEVICE_LOST;
   const long at = fault_count("lose-device-at-submit");
   const long after = fault_count("lose-device-after-present");
   if ((at > 0 && ++submits >= at) || (after > 0 && presents >= after)) return VK_ERROR_DEVICE_LOST;
@@ -415,7 +629,16 @@ VKAPI_ATTR void VKAPI_CALL dispatch_base(VkCommandBuffer cb, uint32_t bx, uint32
 
 VKAPI_ATTR VkResult VKAPI_CALL queue_present(VkQueue queue, const VkPresentInfoKHR* info) {
   ++presents;
+  if (queue == reinterpret_cast<VkQueue>(fake_queue_object)) {
+    std::fprintf(stderr, "rtvk test layer: vkQueuePresentKHR from the compute-only queue family\n");
+    graphics_on_compute_queue = true;
+    return VK_ERROR_DEVICE_LOST;
+  }
   return next_queue_present(queue, info);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL queue_wait_idle(VkQueue queue) {
+  return next_queue_wait_idle(real_queue(queue));
 }
 
 VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL get_device_proc(VkDevice device, const char* name);
@@ -428,6 +651,15 @@ PFN_vkVoidFunction own_function(const char* name) {
   if (is("vkQueueSubmit")) return reinterpret_cast<PFN_vkVoidFunction>(queue_submit);
   if (is("vkQueuePresentKHR")) return reinterpret_cast<PFN_vkVoidFunction>(queue_present);
   if (is("vkCmdDispatch")) return reinterpret_cast<PFN_vkVoidFunction>(dispatch);
+  if (is("vkGetDeviceQueue")) return reinterpret_cast<PFN_vkVoidFunction>(get_device_queue);
+  if (is("vkQueueWaitIdle")) return reinterpret_cast<PFN_vkVoidFunction>(queue_wait_idle);
+  if (is("vkCreateCommandPool")) return reinterpret_cast<PFN_vkVoidFunction>(create_command_pool);
+  if (is("vkAllocateCommandBuffers"))
+    return reinterpret_cast<PFN_vkVoidFunction>(allocate_command_buffers);
+  if (is("vkCreateBuffer")) return reinterpret_cast<PFN_vkVoidFunction>(create_buffer);
+  if (is("vkCmdBlitImage")) return reinterpret_cast<PFN_vkVoidFunction>(blit_image);
+  if (is("vkCmdPipelineBarrier")) return reinterpret_cast<PFN_vkVoidFunction>(pipeline_barrier);
+  if (is("vkDestroyDevice")) return reinterpret_cast<PFN_vkVoidFunction>(destroy_device);
   if (is("vkGetBufferMemoryRequirements"))
     return reinterpret_cast<PFN_vkVoidFunction>(buffer_requirements);
   if (is("vkAllocateMemory")) return reinterpret_cast<PFN_vkVoidFunction>(allocate_memory);
@@ -453,6 +685,9 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL get_instance_proc(VkInstance instance, 
     return reinterpret_cast<PFN_vkVoidFunction>(device_features2);
   if (is("vkGetPhysicalDeviceQueueFamilyProperties"))
     return reinterpret_cast<PFN_vkVoidFunction>(queue_families);
+  if (is("vkGetPhysicalDeviceQueueFamilyProperties2") ||
+      is("vkGetPhysicalDeviceQueueFamilyProperties2KHR"))
+    return reinterpret_cast<PFN_vkVoidFunction>(queue_families2);
   if (is("vkGetPhysicalDeviceMemoryProperties"))
     return reinterpret_cast<PFN_vkVoidFunction>(memory_properties);
   if (is("vkGetPhysicalDeviceMemoryProperties2") || is("vkGetPhysicalDeviceMemoryProperties2KHR"))
