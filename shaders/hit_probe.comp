@@ -15,7 +15,7 @@ void main() {
   if (i >= uint(entries.length())) return;
   hit_probe_entry e = entries[i];
   float t;
-  entries[i].hit = hit_sphere(e.center, e.radius, ray(e.origin, e.direction), e.t_min, e.t_max, t)
+  entries[i].hit = hit_sphere(e.center, e.radius, ray(e.origin, e.direction, 0.0), e.t_min, e.t_max, t)
                        ? 1u
                        : 0u;
   entries[i].t = t;

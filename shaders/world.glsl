@@ -9,13 +9,22 @@
 #include "bvh.glsl"
 #include "hit_sphere.h"
 
+// Whether some sphere moves: without, the velocities are never read. The host sets it for
+// render.comp; the probes leave it off.
+layout(constant_id = RTVK_SPEC_MOTION) const bool motion = false;
+
+// Where the sphere in slot k is at `time` (sphere::center_at).
+precise vec3 center_at(uint k, float time) {
+  return motion ? spheres[k].center + time * spheres[k].velocity : spheres[k].center;
+}
+
 // Tests the sphere in slot k, keeping the nearest hit (`closest`; `best` its scene index,
 // `best_slot` its slot). Ties go to the later sphere in the scene.
 void test_sphere(uint k, ray r, float t_min, precise inout float closest, inout int best,
                  inout uint best_slot) {
   precise float t;
   int i = int(spheres[k].scene_index);
-  if (hit_sphere(spheres[k].center, spheres[k].radius, r, t_min, closest, t) &&
+  if (hit_sphere(center_at(k, r.time), spheres[k].radius, r, t_min, closest, t) &&
       (t < closest || i > best)) {
     closest = t;
     best = i;
@@ -127,7 +136,7 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
   }
   if (best < 0) return false;
   gpu_sphere s = spheres[best_slot];
-  record_hit(s.center, s.radius, s.material, r, closest, rec);
+  record_hit(center_at(best_slot, r.time), s.radius, s.material, r, closest, rec);
   return true;
 }
 
@@ -144,7 +153,7 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
   for (uint i = 0u; i < pc.sphere_count; ++i) {
     if (++iterations > pc.loop_budget) return false;
     precise float t;
-    if (hit_sphere(spheres[i].center, spheres[i].radius, r, t_min, closest_so_far, t)) {
+    if (hit_sphere(center_at(i, r.time), spheres[i].radius, r, t_min, closest_so_far, t)) {
       hit_anything = true;
       closest_so_far = t;
       closest_sphere = i;
@@ -152,7 +161,7 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
   }
   if (hit_anything) {
     gpu_sphere s = spheres[closest_sphere];
-    record_hit(s.center, s.radius, s.material, r, closest_so_far, rec);
+    record_hit(center_at(closest_sphere, r.time), s.radius, s.material, r, closest_so_far, rec);
   }
   return hit_anything;
 }

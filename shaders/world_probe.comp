@@ -25,7 +25,7 @@ layout(push_constant) uniform push_block {
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= uint(entries.length())) return;
-  ray r = ray(entries[i].origin, entries[i].direction);
+  ray r = ray(entries[i].origin, entries[i].direction, 0.0);
   hit_record rec;
   uint iterations = 0u;
   bool hit = hit_world(r, 0.001, 3.402823466e+38, rec, iterations);

@@ -357,7 +357,7 @@ class builder {
 };
 
 // The spheres as prims, their boxes rounded outward to float, and the whole range's info.
-range_info make_prims(std::span<const sphere> spheres, prim_vector& prims) {
+range_info make_prims(std::span<const sphere> spheres, time_span motion, prim_vector& prims) {
   prims.resize(spheres.size());
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, spheres.size(), 4096), range_info{},
@@ -365,11 +365,12 @@ range_info make_prims(std::span<const sphere> spheres, prim_vector& prims) {
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
           const sphere& s = spheres[i];
           const glm::dvec3 radius(std::abs(s.radius));
+          const point3 a = s.center_at(motion.lo), b = s.center_at(motion.hi);
           prim& p = prims[i];
           p.lo = p.hi = splat4(0);
           for (int k = 0; k < 3; ++k) {
-            p.lo[k] = next_down(float(s.center[k] - radius[k]));
-            p.hi[k] = next_up(float(s.center[k] + radius[k]));
+            p.lo[k] = next_down(float(std::min(a[k], b[k]) - radius[k]));
+            p.hi[k] = next_up(float(std::max(a[k], b[k]) + radius[k]));
           }
           p.sphere = std::uint32_t(i);
           info.bounds.grow(p.lo, p.hi);
@@ -386,14 +387,14 @@ range_info make_prims(std::span<const sphere> spheres, prim_vector& prims) {
 
 }  // namespace
 
-bvh::bvh(std::span<const sphere> spheres, int threads) {
+bvh::bvh(std::span<const sphere> spheres, int threads, time_span motion) {
   if (spheres.empty()) return;
   if (levels_needed(spheres.size()) > max_depth)
     throw std::length_error(std::to_string(spheres.size()) + " spheres are more than a BVH of " +
                             std::to_string(max_depth) + " levels holds");
   run_in_arena(threads, [&] {
     prim_vector prims;
-    const range_info all = make_prims(spheres, prims);
+    const range_info all = make_prims(spheres, motion, prims);
     // A binary tree over N >= 2 one-sphere leaves has N - 1 interior nodes; one sphere, a root.
     nodes_.resize(std::max<std::size_t>(spheres.size() - 1, 1));
     order_.resize(spheres.size());

@@ -21,9 +21,11 @@ namespace rtvk {
 // the scene, so hits can be kept identical to a linear scan.
 class bvh {
  public:
-  // Built on `threads` threads (0: one per core); the tree does not depend on how many.
-  // Throws std::length_error for more spheres than a tree of max_depth levels holds.
-  explicit bvh(std::span<const sphere> spheres, int threads = 0);
+  // Built on `threads` threads (0: one per core); the tree does not depend on how many. A moving
+  // sphere's box holds it over the whole of `motion` (it moves in a straight line, so its boxes
+  // at the two ends bound it in between). Throws std::length_error for more spheres than a tree
+  // of max_depth levels holds.
+  explicit bvh(std::span<const sphere> spheres, int threads = 0, time_span motion = {});
 
   // Interior nodes, node 0 the root; none when there are no spheres. One sphere makes a root
   // whose two children are the same leaf.

@@ -147,9 +147,9 @@ inline bool descend(const wide_node& n, unsigned entered, const float (&t)[4], n
 
 }  // namespace
 
-bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads) {
+bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads, time_span motion) {
   {
-    const bvh tree(spheres, threads);
+    const bvh tree(spheres, threads, motion);
     wide_ = wide_bvh(tree);
     order_ = tree.order();
   }  // the binary tree is freed before the spheres are copied: a lower peak

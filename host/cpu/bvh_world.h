@@ -14,7 +14,8 @@ namespace rtvk {
 class bvh_world final : public hittable {
  public:
   // Built on `threads` threads (0: one per core).
-  explicit bvh_world(const std::vector<sphere>& spheres, int threads = 0);
+  // Built on `threads` threads (0: one per core), bounding moving spheres over `motion`.
+  explicit bvh_world(const std::vector<sphere>& spheres, int threads = 0, time_span motion = {});
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
 

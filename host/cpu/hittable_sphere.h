@@ -9,10 +9,10 @@ namespace rtvk {
 // [t_min, t_max] (false when there is none), and the record of a hit at t. A search over many
 // spheres fills the record only for the winner.
 inline bool hit_distance(const sphere& s, const ray& r, double t_min, double t_max, double& t) {
-  return hit_sphere(s.center, s.radius, r, t_min, t_max, t);
+  return hit_sphere(s.center_at(r.time), s.radius, r, t_min, t_max, t);
 }
 inline void record_hit(const sphere& s, const ray& r, double t, hit_record& rec) {
-  record_hit(s.center, s.radius, uint(s.material), r, t, rec);
+  record_hit(s.center_at(r.time), s.radius, uint(s.material), r, t, rec);
 }
 
 // A scene sphere as a hittable, for the lesson's hittable_list.

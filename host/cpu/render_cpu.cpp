@@ -83,6 +83,7 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
                               const render_window& win, const progress_callback& progress,
                               const engine_options& engine, render_stats* stats) {
   check_window(win, cam.image_width(), cam.image_height());
+  check_motion_span(s.motion, scene_moves(s), cam);
   double build_seconds = 0;
   const std::unique_ptr<hittable> world = timed_world(s, engine, build_seconds);
   const std::vector<material> materials = scene_materials(s);

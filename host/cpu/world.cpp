@@ -12,7 +12,7 @@ hittable_list make_world(const scene& s) {
 }
 
 std::unique_ptr<hittable> make_accelerated_world(const scene& s, bool use_bvh, int threads) {
-  if (use_bvh) return std::make_unique<bvh_world>(s.spheres, threads);
+  if (use_bvh) return std::make_unique<bvh_world>(s.spheres, threads, s.motion);
   return std::make_unique<hittable_list>(make_world(s));
 }
 

@@ -49,6 +49,11 @@ void check_pose(const camera_pose& p) {
     throw std::invalid_argument("the " + std::string(projection_name(p.projection)) +
                                 " projection has no lens: aperture must be 0, got " +
                                 format_number(p.aperture));
+  if (!std::isfinite(p.shutter_open) || !std::isfinite(p.shutter_close) ||
+      !(p.shutter_open <= p.shutter_close))
+    throw std::invalid_argument("the shutter must open (" + format_number(p.shutter_open) +
+                                " s) no later than it closes (" + format_number(p.shutter_close) +
+                                " s), both finite");
   if (glm::length(p.lookfrom - p.lookat) == 0)
     throw std::invalid_argument("lookfrom and lookat are the same point");
   if (glm::length(glm::cross(p.vup, p.lookfrom - p.lookat)) == 0)
@@ -101,9 +106,12 @@ std::string projection_names() {
   return out;
 }
 
-camera::camera(const camera_pose& pose, double aspect_ratio, int image_width)
+camera::camera(const camera_pose& pose, double aspect_ratio, int image_width, double frame_time)
     : image_width_(image_width), image_height_(checked_height(aspect_ratio, image_width)) {
   check_pose(pose);
+  if (!std::isfinite(frame_time + pose.shutter_open) ||
+      !std::isfinite(frame_time + pose.shutter_close))
+    throw std::invalid_argument("the shutter's times must be finite");
   const double viewport_height = 2.0 * tan_half_angle(pose.vfov);
   const double viewport_width = aspect_ratio * viewport_height;
 
@@ -127,6 +135,8 @@ camera::camera(const camera_pose& pose, double aspect_ratio, int image_width)
   f.fisheye_fov = pose.fisheye_fov * pi / 180;
   f.focus_dist = pose.focus_dist;
   f.projection = uint(pose.projection);
+  f.time_open = frame_time + pose.shutter_open;
+  f.shutter = (frame_time + pose.shutter_close) - f.time_open;
 }
 
 }  // namespace rtvk

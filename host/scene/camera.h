@@ -42,6 +42,9 @@ struct camera_pose {
   double focus_dist = 1;     // distance to the plane in perfect focus, scene units, > 0
   rtvk::projection projection = rtvk::projection::perspective;  // how directions map to pixels
   double fisheye_fov = 180;  // the fisheye models' field of view across the circle, degrees
+  double shutter_open = 0;   // when the shutter opens, seconds after the frame's time
+  double shutter_close = 0;  // when it closes, seconds after the frame's time, >= shutter_open;
+                             // equal: an instant, no motion blur
 
   bool operator==(const camera_pose&) const = default;
 };
@@ -55,10 +58,12 @@ class camera {
   explicit camera(double aspect_ratio = 16.0 / 9.0, int image_width = 400)
       : camera(camera_pose{}, aspect_ratio, image_width) {}
 
-  // A posed camera with a thin lens; also throws std::invalid_argument for a pose that does not
-  // define a view (lookfrom == lookat, vup parallel to the view, vfov outside (0, 180), a fisheye
-  // field of view outside (0, 360], an aperture with a model that has no lens, ...).
-  camera(const camera_pose& pose, double aspect_ratio, int image_width);
+  // A posed camera with a thin lens, for the frame at `frame_time` seconds (its shutter is open
+  // from frame_time + pose.shutter_open to frame_time + pose.shutter_close); also throws
+  // std::invalid_argument for a pose that does not define a view (lookfrom == lookat, vup
+  // parallel to the view, vfov outside (0, 180), a fisheye field of view outside (0, 360], an
+  // aperture with a model that has no lens, a shutter that closes before it opens, ...).
+  camera(const camera_pose& pose, double aspect_ratio, int image_width, double frame_time = 0);
 
   // The ray through normalized image coordinates (s, t) -- (0, 0) is the lower-left corner of
   // the viewport, (1, 1) the upper-right -- leaving the lens at `lens`, a point of the unit disk.
@@ -88,7 +93,9 @@ class camera {
   rtvk::projection projection() const { return rtvk::projection(frame_.projection); }
   const vec3& axis_w() const { return frame_.axis_w; }
   double focus_dist() const { return frame_.focus_dist; }
-  double fisheye_fov() const { return frame_.fisheye_fov; }  // radians
+  double fisheye_fov() const { return frame_.fisheye_fov; }                // radians
+  double time_open() const { return frame_.time_open; }                    // seconds
+  double time_close() const { return frame_.time_open + frame_.shutter; }  // seconds
 
  private:
   int image_width_;     // pixels

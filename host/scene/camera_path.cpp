@@ -50,6 +50,8 @@ camera_pose between(const camera_pose& a, const camera_pose& b, double f) {
   p.focus_dist = glm::mix(a.focus_dist, b.focus_dist, f);
   p.projection = a.projection;  // a model is not interpolated: the earlier keyframe's holds
   p.fisheye_fov = glm::mix(a.fisheye_fov, b.fisheye_fov, f);
+  p.shutter_open = a.shutter_open;  // a shutter is not interpolated either: the earlier one's
+  p.shutter_close = a.shutter_close;
   return p;
 }
 

@@ -39,6 +39,11 @@ void check_scene(const scene& s) {
       throw usage_error(where + ": center must be finite and within +-1e18, got " +
                         format_number(sp.center.x) + "," + format_number(sp.center.y) + "," +
                         format_number(sp.center.z));
+    const point3 c1 = sp.center_at(1);
+    if (!in_range(c1.x) || !in_range(c1.y) || !in_range(c1.z))
+      throw usage_error(where + ": center1 must be finite and within +-1e18, got " +
+                        format_number(c1.x) + "," + format_number(c1.y) + "," +
+                        format_number(c1.z));
     if (!(sp.radius > 0) || !in_range(sp.radius))
       throw usage_error(where + ": radius must be > 0 and at most 1e18, got " +
                         format_number(sp.radius));
@@ -46,6 +51,19 @@ void check_scene(const scene& s) {
       throw usage_error(where + ": material index " + std::to_string(sp.material) +
                         " does not exist");
   }
+}
+
+bool scene_moves(const scene& s) {
+  return std::any_of(s.spheres.begin(), s.spheres.end(),
+                     [](const sphere& sp) { return sp.velocity != vec3(0); });
+}
+
+void check_motion_span(time_span motion, bool moves, const camera& cam) {
+  if (moves && !(motion.lo <= cam.time_open() && cam.time_close() <= motion.hi))
+    throw std::invalid_argument("the shutter's instants [" + format_number(cam.time_open()) + ", " +
+                                format_number(cam.time_close()) +
+                                "] s are outside the span the moving spheres are bounded over [" +
+                                format_number(motion.lo) + ", " + format_number(motion.hi) + "]");
 }
 
 }  // namespace rtvk

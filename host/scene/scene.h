@@ -39,9 +39,19 @@ struct scene {
   rtvk::sky sky;                                       // what rays that escape see
   std::vector<named_material> materials;               // spheres index into this
   std::vector<sphere> spheres;                         // every object, in the order hits are tested
+  time_span motion;  // the instants rays may sample, seconds: BVHs bound moving spheres over it
+                     // (render plans widen it to every frame's shutter; default [0, 1])
 };
 
 std::vector<material> scene_materials(const scene& s);
+
+// Whether some sphere of the scene moves.
+bool scene_moves(const scene& s);
+
+// Throws std::invalid_argument when the scene has moving spheres and `cam`'s shutter samples
+// instants outside s.motion, the span its BVHs bound them over: a program error (render plans
+// widen the span to every frame), never a silently culled sphere.
+void check_motion_span(time_span motion, bool moves, const camera& cam);
 
 // The first camera's path: the one a render uses unless --camera picks others.
 inline camera_path& main_camera(scene& s) {

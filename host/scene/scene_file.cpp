@@ -106,8 +106,9 @@ std::string escape_pointer(const std::string& key) {
   return out;
 }
 
-const std::set<std::string> pose_fields = {"lookfrom", "lookat",     "vup",        "vfov",
-                                           "aperture", "focus_dist", "projection", "fisheye_fov"};
+const std::set<std::string> pose_fields = {"lookfrom",   "lookat",      "vup",
+                                           "vfov",       "aperture",    "focus_dist",
+                                           "projection", "fisheye_fov", "shutter"};
 
 // The pose fields of `j` over the defaults; the caller has checked which fields may appear.
 camera_pose read_pose(const scene_reader& r, const json& j, const std::string& p) {
@@ -129,6 +130,16 @@ camera_pose read_pose(const scene_reader& r, const json& j, const std::string& p
     c.projection = *model;
   }
   if (j.contains("fisheye_fov")) c.fisheye_fov = r.number(j["fisheye_fov"], p + "/fisheye_fov");
+  if (j.contains("shutter")) {
+    const json& s = j["shutter"];
+    if (!s.is_array() || s.size() != 2)
+      r.fail(p + "/shutter", "expected [open, close] in seconds, got " + r.type_of(s));
+    c.shutter_open = r.number(s[0], p + "/shutter/0");
+    c.shutter_close = r.number(s[1], p + "/shutter/1");
+    if (!(c.shutter_open <= c.shutter_close))
+      r.fail(p + "/shutter", "expected open <= close, got [" + format_number(c.shutter_open) +
+                                 ", " + format_number(c.shutter_close) + "]");
+  }
   return c;
 }
 
@@ -281,9 +292,11 @@ std::map<std::string, int> read_materials(const scene_reader& r, const json& mat
 // `material_index` maps a material name to its index in the scene.
 sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
                    const std::map<std::string, int>& material_index) {
-  r.only_fields(j, p, {"center", "radius", "material"});
+  r.only_fields(j, p, {"center", "center1", "radius", "material"});
   sphere sp;
   sp.center = r.vector3(r.required(j, p, "center"), p + "/center");
+  // A moving sphere: at "center" at time 0 and "center1" at time 1, linear before and after.
+  if (j.contains("center1")) sp.velocity = r.vector3(j["center1"], p + "/center1") - sp.center;
   sp.radius = r.number(r.required(j, p, "radius"), p + "/radius");
   if (sp.radius <= 0)
     r.fail(p + "/radius", "expected a radius > 0, got " + format_number(sp.radius));
@@ -337,6 +350,8 @@ json pose_json(const camera_pose& c) {
   if (c.projection != projection::perspective)
     j["projection"] = std::string(projection_name(c.projection));
   if (c.fisheye_fov != camera_pose{}.fisheye_fov) j["fisheye_fov"] = c.fisheye_fov;
+  if (c.shutter_open != 0 || c.shutter_close != 0)
+    j["shutter"] = json::array({c.shutter_open, c.shutter_close});
   return j;
 }
 
@@ -429,10 +444,13 @@ std::string dump_scene_json(const scene& s) {
   }
   root["materials"] = mats;
   json spheres = json::array();
-  for (const sphere& sp : s.spheres)
-    spheres.push_back({{"center", vec_json(sp.center)},
-                       {"radius", sp.radius},
-                       {"material", s.materials[std::size_t(sp.material)].name}});
+  for (const sphere& sp : s.spheres) {
+    json j = {{"center", vec_json(sp.center)},
+              {"radius", sp.radius},
+              {"material", s.materials[std::size_t(sp.material)].name}};
+    if (sp.velocity != vec3(0)) j["center1"] = vec_json(sp.center_at(1));
+    spheres.push_back(j);
+  }
   root["spheres"] = spheres;
   std::string out;
   write_json(root, 0, out);

@@ -27,6 +27,8 @@ struct camera_frame {
   real fisheye_fov;     // fisheye field of view across the circle, radians
   real focus_dist;      // distance to the plane in perfect focus, scene units
   uint projection;      // RTVK_PROJECTION_*
+  real time_open;       // the instant the shutter opens, seconds (frame time + shutter open)
+  real shutter;         // how long it stays open, seconds; 0: an instant
 };
 #else
 #define camera_frame camera_ubo
@@ -63,15 +65,15 @@ inline ray get_ray(camera_frame cam, real s, real t, real2 lens) {
     // From the eye, not from the scene's origin: lower_left - origin computed in float would
     // cancel away the direction's low bits for a camera far from the origin.
     precise real3 direction = cam.to_lower_left + s * cam.horizontal + t * cam.vertical - offset;
-    return ray(origin, direction);
+    return ray(origin, direction, real(0.0));
   }
   if (cam.projection == RTVK_PROJECTION_ORTHOGRAPHIC) {
     precise real3 on_focus_plane = cam.lower_left + s * cam.horizontal + t * cam.vertical;
     precise real3 from = on_focus_plane + cam.focus_dist * cam.axis_w + offset;
     precise real3 direction = on_focus_plane - from;
-    return ray(from, direction);
+    return ray(from, direction, real(0.0));
   }
-  return ray(cam.origin, panoramic_direction(cam, s, t));
+  return ray(cam.origin, panoramic_direction(cam, s, t), real(0.0));
 }
 
 // Normalized coordinate of position x along a side of n pixels: x / (n - 1), as the lesson does,
@@ -82,8 +84,9 @@ inline precise real pixel_coordinate(real x, uint n) {
 
 // The first ray of one sample of pixel (i, j) of a width x height image, j counted from the
 // bottom as the lesson does: through a random spot of the pixel when `jitter`, else its corner,
-// and through a random point of the lens when `lens` and the camera has an aperture. `s` is the
-// sample's stream (pixel_sample_stream).
+// and through a random point of the lens when `lens` and the camera has an aperture, at an
+// instant drawn uniformly while the shutter is open. `s` is the sample's stream
+// (pixel_sample_stream).
 inline ray sample_ray(camera_frame cam, uint width, uint height, uint i, uint j, random_stream s,
                       bool jitter, bool lens) {
   precise real x = jitter ? real(i) + real(rnd(s, dim_jitter_u)) : real(i);
@@ -94,7 +97,10 @@ inline ray sample_ray(camera_frame cam, uint width, uint height, uint i, uint j,
       lens && cam.lens_radius > real(0.0)
           ? random_in_unit_disk(real(rnd(s, dim_lens_a)), real(rnd(s, dim_lens_b)))
           : real2(0.0);
-  return get_ray(cam, u, v, on_lens);
+  ray r = get_ray(cam, u, v, on_lens);
+  r.time = cam.shutter > real(0.0) ? cam.time_open + cam.shutter * real(rnd(s, dim_time))
+                                   : cam.time_open;
+  return r;
 }
 
 RTVK_KERNELS_END

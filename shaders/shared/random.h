@@ -13,6 +13,7 @@ const uint dim_jitter_u = 0u;     // bounce 0: pixel jitter
 const uint dim_jitter_v = 1u;     //
 const uint dim_lens_a = 2u;       // bounce 0: lens sample
 const uint dim_lens_b = 3u;       //
+const uint dim_time = 4u;         // bounce 0: the instant in the shutter interval
 const uint dim_direction_a = 0u;  // bounce >= 1: scatter direction
 const uint dim_direction_b = 1u;  //
 const uint dim_fuzz_radius = 2u;  // bounce >= 1: metal fuzz

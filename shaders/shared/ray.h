@@ -25,13 +25,14 @@ inline precise real3 unit_vector(real3 v) {
   return divide(v, length3(v));
 }
 
-// P(t) = origin + t * direction.
+// P(t) = origin + t * direction, at one instant: moving objects are where they are at `time`.
 struct ray {
   precise real3 origin;     // where the ray starts, scene units
   precise real3 direction;  // not normalized: t is measured in lengths of this vector
+  precise real time;        // the instant it samples, seconds (the camera's shutter draws it)
 #ifdef __cplusplus
   ray() = default;
-  ray(real3 o, real3 d) : origin(o), direction(d) {}
+  ray(real3 o, real3 d, real tm = real(0.0)) : origin(o), direction(d), time(tm) {}
 #endif
 };
 

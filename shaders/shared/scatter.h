@@ -32,14 +32,14 @@ inline precise real schlick_reflectance(real cosine, real ref_idx) {
   return r0 + (real(1.0) - r0) * (x2 * x2 * x);
 }
 
-inline bool scatter_lambertian(real3 albedo, hit_record rec, random_stream s,
+inline bool scatter_lambertian(real3 albedo, ray r_in, hit_record rec, random_stream s,
                                precise OUT(real3) attenuation, precise OUT(ray) scattered) {
   precise real3 direction =
       rec.normal + random_unit_vector(real(rnd(s, dim_direction_a)), real(rnd(s, dim_direction_b)));
   // A random vector opposite the normal would give a zero direction: keep the normal instead.
   const real e = real(1e-8);
   if (abs(direction.x) < e && abs(direction.y) < e && abs(direction.z) < e) direction = rec.normal;
-  scattered = ray(scatter_origin(rec, direction), direction);
+  scattered = ray(scatter_origin(rec, direction), direction, r_in.time);
   attenuation = albedo;
   return true;
 }
@@ -50,7 +50,7 @@ inline bool scatter_metal(real3 albedo, real fuzz, ray r_in, hit_record rec, ran
   precise real3 fuzz_dir = random_in_unit_sphere(
       real(rnd(s, dim_direction_a)), real(rnd(s, dim_direction_b)), real(rnd(s, dim_fuzz_radius)));
   precise real3 direction = reflected + fuzz * fuzz_dir;
-  scattered = ray(scatter_origin(rec, direction), direction);
+  scattered = ray(scatter_origin(rec, direction), direction, r_in.time);
   attenuation = albedo;
   precise real facing = dot3(scattered.direction, rec.normal);
   return facing > real(0.0);
@@ -68,7 +68,7 @@ inline bool scatter_dielectric(real ir, ray r_in, hit_record rec, random_stream 
       cannot_refract || schlick_reflectance(cos_theta, refraction_ratio) > real(rnd(s, dim_choice))
           ? reflect_dir(unit_direction, rec.normal)
           : refract_dir(unit_direction, rec.normal, refraction_ratio);
-  scattered = ray(scatter_origin(rec, direction), direction);
+  scattered = ray(scatter_origin(rec, direction), direction, r_in.time);
   return true;
 }
 
@@ -80,7 +80,7 @@ inline bool scatter(uint type, real3 albedo, real fuzz, real ir, ray r_in, hit_r
   attenuation = real3(0.0);
   scattered = r_in;
   if (type == RTVK_MATERIAL_LAMBERTIAN)
-    return scatter_lambertian(albedo, rec, s, attenuation, scattered);
+    return scatter_lambertian(albedo, r_in, rec, s, attenuation, scattered);
   if (type == RTVK_MATERIAL_METAL)
     return scatter_metal(albedo, fuzz, r_in, rec, s, attenuation, scattered);
   if (type == RTVK_MATERIAL_DIELECTRIC)

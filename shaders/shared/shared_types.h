@@ -36,10 +36,11 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_LENS 3        // bool: some view has a lens (aperture > 0)
 #define RTVK_SPEC_USE_BVH 4     // bool: traverse the BVH, else test every sphere in order
 #define RTVK_SPEC_COUNT_RAYS 5  // bool: count each pixel's rays (pixel_sum::rays)
+#define RTVK_SPEC_MOTION 6      // bool: some sphere moves (gpu_sphere::velocity is not zero)
 
-// Views (cameras, animation frames) one dispatch draws, its z index picking the view: 128 camera
-// blocks are 14 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
-#define RTVK_MAX_VIEWS 128
+// Views (cameras, animation frames) one dispatch draws, its z index picking the view: 112 camera
+// blocks of 144 bytes are 15.75 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
+#define RTVK_MAX_VIEWS 112
 
 // Traversal stack entries. The BVH builder keeps every tree at most this many interior levels
 // deep (bvh::max_depth), and a traversal remembers at most one child per level on its path; that
@@ -81,16 +82,22 @@ struct camera_ubo {
   vec3 axis_w;         // unit vector backwards, away from what the camera looks at
   float focus_dist;    // distance to the plane in perfect focus, scene units
   vec3 to_lower_left;  // lower_left - origin, formed in double on the host, scene units
-  uint pad;            // unused
+  float time_open;     // the instant the shutter opens, seconds (frame time + shutter open)
+  float shutter;       // how long it stays open, seconds; 0: an instant
+  uint pad0;           // unused
+  uint pad1;           // unused
+  uint pad2;           // unused
 };
 
-// std430 array element: 32 bytes. With the BVH the buffer holds the spheres in its leaf order,
+// std430 array element: 48 bytes. With the BVH the buffer holds the spheres in its leaf order,
 // else in scene order.
 struct gpu_sphere {
-  vec3 center;       // scene units
+  vec3 center;       // at time 0, scene units
   float radius;      // scene units, > 0
+  vec3 velocity;     // center at time 1 minus center at time 0, scene units per second
   uint material;     // index into the materials buffer
   uint scene_index;  // the sphere's index in the scene: exact ties go to the later one
+  uint pad0;         // unused
   uint pad1;         // unused
   uint pad2;         // unused
 };
@@ -308,12 +315,15 @@ static_assert(offsetof(camera_ubo, fisheye_fov) == 92);
 static_assert(offsetof(camera_ubo, axis_w) == 96);
 static_assert(offsetof(camera_ubo, focus_dist) == 108);
 static_assert(offsetof(camera_ubo, to_lower_left) == 112);
-static_assert(sizeof(camera_ubo) == 128);
+static_assert(offsetof(camera_ubo, time_open) == 124);
+static_assert(offsetof(camera_ubo, shutter) == 128);
+static_assert(sizeof(camera_ubo) == 144);
 static_assert(offsetof(gpu_sphere, center) == 0);
 static_assert(offsetof(gpu_sphere, radius) == 12);
-static_assert(offsetof(gpu_sphere, material) == 16);
-static_assert(offsetof(gpu_sphere, scene_index) == 20);
-static_assert(sizeof(gpu_sphere) == 32);
+static_assert(offsetof(gpu_sphere, velocity) == 16);
+static_assert(offsetof(gpu_sphere, material) == 28);
+static_assert(offsetof(gpu_sphere, scene_index) == 32);
+static_assert(sizeof(gpu_sphere) == 48);
 static_assert(offsetof(gpu_material, albedo) == 0);
 static_assert(offsetof(gpu_material, type) == 12);
 static_assert(offsetof(gpu_material, fuzz) == 16);

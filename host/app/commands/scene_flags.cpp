@@ -49,6 +49,11 @@ void scene_flags::add_to(CLI::App& cmd) {
                                     "Fisheye field of view across the circle, degrees, in "
                                     "(0, 360] (default 180)")
                          ->group(group);
+  shutter_opt_ = cmd.add_option("--shutter", shutter_,
+                                "Shutter interval OPEN:CLOSE in seconds after each frame's time "
+                                "(default 0:0, an instant): each sample's instant is drawn in it, "
+                                "and moving spheres blur")
+                     ->group(group);
   orbit_opt_ = cmd.add_option("--orbit", orbit_,
                               "Turn the camera about the up axis through its look-at point, one "
                               "turn in this many seconds (the built-in orbit path)")
@@ -69,6 +74,7 @@ scene_overrides scene_flags::overrides() const {
           .focus_dist = if_given(focus_dist_opt_, focus_dist_),
           .projection = if_given(projection_opt_, projection_),
           .fisheye_fov = if_given(fisheye_fov_opt_, fisheye_fov_),
+          .shutter = if_given(shutter_opt_, shutter_),
           .orbit = if_given(orbit_opt_, orbit_)};
 }
 

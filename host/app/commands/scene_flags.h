@@ -27,6 +27,7 @@ class scene_flags {
   std::string lookfrom_, lookat_, vup_;
   double vfov_ = 0, aperture_ = 0, focus_dist_ = 0, orbit_ = 0, fisheye_fov_ = 0;
   std::string projection_;
+  std::string shutter_;
   CLI::Option* width_opt_ = nullptr;
   CLI::Option* aspect_opt_ = nullptr;
   CLI::Option* spp_opt_ = nullptr;
@@ -41,6 +42,7 @@ class scene_flags {
   CLI::Option* orbit_opt_ = nullptr;
   CLI::Option* projection_opt_ = nullptr;
   CLI::Option* fisheye_fov_opt_ = nullptr;
+  CLI::Option* shutter_opt_ = nullptr;
 };
 
 }  // namespace rtvk

@@ -52,6 +52,8 @@ std::string render_flags(const std::string& scene_name, const view::viewer_resul
   if (p.projection == projection::fisheye_equidistant ||
       p.projection == projection::fisheye_equisolid)
     f += " --fisheye-fov " + exact(p.fisheye_fov);
+  if (p.shutter_open != 0 || p.shutter_close != 0)
+    f += " --shutter " + exact(p.shutter_open) + ":" + exact(p.shutter_close);
   return f;
 }
 

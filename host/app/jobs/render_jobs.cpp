@@ -151,7 +151,8 @@ std::vector<render_job> make_jobs(const scene& s, const job_request& req,
       render_job job{
           c.name, f,
           overrides.make_camera(
-              s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f)),
+              s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f),
+              f / req.fps),
           output.expand(c.name, f), pieces ? job_fingerprint(scene_text, pose) : std::string()};
       if (!outputs.insert(job.output).second)
         throw usage_error("--output " + req.output + ": two images would be written to " +
@@ -193,6 +194,11 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output
   const int_range frames = plan_frames(s, req, output);
   std::vector<render_job> jobs = make_jobs(s, req, output, overrides, frames);
   window = plan_window(s, req, jobs[0].cam);
+  // The BVHs bound moving spheres over exactly the instants these images sample.
+  s.motion = {jobs[0].cam.time_open(), jobs[0].cam.time_close()};
+  for (const render_job& j : jobs)
+    s.motion = {std::min(s.motion.lo, j.cam.time_open()),
+                std::max(s.motion.hi, j.cam.time_close())};
   return jobs;
 }
 

@@ -49,6 +49,25 @@ void apply_model(const scene_overrides& o, camera_pose& c) {
   if (o.fisheye_fov)
     c.fisheye_fov = checked(*o.fisheye_fov, *o.fisheye_fov > 0 && *o.fisheye_fov <= 360,
                             "--fisheye-fov", "in (0, 360] degrees");
+  if (o.shutter) {
+    const std::size_t colon = o.shutter->find(':');
+    double open = 0, close = 0;
+    try {
+      if (colon == std::string::npos) throw std::invalid_argument("no colon");
+      std::size_t used_open = 0, used_close = 0;
+      const std::string a = o.shutter->substr(0, colon), b = o.shutter->substr(colon + 1);
+      open = std::stod(a, &used_open);
+      close = std::stod(b, &used_close);
+      if (used_open != a.size() || used_close != b.size()) throw std::invalid_argument("trailing");
+    } catch (const std::exception&) {
+      throw usage_error("--shutter " + *o.shutter + ": expected OPEN:CLOSE in seconds, e.g. 0:1");
+    }
+    if (!std::isfinite(open) || !std::isfinite(close) || !(open <= close))
+      throw usage_error("--shutter " + *o.shutter +
+                        ": the shutter must open no later than it closes, both finite");
+    c.shutter_open = open;
+    c.shutter_close = close;
+  }
 }
 
 }  // namespace
@@ -73,9 +92,9 @@ void scene_overrides::apply(scene& s) const {
 }
 
 camera scene_overrides::make_camera(const scene& s, const camera_pose& pose,
-                                    const std::string& what) const {
+                                    const std::string& what, double frame_time) const {
   try {
-    return camera(pose, s.render.aspect, s.render.width);
+    return camera(pose, s.render.aspect, s.render.width, frame_time);
   } catch (const std::invalid_argument& e) {
     const std::string shown = aspect ? *aspect : format_number(s.render.aspect);
     throw usage_error("--width " + std::to_string(s.render.width) + " / --aspect " + shown + " / " +

@@ -24,15 +24,18 @@ struct scene_overrides {
   std::optional<double> focus_dist;       // distance in focus, scene units
   std::optional<std::string> projection;  // camera model, by name (projection_from_name)
   std::optional<double> fisheye_fov;      // fisheye field of view, degrees
+  std::optional<std::string> shutter;     // OPEN:CLOSE as typed, seconds after the frame's time
   std::optional<double> orbit;            // seconds per turn of the built-in orbit path
 
   // The scene's settings with the overrides applied, to every camera in s.cameras (narrow them
   // to the chosen ones first). Throws usage_error naming the flag.
   void apply(scene& s) const;
 
-  // The camera for `pose` in the scene; an impossible combination (a height over the limit, a
-  // camera looking at itself) is a usage_error naming the flags involved and `what` (the camera).
-  camera make_camera(const scene& s, const camera_pose& pose, const std::string& what) const;
+  // The camera for `pose` in the scene, for the frame at `frame_time` seconds; an impossible
+  // combination (a height over the limit, a camera looking at itself) is a usage_error naming
+  // the flags involved and `what` (the camera).
+  camera make_camera(const scene& s, const camera_pose& pose, const std::string& what,
+                     double frame_time = 0) const;
 };
 
 }  // namespace rtvk

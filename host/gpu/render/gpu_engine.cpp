@@ -446,6 +446,7 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       options_(options),
       scene_name_(s.name),
       sky_(s.sky),
+      motion_(s.motion),
       // The tree is built first: the limits are checked with its exact size.
       host_arrays_(
           std::make_unique<gpu_scene::host_arrays>(gpu_scene::build(s, options.engine.use_bvh))),
@@ -502,13 +503,14 @@ const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool co
   const std::uint32_t switches = (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u);
   std::unique_ptr<compute_pipeline>& p = pipelines_[switches];
   if (!p) {
-    std::uint32_t spec[6] = {};  // by constant_id
+    std::uint32_t spec[7] = {};  // by constant_id
     spec[0] = wg_[0];
     spec[1] = wg_[1];
     spec[RTVK_SPEC_JITTER] = jitter;
     spec[RTVK_SPEC_LENS] = lens;
     spec[RTVK_SPEC_USE_BVH] = options_.engine.use_bvh;
     spec[RTVK_SPEC_COUNT_RAYS] = count_rays;
+    spec[RTVK_SPEC_MOTION] = scene_.moves();
     p = std::make_unique<compute_pipeline>(ctx_, render_shader(),
                                            render_bindings(scene_, *targets_), sizeof(render_push),
                                            spec, cache_.get());
@@ -576,6 +578,7 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
                       const render_window& win, readback_kind kind, const sample_progress& progress,
                       render_stats* stats, const band_sink& sink) {
   check_views(views, win);
+  for (const camera& c : views) check_motion_span(motion_, scene_.moves(), c);
   const device_info& dev = ctx_.device();
   const bool kept = kind == readback_kind::kept;
   // Kept: the whole image's sums in one buffer, bands of any rows (accumulate checked the fit).

@@ -138,6 +138,7 @@ class gpu_engine {
   gpu_render_options options_;  // as given
   std::string scene_name_;      // for messages
   rtvk::sky sky_;               // the scene's, for the push constants
+  time_span motion_;            // the scene's: the instants the BVH bounds moving spheres over
   // The scene's arrays as built on the host: kept only while the engine is made.
   std::unique_ptr<gpu_scene::host_arrays> host_arrays_;
   std::vector<buffer_request> scene_buffers_;  // what scene_ holds, for later limit checks

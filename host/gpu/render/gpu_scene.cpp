@@ -35,14 +35,16 @@ enum : int { staging_set = 1, array_set };
 
 gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   const auto start = std::chrono::steady_clock::now();
-  const bvh tree(use_bvh ? std::span<const sphere>(s.spheres) : std::span<const sphere>());
+  const bvh tree(use_bvh ? std::span<const sphere>(s.spheres) : std::span<const sphere>(), 0,
+                 s.motion);
   const wide_bvh wide(tree);
   const double seconds = seconds_since(start);
   std::vector<bvh_wide_node> nodes(wide.nodes().size());
   static_assert(sizeof(bvh_wide_node) == sizeof(wide_node));
   if (!nodes.empty())
     std::memcpy(nodes.data(), wide.nodes().data(), nodes.size() * sizeof(wide_node));
-  return {to_gpu_spheres(s, tree.order()), to_gpu_materials(s), std::move(nodes), seconds};
+  return {to_gpu_spheres(s, tree.order()), to_gpu_materials(s), std::move(nodes), seconds,
+          scene_moves(s)};
 }
 
 gpu_scene::gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh)
@@ -51,6 +53,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh)
 gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
     : sphere_count_(std::uint32_t(a.spheres.size())),
       build_seconds_(a.build_seconds),
+      moves_(a.moves),
       specs_{{bytes_of(a.spheres), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
              {bytes_of(a.materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
              {bytes_of(a.nodes), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},

@@ -28,6 +28,7 @@ class gpu_scene {
     std::vector<gpu_material> materials;  // in scene order
     std::vector<bvh_wide_node> nodes;     // the four-wide BVH's nodes, depth first (none: empty)
     double build_seconds;                 // building the BVH took
+    bool moves;                           // some sphere has a velocity
   };
   // The scene's arrays, its BVH built (over no spheres when !use_bvh).
   static host_arrays build(const scene& s, bool use_bvh);
@@ -42,6 +43,7 @@ class gpu_scene {
   bool in_place() const { return !staging_; }  // written straight into device memory
 
   std::uint32_t sphere_count() const { return sphere_count_; }
+  bool moves() const { return moves_; }  // some sphere has a velocity (RTVK_SPEC_MOTION)
   double build_seconds() const { return build_seconds_; }
   VkBuffer spheres() const { return arrays_[0].get(); }
   VkBuffer materials() const { return arrays_[1].get(); }
@@ -50,6 +52,7 @@ class gpu_scene {
  private:
   std::uint32_t sphere_count_;         // spheres the scene has
   double build_seconds_;               // building the BVH took
+  bool moves_;                         // some sphere has a velocity
   std::vector<buffer_spec> specs_;     // spheres, materials, nodes: sizes for the copies
   std::optional<buffer_set> staging_;  // host copies; none when written in place
   buffer_set arrays_;                  // what the shader reads

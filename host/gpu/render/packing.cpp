@@ -20,6 +20,8 @@ camera_ubo to_ubo(const camera& cam) {
   u.projection = f.projection;
   u.image_width = uint(cam.image_width());
   u.image_height = uint(cam.image_height());
+  u.time_open = float(f.time_open);
+  u.shutter = float(f.shutter);
   return u;
 }
 
@@ -28,7 +30,8 @@ std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint
   out.reserve(s.spheres.size());
   const auto add = [&](std::uint32_t i) {
     const sphere& sp = s.spheres[i];
-    out.push_back({vec3(sp.center), float(sp.radius), uint(sp.material), i, 0, 0});
+    out.push_back(
+        {vec3(sp.center), float(sp.radius), vec3(sp.velocity), uint(sp.material), i, 0, 0, 0});
   };
   if (order.empty())
     for (std::size_t i = 0; i < s.spheres.size(); ++i) add(std::uint32_t(i));
