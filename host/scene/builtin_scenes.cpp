@@ -69,18 +69,9 @@ scene materials_scene() {
 
 // The book's cover: a grid of small random spheres around three large ones. The random numbers
 // come from the counter-based generator with a fixed seed, so the scene is the same every run
-// and on every machine.
-scene book_final_scene() {
-  scene s;
-  s.name = "book-final";
-  camera_pose& c = main_camera(s).pose;
-  c.lookfrom = point3(13, 2, 3);
-  c.lookat = point3(0, 0, 0);
-  c.vfov = 20;
-  c.aperture = 0.1;
-  c.focus_dist = 10;
-  s.render = book_render(1200, 3.0 / 2.0, 500);
-
+// and on every machine. `bouncing`: the second book's first scene, where each small diffuse
+// sphere rises by up to half a unit between times 0 and 1 (its rise drawn after its color).
+void add_book_cover(scene& s, bool bouncing) {
   std::uint32_t counter = 0;
   auto rnd = [&counter] { return double(random_float(0x5eed, counter++, 0, 0, 0)); };
   auto add = [&s](const std::string& name, material m) {
@@ -97,17 +88,19 @@ scene book_final_scene() {
       if (glm::length(center - point3(4, 0.2, 0)) <= 0.9) continue;
       const std::string name = "small_" + std::to_string(a + 11) + "_" + std::to_string(b + 11);
       material m;
+      std::optional<point3> center1;
       if (choose_mat < 0.8) {
         const color c1(rnd(), rnd(), rnd());
         const color c2(rnd(), rnd(), rnd());
         m = lambertian(c1 * c2);
+        if (bouncing) center1 = center + vec3(0, 0.5 * rnd(), 0);
       } else if (choose_mat < 0.95) {
         const color albedo(0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd(), 0.5 + 0.5 * rnd());
         m = metal(albedo, 0.5 * rnd());
       } else {
         m = dielectric(1.5);
       }
-      s.spheres.push_back(sphere(center, 0.2, add(name, m)));
+      s.spheres.push_back(sphere(center, 0.2, add(name, m), center1));
     }
   }
   s.spheres.push_back(sphere(point3(0, 1, 0), 1.0, add("big_glass", dielectric(1.5))));
@@ -115,6 +108,38 @@ scene book_final_scene() {
       sphere(point3(-4, 1, 0), 1.0, add("big_diffuse", lambertian(color(0.4, 0.2, 0.1)))));
   s.spheres.push_back(
       sphere(point3(4, 1, 0), 1.0, add("big_metal", metal(color(0.7, 0.6, 0.5), 0.0))));
+}
+
+// The first book's camera on its cover.
+camera_pose& book_cover_camera(scene& s) {
+  camera_pose& c = main_camera(s).pose;
+  c.lookfrom = point3(13, 2, 3);
+  c.lookat = point3(0, 0, 0);
+  c.vfov = 20;
+  c.aperture = 0.1;
+  c.focus_dist = 10;
+  return c;
+}
+
+scene book_final_scene() {
+  scene s;
+  s.name = "book-final";
+  book_cover_camera(s);
+  s.render = book_render(1200, 3.0 / 2.0, 500);
+  add_book_cover(s, false);
+  return s;
+}
+
+// "Ray Tracing: The Next Week", chapter 2: the cover with its diffuse spheres bouncing, seen
+// by the same camera with the shutter open from time 0 to 1, 400 pixels wide at 16:9, 100 spp.
+scene bouncing_spheres_scene() {
+  scene s;
+  s.name = "bouncing-spheres";
+  camera_pose& c = book_cover_camera(s);
+  c.shutter_open = 0;
+  c.shutter_close = 1;
+  s.render = book_render(400, 16.0 / 9.0, 100);
+  add_book_cover(s, true);
   return s;
 }
 
@@ -165,13 +190,14 @@ scene spheres_scene(std::uint32_t n) {
 }  // namespace
 
 std::vector<std::string> builtin_scene_names() {
-  return {"seed", "materials", "book-final"};
+  return {"seed", "materials", "book-final", "bouncing-spheres"};
 }
 
 scene builtin_scene(std::string_view name) {
   if (name == "seed") return seed_scene();
   if (name == "materials") return materials_scene();
   if (name == "book-final") return book_final_scene();
+  if (name == "bouncing-spheres") return bouncing_spheres_scene();
   if (name.rfind("spheres:", 0) == 0) {
     const std::string_view count = name.substr(8);
     std::uint32_t n = 0;

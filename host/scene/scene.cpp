@@ -55,7 +55,7 @@ void check_scene(const scene& s) {
 
 bool scene_moves(const scene& s) {
   return std::any_of(s.spheres.begin(), s.spheres.end(),
-                     [](const sphere& sp) { return sp.velocity != vec3(0); });
+                     [](const sphere& sp) { return sp.velocity() != vec3(0); });
 }
 
 void check_motion_span(time_span motion, bool moves, const camera& cam) {

@@ -296,7 +296,7 @@ sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
   sphere sp;
   sp.center = r.vector3(r.required(j, p, "center"), p + "/center");
   // A moving sphere: at "center" at time 0 and "center1" at time 1, linear before and after.
-  if (j.contains("center1")) sp.velocity = r.vector3(j["center1"], p + "/center1") - sp.center;
+  if (j.contains("center1")) sp.center1 = r.vector3(j["center1"], p + "/center1");
   sp.radius = r.number(r.required(j, p, "radius"), p + "/radius");
   if (sp.radius <= 0)
     r.fail(p + "/radius", "expected a radius > 0, got " + format_number(sp.radius));
@@ -445,10 +445,10 @@ std::string dump_scene_json(const scene& s) {
   root["materials"] = mats;
   json spheres = json::array();
   for (const sphere& sp : s.spheres) {
-    json j = {{"center", vec_json(sp.center)},
-              {"radius", sp.radius},
-              {"material", s.materials[std::size_t(sp.material)].name}};
-    if (sp.velocity != vec3(0)) j["center1"] = vec_json(sp.center_at(1));
+    json j = {{"center", vec_json(sp.center)}};
+    if (sp.center1) j["center1"] = vec_json(*sp.center1);
+    j["radius"] = sp.radius;
+    j["material"] = s.materials[std::size_t(sp.material)].name;
     spheres.push_back(j);
   }
   root["spheres"] = spheres;

@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 #include "vec3.h"
 
 namespace rtvk {
@@ -7,17 +9,20 @@ namespace rtvk {
 // through gpu_sphere; both with the same math, the shared hit_sphere (shaders/shared).
 struct sphere {
   sphere() = default;
-  sphere(const point3& center, double radius, int material = 0, const vec3& velocity = {})
-      : center(center), radius(radius), material(material), velocity(velocity) {}
+  sphere(const point3& center, double radius, int material = 0,
+         std::optional<point3> center1 = std::nullopt)
+      : center(center), radius(radius), material(material), center1(center1) {}
 
-  point3 center{};      // at time 0, scene units
-  double radius = 0.0;  // scene units, > 0
-  int material = 0;     // index into the scene's materials
-  vec3 velocity{};      // center at time 1 minus center at time 0: scene units per second
+  point3 center{};                // at time 0, scene units
+  double radius = 0.0;            // scene units, > 0
+  int material = 0;               // index into the scene's materials
+  std::optional<point3> center1;  // at time 1, scene units, for a sphere that moves
 
-  // Where the center is at `time` (seconds): linear, before 0 and after 1 too. A sphere that
-  // does not move is exactly at `center` (0 * time adds nothing).
-  point3 center_at(double time) const { return center + time * velocity; }
+  // Scene units per second: center1 - center, or zero.
+  vec3 velocity() const { return center1 ? *center1 - center : vec3(0); }
+  // Where the center is at `time` (seconds): linear, before 0 and after 1 too. A sphere without
+  // center1 is exactly at `center`.
+  point3 center_at(double time) const { return center1 ? center + time * velocity() : center; }
 };
 
 // The instants a render's rays may sample, seconds: a BVH bounds every sphere over all of them.

@@ -84,6 +84,10 @@ TEST(Cli, BadInputExits2WithAMessageAndNoFile) {
       {{"--fisheye-fov", "400"}, "--fisheye-fov", "400"},
       {{"--fisheye-fov", "0"}, "--fisheye-fov", "0"},
       {{"--projection", "equirectangular", "--aperture", "0.5"}, "aperture", "0.5"},
+      {{"--shutter", "1:0"}, "--shutter", "1:0"},
+      {{"--shutter", "abc"}, "--shutter", "abc"},
+      {{"--shutter", "0:inf"}, "--shutter", "0:inf"},
+      {{"--shutter", "0:1x"}, "--shutter", "0:1x"},
   };
   test::temp_dir dir;
   const fs::path out = dir.path() / "out.png";

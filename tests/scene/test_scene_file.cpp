@@ -31,6 +31,33 @@ TEST(SceneFile, BuiltinScenesRoundTripExactly) {
   }
 }
 
+// A moving sphere and a camera's shutter are read as written, dumped the same (a sphere that
+// does not move and an instant's shutter stay unsaid), and a sphere's center at time 1 is
+// center1 exactly.
+TEST(SceneFile, MovingSpheresAndShuttersRoundTrip) {
+  const std::string text =
+      R"({"camera":{"lookfrom":[0,0,3],"lookat":[0,0,0],"shutter":[0.25,0.75]},)"
+      R"("materials":{"m":{"type":"normal"}},"spheres":[)"
+      R"({"center":[0,0,0],"center1":[1,0.1,0],"radius":0.5,"material":"m"},)"
+      R"({"center":[0,-100,0],"radius":99,"material":"m"}]})";
+  const scene s = parse_scene_json(text, "moving.json");
+  const camera_pose& pose = main_camera(s).pose;
+  EXPECT_EQ(pose.shutter_open, 0.25);
+  EXPECT_EQ(pose.shutter_close, 0.75);
+  ASSERT_TRUE(s.spheres[0].center1.has_value());
+  EXPECT_EQ(s.spheres[0].center_at(1), point3(1, 0.1, 0));
+  EXPECT_EQ(s.spheres[0].center_at(0.5), point3(0.5, 0.05, 0));
+  EXPECT_FALSE(s.spheres[1].center1.has_value());
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_NE(dumped.find("\"shutter\": [0.25,0.75]"), std::string::npos) << dumped;
+  EXPECT_NE(dumped.find("\"center\":[0.0,0.0,0.0],\"center1\":[1.0,0.1,0.0]"), std::string::npos)
+      << dumped;
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "again.json")), dumped);
+  const std::string still = dump_scene_json(builtin_scene("book-final"));
+  EXPECT_EQ(still.find("center1"), std::string::npos);
+  EXPECT_EQ(still.find("shutter"), std::string::npos);
+}
+
 // Every kind of material, with the parameters it reads, written and read back the same.
 TEST(SceneFile, EveryMaterialKindRoundTrips) {
   const std::string text = R"({"materials":{
@@ -146,6 +173,14 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
        "/cameras/a/vfov: a camera with keyframes takes its pose from them"},
       {R"({"cameras":{"a":{"keyframes":[{"time":0,"lookat":[0,0,0]}]}},"spheres":[]})",
        "/cameras/a: keyframe 0: lookfrom and lookat are the same point"},
+      {R"({"camera":{"shutter":[1,0]},"spheres":[]})",
+       "/camera/shutter: expected open <= close, got [1, 0]"},
+      {R"({"camera":{"shutter":0.5},"spheres":[]})",
+       "/camera/shutter: expected [open, close] in seconds, got a number"},
+      {R"({"camera":{"shutter":[0,"x"]},"spheres":[]})",
+       "/camera/shutter/1: expected a number, got a string"},
+      {"{" + m + R"(,"spheres":[{"center":[0,0,0],"center1":[0,1],"radius":1,"material":"m"}]})",
+       "/spheres/0/center1: expected an array of 3 numbers"},
   };
   for (const auto& c : cases) {
     const std::string e = error_of(c.json);

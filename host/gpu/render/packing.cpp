@@ -31,7 +31,7 @@ std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint
   const auto add = [&](std::uint32_t i) {
     const sphere& sp = s.spheres[i];
     out.push_back(
-        {vec3(sp.center), float(sp.radius), vec3(sp.velocity), uint(sp.material), i, 0, 0, 0});
+        {vec3(sp.center), float(sp.radius), vec3(sp.velocity()), uint(sp.material), i, 0, 0, 0});
   };
   if (order.empty())
     for (std::size_t i = 0; i < s.spheres.size(); ++i) add(std::uint32_t(i));
