@@ -4,6 +4,7 @@
 #include <xmmintrin.h>
 #endif
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -97,14 +98,25 @@ struct nearest {
   std::uint32_t slot = 0;   // and its leaf slot
 };
 
+// Where the sphere in leaf slot k is at the ray's instant (sphere::center_at).
+template <typename Sphere>
+inline point3 center_at(std::uint32_t k, const std::vector<Sphere>& spheres,
+                        const std::vector<vec3>& velocities, double time) {
+  return velocities.empty() ? spheres[k].center : spheres[k].center + time * velocities[k];
+}
+
 // Tests the sphere in leaf slot k, keeping the nearest hit. Ties go to the later sphere in the
 // scene, as in a linear scan, so the order of the tests never matters.
-inline void visit_sphere(std::uint32_t k, const std::vector<sphere>& spheres,
+template <typename Sphere>
+inline void visit_sphere(std::uint32_t k, const std::vector<Sphere>& spheres,
+                         const std::vector<vec3>& velocities,
                          const std::vector<std::uint32_t>& order, const ray& r, double t_min,
                          nearest& best) {
   const std::int64_t i = order[k];
   double t;
-  if (hit_distance(spheres[k], r, t_min, best.t, t) && (t < best.t || i > best.scene)) {
+  if (hit_sphere(center_at(k, spheres, velocities, r.time), spheres[k].radius, r, t_min, best.t,
+                 t) &&
+      (t < best.t || i > best.scene)) {
     best.t = t;
     best.scene = i;
     best.slot = k;
@@ -154,8 +166,15 @@ bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads, time_span 
     order_ = tree.order();
   }  // the binary tree is freed before the spheres are copied: a lower peak
   spheres_.resize(spheres.size());
+  const bool moves = std::any_of(spheres.begin(), spheres.end(),
+                                 [](const sphere& s) { return s.center1.has_value(); });
+  if (moves) velocities_.resize(spheres.size());
   parallel_for(spheres.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) spheres_[k] = spheres[order_[k]];
+    for (std::size_t k = begin; k < end; ++k) {
+      const sphere& s = spheres[order_[k]];
+      spheres_[k] = {s.center, s.radius, s.material};
+      if (moves) velocities_[k] = s.velocity();
+    }
   });
 }
 
@@ -174,7 +193,7 @@ bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) c
   nearest best{t_max};
   while (true) {
     if (next & wide_node::leaf_bit) {
-      visit_sphere(next & ~wide_node::leaf_bit, spheres_, order, r, t_min, best);
+      visit_sphere(next & ~wide_node::leaf_bit, spheres_, velocities_, order, r, t_min, best);
     } else {
       const wide_node& n = nodes[next];
       float t[4];
@@ -184,7 +203,9 @@ bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) c
     if (!pop_reachable(stack, widen_up(best.t), next)) break;
   }
   if (best.scene < 0) return false;
-  record_hit(spheres_[best.slot], r, best.t, rec);
+  const leaf_sphere& s = spheres_[best.slot];
+  record_hit(center_at(best.slot, spheres_, velocities_, r.time), s.radius, uint(s.material), r,
+             best.t, rec);
   return true;
 }
 

@@ -20,10 +20,19 @@ class bvh_world final : public hittable {
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
 
  private:
+  // A sphere as the search reads it: what a still one needs, in 40 bytes (a moving one's
+  // velocity is kept apart, so scenes where nothing moves read no more than before).
+  struct leaf_sphere {
+    point3 center;  // at time 0, scene units
+    double radius;  // scene units
+    int material;   // index into the scene's materials
+  };
+
   // The binary tree (the GPU's) is built, collapsed and dropped: the CPU keeps only these.
   std::vector<std::uint32_t> order_;  // leaf slot -> index into the scene's spheres
   wide_bvh wide_;                     // the tree collapsed four wide: what the CPU traverses
-  std::vector<sphere> spheres_;       // in leaf order: slot k is scene sphere order_[k]
+  std::vector<leaf_sphere> spheres_;  // in leaf order: slot k is scene sphere order_[k]
+  std::vector<vec3> velocities_;      // in leaf order; empty when no sphere moves
 };
 
 }  // namespace rtvk

@@ -66,13 +66,12 @@ inline bool path_hit(precise INOUT(path_state) p, hit_record rec, uint type, rea
     c = p.throughput * albedo;
     return true;
   }
+  // The scattered ray goes straight into p.r (scatter takes the incoming ray by value): no copy
+  // through a local, which on the CPU stalled on store forwarding once rays carried a time.
   precise real3 attenuation;
-  precise ray scattered;
-  if (!scatter(type, albedo, fuzz, ir, p.r, rec, at_bounce(p.s, p.depth + 1u), attenuation,
-               scattered))
+  if (!scatter(type, albedo, fuzz, ir, p.r, rec, at_bounce(p.s, p.depth + 1u), attenuation, p.r))
     return true;
   p.throughput *= attenuation;
-  p.r = scattered;
   ++p.depth;
   return false;
 }
