@@ -58,6 +58,17 @@ bool scene_moves(const scene& s) {
                      [](const sphere& sp) { return sp.velocity() != vec3(0); });
 }
 
+time_span shutter_span(const scene& s, double time) {
+  time_span span{time + main_camera(s).at(time).shutter_open,
+                 time + main_camera(s).at(time).shutter_close};
+  for (const named_camera& c : s.cameras) {
+    const camera_pose p = c.path.at(time);
+    span.lo = std::min(span.lo, time + p.shutter_open);
+    span.hi = std::max(span.hi, time + p.shutter_close);
+  }
+  return span;
+}
+
 void check_motion_span(time_span motion, bool moves, const camera& cam) {
   if (moves && !(motion.lo <= cam.time_open() && cam.time_close() <= motion.hi))
     throw std::invalid_argument("the shutter's instants [" + format_number(cam.time_open()) + ", " +

@@ -48,6 +48,10 @@ std::vector<material> scene_materials(const scene& s);
 // Whether some sphere of the scene moves.
 bool scene_moves(const scene& s);
 
+// The instants every camera's shutter spans at `time` (seconds): what a view of the scene at
+// that time, from any of its cameras, samples.
+time_span shutter_span(const scene& s, double time);
+
 // Throws std::invalid_argument when the scene has moving spheres and `cam`'s shutter samples
 // instants outside s.motion, the span its BVHs bound them over: a program error (render plans
 // widen the span to every frame), never a silently culled sphere.

@@ -66,6 +66,16 @@ TEST(CliBook, DumpedSceneRendersTheIdenticalImage) {
             "seed\nmaterials\nbook-final\nbouncing-spheres\nspheres:N (N from 1 to 4000000)\n");
 }
 
+// A shutter open past time 1 (the spheres go on rising): bench bounds them over it on both
+// backends, as render does (it once refused: its BVH covered [0, 1] only).
+TEST(CliBench, AShutterPastTimeOneIsBenchedOnBothBackends) {
+  const auto r = run_rtvk({"bench", "--scene", "bouncing-spheres", "--shutter", "0:2", "--width",
+                           "64", "--spp", "2", "--backend", "all"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("cpu  bouncing-spheres 64x36"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("gpu  bouncing-spheres 64x36"), std::string::npos) << r.out;
+}
+
 // Frames of an animation sample instants past time 1, where the bouncing spheres go on rising
 // (linear beyond center1): the BVH bounds them over every frame's shutter, so each frame is the
 // image of a search without it, byte for byte, and the GPU renders them too.

@@ -318,6 +318,13 @@ TEST_F(XvfbTest, ScreenshotsAreTheBytesRtvkRenderWrites) {
   expect_screenshot_is_the_render(env(), {"--scene", "book-final", "--width", "200", "--spp", "8"});
 }
 
+// Moving spheres under a shutter open past time 1: the viewer bounds them over it (it once
+// refused), its screenshot is render's bytes, and the printed flags carry the shutter.
+TEST_F(XvfbTest, AMotionBlurredScreenshotIsTheBytesRtvkRenderWrites) {
+  expect_screenshot_is_the_render(
+      env(), {"--scene", "bouncing-spheres", "--width", "120", "--spp", "4", "--shutter", "0:2"});
+}
+
 TEST_F(XvfbTest, CtrlCClosesTheWindowWithExit0AndNoScreenshot) {
   const test::temp_dir dir;
   const std::string shot = (dir.path() / "never.png").string();

@@ -206,6 +206,7 @@ int run_bench(bench_options& o) {
   overrides.apply(s);
   const camera cam = overrides.make_camera(s, main_camera(s).at(0),
                                            "camera " + s.cameras[0].name + " of " + o.scene);
+  s.motion = {cam.time_open(), cam.time_close()};  // the instants its BVHs bound spheres over
   check_render_memory(cam.image_width(), cam.image_height(), 1);
   const engine_options engine = engine_from(o);
   const bench_record base = record_for(s, cam);

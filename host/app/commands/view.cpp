@@ -64,6 +64,7 @@ int run_view(view_options o) {
   const scene_overrides overrides = o.flags.overrides();
   overrides.apply(s);
   check_scene(s);
+  s.motion = shutter_span(s, 0);  // the viewer shows time 0, from any of the scene's cameras
   const camera_path* path = &main_camera(s);
   if (!o.camera.empty()) {
     path = nullptr;
