@@ -321,12 +321,17 @@ std::vector<sphere> read_spheres(const scene_reader& r, const json& root,
 }
 
 scene read_scene(const scene_reader& r, const json& root, const std::string& name) {
-  r.only_fields(root, "", {"camera", "cameras", "render", "sky", "materials", "spheres"});
+  r.only_fields(root, "",
+                {"camera", "cameras", "render", "sky", "background", "materials", "spheres"});
   scene s;
   s.name = name;
   s.cameras = read_cameras(r, root);
   if (root.contains("render")) s.render = read_render(r, root["render"]);
   if (root.contains("sky")) s.sky = read_sky(r, root["sky"]);
+  if (root.contains("background")) {  // the second book's constant color: a uniform sky
+    if (root.contains("sky")) r.fail("/background", "a scene has a sky or a background, not both");
+    s.sky.horizon = s.sky.zenith = r.radiance(root["background"], "/background");
+  }
   std::map<std::string, int> material_index;
   if (root.contains("materials")) material_index = read_materials(r, root["materials"], s);
   s.spheres = read_spheres(r, root, material_index);
@@ -432,7 +437,10 @@ std::string dump_scene_json(const scene& s) {
   root["render"] = {{"width", r.width},         {"aspect", r.aspect}, {"spp", r.spp},
                     {"max_depth", r.max_depth}, {"seed", r.seed},     {"gamma", r.gamma},
                     {"jitter", r.jitter}};
-  root["sky"] = {{"horizon", vec_json(s.sky.horizon)}, {"zenith", vec_json(s.sky.zenith)}};
+  if (s.sky.horizon == s.sky.zenith)
+    root["background"] = vec_json(s.sky.horizon);
+  else
+    root["sky"] = {{"horizon", vec_json(s.sky.horizon)}, {"zenith", vec_json(s.sky.zenith)}};
   json mats = json::object();
   for (const auto& [name, m] : s.materials) {
     const material_kind& kind = kind_of(m.type);

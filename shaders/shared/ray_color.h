@@ -17,8 +17,10 @@ RTVK_KERNELS_BEGIN
 const real t_min = real(0.001);
 
 // The sky seen along direction d: `horizon` at the horizon blending to `zenith` overhead (the
-// book's white to blue by default).
+// book's white to blue by default). Equal colors are a constant background (the second book's),
+// exactly that color: the blend could round it by an ulp.
 inline precise real3 sky_color(real3 d, real3 horizon, real3 zenith) {
+  if (horizon == zenith) return horizon;
   precise real3 unit_direction = unit_vector(d);
   precise real t = real(0.5) * (unit_direction.y + real(1.0));
   return (real(1.0) - t) * horizon + t * zenith;

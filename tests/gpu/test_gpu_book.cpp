@@ -13,6 +13,7 @@
 #include "random.h"
 #include "render_gpu.h"
 #include "render_helpers.h"
+#include "scene_file.h"
 #include "world.h"
 
 namespace rtvk {
@@ -61,6 +62,34 @@ TEST_F(GpuBook, MaterialsSceneMatchesTheCpu) {
 // Measured: 58.6 dB, 163 pixels (0.24%) over 2 levels.
 TEST_F(GpuBook, BookFinalMatchesTheCpu) {
   expect_agreement(gpu(), builtin_scene("book-final"), 320, 8, 58.6, 0.0024);
+}
+
+// The second book's constant background: every ray that misses gathers exactly that color on
+// the CPU (double) and exactly its float on the GPU (the exact sums add a float's bits without
+// rounding), in every direction. The sky's blend of two equal colors rounds some by an ulp.
+TEST_F(GpuBook, ABackgroundIsExactlyItsColorWhereRaysMiss) {
+  scene s = parse_scene_json(
+      R"({"background":[0.3,0.6,0.9],"render":{"width":64,"aspect":2,"spp":2,"jitter":true},)"
+      R"("camera":{"lookfrom":[0,0,0],"lookat":[0,0,-1],"vfov":120},)"
+      R"("materials":{"m":{"type":"flat","albedo":[1,0,0]}},)"
+      R"("spheres":[{"center":[0,0,-2],"radius":0.5,"material":"m"}]})",
+      "background.json");
+  const camera cam = test::scene_camera(s);
+  const framebuffer cpu = render_cpu(cam, s, s.render);
+  const framebuffer gpu_fb = gpu::render_gpu(gpu(), cam, s, s.render);
+  const color want(0.3, 0.6, 0.9);
+  const color want_float(double(float(0.3)), double(float(0.6)), double(float(0.9)));
+  int missed = 0;
+  for (int y = 0; y < cpu.height(); ++y)
+    for (int x = 0; x < cpu.width(); ++x) {
+      const double red = cpu.at(x, y).x;
+      if (red == 1 || red == (1 + 0.3) / 2) continue;  // the sphere's, or half its, half not
+      ++missed;
+      EXPECT_EQ(cpu.at(x, y), want) << "cpu pixel " << x << "," << y;
+      EXPECT_EQ(gpu_fb.at(x, y), want_float) << "gpu pixel " << x << "," << y;
+    }
+  EXPECT_GT(missed, 1500);
+  EXPECT_NE(dump_scene_json(s).find("\"background\": [0.3,0.6,0.9]"), std::string::npos);
 }
 
 // The flat material, written once (shaders/shared/ray_color.h), draws its albedo where it is
