@@ -201,6 +201,37 @@ TEST(CliSplit, PiecesOfOtherProjectionsDoNotMerge) {
   EXPECT_FALSE(fs::exists(at("ac.png")));
 }
 
+// Where spheres move, the instants a piece sampled are part of what it is: pieces of another
+// shutter, or of another frame, are refused (they once merged into a silently wrong image).
+// Where nothing moves the time changes nothing, and frames' pieces merge as before.
+TEST(CliSplit, PiecesOfOtherInstantsDoNotMergeWhereSpheresMove) {
+  test::temp_dir dir;
+  const auto at = [&](const std::string& f) { return (dir.path() / f).string(); };
+  const auto piece = [&](const std::string& scene, const std::string& samples,
+                         const std::string& out, std::vector<std::string> more = {}) {
+    std::vector<std::string> args{"render", "--scene", scene,       "--width", "24",
+                                  "--spp",  "2",       "--backend", "cpu",     "--samples",
+                                  samples,  "-o",      at(out),     "-q"};
+    args.insert(args.end(), more.begin(), more.end());
+    return run_rtvk(args).status;
+  };
+  const auto merges = [&](const std::string& a, const std::string& b) {
+    const auto r = run_rtvk({"merge", at(a), at(b), "-o", at("m.png")});
+    EXPECT_TRUE(r.status == 0 || r.err.find("fingerprint") != std::string::npos) << r.err;
+    return r.status == 0;
+  };
+  ASSERT_EQ(piece("bouncing-spheres", "0:1", "a.exr"), 0);
+  ASSERT_EQ(piece("bouncing-spheres", "1:2", "b.exr"), 0);
+  ASSERT_EQ(piece("bouncing-spheres", "1:2", "half.exr", {"--shutter", "0:0.5"}), 0);
+  ASSERT_EQ(piece("bouncing-spheres", "1:2", "later.exr", {"--frames", "1"}), 0);
+  EXPECT_TRUE(merges("a.exr", "b.exr"));
+  EXPECT_FALSE(merges("a.exr", "half.exr"));
+  EXPECT_FALSE(merges("a.exr", "later.exr"));
+  ASSERT_EQ(piece("book-final", "0:1", "still0.exr"), 0);
+  ASSERT_EQ(piece("book-final", "1:2", "still1.exr", {"--frames", "1"}), 0);
+  EXPECT_TRUE(merges("still0.exr", "still1.exr"));
+}
+
 TEST(CliSplit, PiecesOfOtherScenesOrSettingsDoNotMerge) {
   test::temp_dir dir;
   const auto at = [&](const std::string& f) { return (dir.path() / f).string(); };

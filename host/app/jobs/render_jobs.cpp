@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <optional>
 #include <set>
 
 #include "errors.h"
@@ -65,7 +66,10 @@ std::string scene_identity(const scene& s) {
   return out;
 }
 
-std::string job_fingerprint(const std::string& scene_text, const camera_pose& p) {
+// `instants`: when the view's shutter is open, absolute seconds; part of the fingerprint only
+// where spheres move (elsewhere the time changes nothing, and older pieces keep theirs).
+std::string job_fingerprint(const std::string& scene_text, const camera_pose& p,
+                            const std::optional<time_span>& instants) {
   char pose[512];
   std::snprintf(pose, sizeof pose,
                 "%.17g %.17g %.17g|%.17g %.17g %.17g|%.17g %.17g %.17g|%.17g %.17g %.17g",
@@ -78,7 +82,13 @@ std::string job_fingerprint(const std::string& scene_text, const camera_pose& p)
     std::snprintf(fov, sizeof fov, " %.17g", p.fisheye_fov);
     model = "|" + std::string(projection_name(p.projection)) + fov;
   }
-  return fingerprint_of(scene_text + pose + model);
+  std::string time;
+  if (instants) {
+    char t[96];
+    std::snprintf(t, sizeof t, "|t %.17g %.17g", instants->lo, instants->hi);
+    time = t;
+  }
+  return fingerprint_of(scene_text + pose + model + time);
 }
 
 }  // namespace
@@ -143,17 +153,19 @@ std::vector<render_job> make_jobs(const scene& s, const job_request& req,
   const bool pieces = format_for_path(output.expand(s.cameras.front().name, frames.begin),
                                       "--output") == file_format::exr;
   const std::string scene_text = pieces ? scene_identity(s) : std::string();
+  const bool moves = scene_moves(s);
   std::vector<render_job> jobs;
   std::set<std::string> outputs;
   for (const named_camera& c : s.cameras)
     for (int f = frames.begin; f < frames.end; ++f) {
       const camera_pose pose = c.path.at(f / req.fps);
-      render_job job{
-          c.name, f,
-          overrides.make_camera(
-              s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f),
-              f / req.fps),
-          output.expand(c.name, f), pieces ? job_fingerprint(scene_text, pose) : std::string()};
+      const camera cam = overrides.make_camera(
+          s, pose, "camera " + c.name + " of " + s.name + " at frame " + std::to_string(f),
+          f / req.fps);
+      const std::optional<time_span> instants =
+          moves ? std::optional<time_span>({cam.time_open(), cam.time_close()}) : std::nullopt;
+      render_job job{c.name, f, cam, output.expand(c.name, f),
+                     pieces ? job_fingerprint(scene_text, pose, instants) : std::string()};
       if (!outputs.insert(job.output).second)
         throw usage_error("--output " + req.output + ": two images would be written to " +
                           job.output);
