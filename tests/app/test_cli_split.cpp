@@ -201,67 +201,63 @@ TEST(CliSplit, PiecesOfOtherProjectionsDoNotMerge) {
   EXPECT_FALSE(fs::exists(at("ac.png")));
 }
 
+// Pieces of small CPU renders in a folder of their own, and whether two of them merge (refused
+// only for their fingerprints).
+class pieces {
+ public:
+  std::string at(const std::string& f) const { return (dir_.path() / f).string(); }
+  // Samples `samples` of a 24-pixel-wide render of `scene` at 2 spp into `out`: the exit status.
+  int piece(const std::string& scene, const std::string& samples, const std::string& out,
+            const std::vector<std::string>& more = {}) const {
+    std::vector<std::string> args{"render", "--scene", scene,       "--width", "24",
+                                  "--spp",  "2",       "--backend", "cpu",     "--samples",
+                                  samples,  "-o",      at(out),     "-q"};
+    args.insert(args.end(), more.begin(), more.end());
+    return run_rtvk(args).status;
+  }
+  bool merges(const std::string& a, const std::string& b) const {
+    const auto r = run_rtvk({"merge", at(a), at(b), "-o", at("m.png")});
+    EXPECT_TRUE(r.status == 0 || r.err.find("fingerprint") != std::string::npos) << r.err;
+    return r.status == 0;
+  }
+
+ private:
+  test::temp_dir dir_;
+};
+
 // Where spheres move, the instants a piece sampled are part of what it is: pieces of another
 // shutter, or of another frame, are refused (they once merged into a silently wrong image).
 // Where nothing moves the time changes nothing, and frames' pieces merge as before.
 TEST(CliSplit, PiecesOfOtherInstantsDoNotMergeWhereSpheresMove) {
-  test::temp_dir dir;
-  const auto at = [&](const std::string& f) { return (dir.path() / f).string(); };
-  const auto piece = [&](const std::string& scene, const std::string& samples,
-                         const std::string& out, std::vector<std::string> more = {}) {
-    std::vector<std::string> args{"render", "--scene", scene,       "--width", "24",
-                                  "--spp",  "2",       "--backend", "cpu",     "--samples",
-                                  samples,  "-o",      at(out),     "-q"};
-    args.insert(args.end(), more.begin(), more.end());
-    return run_rtvk(args).status;
-  };
-  const auto merges = [&](const std::string& a, const std::string& b) {
-    const auto r = run_rtvk({"merge", at(a), at(b), "-o", at("m.png")});
-    EXPECT_TRUE(r.status == 0 || r.err.find("fingerprint") != std::string::npos) << r.err;
-    return r.status == 0;
-  };
-  ASSERT_EQ(piece("bouncing-spheres", "0:1", "a.exr"), 0);
-  ASSERT_EQ(piece("bouncing-spheres", "1:2", "b.exr"), 0);
-  ASSERT_EQ(piece("bouncing-spheres", "1:2", "half.exr", {"--shutter", "0:0.5"}), 0);
-  ASSERT_EQ(piece("bouncing-spheres", "1:2", "later.exr", {"--frames", "1"}), 0);
-  EXPECT_TRUE(merges("a.exr", "b.exr"));
-  EXPECT_FALSE(merges("a.exr", "half.exr"));
-  EXPECT_FALSE(merges("a.exr", "later.exr"));
-  ASSERT_EQ(piece("book-final", "0:1", "still0.exr"), 0);
-  ASSERT_EQ(piece("book-final", "1:2", "still1.exr", {"--frames", "1"}), 0);
-  EXPECT_TRUE(merges("still0.exr", "still1.exr"));
+  const pieces p;
+  ASSERT_EQ(p.piece("bouncing-spheres", "0:1", "a.exr"), 0);
+  ASSERT_EQ(p.piece("bouncing-spheres", "1:2", "b.exr"), 0);
+  ASSERT_EQ(p.piece("bouncing-spheres", "1:2", "half.exr", {"--shutter", "0:0.5"}), 0);
+  ASSERT_EQ(p.piece("bouncing-spheres", "1:2", "later.exr", {"--frames", "1"}), 0);
+  EXPECT_TRUE(p.merges("a.exr", "b.exr"));
+  EXPECT_FALSE(p.merges("a.exr", "half.exr"));
+  EXPECT_FALSE(p.merges("a.exr", "later.exr"));
+  ASSERT_EQ(p.piece("book-final", "0:1", "still0.exr"), 0);
+  ASSERT_EQ(p.piece("book-final", "1:2", "still1.exr", {"--frames", "1"}), 0);
+  EXPECT_TRUE(p.merges("still0.exr", "still1.exr"));
 }
 
 TEST(CliSplit, PiecesOfOtherScenesOrSettingsDoNotMerge) {
-  test::temp_dir dir;
-  const auto at = [&](const std::string& f) { return (dir.path() / f).string(); };
-  const auto piece = [&](const std::string& scene, const std::string& samples,
-                         const std::string& out, std::vector<std::string> more = {}) {
-    std::vector<std::string> args{"render", "--scene", scene,       "--width", "24",
-                                  "--spp",  "2",       "--backend", "cpu",     "--samples",
-                                  samples,  "-o",      at(out),     "-q"};
-    args.insert(args.end(), more.begin(), more.end());
-    return run_rtvk(args).status;
-  };
-  const auto merges = [&](const std::string& a, const std::string& b) {
-    const auto r = run_rtvk({"merge", at(a), at(b), "-o", at("m.png")});
-    EXPECT_TRUE(r.status == 0 || r.err.find("fingerprint") != std::string::npos) << r.err;
-    return r.status == 0;
-  };
-  std::ofstream(at("one.json")) << R"({"spheres": [{"center": [0, 0, -1], "radius": 0.5,
+  const pieces p;
+  std::ofstream(p.at("one.json")) << R"({"spheres": [{"center": [0, 0, -1], "radius": 0.5,
       "material": "m"}], "materials": {"m": {"type": "normal"}}})";
-  std::ofstream(at("moved.json")) << R"({"spheres": [{"center": [0, 0, -1.0000001],
+  std::ofstream(p.at("moved.json")) << R"({"spheres": [{"center": [0, 0, -1.0000001],
       "radius": 0.5, "material": "m"}], "materials": {"m": {"type": "normal"}}})";
-  ASSERT_EQ(piece("spheres:50", "0:1", "a.exr"), 0);
-  ASSERT_EQ(piece("spheres:50", "1:2", "b.exr"), 0);
-  ASSERT_EQ(piece("spheres:51", "1:2", "c.exr"), 0);
-  ASSERT_EQ(piece("spheres:50", "1:2", "d.exr", {"--seed", "7"}), 0);
-  ASSERT_EQ(piece(at("one.json"), "0:1", "e.exr"), 0);
-  ASSERT_EQ(piece(at("moved.json"), "1:2", "f.exr"), 0);
-  EXPECT_TRUE(merges("a.exr", "b.exr"));
-  EXPECT_FALSE(merges("a.exr", "c.exr")) << "another sphere";
-  EXPECT_FALSE(merges("a.exr", "d.exr")) << "another seed";
-  EXPECT_FALSE(merges("e.exr", "f.exr")) << "a sphere moved by 1e-7";
+  ASSERT_EQ(p.piece("spheres:50", "0:1", "a.exr"), 0);
+  ASSERT_EQ(p.piece("spheres:50", "1:2", "b.exr"), 0);
+  ASSERT_EQ(p.piece("spheres:51", "1:2", "c.exr"), 0);
+  ASSERT_EQ(p.piece("spheres:50", "1:2", "d.exr", {"--seed", "7"}), 0);
+  ASSERT_EQ(p.piece(p.at("one.json"), "0:1", "e.exr"), 0);
+  ASSERT_EQ(p.piece(p.at("moved.json"), "1:2", "f.exr"), 0);
+  EXPECT_TRUE(p.merges("a.exr", "b.exr"));
+  EXPECT_FALSE(p.merges("a.exr", "c.exr")) << "another sphere";
+  EXPECT_FALSE(p.merges("a.exr", "d.exr")) << "another seed";
+  EXPECT_FALSE(p.merges("e.exr", "f.exr")) << "a sphere moved by 1e-7";
 }
 
 }  // namespace
