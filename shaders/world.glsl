@@ -15,7 +15,7 @@ layout(constant_id = RTVK_SPEC_MOTION) const bool motion = false;
 
 // Where the sphere in slot k is at `time` (sphere::center_at).
 precise vec3 center_at(uint k, float time) {
-  return motion ? spheres[k].center + time * spheres[k].velocity : spheres[k].center;
+  return motion ? moved_center(spheres[k].center, spheres[k].velocity, time) : spheres[k].center;
 }
 
 // Tests the sphere in slot k, keeping the nearest hit (`closest`; `best` its scene index,

@@ -102,7 +102,8 @@ struct nearest {
 template <typename Sphere>
 inline point3 center_at(std::uint32_t k, const std::vector<Sphere>& spheres,
                         const std::vector<vec3>& velocities, double time) {
-  return velocities.empty() ? spheres[k].center : spheres[k].center + time * velocities[k];
+  return velocities.empty() ? spheres[k].center
+                            : moved_center(spheres[k].center, velocities[k], time);
 }
 
 // Tests the sphere in leaf slot k, keeping the nearest hit. Ties go to the later sphere in the

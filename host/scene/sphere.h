@@ -1,6 +1,7 @@
 #pragma once
 #include <optional>
 
+#include "hit_sphere.h"
 #include "vec3.h"
 
 namespace rtvk {
@@ -22,7 +23,9 @@ struct sphere {
   vec3 velocity() const { return center1 ? *center1 - center : vec3(0); }
   // Where the center is at `time` (seconds): linear, before 0 and after 1 too. A sphere without
   // center1 is exactly at `center`.
-  point3 center_at(double time) const { return center1 ? center + time * velocity() : center; }
+  point3 center_at(double time) const {
+    return center1 ? moved_center(center, velocity(), time) : center;
+  }
 };
 
 // The instants a render's rays may sample, seconds: a BVH bounds every sphere over all of them.

@@ -7,6 +7,12 @@
 
 RTVK_KERNELS_BEGIN
 
+// Where a moving sphere's center is at `time` (seconds), from its center at time 0 and its
+// velocity (center at time 1 minus center at time 0): linear, before 0 and after 1 too.
+inline precise real3 moved_center(real3 center, real3 velocity, real time) {
+  return center + time * velocity;
+}
+
 // Solves |origin + t*dir - center|^2 = radius^2 with the half-b form of the quadratic: true, and
 // the nearest root in [t_min, t_max] in `t`, when there is one (t = 0 when there is none).
 inline bool hit_sphere(real3 center, real radius, ray r, real t_min, real t_max,
