@@ -366,11 +366,18 @@ range_info make_prims(std::span<const sphere> spheres, time_span motion, prim_ve
           const sphere& s = spheres[i];
           const glm::dvec3 radius(std::abs(s.radius));
           const point3 a = s.center_at(motion.lo), b = s.center_at(motion.hi);
+          // The GPU moves a center in float (float(c) + float(t) * float(v): a few roundings of
+          // 2^-24 each, relative), so a moving sphere's box grows by sixteen times that bound.
+          glm::dvec3 slack(0);
+          if (s.center1) {
+            const double t = std::max(std::abs(motion.lo), std::abs(motion.hi));
+            slack = (glm::abs(s.center) + t * glm::abs(s.velocity())) * 0x1p-20;
+          }
           prim& p = prims[i];
           p.lo = p.hi = splat4(0);
           for (int k = 0; k < 3; ++k) {
-            p.lo[k] = next_down(float(std::min(a[k], b[k]) - radius[k]));
-            p.hi[k] = next_up(float(std::max(a[k], b[k]) + radius[k]));
+            p.lo[k] = next_down(float(std::min(a[k], b[k]) - radius[k] - slack[k]));
+            p.hi[k] = next_up(float(std::max(a[k], b[k]) + radius[k] + slack[k]));
           }
           p.sphere = std::uint32_t(i);
           info.bounds.grow(p.lo, p.hi);

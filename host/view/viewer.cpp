@@ -331,12 +331,14 @@ void session::focus_at(double x, double y) {
   const double px = (x - (w - acc_.width * scale) / 2) / scale;
   const double py = (y - (h - acc_.height * scale) / 2) / scale;
   if (px < 0 || py < 0 || px >= acc_.width || py >= acc_.height) return;
-  if (!world_) world_ = std::make_unique<bvh_world>(s_.spheres);
+  if (!world_) world_ = std::make_unique<bvh_world>(s_.spheres, 0, s_.motion);
   const camera cam(pose_, rs_.aspect, rs_.width);
   // Pixel (px, py) from the top is the render's (i, j) = (px, height - 1 - py) from the bottom.
   const double u = pixel_coordinate(px, acc_.width);
   const double v = pixel_coordinate(acc_.height - 1 - py, acc_.height);
-  const ray r = cam.get_ray(u, v);
+  // At the middle of the shutter: where a moving sphere is seen, blurred either side of it.
+  ray r = cam.get_ray(u, v);
+  r.time = (cam.time_open() + cam.time_close()) / 2;
   hit_record rec{};
   if (!world_->hit(r, 1e-3, std::numeric_limits<double>::infinity(), rec)) return;
   const double along = glm::dot(rec.p - cam.origin(), -cam.axis_w());

@@ -237,6 +237,18 @@ TEST(CliSplit, PiecesOfOtherInstantsDoNotMergeWhereSpheresMove) {
   EXPECT_TRUE(p.merges("a.exr", "b.exr"));
   EXPECT_FALSE(p.merges("a.exr", "half.exr"));
   EXPECT_FALSE(p.merges("a.exr", "later.exr"));
+  // Another motion (only center1 differs) is another scene.
+  const auto moving_to = [&](const std::string& file, const std::string& center1) {
+    std::ofstream(p.at(file)) << R"({"spheres": [{"center": [0, 0, -1], "center1": )" << center1
+                              << R"(, "radius": 0.5, "material": "m"}],
+        "materials": {"m": {"type": "normal"}}, "camera": {"shutter": [0, 1]}})";
+    return p.at(file);
+  };
+  ASSERT_EQ(p.piece(moving_to("right.json", "[1, 0, -1]"), "0:1", "right.exr"), 0);
+  ASSERT_EQ(p.piece(moving_to("left.json", "[-1, 0, -1]"), "1:2", "left.exr"), 0);
+  ASSERT_EQ(p.piece(moving_to("right2.json", "[1, 0, -1]"), "1:2", "right2.exr"), 0);
+  EXPECT_FALSE(p.merges("right.exr", "left.exr"));
+  EXPECT_TRUE(p.merges("right.exr", "right2.exr"));
   ASSERT_EQ(p.piece("book-final", "0:1", "still0.exr"), 0);
   ASSERT_EQ(p.piece("book-final", "1:2", "still1.exr", {"--frames", "1"}), 0);
   EXPECT_TRUE(p.merges("still0.exr", "still1.exr"));

@@ -62,7 +62,12 @@ std::string scene_identity(const scene& s) {
   append_bytes(out, s.sky.horizon, s.sky.zenith);
   for (const named_material& m : s.materials)
     append_bytes(out, m.m.type, m.m.albedo, m.m.fuzz, m.m.ir);
-  for (const sphere& sp : s.spheres) append_bytes(out, sp.center, sp.radius, sp.material);
+  for (const sphere& sp : s.spheres) {
+    append_bytes(out, sp.center, sp.radius, sp.material);
+    // A moving sphere's center at time 1 (after a marker); still ones add nothing, so still
+    // scenes keep the identity they always had.
+    if (sp.center1) append_bytes(out, std::uint8_t(0x4d), *sp.center1);
+  }
   return out;
 }
 
