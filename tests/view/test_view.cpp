@@ -491,6 +491,35 @@ TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
   EXPECT_GT(std::abs(expected - 10), 0.1) << "the click must move the focus for this to mean much";
 }
 
+// F + click on a moving sphere focuses where it is drawn: at the middle of the shutter ([2, 3],
+// past time 1), not where it is at time 0 (out of view; the click once missed it and left the
+// focus as it was).
+TEST_F(XvfbTest, FAndAClickFocusOnAMovingSphereWhereTheShutterSeesIt) {
+  if (!xdotool_ready()) return;
+  const test::temp_dir dir;
+  const std::string file = (dir.path() / "moving.json").string();
+  std::ofstream(file) << R"({"camera": {"vfov": 60, "shutter": [2, 3]},
+      "render": {"width": 200, "aspect": 1.5, "spp": 2},
+      "materials": {"m": {"type": "normal"}},
+      "spheres": [{"center": [-10, 0, -5], "center1": [-6, 0, -5], "radius": 1, "material": "m"}]})";
+  test::running_rtvk view({"view", "--scene", file, "--width", "200"}, env());
+  const std::string id = shown_window();
+  ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
+  std::this_thread::sleep_for(1s);
+  xdo({"mousemove", "--window", id, "100", "66"});
+  xdo({"keydown", "f"});
+  xdo({"click", "1"});
+  xdo({"keyup", "f"});
+  xdo({"key", "Escape"});
+  const test::process_result r = view.wait_at_most(60s);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<std::string> printed = printed_flags(r.out.substr(r.out.rfind("rtvk render")));
+  const std::vector<double> focus = numbers_after(printed, "--focus-dist");
+  ASSERT_EQ(focus.size(), 1u) << r.out;
+  // At t = 2.5 the sphere is centred at (0, 0, -5): its near side is 4 along the view.
+  EXPECT_NEAR(focus[0], 4, 0.05);
+}
+
 // A size fixed by the flags whose sums cannot stay on the device in one storage buffer (lavapipe
 // allows 128 MiB: 2.8 megapixels) is refused by its flag, exit 2, no screenshot.
 TEST_F(XvfbTest, AFixedSizeTooLargeToAccumulateOnTheDeviceExits2NamingTheFlag) {
