@@ -17,7 +17,8 @@ inline std::vector<std::string> fault_environment(const std::string& fault) {
 }
 
 // Under "compute-queue-family": the submissions the layer counted (printed at vkDestroyDevice)
-// to the compute-only family and to the device's own families; {-1, -1} when it printed none.
+// to compute-only families (the layer's, and a real GPU's own) and to the others; {-1, -1} when
+// it printed none.
 struct queue_submissions {
   long compute_only = -1;
   long others = -1;
@@ -27,7 +28,7 @@ inline queue_submissions submissions_per_queue(const std::string& err) {
   const std::size_t at = err.find(line);
   queue_submissions q;
   if (at == std::string::npos ||
-      std::sscanf(err.c_str() + at + line.size(), "%ld to the compute-only family, %ld",
+      std::sscanf(err.c_str() + at + line.size(), "%ld to compute-only families, %ld",
                   &q.compute_only, &q.others) != 2)
     return {};
   return q;

@@ -36,8 +36,10 @@
 //                                for it, or a present from it, loses the device at the next
 //                                vkQueueSubmit (graphics commands on a compute queue are
 //                                undefined); at vkDestroyDevice the layer prints how many
-//                                submissions each queue had ("rtvk test layer: submissions:
-//                                C to the compute-only family, P to the others")
+//                                submissions went to compute-only families (its own, and a real
+//                                GPU's asynchronous compute families) and to the others ("rtvk
+//                                test layer: submissions: C to compute-only families, P to the
+//                                others")
 // The chain is kept in globals: a test process of rtvk makes one instance and one device.
 #include <vulkan/vk_layer.h>
 
@@ -91,11 +93,14 @@ std::atomic<bool> shader_reads_host_memory{false};
 // compute-queue-family: the fake family's index (the device's family count), the handle its
 // queue has (a dispatchable object of this layer's: the loader writes its dispatch pointer in the
 // first word), the pools and command buffers made for it, submissions counted per queue.
-std::uint32_t fake_family = ~0u;
+std::uint32_t fake_family = ~0u;  // of the device made (vkCreateDevice sets it)
+std::unordered_map<VkPhysicalDevice, std::uint32_t> fake_family_of;  // each device's listing
 void* fake_queue_object[2] = {};
 VkQueue real_queue_behind_fake = VK_NULL_HANDLE;
 std::unordered_map<std::uint64_t, bool> pool_is_fake;
 std::unordered_map<VkCommandBuffer, bool> cb_is_fake;
+std::vector<VkQueueFamilyProperties> real_families;  // of the device made
+std::vector<VkQueue> compute_only_queues;            // its real queues of compute-only families
 std::atomic<long> fake_submits{0}, real_submits{0};
 std::atomic<bool> graphics_on_compute_queue{false};
 // discrete-memory: the type each allocation was made from, and the allocation each buffer is in.
@@ -170,6 +175,15 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical,
   VkDeviceCreateInfo real = *info;
   std::vector<VkDeviceQueueCreateInfo> queues;
   if (fault_is("compute-queue-family")) {
+    {
+      const std::lock_guard<std::mutex> lock(memory_mutex);
+      const auto found = fake_family_of.find(physical);
+      fake_family = found == fake_family_of.end() ? ~0u : found->second;
+    }
+    uint32_t n = 0;
+    next_queue_families(physical, &n, nullptr);
+    real_families.resize(n);
+    next_queue_families(physical, &n, real_families.data());
     for (uint32_t k = 0; k < info->queueCreateInfoCount; ++k) {
       VkDeviceQueueCreateInfo q = info->pQueueCreateInfos[k];
       if (q.queueFamilyIndex == fake_family) q.queueFamilyIndex = 0;
@@ -216,7 +230,13 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical,
 
 VKAPI_ATTR VkResult VKAPI_CALL surface_support(VkPhysicalDevice physical, uint32_t family,
                                                VkSurfaceKHR surface, VkBool32* supported) {
-  if (fault_is("no-present") || (fault_is("compute-queue-family") && family == fake_family)) {
+  bool fake = false;
+  if (fault_is("compute-queue-family")) {
+    const std::lock_guard<std::mutex> lock(memory_mutex);
+    const auto found = fake_family_of.find(physical);
+    fake = found != fake_family_of.end() && family == found->second;
+  }
+  if (fault_is("no-present") || fake) {
     *supported = VK_FALSE;
     return VK_SUCCESS;
   }
@@ -286,7 +306,10 @@ void with_compute_family(VkPhysicalDevice physical, uint32_t* count,
   compute.queueFlags = VK_QUEUE_COMPUTE_BIT | VK_QUEUE_TRANSFER_BIT;
   compute.queueCount = 1;
   all.push_back(compute);
-  fake_family = n;
+  {
+    const std::lock_guard<std::mutex> lock(memory_mutex);
+    fake_family_of[physical] = n;
+  }
   if (!families) {
     *count = uint32_t(all.size());
     return;
@@ -470,8 +493,15 @@ VkQueue real_queue(VkQueue queue) {
 
 VKAPI_ATTR void VKAPI_CALL get_device_queue(VkDevice device, uint32_t family, uint32_t index,
                                             VkQueue* queue) {
-  if (!fault_is("compute-queue-family") || family != fake_family)
-    return next_get_queue(device, family, index, queue);
+  if (!fault_is("compute-queue-family") || family != fake_family) {
+    next_get_queue(device, family, index, queue);
+    const VkQueueFlags f = family < real_families.size() ? real_families[family].queueFlags : 0;
+    if ((f & VK_QUEUE_COMPUTE_BIT) && !(f & VK_QUEUE_GRAPHICS_BIT)) {
+      const std::lock_guard<std::mutex> lock(memory_mutex);
+      compute_only_queues.push_back(*queue);
+    }
+    return;
+  }
   next_get_queue(device, 0, 0, &real_queue_behind_fake);
   // The loader writes its dispatch pointer (the device's) into the queues its vkGetDeviceQueue
   // returns, and the layers below look their state up by it: the real queue never goes back
@@ -572,15 +602,21 @@ VKAPI_ATTR void VKAPI_CALL pipeline_barrier(VkCommandBuffer cb, VkPipelineStageF
 
 VKAPI_ATTR void VKAPI_CALL destroy_device(VkDevice device, const VkAllocationCallbacks* allocator) {
   if (fault_is("compute-queue-family"))
-    std::fprintf(
-        stderr, "rtvk test layer: submissions: %ld to the compute-only family, %ld to the others\n",
-        long(fake_submits), long(real_submits));
+    std::fprintf(stderr,
+                 "rtvk test layer: submissions: %ld to compute-only families, %ld to the others\n",
+                 long(fake_submits), long(real_submits));
   next_destroy_device(device, allocator);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL queue_submit(VkQueue queue, uint32_t count,
                                             const VkSubmitInfo* submits_info, VkFence fence) {
-  ++(queue == reinterpret_cast<VkQueue>(fake_queue_object) ? fake_submits : real_submits);
+  bool compute_only = queue == reinterpret_cast<VkQueue>(fake_queue_object);
+  {
+    const std::lock_guard<std::mutex> lock(memory_mutex);
+    compute_only = compute_only || std::find(compute_only_queues.begin(), compute_only_queues.end(),
+                                             queue) != compute_only_queues.end();
+  }
+  ++(compute_only ? fake_submits : real_submits);
   queue = real_queue(queue);
   if (graphics_on_compute_queue) return VK_ERROR_DEVICE_LOST;
   const long at = fault_count("lose-device-at-submit");
