@@ -36,6 +36,9 @@ layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) buffer image_block {
 layout(std430, set = 0, binding = RTVK_BINDING_STATUS) buffer status_block {
   render_status status;
 };
+layout(std430, set = 0, binding = RTVK_BINDING_VELOCITIES) readonly buffer velocity_block {
+  vec4 velocities[];
+};
 layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
   bvh_wide_node bvh_nodes[];
 };

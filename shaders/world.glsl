@@ -9,13 +9,14 @@
 #include "bvh.glsl"
 #include "hit_sphere.h"
 
-// Whether some sphere moves: without, the velocities are never read. The host sets it for
+// Whether some sphere moves: without, the velocities (`velocities`, vec4[] in the spheres' order)
+// are never read. The host sets it for
 // render.comp; the probes leave it off.
 layout(constant_id = RTVK_SPEC_MOTION) const bool motion = false;
 
 // Where the sphere in slot k is at `time` (sphere::center_at).
 precise vec3 center_at(uint k, float time) {
-  return motion ? moved_center(spheres[k].center, spheres[k].velocity, time) : spheres[k].center;
+  return motion ? moved_center(spheres[k].center, velocities[k].xyz, time) : spheres[k].center;
 }
 
 // Tests the sphere in slot k, keeping the nearest hit (`closest`; `best` its scene index,

@@ -10,6 +10,9 @@ layout(constant_id = RTVK_SPEC_USE_BVH) const bool use_bvh = true;
 layout(std430, set = 0, binding = RTVK_BINDING_SPHERES) readonly buffer sphere_block {
   gpu_sphere spheres[];
 };
+layout(std430, set = 0, binding = RTVK_BINDING_VELOCITIES) readonly buffer velocity_block {
+  vec4 velocities[];
+};
 layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
   bvh_wide_node bvh_nodes[];
 };

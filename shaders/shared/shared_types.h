@@ -26,7 +26,9 @@ using uvec2 = glm::uvec2;
 #define RTVK_BINDING_MATERIALS 3    // storage buffer: gpu_material[]
 #define RTVK_BINDING_STATUS 4       // storage buffer: render_status
 #define RTVK_BINDING_PROBE 5        // storage buffer: a probe's entries (probes only)
-#define RTVK_BINDING_BVH_NODES 6    // storage buffer: bvh_node[] (7 and 8 are no longer used)
+#define RTVK_BINDING_BVH_NODES 6    // storage buffer: bvh_node[] (8 is no longer used)
+#define RTVK_BINDING_VELOCITIES 7   // storage buffer: vec4[], xyz each moving sphere's velocity,
+                                    // in the spheres' order; one unused element when none moves
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
 
@@ -89,15 +91,14 @@ struct camera_ubo {
   uint pad2;           // unused
 };
 
-// std430 array element: 48 bytes. With the BVH the buffer holds the spheres in its leaf order,
-// else in scene order.
+// std430 array element: 32 bytes. With the BVH the buffer holds the spheres in its leaf order,
+// else in scene order. A moving sphere's velocity is in the velocity array (the same order), so
+// scenes where nothing moves keep 32 bytes a sphere.
 struct gpu_sphere {
   vec3 center;       // at time 0, scene units
   float radius;      // scene units, > 0
-  vec3 velocity;     // center at time 1 minus center at time 0, scene units per second
   uint material;     // index into the materials buffer
   uint scene_index;  // the sphere's index in the scene: exact ties go to the later one
-  uint pad0;         // unused
   uint pad1;         // unused
   uint pad2;         // unused
 };
@@ -320,10 +321,9 @@ static_assert(offsetof(camera_ubo, shutter) == 128);
 static_assert(sizeof(camera_ubo) == 144);
 static_assert(offsetof(gpu_sphere, center) == 0);
 static_assert(offsetof(gpu_sphere, radius) == 12);
-static_assert(offsetof(gpu_sphere, velocity) == 16);
-static_assert(offsetof(gpu_sphere, material) == 28);
-static_assert(offsetof(gpu_sphere, scene_index) == 32);
-static_assert(sizeof(gpu_sphere) == 48);
+static_assert(offsetof(gpu_sphere, material) == 16);
+static_assert(offsetof(gpu_sphere, scene_index) == 20);
+static_assert(sizeof(gpu_sphere) == 32);
 static_assert(offsetof(gpu_material, albedo) == 0);
 static_assert(offsetof(gpu_material, type) == 12);
 static_assert(offsetof(gpu_material, fuzz) == 16);

@@ -141,7 +141,8 @@ std::vector<buffer_binding> render_bindings(const gpu_scene& g, const render_tar
           {RTVK_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.materials()},
           {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.sums.get()},
           {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.status.get()},
-          {RTVK_BINDING_BVH_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.nodes()}};
+          {RTVK_BINDING_BVH_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.nodes()},
+          {RTVK_BINDING_VELOCITIES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.velocities()}};
 }
 
 // What tonemap.comp reads and writes.

@@ -43,7 +43,11 @@ gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   static_assert(sizeof(bvh_wide_node) == sizeof(wide_node));
   if (!nodes.empty())
     std::memcpy(nodes.data(), wide.nodes().data(), nodes.size() * sizeof(wide_node));
-  return {to_gpu_spheres(s, tree.order()), to_gpu_materials(s), std::move(nodes), seconds,
+  return {to_gpu_spheres(s, tree.order()),
+          to_gpu_materials(s),
+          std::move(nodes),
+          to_gpu_velocities(s, tree.order()),
+          seconds,
           scene_moves(s)};
 }
 
@@ -56,7 +60,8 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       moves_(a.moves),
       specs_{{bytes_of(a.spheres), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
              {bytes_of(a.materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.nodes), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
+             {bytes_of(a.nodes), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.velocities), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
       staging_(
           host_writes_device_memory(ctx)
               ? std::nullopt
@@ -70,22 +75,26 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
   write_array(to[0], a.spheres);
   write_array(to[1], a.materials);
   write_array(to[2], a.nodes);
+  write_array(to[3], a.velocities);
 }
 
 std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const host_arrays& a) {
   const VkDeviceSize spheres = bytes_of(a.spheres), materials = bytes_of(a.materials),
-                     nodes = bytes_of(a.nodes);
+                     nodes = bytes_of(a.nodes), velocities = bytes_of(a.velocities);
   using u = memory_use;
   if (host_writes_device_memory(ctx))
     return {{"the sphere array", spheres, true, u::device_mapped, array_set},
             {"the material array", materials, true, u::device_mapped, array_set},
-            {"the BVH", nodes, true, u::device_mapped, array_set}};
+            {"the BVH", nodes, true, u::device_mapped, array_set},
+            {"the velocity array", velocities, true, u::device_mapped, array_set}};
   return {{"the spheres' upload copy", spheres, false, u::staging, staging_set},
           {"the sphere array", spheres, true, u::device_local, array_set},
           {"the materials' upload copy", materials, false, u::staging, staging_set},
           {"the material array", materials, true, u::device_local, array_set},
           {"the BVH's upload copy", nodes, false, u::staging, staging_set},
-          {"the BVH", nodes, true, u::device_local, array_set}};
+          {"the BVH", nodes, true, u::device_local, array_set},
+          {"the velocities' upload copy", velocities, false, u::staging, staging_set},
+          {"the velocity array", velocities, true, u::device_local, array_set}};
 }
 
 void gpu_scene::record_upload(VkCommandBuffer cb) const {

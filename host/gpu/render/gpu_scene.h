@@ -27,6 +27,7 @@ class gpu_scene {
     std::vector<gpu_sphere> spheres;      // in the BVH's leaf order, or scene order without it
     std::vector<gpu_material> materials;  // in scene order
     std::vector<bvh_wide_node> nodes;     // the four-wide BVH's nodes, depth first (none: empty)
+    std::vector<vec4> velocities;         // the spheres', in their order; empty: none moves
     double build_seconds;                 // building the BVH took
     bool moves;                           // some sphere has a velocity
   };
@@ -48,12 +49,13 @@ class gpu_scene {
   VkBuffer spheres() const { return arrays_[0].get(); }
   VkBuffer materials() const { return arrays_[1].get(); }
   VkBuffer nodes() const { return arrays_[2].get(); }
+  VkBuffer velocities() const { return arrays_[3].get(); }
 
  private:
   std::uint32_t sphere_count_;         // spheres the scene has
   double build_seconds_;               // building the BVH took
   bool moves_;                         // some sphere has a velocity
-  std::vector<buffer_spec> specs_;     // spheres, materials, nodes: sizes for the copies
+  std::vector<buffer_spec> specs_;     // spheres, materials, nodes, velocities: sizes for copies
   std::optional<buffer_set> staging_;  // host copies; none when written in place
   buffer_set arrays_;                  // what the shader reads
 };

@@ -15,6 +15,9 @@ camera_ubo to_ubo(const camera& cam);
 // The scene's spheres, rounded to float, each with its scene index: in the order `order` gives
 // (slot -> scene index, bvh::order()), or in scene order when it is empty.
 std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint32_t> order = {});
+// Each sphere's velocity (xyz; center1 - center, formed in double), in the same order as
+// to_gpu_spheres; empty when no sphere moves.
+std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const std::uint32_t> order = {});
 // The scene's materials, in order, rounded to float.
 std::vector<gpu_material> to_gpu_materials(const scene& s);
 

@@ -76,6 +76,7 @@ std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s,
       ctx, world_probe_shader(),
       {{RTVK_BINDING_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.spheres()},
        {RTVK_BINDING_BVH_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.nodes()},
+       {RTVK_BINDING_VELOCITIES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.velocities()},
        {RTVK_BINDING_PROBE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buf.get()}},
       sizeof(render_push), spec);
   render_push push{};
