@@ -20,14 +20,15 @@ using uvec2 = glm::uvec2;
 #endif
 
 // Descriptor bindings, set 0.
-#define RTVK_BINDING_CAMERA 0       // uniform buffer: camera_ubo[RTVK_MAX_VIEWS], one per view
-#define RTVK_BINDING_SPHERES 1      // storage buffer: gpu_sphere[], in the BVH's leaf order
-#define RTVK_BINDING_IMAGE 2        // storage buffer: pixel_sum[] of one band of rows
-#define RTVK_BINDING_MATERIALS 3    // storage buffer: gpu_material[]
-#define RTVK_BINDING_STATUS 4       // storage buffer: render_status
-#define RTVK_BINDING_PROBE 5        // storage buffer: a probe's entries (probes only)
-#define RTVK_BINDING_BVH_NODES 6    // storage buffer: bvh_node[] (8 is no longer used)
-#define RTVK_BINDING_VELOCITIES 7   // storage buffer: vec4[], xyz each moving sphere's velocity,
+#define RTVK_BINDING_CAMERA 0     // uniform buffer: camera_ubo[RTVK_MAX_VIEWS], one per view
+#define RTVK_BINDING_SPHERES 1    // storage buffer: gpu_sphere[], in the BVH's leaf order
+#define RTVK_BINDING_IMAGE 2      // storage buffer: pixel_sum[] of one band of rows
+#define RTVK_BINDING_MATERIALS 3  // storage buffer: gpu_material[]
+#define RTVK_BINDING_STATUS 4     // storage buffer: render_status
+#define RTVK_BINDING_PROBE 5      // storage buffer: a probe's entries (probes only)
+#define RTVK_BINDING_BVH_NODES 6  // storage buffer: bvh_node[] (8 is no longer used)
+#define RTVK_BINDING_VELOCITIES \
+  7                                 // storage buffer: vec4[], xyz each moving sphere's velocity,
                                     // in the spheres' order; one unused element when none moves
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)

@@ -183,6 +183,10 @@ class XvfbTest : public testing::Test {
     return false;
   }
 
+  // Runs rtvk view with `args` and the test's environment, holds F and clicks the window's pixel
+  // (x, y), closes it with Escape and gives the --focus-dist of the flags it printed in `focus`.
+  void focus_after_click(const std::vector<std::string>& args, int x, int y, double& focus);
+
   // One xdotool command in this server, then a moment for rtvk view to handle its events.
   void xdo(std::vector<std::string> args) const {
     args.insert(args.begin(), "xdotool");
@@ -464,13 +468,15 @@ TEST_F(XvfbTest, HHidesTheOverlayAndTheWindowThenShowsTheScreenshotsPixels) {
 // F + click: the distance in focus becomes that of the surface under the cursor along the view
 // axis, found by the ray get_ray casts through that pixel (computed here the same way, on the
 // CPU, from the scene).
-TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
-  if (!xdotool_ready()) return;
-  test::running_rtvk view({"view", "--scene", "book-final", "--width", "200", "--spp", "2"}, env());
+void XvfbTest::focus_after_click(const std::vector<std::string>& args, int x, int y,
+                                 double& focus) {
+  std::vector<std::string> view_args{"view"};
+  view_args.insert(view_args.end(), args.begin(), args.end());
+  test::running_rtvk view(view_args, env());
   const std::string id = shown_window();
   ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
   std::this_thread::sleep_for(1s);
-  xdo({"mousemove", "--window", id, "120", "70"});
+  xdo({"mousemove", "--window", id, std::to_string(x), std::to_string(y)});
   xdo({"keydown", "f"});
   xdo({"click", "1"});
   xdo({"keyup", "f"});
@@ -478,8 +484,16 @@ TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
   const test::process_result r = view.wait_at_most(60s);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::vector<std::string> printed = printed_flags(r.out.substr(r.out.rfind("rtvk render")));
-  const std::vector<double> focus = numbers_after(printed, "--focus-dist");
-  ASSERT_EQ(focus.size(), 1u) << r.out;
+  const std::vector<double> found = numbers_after(printed, "--focus-dist");
+  ASSERT_EQ(found.size(), 1u) << r.out;
+  focus = found[0];
+}
+
+TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
+  if (!xdotool_ready()) return;
+  double focus = 0;
+  ASSERT_NO_FATAL_FAILURE(
+      focus_after_click({"--scene", "book-final", "--width", "200", "--spp", "2"}, 120, 70, focus));
 
   const scene s = builtin_scene("book-final");
   const camera cam(main_camera(s).pose, 1.5, 200);  // 200x133, shown 1:1 in its window
@@ -487,7 +501,7 @@ TEST_F(XvfbTest, FAndAClickFocusOnTheSurfaceUnderTheCursor) {
   hit_record rec{};
   ASSERT_TRUE(bvh_world(s.spheres).hit(through, 1e-3, 1e300, rec)) << "the click must hit";
   const double expected = glm::dot(rec.p - cam.origin(), -cam.axis_w());
-  EXPECT_NEAR(focus[0], expected, 1e-9);
+  EXPECT_NEAR(focus, expected, 1e-9);
   EXPECT_GT(std::abs(expected - 10), 0.1) << "the click must move the focus for this to mean much";
 }
 
@@ -502,22 +516,10 @@ TEST_F(XvfbTest, FAndAClickFocusOnAMovingSphereWhereTheShutterSeesIt) {
       "render": {"width": 200, "aspect": 1.5, "spp": 2},
       "materials": {"m": {"type": "normal"}},
       "spheres": [{"center": [-10, 0, -5], "center1": [-6, 0, -5], "radius": 1, "material": "m"}]})";
-  test::running_rtvk view({"view", "--scene", file, "--width", "200"}, env());
-  const std::string id = shown_window();
-  ASSERT_FALSE(id.empty()) << "no window showed a frame: " << view.stderr_so_far();
-  std::this_thread::sleep_for(1s);
-  xdo({"mousemove", "--window", id, "100", "66"});
-  xdo({"keydown", "f"});
-  xdo({"click", "1"});
-  xdo({"keyup", "f"});
-  xdo({"key", "Escape"});
-  const test::process_result r = view.wait_at_most(60s);
-  ASSERT_EQ(r.status, 0) << r.err;
-  const std::vector<std::string> printed = printed_flags(r.out.substr(r.out.rfind("rtvk render")));
-  const std::vector<double> focus = numbers_after(printed, "--focus-dist");
-  ASSERT_EQ(focus.size(), 1u) << r.out;
+  double focus = 0;
+  ASSERT_NO_FATAL_FAILURE(focus_after_click({"--scene", file, "--width", "200"}, 100, 66, focus));
   // At t = 2.5 the sphere is centred at (0, 0, -5): its near side is 4 along the view.
-  EXPECT_NEAR(focus[0], 4, 0.05);
+  EXPECT_NEAR(focus, 4, 0.05);
 }
 
 // A size fixed by the flags whose sums cannot stay on the device in one storage buffer (lavapipe
