@@ -24,9 +24,6 @@ layout(constant_id = RTVK_SPEC_COUNT_RAYS) const bool count_rays = false;  // pe
 layout(std140, set = 0, binding = RTVK_BINDING_CAMERA) uniform camera_block {
   camera_ubo cams[RTVK_MAX_VIEWS];
 };
-layout(std430, set = 0, binding = RTVK_BINDING_SPHERES) readonly buffer sphere_block {
-  gpu_sphere spheres[];
-};
 layout(std430, set = 0, binding = RTVK_BINDING_MATERIALS) readonly buffer material_block {
   gpu_material materials[];
 };
@@ -36,15 +33,10 @@ layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) buffer image_block {
 layout(std430, set = 0, binding = RTVK_BINDING_STATUS) buffer status_block {
   render_status status;
 };
-layout(std430, set = 0, binding = RTVK_BINDING_VELOCITIES) readonly buffer velocity_block {
-  vec4 velocities[];
-};
-layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
-  bvh_wide_node bvh_nodes[];
-};
 layout(push_constant) uniform push_block {
   render_push pc;
 };
+#include "scene_buffers.glsl"
 
 #include "camera_rays.h"
 #include "fixed_sum.h"

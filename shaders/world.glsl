@@ -7,41 +7,88 @@
 #ifndef RTVK_WORLD_GLSL
 #define RTVK_WORLD_GLSL
 #include "bvh.glsl"
+#include "hit_quad.h"
 #include "hit_sphere.h"
+#include "hit_triangle.h"
 
 // Whether some sphere moves: without, the velocities (`velocities`, vec4[] in the spheres' order)
 // are never read. The host sets it for
 // render.comp; the probes leave it off.
 layout(constant_id = RTVK_SPEC_MOTION) const bool motion = false;
+// Whether the scene has quads, triangles: without, their tests are compiled out.
+layout(constant_id = RTVK_SPEC_QUADS) const bool any_quads = false;
+layout(constant_id = RTVK_SPEC_TRIANGLES) const bool any_triangles = false;
 
 // Where the sphere in slot k is at `time` (sphere::center_at).
 precise vec3 center_at(uint k, float time) {
   return motion ? moved_center(spheres[k].center, velocities[k].xyz, time) : spheres[k].center;
 }
 
-// Tests the sphere in slot k, keeping the nearest hit (`closest`; `best` its scene index,
-// `best_slot` its slot). Ties go to the later sphere in the scene.
-void test_sphere(uint k, ray r, float t_min, precise inout float closest, inout int best,
-                 inout uint best_slot) {
+// The quad at position k with its plane, as the shared kernels take it.
+quad_geometry quad_at(uint k) {
+  quad_geometry g;
+  g.Q = quads[k].Q;
+  g.u = quads[k].u;
+  g.v = quads[k].v;
+  g.normal = quads[k].normal;
+  g.w = quads[k].w;
+  g.D = quads[k].D;
+  return g;
+}
+
+// Tests the object of leaf reference `ref` (RTVK_LEAF_* kind | position), keeping the nearest
+// hit (`closest`; `best` its scene index, `best_ref` its reference). Ties go to the later object
+// in the scene. The kinds a scene lacks are compiled out.
+void test_object(uint ref, ray r, sheared_ray sr, float t_min, precise inout float closest,
+                 inout int best, inout uint best_ref) {
+  uint k = ref & RTVK_LEAF_INDEX_MASK;
+  uint kind = ref & RTVK_LEAF_KIND_MASK;
   precise float t;
-  int i = int(spheres[k].scene_index);
-  if (hit_sphere(center_at(k, r.time), spheres[k].radius, r, t_min, closest, t) &&
-      (t < closest || i > best)) {
+  bool hit;
+  if ((!any_quads && !any_triangles) || kind == RTVK_LEAF_SPHERE) {
+    hit = hit_sphere(center_at(k, r.time), spheres[k].radius, r, t_min, closest, t);
+  } else if (!any_triangles || (any_quads && kind == RTVK_LEAF_QUAD)) {
+    precise vec2 uv;
+    hit = hit_quad(quad_at(k), r, t_min, closest, t, uv);
+  } else {
+    precise vec3 weights;
+    hit = hit_triangle(triangles[k].a, triangles[k].b, triangles[k].c, r, sr, t_min, closest, t,
+                       weights);
+  }
+  if (!hit) return;
+  int i = int(kind == RTVK_LEAF_SPHERE ? spheres[k].scene_index
+                                       : (kind == RTVK_LEAF_QUAD ? quads[k].scene_index
+                                                                 : triangles[k].scene_index));
+  if (t < closest || i > best) {
     closest = t;
     best = i;
-    best_slot = k;
+    best_ref = ref;
   }
 }
 
-// Tests spheres first .. first + count - 1 of a leaf. False
-// when the loop budget ran out.
-bool visit_leaf(uint first, uint count, ray r, float t_min, precise inout float closest,
-                inout int best, inout uint best_slot, inout uint iterations) {
-  for (uint k = first; k < first + count; ++k) {
-    if (++iterations > pc.loop_budget) return false;
-    test_sphere(k, r, t_min, closest, best, best_slot);
+// The record of a hit at t on the object of leaf reference `ref` (host/cpu/bvh_world.cpp's
+// bvh_world::record).
+void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_record rec) {
+  uint k = ref & RTVK_LEAF_INDEX_MASK;
+  uint kind = ref & RTVK_LEAF_KIND_MASK;
+  if ((!any_quads && !any_triangles) || kind == RTVK_LEAF_SPHERE) {
+    record_hit(center_at(k, r.time), spheres[k].radius, spheres[k].material, r, t, rec);
+  } else if (!any_triangles || (any_quads && kind == RTVK_LEAF_QUAD)) {
+    record_quad_hit(quad_at(k), quads[k].material, r, t, rec);
+  } else {
+    gpu_triangle tri = triangles[k];
+    precise vec3 shading = unit_vector(cross3(tri.b - tri.a, tri.c - tri.a));
+    if (tri.normals != RTVK_FLAT) {  // the blend's weights found again, as on the CPU
+      precise float again;
+      precise vec3 weights;
+      if (hit_triangle(tri.a, tri.b, tri.c, r, sr, -3.402823466e+38, 3.402823466e+38, again,
+                       weights))
+        shading = blend_normals(vertex_normals[3u * tri.normals].xyz,
+                                vertex_normals[3u * tri.normals + 1u].xyz,
+                                vertex_normals[3u * tri.normals + 2u].xyz, weights);
+    }
+    record_triangle_hit(tri.a, tri.b, tri.c, shading, tri.material, r, t, rec);
   }
-  return true;
 }
 
 // Puts (key, id) pairs a and b in ascending order of key.
@@ -74,7 +121,9 @@ uint sort_key(bool entered, float t) {
 // each trip counts one iteration against the loop budget. (It takes 13 to 15% less time on
 // lavapipe than the binary tree it replaced: docs/benchmarks.md.)
 bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inout uint iterations) {
-  if (pc.sphere_count == 0u) return false;
+  if (pc.sphere_count + pc.quad_count + pc.triangle_count == 0u) return false;
+  sheared_ray sr;
+  if (any_triangles) sr = shear_ray(r);
   precise vec3 o = r.origin;
   precise vec3 inv_d = safe_inverse(r.direction);
   precise float margin = origin_margin(o);
@@ -86,7 +135,7 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
   float next_entry = 0.0;  // where the ray enters it
   precise float closest = t_max;
   int best = -1;
-  uint best_slot = 0u;
+  uint best_ref = 0u;
   while (true) {
     if (++iterations > pc.loop_budget) return false;
     precise float box_max = closest * (1.0 + 1.0 / 1048576.0);
@@ -94,7 +143,7 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
     if (next_entry > box_max) {
       // remembered before a closer hit was found: dropped unvisited
     } else if ((next & RTVK_WIDE_LEAF) != 0u) {
-      test_sphere(next & ~RTVK_WIDE_LEAF, r, t_min, closest, best, best_slot);
+      test_object(next & ~RTVK_WIDE_LEAF, r, sr, t_min, closest, best, best_ref);
     } else {
       bvh_wide_node n = bvh_nodes[next];
       precise vec4 t;
@@ -136,35 +185,32 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
     next_entry = stack_entry[top];
   }
   if (best < 0) return false;
-  gpu_sphere s = spheres[best_slot];
-  record_hit(center_at(best_slot, r.time), s.radius, s.material, r, closest, rec);
+  record_object(best_ref, r, sr, closest, rec);
   return true;
 }
 
-// The closest hit over every sphere, as hittable_list::hit (or, with use_bvh, as
-// bvh_world::hit).
-// Each iteration counts against the loop budget; over budget, the search stops and `iterations`
-// tells the caller.
+// The closest hit over every object, as hittable_list::hit (or, with use_bvh, as
+// bvh_world::hit). Each iteration counts against the loop budget; over budget, the search stops
+// and `iterations` tells the caller.
 bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
                inout uint iterations) {
   if (use_bvh) return hit_bvh(r, t_min, t_max, rec, iterations);
-  bool hit_anything = false;
-  precise float closest_so_far = t_max;
-  uint closest_sphere = 0u;
-  for (uint i = 0u; i < pc.sphere_count; ++i) {
-    if (++iterations > pc.loop_budget) return false;
-    precise float t;
-    if (hit_sphere(center_at(i, r.time), spheres[i].radius, r, t_min, closest_so_far, t)) {
-      hit_anything = true;
-      closest_so_far = t;
-      closest_sphere = i;
+  sheared_ray sr;
+  if (any_triangles) sr = shear_ray(r);
+  precise float closest = t_max;
+  int best = -1;
+  uint best_ref = 0u;
+  uint counts[3] = uint[3](pc.sphere_count, pc.quad_count, pc.triangle_count);
+  uint kinds[3] = uint[3](RTVK_LEAF_SPHERE, RTVK_LEAF_QUAD, RTVK_LEAF_TRIANGLE);
+  for (uint kind = 0u; kind < 3u; ++kind) {
+    for (uint i = 0u; i < counts[kind]; ++i) {
+      if (++iterations > pc.loop_budget) return false;
+      test_object(kinds[kind] | i, r, sr, t_min, closest, best, best_ref);
     }
   }
-  if (hit_anything) {
-    gpu_sphere s = spheres[closest_sphere];
-    record_hit(center_at(closest_sphere, r.time), s.radius, s.material, r, closest_so_far, rec);
-  }
-  return hit_anything;
+  if (best < 0) return false;
+  record_object(best_ref, r, sr, closest, rec);
+  return true;
 }
 
 #endif

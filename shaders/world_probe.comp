@@ -7,20 +7,12 @@
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(constant_id = RTVK_SPEC_USE_BVH) const bool use_bvh = true;
 
-layout(std430, set = 0, binding = RTVK_BINDING_SPHERES) readonly buffer sphere_block {
-  gpu_sphere spheres[];
-};
-layout(std430, set = 0, binding = RTVK_BINDING_VELOCITIES) readonly buffer velocity_block {
-  vec4 velocities[];
-};
-layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
-  bvh_wide_node bvh_nodes[];
-};
+#include "scene_buffers.glsl"
 layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block {
   world_probe_entry entries[];
 };
 layout(push_constant) uniform push_block {
-  render_push pc;  // sphere_count and loop_budget
+  render_push pc;  // the object counts and loop_budget
 };
 
 #include "world.glsl"

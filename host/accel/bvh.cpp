@@ -48,10 +48,10 @@ struct fbox {
   }
 };
 
-// One sphere as the builder sees it.
+// One object as the builder sees it.
 struct prim {
-  float4 lo, hi;         // the sphere's box, rounded outward to float (w: 0)
-  std::uint32_t sphere;  // index into the scene's spheres
+  float4 lo, hi;         // the object's box, rounded outward to float (w: 0)
+  std::uint32_t object;  // its scene index (primitive_spans: spheres, quads, triangles)
   float4 centroid() const { return (lo + hi) * 0.5f; }
 };
 
@@ -167,7 +167,7 @@ class builder {
     store_bounds(info.bounds, nodes_[0], 1);
     nodes_[0].first = gpu::uvec2(0);
     nodes_[0].count = gpu::uvec2(std::uint32_t(prims_.size()));
-    for (std::size_t i = 0; i < prims_.size(); ++i) order_[i] = prims_[i].sphere;
+    for (std::size_t i = 0; i < prims_.size(); ++i) order_[i] = prims_[i].object;
   }
 
  private:
@@ -178,7 +178,7 @@ class builder {
     if (end - begin <= std::size_t(bvh::max_leaf)) {
       nodes_[at].first[c] = std::uint32_t(begin);
       nodes_[at].count[c] = std::uint32_t(end - begin);
-      for (std::size_t i = begin; i < end; ++i) order_[i] = prims_[i].sphere;
+      for (std::size_t i = begin; i < end; ++i) order_[i] = prims_[i].object;
       return depth;
     }
     nodes_[at].first[c] = node;
@@ -356,30 +356,64 @@ class builder {
   std::vector<std::uint32_t>& order_;
 };
 
-// The spheres as prims, their boxes rounded outward to float, and the whole range's info.
-range_info make_prims(std::span<const sphere> spheres, time_span motion, prim_vector& prims) {
-  prims.resize(spheres.size());
+// A box in double, for the objects' boxes before they are rounded outward to float.
+struct dbox {
+  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
+  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
+  void grow(const glm::dvec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+};
+
+// A sphere's box over the whole of `motion`.
+dbox sphere_box(const sphere& s, time_span motion) {
+  const glm::dvec3 radius(std::abs(s.radius));
+  const point3 a = s.center_at(motion.lo), b = s.center_at(motion.hi);
+  // The GPU moves a center in float (float(c) + float(t) * float(v): a few roundings of
+  // 2^-24 each, relative), so a moving sphere's box grows by sixteen times that bound.
+  glm::dvec3 slack(0);
+  if (s.center1) {
+    const double t = std::max(std::abs(motion.lo), std::abs(motion.hi));
+    slack = (glm::abs(s.center) + t * glm::abs(s.velocity())) * 0x1p-20;
+  }
+  return {glm::min(a, b) - radius - slack, glm::max(a, b) + radius + slack};
+}
+
+dbox quad_box(const quad& q) {
+  dbox b;
+  for (const point3& p : {q.Q, q.Q + q.u, q.Q + q.v, q.Q + q.u + q.v}) b.grow(p);
+  return b;
+}
+
+dbox triangle_box(const triangle& t) {
+  dbox b;
+  for (const point3& p : t.p) b.grow(p);
+  return b;
+}
+
+dbox object_box(const primitive_spans& objects, std::size_t i, time_span motion) {
+  if (i < objects.spheres.size()) return sphere_box(objects.spheres[i], motion);
+  i -= objects.spheres.size();
+  if (i < objects.quads.size()) return quad_box(objects.quads[i]);
+  return triangle_box(objects.triangles[i - objects.quads.size()]);
+}
+
+// The objects as prims, their boxes rounded outward to float, and the whole range's info.
+range_info make_prims(const primitive_spans& objects, time_span motion, prim_vector& prims) {
+  prims.resize(objects.size());
   return tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, spheres.size(), 4096), range_info{},
+      tbb::blocked_range<std::size_t>(0, objects.size(), 4096), range_info{},
       [&](const tbb::blocked_range<std::size_t>& r, range_info info) {
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
-          const sphere& s = spheres[i];
-          const glm::dvec3 radius(std::abs(s.radius));
-          const point3 a = s.center_at(motion.lo), b = s.center_at(motion.hi);
-          // The GPU moves a center in float (float(c) + float(t) * float(v): a few roundings of
-          // 2^-24 each, relative), so a moving sphere's box grows by sixteen times that bound.
-          glm::dvec3 slack(0);
-          if (s.center1) {
-            const double t = std::max(std::abs(motion.lo), std::abs(motion.hi));
-            slack = (glm::abs(s.center) + t * glm::abs(s.velocity())) * 0x1p-20;
-          }
+          const dbox box = object_box(objects, i, motion);
           prim& p = prims[i];
           p.lo = p.hi = splat4(0);
           for (int k = 0; k < 3; ++k) {
-            p.lo[k] = next_down(float(std::min(a[k], b[k]) - radius[k] - slack[k]));
-            p.hi[k] = next_up(float(std::max(a[k], b[k]) + radius[k] + slack[k]));
+            p.lo[k] = next_down(float(box.lo[k]));
+            p.hi[k] = next_up(float(box.hi[k]));
           }
-          p.sphere = std::uint32_t(i);
+          p.object = std::uint32_t(i);
           info.bounds.grow(p.lo, p.hi);
           info.centroids.grow(p.centroid());
         }
@@ -394,19 +428,23 @@ range_info make_prims(std::span<const sphere> spheres, time_span motion, prim_ve
 
 }  // namespace
 
-bvh::bvh(std::span<const sphere> spheres, int threads, time_span motion) {
-  if (spheres.empty()) return;
-  if (levels_needed(spheres.size()) > max_depth)
-    throw std::length_error(std::to_string(spheres.size()) + " spheres are more than a BVH of " +
+bvh::bvh(std::span<const sphere> spheres, int threads, time_span motion)
+    : bvh(primitive_spans{spheres, {}, {}}, threads, motion) {}
+
+bvh::bvh(const primitive_spans& objects, int threads, time_span motion) {
+  const std::size_t count = objects.size();
+  if (count == 0) return;
+  if (levels_needed(count) > max_depth || count > std::size_t(RTVK_LEAF_INDEX_MASK) + 1)
+    throw std::length_error(std::to_string(count) + " objects are more than a BVH of " +
                             std::to_string(max_depth) + " levels holds");
   run_in_arena(threads, [&] {
     prim_vector prims;
-    const range_info all = make_prims(spheres, motion, prims);
-    // A binary tree over N >= 2 one-sphere leaves has N - 1 interior nodes; one sphere, a root.
-    nodes_.resize(std::max<std::size_t>(spheres.size() - 1, 1));
-    order_.resize(spheres.size());
+    const range_info all = make_prims(objects, motion, prims);
+    // A binary tree over N >= 2 one-object leaves has N - 1 interior nodes; one object, a root.
+    nodes_.resize(std::max<std::size_t>(count - 1, 1));
+    order_.resize(count);
     builder b(prims, nodes_, order_);
-    if (spheres.size() <= std::size_t(max_leaf)) {
+    if (count <= std::size_t(max_leaf)) {
       b.build_leaf_root(all);
       depth_ = 1;
     } else {

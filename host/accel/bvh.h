@@ -7,18 +7,28 @@
 
 #include <glm/vec3.hpp>
 
+#include "quad.h"
 #include "shared_types.h"
 #include "sphere.h"
+#include "triangle.h"
 
 namespace rtvk {
 
-// A bounding volume hierarchy over spheres, built with binned SAH and flattened depth first into
-// one array of interior nodes (gpu::bvh_node, from the header shared with the shaders), each
-// holding both children's boxes and references; leaves live in their parents. The shader
-// traverses this array (shaders/world.glsl); the CPU the same tree collapsed four wide
-// (wide_bvh.h, cpu/bvh_world.h).
-// Leaves refer to sphere slots, the spheres in leaf order; order() gives each slot's index in
-// the scene, so hits can be kept identical to a linear scan.
+// The objects a BVH is built over, numbered as one list: spheres, then quads, then triangles
+// (scene::spheres, quads, triangles; an object's number is its scene index).
+struct primitive_spans {
+  std::span<const sphere> spheres;
+  std::span<const quad> quads;
+  std::span<const triangle> triangles;
+  std::size_t size() const { return spheres.size() + quads.size() + triangles.size(); }
+};
+
+// A bounding volume hierarchy over objects (spheres, quads, triangles), built with binned SAH and
+// flattened depth first into one array of interior nodes (gpu::bvh_node, from the header shared
+// with the shaders), each holding both children's boxes and references; leaves live in their
+// parents. The shader traverses this array (shaders/world.glsl); the CPU the same tree collapsed
+// four wide (wide_bvh.h, cpu/bvh_world.h). Leaves refer to sphere slots, the spheres in leaf order;
+// order() gives each slot's index in the scene, so hits can be kept identical to a linear scan.
 class bvh {
  public:
   // Built on `threads` threads (0: one per core); the tree does not depend on how many. A moving
@@ -26,6 +36,8 @@ class bvh {
   // at the two ends bound it in between). Throws std::length_error for more spheres than a tree
   // of max_depth levels holds.
   explicit bvh(std::span<const sphere> spheres, int threads = 0, time_span motion = {});
+  // Over objects of every kind; order() then gives scene indices in primitive_spans' numbering.
+  explicit bvh(const primitive_spans& objects, int threads = 0, time_span motion = {});
 
   // Interior nodes, node 0 the root; none when there are no spheres. One sphere makes a root
   // whose two children are the same leaf.

@@ -32,7 +32,8 @@ float half_area(const binary_child& b) {
 
 class collapser {
  public:
-  collapser(const bvh& tree, std::vector<wide_node>& out) : binary_(tree.nodes()), out_(out) {}
+  collapser(const bvh& tree, std::span<const std::uint32_t> refs, std::vector<wide_node>& out)
+      : binary_(tree.nodes()), refs_(refs), out_(out) {}
 
   // Makes the wide node for binary node `b`, `level` wide levels below the root (root: 1), and
   // below it the wide nodes of its interior children; returns its index. The widest interior
@@ -81,22 +82,24 @@ class collapser {
     out_[at].lanes |= 1u << c;
     // The leaf's one sphere (bvh::max_leaf is 1); a root whose children are the same leaf keeps
     // both lanes, as the binary tree does, and the traversal's tie rule makes that harmless.
+    const std::uint32_t leaf = refs_.empty() ? kid.first : refs_[kid.first];
     const std::uint32_t child =
-        kid.count > 0 ? (kid.first | wide_node::leaf_bit) : collapse(kid.first, level + 1);
+        kid.count > 0 ? (leaf | wide_node::leaf_bit) : collapse(kid.first, level + 1);
     out_[at].child[c] = child;  // out_ may have grown: index, not a reference held across
   }
 
   const std::vector<gpu::bvh_node>& binary_;
+  std::span<const std::uint32_t> refs_;  // leaf slot -> reference; empty: the slot
   std::vector<wide_node>& out_;
   int depth_ = 0;
 };
 
 }  // namespace
 
-wide_bvh::wide_bvh(const bvh& tree) {
+wide_bvh::wide_bvh(const bvh& tree, std::span<const std::uint32_t> refs) {
   if (tree.nodes().empty()) return;
   nodes_.reserve(tree.nodes().size() / 2 + 1);
-  collapser c(tree, nodes_);
+  collapser c(tree, refs, nodes_);
   c.collapse(0, 1);
   depth_ = c.depth();
 }

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "bvh.h"
@@ -13,7 +14,8 @@ namespace rtvk {
 struct alignas(64) wide_node {
   float lo[3][4];  // children's box minima, [axis][child], scene units (rounded outward)
   float hi[3][4];  // and maxima
-  // Per child: a wide node index, or with leaf_bit set the leaf's sphere slot (one sphere).
+  // Per child: a wide node index, or with leaf_bit set the leaf's object (one): its reference
+  // (RTVK_LEAF_* kind | index in that kind's array), or its leaf slot.
   std::uint32_t child[4];
   std::uint32_t lanes;  // bit c: child c is in use (the first `children` bits)
   std::uint32_t pad[3];
@@ -25,8 +27,9 @@ static_assert(sizeof(wide_node) == 128);
 // The binary tree collapsed into wide nodes, node 0 the root, depth first.
 class wide_bvh {
  public:
-  wide_bvh() = default;  // no spheres
-  explicit wide_bvh(const bvh& tree);
+  wide_bvh() = default;  // no objects
+  // Leaves refer to `refs[slot]` (leaf_layout::refs), or to the leaf slot itself when empty.
+  explicit wide_bvh(const bvh& tree, std::span<const std::uint32_t> refs = {});
 
   const std::vector<wide_node>& nodes() const { return nodes_; }
   // Wide levels on the longest path from the root (no spheres: 0).

@@ -9,7 +9,10 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "hit_triangle.h"
 #include "hittable_sphere.h"
+#include "hittable_triangle.h"
+#include "leaf_layout.h"
 #include "parallel.h"
 
 namespace rtvk {
@@ -91,37 +94,12 @@ struct node_stack {
   int top = 0;                              // entries in use
 };
 
-// The search's state: the nearest hit so far, and its sphere.
-struct nearest {
-  double t;                 // the hit's distance (t_max while there is none)
-  std::int64_t scene = -1;  // the sphere's index in the scene, -1 for none
-  std::uint32_t slot = 0;   // and its leaf slot
-};
-
-// Where the sphere in leaf slot k is at the ray's instant (sphere::center_at).
+// Where the sphere at position k is at the ray's instant (sphere::center_at).
 template <typename Sphere>
 inline point3 center_at(std::uint32_t k, const std::vector<Sphere>& spheres,
                         const std::vector<vec3>& velocities, double time) {
   return velocities.empty() ? spheres[k].center
                             : moved_center(spheres[k].center, velocities[k], time);
-}
-
-// Tests the sphere in leaf slot k, keeping the nearest hit. Ties go to the later sphere in the
-// scene, as in a linear scan, so the order of the tests never matters.
-template <typename Sphere>
-inline void visit_sphere(std::uint32_t k, const std::vector<Sphere>& spheres,
-                         const std::vector<vec3>& velocities,
-                         const std::vector<std::uint32_t>& order, const ray& r, double t_min,
-                         nearest& best) {
-  const std::int64_t i = order[k];
-  double t;
-  if (hit_sphere(center_at(k, spheres, velocities, r.time), spheres[k].radius, r, t_min, best.t,
-                 t) &&
-      (t < best.t || i > best.scene)) {
-    best.t = t;
-    best.scene = i;
-    best.slot = k;
-  }
 }
 
 // Takes the next remembered node the ray can still reach before box_max (the closest hit).
@@ -160,41 +138,138 @@ inline bool descend(const wide_node& n, unsigned entered, const float (&t)[4], n
 
 }  // namespace
 
-bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads, time_span motion) {
+// The search's state: the nearest hit so far, and its object.
+struct bvh_world::nearest {
+  double t;                 // the hit's distance (t_max while there is none)
+  std::int64_t scene = -1;  // the object's scene index, -1 for none
+  std::uint32_t ref = 0;    // and its leaf reference (RTVK_LEAF_* kind | position)
+
+  // Keeps a hit at t on object `i` (reference `r`) when it is nearer, or as near and later in
+  // the scene, as in a linear scan, so the order of the tests never matters.
+  void offer(double t_hit, std::int64_t i, std::uint32_t r) {
+    if (t_hit < t || i > scene) {
+      t = t_hit;
+      scene = i;
+      ref = r;
+    }
+  }
+};
+
+bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads, time_span motion)
+    : bvh_world(primitive_spans{spheres, {}, {}}, {}, threads, motion) {}
+
+bvh_world::bvh_world(const primitive_spans& objects, std::span<const triangle_shading> shading,
+                     int threads, time_span motion) {
+  leaf_layout layout;
   {
-    const bvh tree(spheres, threads, motion);
-    wide_ = wide_bvh(tree);
-    order_ = tree.order();
-  }  // the binary tree is freed before the spheres are copied: a lower peak
-  spheres_.resize(spheres.size());
-  const bool moves = std::any_of(spheres.begin(), spheres.end(),
+    const bvh tree(objects, threads, motion);
+    layout = make_leaf_layout(tree, objects);
+    wide_ = wide_bvh(tree, layout.refs);
+  }  // the binary tree is freed before the objects are copied: a lower peak
+  const std::uint32_t first_quad = std::uint32_t(objects.spheres.size());
+  const std::uint32_t first_triangle = first_quad + std::uint32_t(objects.quads.size());
+  spheres_.resize(layout.spheres.size());
+  sphere_index_ = std::move(layout.spheres);
+  const bool moves = std::any_of(objects.spheres.begin(), objects.spheres.end(),
                                  [](const sphere& s) { return s.center1.has_value(); });
-  if (moves) velocities_.resize(spheres.size());
-  parallel_for(spheres.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
+  if (moves) velocities_.resize(spheres_.size());
+  parallel_for(spheres_.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      const sphere& s = spheres[order_[k]];
+      const sphere& s = objects.spheres[sphere_index_[k]];
       spheres_[k] = {s.center, s.radius, s.material};
       if (moves) velocities_[k] = s.velocity();
     }
   });
+  quads_.reserve(layout.quads.size());
+  for (std::uint32_t& i : layout.quads) {
+    const quad& q = objects.quads[i];
+    quads_.push_back({q.geometry(), q.material});
+    i += first_quad;
+  }
+  quad_index_ = std::move(layout.quads);
+  triangles_.resize(layout.triangles.size());
+  std::vector<std::int32_t> normals_at(shading.size(), -1);  // shading index -> normals_
+  for (std::size_t k = 0; k < triangles_.size(); ++k) {
+    const triangle& t = objects.triangles[layout.triangles[k]];
+    std::int32_t n = -1;
+    if (t.shading >= 0 && shading[std::size_t(t.shading)].has_normals()) {
+      std::int32_t& at = normals_at[std::size_t(t.shading)];
+      if (at < 0) {
+        at = std::int32_t(normals_.size());
+        const std::array<vec3, 3>& n = shading[std::size_t(t.shading)].normal;
+        normals_.push_back({glm::normalize(n[0]), glm::normalize(n[1]), glm::normalize(n[2])});
+      }
+      n = at;
+    }
+    triangles_[k] = {t.p, t.material, n};
+    layout.triangles[k] += first_triangle;
+  }
+  triangle_index_ = std::move(layout.triangles);
+}
+
+// Tests the object of leaf reference `ref`, keeping the nearest hit.
+inline void bvh_world::visit(std::uint32_t ref, const ray& r, const sheared_ray& sheared,
+                             double t_min, nearest& best) const {
+  const std::uint32_t k = ref & RTVK_LEAF_INDEX_MASK;
+  double t;
+  switch (ref & RTVK_LEAF_KIND_MASK) {
+    case RTVK_LEAF_SPHERE:
+      if (hit_sphere(center_at(k, spheres_, velocities_, r.time), spheres_[k].radius, r, t_min,
+                     best.t, t))
+        best.offer(t, sphere_index_[k], ref);
+      return;
+    case RTVK_LEAF_QUAD: {
+      real2 uv;
+      if (hit_quad(quads_[k].g, r, t_min, best.t, t, uv)) best.offer(t, quad_index_[k], ref);
+      return;
+    }
+    default: {
+      const leaf_triangle& tri = triangles_[k];
+      real3 weights;
+      if (hit_triangle(tri.p[0], tri.p[1], tri.p[2], r, sheared, t_min, best.t, t, weights))
+        best.offer(t, triangle_index_[k], ref);
+      return;
+    }
+  }
+}
+
+// The record of the winner, `best`.
+void bvh_world::record(const nearest& best, const ray& r, const sheared_ray& sheared,
+                       hit_record& rec) const {
+  const std::uint32_t k = best.ref & RTVK_LEAF_INDEX_MASK;
+  switch (best.ref & RTVK_LEAF_KIND_MASK) {
+    case RTVK_LEAF_SPHERE:
+      record_hit(center_at(k, spheres_, velocities_, r.time), spheres_[k].radius,
+                 uint(spheres_[k].material), r, best.t, rec);
+      return;
+    case RTVK_LEAF_QUAD:
+      record_quad_hit(quads_[k].g, uint(quads_[k].material), r, best.t, rec);
+      return;
+    default: {
+      const leaf_triangle& tri = triangles_[k];
+      record_triangle(tri.p, tri.normals < 0 ? nullptr : &normals_[std::size_t(tri.normals)],
+                      uint(tri.material), r, sheared, best.t, rec);
+      return;
+    }
+  }
 }
 
 // At each wide node all four children's boxes are tested at once; the ray goes on into the
-// nearest child it enters before the closest hit so far (a wide node, or a leaf whose sphere is
+// nearest child it enters before the closest hit so far (a wide node, or a leaf whose object is
 // then tested) and remembers the others with their entry distances. Remembered children behind
 // the closest hit are dropped when they come up.
 bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
   const std::vector<wide_node>& nodes = wide_.nodes();
-  const std::vector<std::uint32_t>& order = order_;
   if (nodes.empty()) return false;
   const ray_slabs slabs(r);
+  const sheared_ray sheared = triangles_.empty() ? sheared_ray{} : shear_ray(r);
   const float box_min = widen_down(t_min);
   node_stack stack;
   std::uint32_t next = 0;  // the root
   nearest best{t_max};
   while (true) {
     if (next & wide_node::leaf_bit) {
-      visit_sphere(next & ~wide_node::leaf_bit, spheres_, velocities_, order, r, t_min, best);
+      visit(next & ~wide_node::leaf_bit, r, sheared, t_min, best);
     } else {
       const wide_node& n = nodes[next];
       float t[4];
@@ -204,9 +279,7 @@ bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) c
     if (!pop_reachable(stack, widen_up(best.t), next)) break;
   }
   if (best.scene < 0) return false;
-  const leaf_sphere& s = spheres_[best.slot];
-  record_hit(center_at(best.slot, spheres_, velocities_, r.time), s.radius, uint(s.material), r,
-             best.t, rec);
+  record(best, r, sheared, rec);
   return true;
 }
 

@@ -1,25 +1,36 @@
 #pragma once
+#include <array>
+#include <span>
 #include <vector>
 
 #include "bvh.h"
+#include "hit_quad.h"
+#include "hit_triangle.h"
 #include "hittable.h"
 #include "sphere.h"
 #include "wide_bvh.h"
 
 namespace rtvk {
 
-// The scene's spheres behind a BVH (accel/bvh.h): hits are identical to a linear scan over the
-// spheres in order -- the nearest root wins, and on an exact tie the later sphere in the scene,
-// as in hittable_list.
+// The scene's objects behind a BVH (accel/bvh.h): hits are identical to a linear scan over the
+// objects in order (spheres, quads, triangles) -- the nearest root wins, and on an exact tie the
+// later object in the scene, as in hittable_list.
 class bvh_world final : public hittable {
  public:
-  // Built on `threads` threads (0: one per core).
   // Built on `threads` threads (0: one per core), bounding moving spheres over `motion`.
   explicit bvh_world(const std::vector<sphere>& spheres, int threads = 0, time_span motion = {});
+  // Over objects of every kind; `shading` holds what the triangles' shading indices refer to.
+  bvh_world(const primitive_spans& objects, std::span<const triangle_shading> shading,
+            int threads = 0, time_span motion = {});
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
 
  private:
+  struct nearest;
+  void visit(std::uint32_t ref, const ray& r, const sheared_ray& sheared, double t_min,
+             nearest& best) const;
+  void record(const nearest& best, const ray& r, const sheared_ray& sheared, hit_record& rec) const;
+
   // A sphere as the search reads it: what a still one needs, in 40 bytes (a moving one's
   // velocity is kept apart, so scenes where nothing moves read no more than before).
   struct leaf_sphere {
@@ -28,11 +39,26 @@ class bvh_world final : public hittable {
     int material;   // index into the scene's materials
   };
 
-  // The binary tree (the GPU's) is built, collapsed and dropped: the CPU keeps only these.
-  std::vector<std::uint32_t> order_;  // leaf slot -> index into the scene's spheres
-  wide_bvh wide_;                     // the tree collapsed four wide: what the CPU traverses
-  std::vector<leaf_sphere> spheres_;  // in leaf order: slot k is scene sphere order_[k]
-  std::vector<vec3> velocities_;      // in leaf order; empty when no sphere moves
+  // A quad with its plane, and a triangle with its vertices, as the search reads them.
+  struct leaf_quad {
+    quad_geometry g;  // the book's precomputed quad
+    int material;     // index into the scene's materials
+  };
+  struct leaf_triangle {
+    std::array<point3, 3> p;  // vertices, scene units
+    int material;             // index into the scene's materials
+    std::int32_t normals;     // index into normals_, or -1: flat
+  };
+
+  // The binary tree (the GPU's) is built, collapsed and dropped: the CPU keeps only these. Each
+  // kind's array is in leaf order (leaf_layout); *_index_ give each position's scene index.
+  wide_bvh wide_;                         // the tree collapsed four wide: what the CPU traverses
+  std::vector<leaf_sphere> spheres_;      // in leaf order
+  std::vector<vec3> velocities_;          // the spheres', in leaf order; empty when none moves
+  std::vector<leaf_quad> quads_;          // in leaf order
+  std::vector<leaf_triangle> triangles_;  // in leaf order
+  std::vector<std::array<vec3, 3>> normals_;  // smooth triangles' vertex normals
+  std::vector<std::uint32_t> sphere_index_, quad_index_, triangle_index_;  // scene indices
 };
 
 }  // namespace rtvk

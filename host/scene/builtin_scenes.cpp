@@ -143,6 +143,32 @@ scene bouncing_spheres_scene() {
   return s;
 }
 
+// "Ray Tracing: The Next Week", chapter 6: five quads, one per side of a box open at the front,
+// lit by a constant light-blue background, as the book defines them.
+scene quads_scene() {
+  scene s;
+  s.name = "quads";
+  camera_pose& c = main_camera(s).pose;
+  c.lookfrom = point3(0, 0, 9);
+  c.lookat = point3(0, 0, 0);
+  c.vup = vec3(0, 1, 0);
+  c.vfov = 80;
+  c.aperture = 0;
+  s.render = book_render(400, 1.0, 100);
+  s.sky.horizon = s.sky.zenith = color(0.70, 0.80, 1.00);
+  s.materials = {{"left_red", lambertian(color(1.0, 0.2, 0.2))},
+                 {"back_green", lambertian(color(0.2, 1.0, 0.2))},
+                 {"right_blue", lambertian(color(0.2, 0.2, 1.0))},
+                 {"upper_orange", lambertian(color(1.0, 0.5, 0.0))},
+                 {"lower_teal", lambertian(color(0.2, 0.8, 0.8))}};
+  s.quads = {{point3(-3, -2, 5), vec3(0, 0, -4), vec3(0, 4, 0), 0},
+             {point3(-2, -2, 0), vec3(4, 0, 0), vec3(0, 4, 0), 1},
+             {point3(3, -2, 1), vec3(0, 0, 4), vec3(0, 4, 0), 2},
+             {point3(-2, 3, 1), vec3(4, 0, 0), vec3(0, 0, 4), 3},
+             {point3(-2, -3, 5), vec3(4, 0, 0), vec3(0, 0, -4), 4}};
+  return s;
+}
+
 // N small spheres scattered over the book-final ground, for scaling runs. The area grows with N
 // (about one sphere per square unit, as in the book's grid), so what a ray sees stays alike and
 // only the BVH's depth grows. Materials come from a palette of 64 in the book's mix.
@@ -190,7 +216,7 @@ scene spheres_scene(std::uint32_t n) {
 }  // namespace
 
 std::vector<std::string> builtin_scene_names() {
-  return {"seed", "materials", "book-final", "bouncing-spheres"};
+  return {"seed", "materials", "book-final", "bouncing-spheres", "quads"};
 }
 
 scene builtin_scene(std::string_view name) {
@@ -198,6 +224,7 @@ scene builtin_scene(std::string_view name) {
   if (name == "materials") return materials_scene();
   if (name == "book-final") return book_final_scene();
   if (name == "bouncing-spheres") return bouncing_spheres_scene();
+  if (name == "quads") return quads_scene();
   if (name.rfind("spheres:", 0) == 0) {
     const std::string_view count = name.substr(8);
     std::uint32_t n = 0;
@@ -211,7 +238,7 @@ scene builtin_scene(std::string_view name) {
   std::string choices;
   for (const auto& n : builtin_scene_names()) choices += (choices.empty() ? "" : ", ") + n;
   throw usage_error("--scene: unknown scene '" + std::string(name) + "' (built-in: " + choices +
-                    ", spheres:N; or a .json scene file)");
+                    ", spheres:N; or a .json scene file, or an .obj, .gltf or .glb mesh)");
 }
 
 }  // namespace rtvk

@@ -15,7 +15,22 @@ std::vector<material> scene_materials(const scene& s) {
   return out;
 }
 
+namespace {
+
+void check_point(const std::string& what, const point3& p) {
+  const auto in_range = [](double v) { return std::abs(v) <= max_scene_coordinate; };
+  if (!in_range(p.x) || !in_range(p.y) || !in_range(p.z))
+    throw usage_error(what + " must be finite and within +-1e18, got " + format_number(p.x) + "," +
+                      format_number(p.y) + "," + format_number(p.z));
+}
+
+}  // namespace
+
 void check_scene(const scene& s) {
+  const auto check_material = [&](const std::string& where, int material) {
+    if (material < 0 || std::size_t(material) >= s.materials.size())
+      throw usage_error(where + ": material index " + std::to_string(material) + " does not exist");
+  };
   if (s.cameras.empty()) throw usage_error(s.name + ": the scene has no camera");
   for (std::size_t i = 0; i < s.cameras.size(); ++i) {
     const named_camera& c = s.cameras[i];
@@ -47,10 +62,41 @@ void check_scene(const scene& s) {
     if (!(sp.radius > 0) || !in_range(sp.radius))
       throw usage_error(where + ": radius must be > 0 and at most 1e18, got " +
                         format_number(sp.radius));
-    if (sp.material < 0 || std::size_t(sp.material) >= s.materials.size())
-      throw usage_error(where + ": material index " + std::to_string(sp.material) +
-                        " does not exist");
+    check_material(where, sp.material);
   }
+  for (std::size_t i = 0; i < s.quads.size(); ++i) {
+    const quad& q = s.quads[i];
+    const std::string where = s.name + ": quad " + std::to_string(i);
+    check_point(where + ": Q", q.Q);
+    check_point(where + ": Q + u + v", q.Q + q.u + q.v);
+    check_point(where + ": u", q.u);
+    check_point(where + ": v", q.v);
+    if (!(glm::length(glm::cross(q.u, q.v)) > 0))
+      throw usage_error(where + ": u and v are parallel (or zero): the quad has no area");
+    check_material(where, q.material);
+  }
+  for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+    const triangle& t = s.triangles[i];
+    const std::string where = s.name + ": triangle " + std::to_string(i);
+    for (int k = 0; k < 3; ++k) check_point(where + ": vertex " + std::to_string(k), t.p[k]);
+    check_material(where, t.material);
+    if (t.shading >= 0 && std::size_t(t.shading) >= s.shading.size())
+      throw usage_error(where + ": shading index " + std::to_string(t.shading) + " does not exist");
+  }
+}
+
+void add_box(scene& s, const point3& a, const point3& b, int material, const transform& t) {
+  const point3 lo = glm::min(a, b), hi = glm::max(a, b);
+  const vec3 dx(hi.x - lo.x, 0, 0), dy(0, hi.y - lo.y, 0), dz(0, 0, hi.z - lo.z);
+  const auto side = [&](const point3& Q, const vec3& u, const vec3& v) {
+    s.quads.push_back({t.apply_point(Q), t.apply_vector(u), t.apply_vector(v), material});
+  };
+  side({lo.x, lo.y, hi.z}, dx, dy);   // front
+  side({hi.x, lo.y, hi.z}, -dz, dy);  // right
+  side({hi.x, lo.y, lo.z}, -dx, dy);  // back
+  side({lo.x, lo.y, lo.z}, dz, dy);   // left
+  side({lo.x, hi.y, hi.z}, dx, -dz);  // top
+  side({lo.x, lo.y, lo.z}, dx, dz);   // bottom
 }
 
 bool scene_moves(const scene& s) {

@@ -6,8 +6,11 @@
 #include "camera.h"
 #include "camera_path.h"
 #include "material.h"
+#include "quad.h"
 #include "render_settings.h"
 #include "sphere.h"
+#include "transform.h"
+#include "triangle.h"
 
 namespace rtvk {
 
@@ -24,6 +27,16 @@ struct named_camera {
   camera_path path;  // where it stands at each time
 };
 
+// A mesh file placed in a scene file: what `scene dump` writes back (its triangles are in the
+// scene's triangles, first .. first + count - 1).
+struct mesh_instance {
+  std::string file;           // as resolved when loaded (absolute when the scene file's was)
+  std::string material;       // the scene's material for every face; empty: the file's own
+  rtvk::transform placement;  // where the mesh's coordinates go
+  std::size_t first = 0;      // its first triangle in scene::triangles
+  std::size_t count = 0;      // its triangles
+};
+
 struct named_material {
   std::string name;  // how spheres refer to it in scene files
   material m;        // its optics
@@ -38,12 +51,27 @@ struct scene {
   render_settings render;                              // default image size, samples, depth, ...
   rtvk::sky sky;                                       // what rays that escape see
   std::vector<named_material> materials;               // spheres index into this
-  std::vector<sphere> spheres;                         // every object, in the order hits are tested
+  // The objects. Hits are tested as if in one list: spheres, then quads, then triangles (each
+  // object's index in that list -- its scene index -- decides exact ties: the later wins).
+  std::vector<sphere> spheres;            // the first book's
+  std::vector<quad> quads;                // the second book's (a box is six)
+  std::vector<triangle> triangles;        // given alone, or faces of meshes
+  std::vector<triangle_shading> shading;  // triangles' vertex normals and uv
+  std::vector<mesh_instance> meshes;      // the mesh files the triangles came from
   time_span motion;  // the instants rays may sample, seconds: BVHs bound moving spheres over it
                      // (render plans widen it to every frame's shutter; default [0, 1])
 };
 
 std::vector<material> scene_materials(const scene& s);
+
+// Objects of every kind: spheres + quads + triangles.
+inline std::size_t object_count(const scene& s) {
+  return s.spheres.size() + s.quads.size() + s.triangles.size();
+}
+
+// The book's box: the six quads of the axis-aligned box with opposite corners a and b, in its
+// order (front, right, back, left, top, bottom), each placed by `t`.
+void add_box(scene& s, const point3& a, const point3& b, int material, const transform& t = {});
 
 // Whether some sphere of the scene moves.
 bool scene_moves(const scene& s);
@@ -69,8 +97,9 @@ inline const camera_path& main_camera(const scene& s) {
 // ends at 3.4e38, so anything near sqrt(3.4e38) = 1.8e19 would overflow there.
 inline constexpr double max_scene_coordinate = 1e18;
 
-// Throws usage_error, naming the sphere, when a sphere names a material that does not exist, or
-// has a center or radius that is not finite or beyond max_scene_coordinate, or a radius <= 0.
+// Throws usage_error, naming the object, when an object names a material that does not exist,
+// or has a coordinate that is not finite or beyond max_scene_coordinate, or a sphere a radius
+// <= 0, or a quad parallel edges.
 void check_scene(const scene& s);
 
 // The most spheres spheres:N builds.

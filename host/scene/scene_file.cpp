@@ -10,6 +10,7 @@
 #include "errors.h"
 #include "format.h"
 #include "input_file.h"
+#include "mesh_file.h"
 #include "parse_values.h"
 
 namespace rtvk {
@@ -289,6 +290,132 @@ std::map<std::string, int> read_materials(const scene_reader& r, const json& mat
   return index;
 }
 
+// The index of the material a field names (`material_index` maps names to scene indices).
+int material_named(const scene_reader& r, const json& j, const std::string& p,
+                   const std::map<std::string, int>& material_index) {
+  const json& m = r.required(j, p, "material");
+  if (!m.is_string()) r.fail(p + "/material", "expected a material name, got " + r.type_of(m));
+  const auto found = material_index.find(m.get<std::string>());
+  if (found == material_index.end())
+    r.fail(p + "/material", "no material named \"" + m.get<std::string>() + "\" in /materials");
+  return found->second;
+}
+
+// An object's placement: {"scale": s or [x, y, z], "rotate": {"axis": [x, y, z], "degrees": d},
+// "translate": [x, y, z]}, each optional, applied in that order.
+transform read_transform(const scene_reader& r, const json& j, const std::string& p) {
+  r.only_fields(j, p, {"scale", "rotate", "translate"});
+  vec3 scale(1), axis(0, 1, 0), offset(0);
+  double degrees = 0;
+  if (j.contains("scale")) {
+    const json& sc = j["scale"];
+    scale = sc.is_number() ? vec3(r.number(sc, p + "/scale")) : r.vector3(sc, p + "/scale");
+  }
+  if (j.contains("rotate")) {
+    const std::string rp = p + "/rotate";
+    r.only_fields(j["rotate"], rp, {"axis", "degrees"});
+    axis = r.vector3(r.required(j["rotate"], rp, "axis"), rp + "/axis");
+    if (!(glm::length(axis) > 0) || !std::isfinite(glm::length(axis)))
+      r.fail(rp + "/axis", "expected a nonzero finite axis");
+    degrees = r.number(r.required(j["rotate"], rp, "degrees"), rp + "/degrees");
+  }
+  if (j.contains("translate")) offset = r.vector3(j["translate"], p + "/translate");
+  const transform t = make_transform(scale, axis, degrees, offset);
+  if (const std::optional<std::string> why = degenerate(t))
+    r.fail(p, "the transform cannot place anything: " + *why);
+  return t;
+}
+
+transform optional_transform(const scene_reader& r, const json& j, const std::string& p) {
+  return j.contains("transform") ? read_transform(r, j["transform"], p + "/transform")
+                                 : transform{};
+}
+
+// The array field `key` of the root (empty when absent), each element read by `read`.
+template <typename Read>
+void read_array(const scene_reader& r, const json& root, const std::string& key, Read read) {
+  if (!root.contains(key)) return;
+  const json& items = root[key];
+  if (!items.is_array()) r.fail("/" + key, "expected an array, got " + r.type_of(items));
+  for (std::size_t i = 0; i < items.size(); ++i)
+    read(items[i], "/" + key + "/" + std::to_string(i));
+}
+
+// Quads, boxes and triangles, each placed by its optional transform.
+void read_flat_objects(const scene_reader& r, const json& root,
+                       const std::map<std::string, int>& material_index, scene& s) {
+  read_array(r, root, "quads", [&](const json& j, const std::string& p) {
+    r.only_fields(j, p, {"Q", "u", "v", "material", "transform"});
+    const transform t = optional_transform(r, j, p);
+    quad q;
+    q.Q = t.apply_point(r.vector3(r.required(j, p, "Q"), p + "/Q"));
+    q.u = t.apply_vector(r.vector3(r.required(j, p, "u"), p + "/u"));
+    q.v = t.apply_vector(r.vector3(r.required(j, p, "v"), p + "/v"));
+    if (!(glm::length(glm::cross(q.u, q.v)) > 0))
+      r.fail(p, "u and v are parallel (or zero): the quad has no area");
+    q.material = material_named(r, j, p, material_index);
+    s.quads.push_back(q);
+  });
+  read_array(r, root, "boxes", [&](const json& j, const std::string& p) {
+    r.only_fields(j, p, {"a", "b", "material", "transform"});
+    const point3 a = r.vector3(r.required(j, p, "a"), p + "/a");
+    const point3 b = r.vector3(r.required(j, p, "b"), p + "/b");
+    for (int k = 0; k < 3; ++k)
+      if (a[k] == b[k])
+        r.fail(p + "/b/" + std::to_string(k), "the box is flat: a and b share this coordinate");
+    add_box(s, a, b, material_named(r, j, p, material_index), optional_transform(r, j, p));
+  });
+  read_array(r, root, "triangles", [&](const json& j, const std::string& p) {
+    r.only_fields(j, p, {"vertices", "normals", "material", "transform"});
+    const transform t = optional_transform(r, j, p);
+    const auto three = [&](const std::string& key) {
+      const json& v = r.required(j, p, key);
+      if (!v.is_array() || v.size() != 3)
+        r.fail(p + "/" + key, "expected an array of 3 points, got " + r.type_of(v));
+      return std::array<vec3, 3>{r.vector3(v[0], p + "/" + key + "/0"),
+                                 r.vector3(v[1], p + "/" + key + "/1"),
+                                 r.vector3(v[2], p + "/" + key + "/2")};
+    };
+    triangle tri;
+    const std::array<vec3, 3> v = three("vertices");
+    for (int k = 0; k < 3; ++k) tri.p[std::size_t(k)] = t.apply_point(v[std::size_t(k)]);
+    tri.material = material_named(r, j, p, material_index);
+    if (j.contains("normals")) {
+      const std::array<vec3, 3> n = three("normals");
+      triangle_shading sh;
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (!(glm::length(n[k]) > 0) || !std::isfinite(glm::length(n[k])))
+          r.fail(p + "/normals/" + std::to_string(k), "expected a nonzero normal");
+        // As written when nothing places the triangle (so a dump reads back unchanged); the
+        // renderers normalize them.
+        sh.normal[k] = t.is_identity() ? n[k] : t.apply_normal(n[k]);
+      }
+      tri.shading = std::int32_t(s.shading.size());
+      s.shading.push_back(sh);
+    }
+    s.triangles.push_back(tri);
+  });
+}
+
+// Mesh files, each named relative to the scene file (`base`), with a material of the scene's
+// (or the file's own) and a placement.
+void read_meshes(const scene_reader& r, const json& root, const std::filesystem::path& base,
+                 const std::map<std::string, int>& material_index, scene& s) {
+  read_array(r, root, "meshes", [&](const json& j, const std::string& p) {
+    r.only_fields(j, p, {"file", "material", "transform"});
+    const json& f = r.required(j, p, "file");
+    if (!f.is_string() || f.get<std::string>().empty())
+      r.fail(p + "/file", "expected a mesh file name, got " + r.type_of(f));
+    mesh_placement how;
+    how.placement = optional_transform(r, j, p);
+    if (j.contains("material")) how.material = material_named(r, j, p, material_index);
+    const std::filesystem::path file = base / f.get<std::string>();
+    if (mesh_kind(file).empty())
+      r.fail(p + "/file", "\"" + f.get<std::string>() + "\" is not .obj, .gltf or .glb");
+    load_mesh(s, file, how);
+  });
+}
+
 // `material_index` maps a material name to its index in the scene.
 sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
                    const std::map<std::string, int>& material_index) {
@@ -300,29 +427,24 @@ sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
   sp.radius = r.number(r.required(j, p, "radius"), p + "/radius");
   if (sp.radius <= 0)
     r.fail(p + "/radius", "expected a radius > 0, got " + format_number(sp.radius));
-  const json& m = r.required(j, p, "material");
-  if (!m.is_string()) r.fail(p + "/material", "expected a material name, got " + r.type_of(m));
-  const auto found = material_index.find(m.get<std::string>());
-  if (found == material_index.end())
-    r.fail(p + "/material", "no material named \"" + m.get<std::string>() + "\" in /materials");
-  sp.material = found->second;
+  sp.material = material_named(r, j, p, material_index);
   return sp;
 }
 
 std::vector<sphere> read_spheres(const scene_reader& r, const json& root,
                                  const std::map<std::string, int>& material_index) {
-  const json& spheres = r.required(root, "", "spheres");
-  if (!spheres.is_array()) r.fail("/spheres", "expected an array, got " + r.type_of(spheres));
   std::vector<sphere> out;
-  out.reserve(spheres.size());
-  for (std::size_t i = 0; i < spheres.size(); ++i)
-    out.push_back(read_sphere(r, spheres[i], "/spheres/" + std::to_string(i), material_index));
+  read_array(r, root, "spheres", [&](const json& j, const std::string& p) {
+    out.push_back(read_sphere(r, j, p, material_index));
+  });
   return out;
 }
 
-scene read_scene(const scene_reader& r, const json& root, const std::string& name) {
+scene read_scene(const scene_reader& r, const json& root, const std::string& name,
+                 const std::filesystem::path& base) {
   r.only_fields(root, "",
-                {"camera", "cameras", "render", "sky", "background", "materials", "spheres"});
+                {"camera", "cameras", "render", "sky", "background", "materials", "spheres",
+                 "quads", "boxes", "triangles", "meshes"});
   scene s;
   s.name = name;
   s.cameras = read_cameras(r, root);
@@ -335,6 +457,12 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
   std::map<std::string, int> material_index;
   if (root.contains("materials")) material_index = read_materials(r, root["materials"], s);
   s.spheres = read_spheres(r, root, material_index);
+  read_flat_objects(r, root, material_index, s);
+  read_meshes(r, root, base, material_index, s);
+  if (!root.contains("spheres") && object_count(s) == 0 && !root.contains("meshes"))
+    r.fail("",
+           "missing field \"spheres\" (a scene needs spheres, quads, boxes, triangles or "
+           "meshes)");
   try {
     camera(camera_pose{}, s.render.aspect, s.render.width);  // the image size, alone
   } catch (const std::invalid_argument& e) {
@@ -410,7 +538,8 @@ scene parse_scene_json(const std::string& text, const std::string& file_name) {
     if (start != std::string::npos) what = what.substr(start + 2);
     throw usage_error(file_name + ": " + what);
   }
-  return read_scene(scene_reader(file_name), root, file_name);
+  const std::filesystem::path base = std::filesystem::path(file_name).parent_path();
+  return read_scene(scene_reader(file_name), root, file_name, base.empty() ? "." : base);
 }
 
 scene load_scene_file(const std::filesystem::path& path) {
@@ -460,6 +589,29 @@ std::string dump_scene_json(const scene& s) {
     spheres.push_back(j);
   }
   root["spheres"] = spheres;
+  const auto material_name = [&](int m) { return s.materials[std::size_t(m)].name; };
+  if (!s.quads.empty()) {
+    json quads = json::array();
+    for (const quad& q : s.quads)
+      quads.push_back({{"Q", vec_json(q.Q)},
+                       {"u", vec_json(q.u)},
+                       {"v", vec_json(q.v)},
+                       {"material", material_name(q.material)}});
+    root["quads"] = quads;
+  }
+  if (!s.triangles.empty()) {
+    json triangles = json::array();
+    for (const triangle& t : s.triangles) {
+      json j = {{"vertices", json::array({vec_json(t.p[0]), vec_json(t.p[1]), vec_json(t.p[2])})}};
+      if (t.shading >= 0 && s.shading[std::size_t(t.shading)].has_normals()) {
+        const auto& n = s.shading[std::size_t(t.shading)].normal;
+        j["normals"] = json::array({vec_json(n[0]), vec_json(n[1]), vec_json(n[2])});
+      }
+      j["material"] = material_name(t.material);
+      triangles.push_back(j);
+    }
+    root["triangles"] = triangles;
+  }
   std::string out;
   write_json(root, 0, out);
   return out + "\n";
@@ -467,11 +619,14 @@ std::string dump_scene_json(const scene& s) {
 
 bool names_scene_file(const std::string& value) {
   return value.find('/') != std::string::npos ||
-         (value.size() > 5 && value.compare(value.size() - 5, 5, ".json") == 0);
+         (value.size() > 5 && value.compare(value.size() - 5, 5, ".json") == 0) ||
+         !mesh_kind(value).empty();
 }
 
 scene load_scene(const std::string& value) {
-  return names_scene_file(value) ? load_scene_file(value) : builtin_scene(value);
+  if (!names_scene_file(value)) return builtin_scene(value);
+  if (!mesh_kind(value).empty()) return mesh_scene(value);
+  return load_scene_file(value);
 }
 
 }  // namespace rtvk

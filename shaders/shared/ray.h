@@ -13,6 +13,10 @@ const real pi = real(3.1415926535897932385);
 inline precise real dot3(real3 a, real3 b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
+// The cross product, term by term (GLSL's built-in leaves fusing to the device).
+inline precise real3 cross3(real3 a, real3 b) {
+  return real3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
 inline precise real length3(real3 v) {
   return sqrt(dot3(v, v));
 }
@@ -56,6 +60,18 @@ struct hit_record {
 inline precise real3 scatter_origin(hit_record rec, real3 direction) {
   precise real facing = dot3(direction, rec.normal);
   return rec.p + (facing >= real(0.0) ? rec.offset : -rec.offset) * rec.normal;
+}
+
+// The largest coordinate magnitude of p.
+inline precise real max_abs3(real3 p) {
+  return max(max(abs(p.x), abs(p.y)), abs(p.z));
+}
+
+// How far a ray leaving a flat surface (a quad, a triangle) at p starts off it: eight float ulps
+// of the largest coordinate involved, the point's and the ray origin's it inherits rounding from
+// (as record_hit's sphere offset, without a radius).
+inline precise real flat_offset(real3 p, ray r) {
+  return (max_abs3(p) + max_abs3(r.origin)) * real(1.0 / 1048576.0);  // 2^-20
 }
 
 // Stores the normal so that it always opposes the incoming ray.

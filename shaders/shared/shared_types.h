@@ -26,10 +26,13 @@ using uvec2 = glm::uvec2;
 #define RTVK_BINDING_MATERIALS 3  // storage buffer: gpu_material[]
 #define RTVK_BINDING_STATUS 4     // storage buffer: render_status
 #define RTVK_BINDING_PROBE 5      // storage buffer: a probe's entries (probes only)
-#define RTVK_BINDING_BVH_NODES 6  // storage buffer: bvh_node[] (8 is no longer used)
+#define RTVK_BINDING_BVH_NODES 6  // storage buffer: bvh_wide_node[]
 #define RTVK_BINDING_VELOCITIES \
   7                                 // storage buffer: vec4[], xyz each moving sphere's velocity,
                                     // in the spheres' order; one unused element when none moves
+#define RTVK_BINDING_QUADS 8        // storage buffer: gpu_quad[], in the BVH's leaf order
+#define RTVK_BINDING_TRIANGLES 13   // storage buffer: gpu_triangle[], in the BVH's leaf order
+#define RTVK_BINDING_NORMALS 14     // storage buffer: vec4[], smooth triangles' vertex normals
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
 
@@ -40,6 +43,8 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_USE_BVH 4     // bool: traverse the BVH, else test every sphere in order
 #define RTVK_SPEC_COUNT_RAYS 5  // bool: count each pixel's rays (pixel_sum::rays)
 #define RTVK_SPEC_MOTION 6      // bool: some sphere moves (gpu_sphere::velocity is not zero)
+#define RTVK_SPEC_QUADS 7       // bool: the scene has quads
+#define RTVK_SPEC_TRIANGLES 8   // bool: the scene has triangles
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 112 camera
 // blocks of 144 bytes are 15.75 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
@@ -104,6 +109,32 @@ struct gpu_sphere {
   uint pad2;         // unused
 };
 
+// std430 array element: 80 bytes. The book's quad with its precomputed plane (quad_geometry,
+// shaders/shared/hit_quad.h), formed in double on the host.
+struct gpu_quad {
+  vec3 Q;            // a corner, scene units
+  uint material;     // index into the materials buffer
+  vec3 u;            // the edge from Q to the next corner
+  uint scene_index;  // the quad's scene index (spheres first): exact ties go to the later one
+  vec3 v;            // the other edge from Q
+  float D;           // dot(normal, Q)
+  vec3 normal;       // unit normal, cross(u, v) normalized
+  uint pad0;         // unused
+  vec3 w;            // cross(u, v) / |cross(u, v)|^2
+  uint pad1;         // unused
+};
+
+// std430 array element: 48 bytes. A triangle's vertices (hit_triangle.h).
+struct gpu_triangle {
+  vec3 a;            // first vertex, scene units
+  uint material;     // index into the materials buffer
+  vec3 b;            // second vertex (counter-clockwise from the front)
+  uint scene_index;  // the triangle's scene index (spheres and quads first)
+  vec3 c;            // third vertex
+  uint normals;      // its vertex normals at 3 * normals in the normals buffer; RTVK_FLAT: none
+};
+#define RTVK_FLAT 0xffffffffu
+
 // std430 array element: 32 bytes.
 struct gpu_material {
   vec3 albedo;  // fraction of light kept per channel
@@ -146,6 +177,13 @@ struct bvh_wide_node {
   uint pad2;    // unused
 };
 #define RTVK_WIDE_LEAF 0x80000000u
+// A leaf's reference below RTVK_WIDE_LEAF: the object's kind in two bits, and its position in
+// that kind's array (spheres, quads or triangles, each in the BVH's leaf order).
+#define RTVK_LEAF_KIND_MASK 0x60000000u
+#define RTVK_LEAF_SPHERE 0x00000000u
+#define RTVK_LEAF_QUAD 0x20000000u
+#define RTVK_LEAF_TRIANGLE 0x40000000u
+#define RTVK_LEAF_INDEX_MASK 0x1fffffffu
 // Remembered children of a four-wide walk: three at most per level of its path, which is at most
 // RTVK_BVH_STACK levels long.
 #define RTVK_WIDE_STACK (3 * RTVK_BVH_STACK)
@@ -155,23 +193,25 @@ struct bvh_wide_node {
 // invocation whose loop budget runs out first keeps what it finished, and a later dispatch goes
 // on from there.
 struct render_push {
-  vec3 sky_horizon;    // linear RGB seen along -y
-  uint sphere_count;   // spheres in the storage buffer
-  vec3 sky_zenith;     // linear RGB seen along +y
-  uint sample_begin;   // the window's first sample index: a pixel's k-th sample is this + k
-  uint seed;           // the render's random seed
-  uint max_depth;      // most scatter events per path
-  uint loop_budget;    // most loop iterations one invocation runs in this dispatch (pacer.h)
-  uint band_y0;        // first image row of this band: the image buffers hold rows band_y0 on
-  uint band_rows;      // rows in this band
-  uint region_x0;      // first image column drawn
-  uint region_width;   // columns drawn; the image buffers hold, per view, band_rows x this
-  uint sample_target;  // samples of the window each pixel has after this dispatch
-  float sum_scale;     // 2^F: a sample's channel c adds floor(c * sum_scale) (sample_sum.h)
-  float sample_limit;  // largest channel value a sample may add (sum_sample_limit); past it the
-                       // sample overflows and the render fails
-  uint sums_row0;      // rows of the sums buffer before this band's first (0, or band_y0 when
-                       // the buffer holds the whole image: the viewer's accumulation)
+  vec3 sky_horizon;     // linear RGB seen along -y
+  uint sphere_count;    // spheres in the storage buffer
+  vec3 sky_zenith;      // linear RGB seen along +y
+  uint sample_begin;    // the window's first sample index: a pixel's k-th sample is this + k
+  uint seed;            // the render's random seed
+  uint max_depth;       // most scatter events per path
+  uint loop_budget;     // most loop iterations one invocation runs in this dispatch (pacer.h)
+  uint band_y0;         // first image row of this band: the image buffers hold rows band_y0 on
+  uint band_rows;       // rows in this band
+  uint region_x0;       // first image column drawn
+  uint region_width;    // columns drawn; the image buffers hold, per view, band_rows x this
+  uint sample_target;   // samples of the window each pixel has after this dispatch
+  float sum_scale;      // 2^F: a sample's channel c adds floor(c * sum_scale) (sample_sum.h)
+  float sample_limit;   // largest channel value a sample may add (sum_sample_limit); past it the
+                        // sample overflows and the render fails
+  uint sums_row0;       // rows of the sums buffer before this band's first (0, or band_y0 when
+                        // the buffer holds the whole image: the viewer's accumulation)
+  uint quad_count;      // quads in the storage buffer
+  uint triangle_count;  // triangles in the storage buffer
 };
 
 // std430 array element: one pixel's exact running sums, 48 bytes. Each channel is a 96-bit
@@ -345,7 +385,23 @@ static_assert(offsetof(render_push, sample_target) == 60);
 static_assert(offsetof(render_push, sum_scale) == 64);
 static_assert(offsetof(render_push, sample_limit) == 68);
 static_assert(offsetof(render_push, sums_row0) == 72);
-static_assert(sizeof(render_push) == 76 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, quad_count) == 76);
+static_assert(offsetof(render_push, triangle_count) == 80);
+static_assert(sizeof(render_push) == 84 && sizeof(render_push) <= 128);
+static_assert(offsetof(gpu_quad, material) == 12);
+static_assert(offsetof(gpu_quad, u) == 16);
+static_assert(offsetof(gpu_quad, scene_index) == 28);
+static_assert(offsetof(gpu_quad, v) == 32);
+static_assert(offsetof(gpu_quad, D) == 44);
+static_assert(offsetof(gpu_quad, normal) == 48);
+static_assert(offsetof(gpu_quad, w) == 64);
+static_assert(sizeof(gpu_quad) == 80);
+static_assert(offsetof(gpu_triangle, material) == 12);
+static_assert(offsetof(gpu_triangle, b) == 16);
+static_assert(offsetof(gpu_triangle, scene_index) == 28);
+static_assert(offsetof(gpu_triangle, c) == 32);
+static_assert(offsetof(gpu_triangle, normals) == 44);
+static_assert(sizeof(gpu_triangle) == 48);
 static_assert(offsetof(pixel_sum, r) == 0);
 static_assert(offsetof(pixel_sum, g) == 8);
 static_assert(offsetof(pixel_sum, b) == 16);

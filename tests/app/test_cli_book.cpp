@@ -63,7 +63,7 @@ TEST(CliBook, DumpedSceneRendersTheIdenticalImage) {
   ASSERT_EQ(run_rtvk(file).status, 0);
   EXPECT_EQ(test::slurp(a), test::slurp(b));
   EXPECT_EQ(run_rtvk({"scene", "list"}).out,
-            "seed\nmaterials\nbook-final\nbouncing-spheres\nspheres:N (N from 1 to 4000000)\n");
+            "seed\nmaterials\nbook-final\nbouncing-spheres\nquads\nspheres:N (N from 1 to 4000000)\n");
 }
 
 // A shutter open past time 1 (the spheres go on rising): bench bounds them over it on both

@@ -223,7 +223,9 @@ command_action add_bench_command(CLI::App& app) {
   auto o = std::make_shared<bench_options>();
   CLI::App* cmd = app.add_subcommand(
       "bench", "Time renders (after one warm-up) and report rays traced per second");
-  cmd->add_option("--scene", o->scene, "Built-in scene (also spheres:N) or a .json scene file")
+  cmd->add_option(
+         "--scene", o->scene,
+         "Built-in scene (also spheres:N), a .json scene file or a mesh (.obj, .gltf, .glb)")
       ->capture_default_str();
   cmd->add_option("--backend", o->backend, "cpu, gpu or all")
       ->check(CLI::IsMember({"cpu", "gpu", "all"}))

@@ -123,7 +123,9 @@ command_action add_view_command(CLI::App& app) {
   auto o = std::make_shared<view_options>();
   CLI::App* cmd = app.add_subcommand(
       "view", "Open a window and render progressively on a Vulkan device (needs a display)");
-  cmd->add_option("--scene", o->scene, "Built-in scene (also spheres:N) or a .json scene file")
+  cmd->add_option(
+         "--scene", o->scene,
+         "Built-in scene (also spheres:N), a .json scene file or a mesh (.obj, .gltf, .glb)")
       ->capture_default_str();
   cmd->add_option("--camera", o->camera, "Camera of the scene to start from; default: the first");
   o->gpu.add_to(*cmd);

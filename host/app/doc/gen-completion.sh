@@ -64,10 +64,10 @@ _rtvk_files() {  # folders, and the files that match one of the globs given (any
   for glob; do _rtvk_add < <(compgen -f -X "!$glob" -- "$cur"); done
 }
 
-_rtvk_scene_value() {  # a built-in scene (spheres: wants its N) or a .json scene file
+_rtvk_scene_value() {  # a built-in scene (spheres: wants its N), a .json scene file or a mesh
   _rtvk_add < <(compgen -W "$_rtvk_scenes" -- "$cur")
   [[ ${#COMPREPLY[@]} == 1 && ${COMPREPLY[0]} == *: ]] && compopt -o nospace 2>/dev/null
-  _rtvk_files '*.json'
+  _rtvk_files '*.json' '*.obj' '*.gltf' '*.glb'
 }
 
 _rtvk() {

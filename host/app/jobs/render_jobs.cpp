@@ -68,6 +68,13 @@ std::string scene_identity(const scene& s) {
     // scenes keep the identity they always had.
     if (sp.center1) append_bytes(out, std::uint8_t(0x4d), *sp.center1);
   }
+  // Quads and triangles after markers of their own: sphere-only scenes keep their identity.
+  for (const quad& q : s.quads) append_bytes(out, std::uint8_t(0x51), q.Q, q.u, q.v, q.material);
+  for (const triangle& t : s.triangles) {
+    append_bytes(out, std::uint8_t(0x54), t.p, t.material);
+    if (t.shading >= 0 && s.shading[std::size_t(t.shading)].has_normals())
+      append_bytes(out, s.shading[std::size_t(t.shading)].normal);
+  }
   return out;
 }
 

@@ -119,11 +119,11 @@ double brightest(const sky& background) {
 // The push constants every dispatch of a render shares; the band and target fields are set for
 // each pass.
 render_push make_push(const sky& background, const render_settings& rs, const render_window& win,
-                      std::uint32_t sphere_count, int exponent) {
+                      const gpu_scene& objects, int exponent) {
   render_push push{};
   push.sky_horizon = vec3(background.horizon);
   push.sky_zenith = vec3(background.zenith);
-  push.sphere_count = sphere_count;
+  objects.set_counts(push);
   push.sample_begin = std::uint32_t(win.sample_begin);
   push.seed = rs.seed;
   push.max_depth = std::uint32_t(rs.max_depth);
@@ -136,13 +136,13 @@ render_push make_push(const sky& background, const render_settings& rs, const re
 
 // Every buffer the render shader reads or writes, by binding.
 std::vector<buffer_binding> render_bindings(const gpu_scene& g, const render_targets& t) {
-  return {{RTVK_BINDING_CAMERA, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, t.cameras.get()},
-          {RTVK_BINDING_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.spheres()},
-          {RTVK_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.materials()},
-          {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.sums.get()},
-          {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.status.get()},
-          {RTVK_BINDING_BVH_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.nodes()},
-          {RTVK_BINDING_VELOCITIES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.velocities()}};
+  std::vector<buffer_binding> b = {
+      {RTVK_BINDING_CAMERA, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, t.cameras.get()},
+      {RTVK_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.materials()},
+      {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.sums.get()},
+      {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.status.get()}};
+  for (const buffer_binding& o : g.object_bindings()) b.push_back(o);
+  return b;
 }
 
 // What tonemap.comp reads and writes.
@@ -504,14 +504,14 @@ const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool co
   const std::uint32_t switches = (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u);
   std::unique_ptr<compute_pipeline>& p = pipelines_[switches];
   if (!p) {
-    std::uint32_t spec[7] = {};  // by constant_id
+    std::uint32_t spec[RTVK_SPEC_TRIANGLES + 1] = {};  // by constant_id
     spec[0] = wg_[0];
     spec[1] = wg_[1];
     spec[RTVK_SPEC_JITTER] = jitter;
     spec[RTVK_SPEC_LENS] = lens;
     spec[RTVK_SPEC_USE_BVH] = options_.engine.use_bvh;
     spec[RTVK_SPEC_COUNT_RAYS] = count_rays;
-    spec[RTVK_SPEC_MOTION] = scene_.moves();
+    scene_.specialize(spec);
     p = std::make_unique<compute_pipeline>(ctx_, render_shader(),
                                            render_bindings(scene_, *targets_), sizeof(render_push),
                                            spec, cache_.get());
@@ -599,7 +599,7 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
     tonemap = &tonemap_pipeline();
     write_thresholds(rs.gamma);
   }
-  render_push push = make_push(sky_, rs, win, scene_.sphere_count(), exponent_);
+  render_push push = make_push(sky_, rs, win, scene_, exponent_);
   if (kept) push.sample_begin = 0;  // a kept pixel's count of samples is its next sample's index
   // The BVH's build is the first render's: later ones reuse it.
   if (stats) *stats = render_stats{.build_seconds = drawn_ ? 0.0 : build_seconds()};

@@ -1,10 +1,12 @@
 #pragma once
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "buffer.h"
 #include "bvh.h"
+#include "compute_pipeline.h"
 #include "context.h"
 #include "device_fit.h"
 #include "scene.h"
@@ -12,10 +14,10 @@
 
 namespace rtvk::gpu {
 
-// The scene on the device: its spheres and materials in the shared header's layout, and the
-// four-wide BVH over the spheres that the CPU walks too (none when the render tests every
-// sphere). With the BVH the spheres
-// are stored in its leaf order, each with its scene index; without it, in scene order. Where the
+// The scene on the device: its objects (spheres, quads, triangles) and materials in the shared
+// header's layout, and the four-wide BVH over the objects that the CPU walks too (none when the
+// render tests every object). With the BVH each kind's array is stored in its leaf order
+// (leaf_layout), each object with its scene index; without it, in scene order. Where the
 // host can write the device's main memory (unified memory, resizable BAR:
 // host_writes_device_memory) the arrays are written there in place, once; elsewhere they are
 // written to host-visible copies, and the copies to the device-local arrays are recorded into
@@ -28,6 +30,9 @@ class gpu_scene {
     std::vector<gpu_material> materials;  // in scene order
     std::vector<bvh_wide_node> nodes;     // the four-wide BVH's nodes, depth first (none: empty)
     std::vector<vec4> velocities;         // the spheres', in their order; empty: none moves
+    std::vector<gpu_quad> quads;          // in the BVH's leaf order, or scene order without it
+    std::vector<gpu_triangle> triangles;  // likewise
+    std::vector<vec4> normals;            // smooth triangles' vertex normals, three each
     double build_seconds;                 // building the BVH took
     bool moves;                           // some sphere has a velocity
   };
@@ -44,18 +49,34 @@ class gpu_scene {
   bool in_place() const { return !staging_; }  // written straight into device memory
 
   std::uint32_t sphere_count() const { return sphere_count_; }
+  std::uint32_t quad_count() const { return quad_count_; }
+  std::uint32_t triangle_count() const { return triangle_count_; }
   bool moves() const { return moves_; }  // some sphere has a velocity (RTVK_SPEC_MOTION)
   double build_seconds() const { return build_seconds_; }
   VkBuffer spheres() const { return arrays_[0].get(); }
   VkBuffer materials() const { return arrays_[1].get(); }
   VkBuffer nodes() const { return arrays_[2].get(); }
   VkBuffer velocities() const { return arrays_[3].get(); }
+  VkBuffer quads() const { return arrays_[4].get(); }
+  VkBuffer triangles() const { return arrays_[5].get(); }
+  VkBuffer normals() const { return arrays_[6].get(); }
+  // The bindings of the objects and the BVH (shaders/scene_buffers.glsl's), for every shader
+  // that traces rays through the scene.
+  std::vector<buffer_binding> object_bindings() const;
+  // The switches render.comp and the probes are specialized with (RTVK_SPEC_MOTION, QUADS,
+  // TRIANGLES), written into `spec` (indexed by constant id, at least RTVK_SPEC_TRIANGLES + 1).
+  void specialize(std::span<std::uint32_t> spec) const;
+  // The object counts of the push constants.
+  void set_counts(render_push& push) const;
 
  private:
   std::uint32_t sphere_count_;         // spheres the scene has
+  std::uint32_t quad_count_;           // quads
+  std::uint32_t triangle_count_;       // triangles
   double build_seconds_;               // building the BVH took
   bool moves_;                         // some sphere has a velocity
-  std::vector<buffer_spec> specs_;     // spheres, materials, nodes, velocities: sizes for copies
+  std::vector<buffer_spec> specs_;     // spheres, materials, nodes, velocities, quads, triangles,
+                                       // normals: sizes for copies
   std::optional<buffer_set> staging_;  // host copies; none when written in place
   buffer_set arrays_;                  // what the shader reads
 };

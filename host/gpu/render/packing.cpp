@@ -51,6 +51,38 @@ std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const std::uint32_
   return out;
 }
 
+std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const std::uint32_t> order) {
+  std::vector<gpu_quad> out;
+  out.reserve(order.size());
+  const std::uint32_t first = std::uint32_t(s.spheres.size());
+  for (const std::uint32_t i : order) {
+    const quad& q = s.quads[i];
+    const quad_geometry g = q.geometry();
+    out.push_back({vec3(g.Q), uint(q.material), vec3(g.u), first + i, vec3(g.v), float(g.D),
+                   vec3(g.normal), 0, vec3(g.w), 0});
+  }
+  return out;
+}
+
+std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const std::uint32_t> order,
+                                           std::vector<vec4>& normals) {
+  std::vector<gpu_triangle> out;
+  out.reserve(order.size());
+  normals.clear();
+  const std::uint32_t first = std::uint32_t(s.spheres.size() + s.quads.size());
+  for (const std::uint32_t i : order) {
+    const triangle& t = s.triangles[i];
+    uint smooth = RTVK_FLAT;
+    if (t.shading >= 0 && s.shading[std::size_t(t.shading)].has_normals()) {
+      smooth = uint(normals.size() / 3);
+      for (const rtvk::vec3& n : s.shading[std::size_t(t.shading)].normal)
+        normals.push_back(vec4(vec3(glm::normalize(n)), 0));
+    }
+    out.push_back({vec3(t.p[0]), uint(t.material), vec3(t.p[1]), first + i, vec3(t.p[2]), smooth});
+  }
+  return out;
+}
+
 std::vector<gpu_material> to_gpu_materials(const scene& s) {
   std::vector<gpu_material> out;
   out.reserve(s.materials.size());

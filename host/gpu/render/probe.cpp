@@ -71,16 +71,14 @@ std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s,
   const std::size_t bytes = entries.size() * sizeof(world_probe_entry);
   gpu_buffer buf(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::upload);
   buf.write(entries.data(), bytes);
-  const std::uint32_t spec[RTVK_SPEC_USE_BVH + 1] = {0, 0, 0, 0, use_bvh};
-  const compute_pipeline pipeline(
-      ctx, world_probe_shader(),
-      {{RTVK_BINDING_SPHERES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.spheres()},
-       {RTVK_BINDING_BVH_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.nodes()},
-       {RTVK_BINDING_VELOCITIES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.velocities()},
-       {RTVK_BINDING_PROBE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buf.get()}},
-      sizeof(render_push), spec);
+  std::uint32_t spec[RTVK_SPEC_TRIANGLES + 1] = {};
+  spec[RTVK_SPEC_USE_BVH] = use_bvh;
+  g.specialize(spec);
+  std::vector<buffer_binding> bindings = g.object_bindings();
+  bindings.push_back({RTVK_BINDING_PROBE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buf.get()});
+  const compute_pipeline pipeline(ctx, world_probe_shader(), bindings, sizeof(render_push), spec);
   render_push push{};
-  push.sphere_count = g.sphere_count();
+  g.set_counts(push);
   push.loop_budget = 0xffffffffu;  // one ray an invocation: no loop cap to respect
   ctx.submit_and_wait([&](VkCommandBuffer cb) {
     g.record_upload(cb);

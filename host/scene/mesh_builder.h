@@ -1,0 +1,80 @@
+#pragma once
+#include <optional>
+#include <string>
+
+#include "errors.h"
+#include "format.h"
+#include "scene.h"
+
+namespace rtvk {
+
+// Appends one mesh file's faces to a scene, checking each as it comes: what both loaders
+// (mesh_obj.cpp, mesh_gltf.cpp) share. Messages read "<file>: <where>: <what>".
+class mesh_builder {
+ public:
+  mesh_builder(scene& s, std::string name, const transform& placement)
+      : s_(s), name_(std::move(name)), placement_(placement) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw usage_error(name_ + ": " + where + ": " + what);
+  }
+
+  // A position of the file, checked finite and placed.
+  point3 position(const vec3& p, const transform& node, const std::string& where) const {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      fail(where, "position is not finite (" + format_number(p.x) + ", " + format_number(p.y) +
+                      ", " + format_number(p.z) + ")");
+    const point3 q = placement_.apply_point(node.apply_point(p));
+    if (!(glm::length(q) < max_scene_coordinate))
+      fail(where, "position is beyond +-1e18 once placed");
+    return q;
+  }
+
+  // One face; `normals` are the file's (not yet placed), or none for a flat face.
+  void add(const std::array<point3, 3>& p, int material,
+           const std::optional<std::array<vec3, 3>>& normals, const std::array<glm::dvec2, 3>& uv,
+           bool has_uv, const transform& node) {
+    if (s_.triangles.size() >= max_triangles)
+      fail("faces", "more than " + std::to_string(max_triangles) + " triangles in one scene");
+    triangle t;
+    t.p = p;
+    t.material = material;
+    bool smooth = false;
+    triangle_shading sh;
+    if (normals) {
+      smooth = true;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const vec3 n = (*normals)[k];
+        if (!(glm::length(n) > 0) || !std::isfinite(glm::length(n))) {
+          smooth = false;  // a zero or broken normal: the face is shaded flat
+          break;
+        }
+        sh.normal[k] = placement_.apply_normal(node.apply_normal(n));
+      }
+      if (!smooth) sh.normal = {};
+    }
+    if (smooth || has_uv) {
+      sh.uv = uv;
+      t.shading = std::int32_t(s_.shading.size());
+      s_.shading.push_back(sh);
+    }
+    s_.triangles.push_back(t);
+  }
+
+  // A material of the file's, appended to the scene; returns its index.
+  int add_material(const std::string& name, const material& m) {
+    s_.materials.push_back({name, m});
+    return int(s_.materials.size() - 1);
+  }
+
+  const std::string& name() const { return name_; }
+
+  static constexpr std::size_t max_triangles = std::size_t(1) << 29;
+
+ private:
+  scene& s_;
+  std::string name_;     // the file, as messages name it
+  transform placement_;  // the scene's placement of the mesh
+};
+
+}  // namespace rtvk

@@ -1,0 +1,74 @@
+#include "mesh_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "errors.h"
+#include "input_file.h"
+
+namespace rtvk {
+
+// mesh_obj.cpp and mesh_gltf.cpp.
+void load_obj(scene& s, const std::string& text, const std::string& name,
+              const std::filesystem::path& base, const mesh_placement& how);
+void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
+               const std::filesystem::path& base, const mesh_placement& how);
+
+std::string mesh_kind(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext == ".obj") return "obj";
+  if (ext == ".gltf") return "gltf";
+  if (ext == ".glb") return "glb";
+  return "";
+}
+
+void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind,
+                     const std::string& name, const std::filesystem::path& base,
+                     const mesh_placement& how) {
+  if (kind == "obj")
+    load_obj(s, bytes, name, base, how);
+  else if (kind == "gltf" || kind == "glb")
+    load_gltf(s, bytes, kind == "glb", name, base, how);
+  else
+    throw usage_error(name + ": not a mesh file (expected .obj, .gltf or .glb)");
+}
+
+void load_mesh(scene& s, const std::filesystem::path& file, const mesh_placement& how) {
+  const std::string kind = mesh_kind(file);
+  if (kind.empty())
+    throw usage_error(file.string() + ": not a mesh file (expected .obj, .gltf or .glb)");
+  const std::string bytes = read_regular_file(file, max_mesh_file_bytes, "mesh file");
+  const std::size_t before = s.triangles.size();
+  load_mesh_bytes(s, bytes, kind, file.string(),
+                  file.parent_path().empty() ? "." : file.parent_path(), how);
+  if (s.triangles.size() == before)
+    throw usage_error(file.string() + ": the file has no triangles");
+}
+
+scene mesh_scene(const std::filesystem::path& file) {
+  scene s;
+  s.name = file.string();
+  load_mesh(s, file, {});
+  // A camera that frames the bounds: looking at their center from the front, a little above and
+  // to the right, far enough that the bounding sphere fills the view.
+  point3 lo(INFINITY), hi(-INFINITY);
+  for (const triangle& t : s.triangles)
+    for (const point3& p : t.p) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  const point3 center = 0.5 * (lo + hi);
+  const double radius = std::max(0.5 * glm::length(hi - lo), 1e-9);
+  camera_pose& c = main_camera(s).pose;
+  c.vfov = 40;
+  c.lookat = center;
+  const double distance = 1.1 * radius / std::sin(0.5 * c.vfov * M_PI / 180);
+  c.lookfrom = center + distance * glm::normalize(vec3(0.4, 0.3, 1.0));
+  c.focus_dist = distance;
+  return s;
+}
+
+}  // namespace rtvk

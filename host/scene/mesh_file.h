@@ -1,0 +1,42 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "scene.h"
+
+namespace rtvk {
+
+// The largest mesh file rtvk reads, and the most triangles one scene may hold (a BVH leaf's
+// reference has 29 bits for the position in its kind's array).
+inline constexpr std::uint64_t max_mesh_file_bytes = 2ull << 30;  // 2 GiB
+inline constexpr std::size_t max_scene_triangles = std::size_t(1) << 29;
+
+// How a mesh is put into a scene: the material every face gets (a scene material's index), or
+// -1 for the file's own materials (mapped as docs/geometry.md says), and where it goes.
+struct mesh_placement {
+  int material = -1;      // index into the scene's materials; -1: the file's
+  transform placement{};  // applied after the file's own node transforms
+};
+
+// Appends the triangles of a Wavefront OBJ (with its MTL, when it names one) or glTF 2.0 file
+// (.gltf or .glb, chosen by the extension) to `s`: their vertex normals and texture coordinates
+// into s.shading, the file's materials into s.materials when `how.material` is -1. Throws
+// usage_error naming the file and where in it: a missing or unreadable file, indices out of
+// range, non-finite positions, a buffer that points outside its data, too many triangles.
+void load_mesh(scene& s, const std::filesystem::path& file, const mesh_placement& how);
+
+// The same from bytes already read, `kind` "obj", "gltf" or "glb"; `name` names them in messages
+// and `base` is where a glTF's external buffers and an OBJ's MTL are looked for (empty: nowhere).
+// What the fuzzers call.
+void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind,
+                     const std::string& name, const std::filesystem::path& base,
+                     const mesh_placement& how);
+
+// The kind of mesh file a path names by its extension ("obj", "gltf", "glb"), or "" for none.
+std::string mesh_kind(const std::filesystem::path& file);
+
+// A scene of one mesh file, with its own materials, and a camera that frames its bounds.
+scene mesh_scene(const std::filesystem::path& file);
+
+}  // namespace rtvk

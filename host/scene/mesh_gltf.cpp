@@ -1,0 +1,349 @@
+// glTF 2.0 (.gltf and .glb), through Debian's tinygltf: the default scene's node tree with each
+// node's transform, triangle primitives with their positions, normals, first texture
+// coordinates and materials. Every accessor is checked against its buffer before it is read.
+#include <algorithm>
+#include <cstring>
+
+#include <tiny_gltf.h>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "input_file.h"
+#include "mesh_builder.h"
+#include "mesh_file.h"
+
+namespace rtvk {
+namespace {
+
+// Images are kept as their bytes, undecoded: nothing draws textures yet, and a decoder is one
+// more parser for hostile input to reach.
+bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                          const unsigned char*, int, void*) {
+  return true;
+}
+
+// The files a glTF names (its external buffers) are read through rtvk's own reader: regular
+// files only, at most max_mesh_file_bytes, paths taken as written (tinygltf's default expands
+// them as a shell would). `allowed` (the user data) is false when the bytes came without a
+// folder to look in: then no file is read at all.
+bool file_exists(const std::string& path, void* allowed) {
+  std::error_code ec;
+  return allowed && std::filesystem::is_regular_file(path, ec);
+}
+std::string path_as_written(const std::string& path, void*) {
+  return path;
+}
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void* allowed) {
+  if (!allowed) {
+    if (err) *err += "external file " + path + " not read ";
+    return false;
+  }
+  try {
+    const std::string bytes = read_regular_file(path, max_mesh_file_bytes, "glTF buffer");
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const usage_error& e) {
+    if (err) *err += std::string(e.what()) + " ";
+    return false;
+  }
+}
+bool write_nothing(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+  return false;
+}
+
+double number_or(const tinygltf::Value& v, const char* key, double fallback) {
+  if (!v.IsObject() || !v.Has(key) || !v.Get(key).IsNumber()) return fallback;
+  return v.Get(key).GetNumberAsDouble();
+}
+
+double unit(double x) {
+  return std::clamp(std::isfinite(x) ? x : 0.0, 0.0, 1.0);
+}
+
+// A glTF material as one of rtvk's (docs/geometry.md): KHR_materials_transmission's factor >= 0.5
+// is glass of KHR_materials_ior's index (1.5 by default); else metallicFactor >= 0.5 is metal of
+// the base color, blurred by the roughness; else diffuse of the base color.
+material from_gltf(const tinygltf::Material& m) {
+  material out;
+  const auto ext = [&](const char* name) {
+    const auto it = m.extensions.find(name);
+    return it == m.extensions.end() ? tinygltf::Value() : it->second;
+  };
+  if (number_or(ext("KHR_materials_transmission"), "transmissionFactor", 0) >= 0.5) {
+    out.type = material_type::dielectric;
+    const double ior = number_or(ext("KHR_materials_ior"), "ior", 1.5);
+    out.ir = ior > 0 && std::isfinite(ior) ? ior : 1.5;
+    return out;
+  }
+  const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+  color base(1);
+  for (std::size_t k = 0; k < 3 && k < pbr.baseColorFactor.size(); ++k)
+    base[int(k)] = unit(pbr.baseColorFactor[k]);
+  if (pbr.metallicFactor >= 0.5) {
+    out.type = material_type::metal;
+    out.albedo = base;
+    out.fuzz = unit(pbr.roughnessFactor);
+    return out;
+  }
+  out.type = material_type::lambertian;
+  out.albedo = base;
+  return out;
+}
+
+// A node's own transform: its matrix, or translation * rotation * scale.
+transform node_transform(const tinygltf::Node& n) {
+  transform t;
+  if (n.matrix.size() == 16) {
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) t.linear[c][r] = n.matrix[std::size_t(4 * c + r)];
+    t.offset = vec3(n.matrix[12], n.matrix[13], n.matrix[14]);
+    return t;
+  }
+  glm::dmat3 scale(1.0), rotation(1.0);
+  if (n.scale.size() == 3) scale = glm::dmat3(n.scale[0], 0, 0, 0, n.scale[1], 0, 0, 0, n.scale[2]);
+  if (n.rotation.size() == 4)  // x, y, z, w
+    rotation =
+        glm::mat3_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+  t.linear = rotation * scale;
+  if (n.translation.size() == 3)
+    t.offset = vec3(n.translation[0], n.translation[1], n.translation[2]);
+  return t;
+}
+
+// Reads an accessor's elements as doubles, after checking that every byte it names lies in its
+// buffer.
+class accessor_reader {
+ public:
+  accessor_reader(const tinygltf::Model& m, int index, const mesh_builder& b, std::string where)
+      : b_(b), where_(std::move(where)) {
+    if (index < 0 || std::size_t(index) >= m.accessors.size())
+      b_.fail(where_, "accessor " + std::to_string(index) + " does not exist");
+    a_ = &m.accessors[std::size_t(index)];
+    where_ += " (accessor " + std::to_string(index) + ")";
+    if (a_->sparse.isSparse) b_.fail(where_, "sparse accessors are not supported");
+    if (a_->bufferView < 0 || std::size_t(a_->bufferView) >= m.bufferViews.size())
+      b_.fail(where_, "has no buffer view");
+    const tinygltf::BufferView& view = m.bufferViews[std::size_t(a_->bufferView)];
+    if (view.buffer < 0 || std::size_t(view.buffer) >= m.buffers.size())
+      b_.fail(where_, "its buffer view names no buffer");
+    const std::vector<unsigned char>& data = m.buffers[std::size_t(view.buffer)].data;
+    components_ = tinygltf::GetNumComponentsInType(std::uint32_t(a_->type));
+    component_bytes_ = tinygltf::GetComponentSizeInBytes(std::uint32_t(a_->componentType));
+    if (components_ <= 0 || component_bytes_ <= 0) b_.fail(where_, "has an unknown type");
+    const std::size_t element = std::size_t(components_) * std::size_t(component_bytes_);
+    stride_ = view.byteStride ? view.byteStride : element;
+    if (stride_ < element) b_.fail(where_, "its stride is smaller than an element");
+    // Every byte within the view, and the view within the buffer (no overflow: all are below
+    // 2^63 once checked one by one).
+    const std::uint64_t end =
+        a_->count == 0
+            ? 0
+            : std::uint64_t(a_->byteOffset) + std::uint64_t(stride_) * (a_->count - 1) + element;
+    if (a_->count > (std::uint64_t(1) << 40) || end > view.byteLength ||
+        view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
+      b_.fail(where_, "points outside its buffer's " + std::to_string(data.size()) + " bytes");
+    base_ = data.data() + view.byteOffset + a_->byteOffset;
+  }
+
+  std::size_t count() const { return a_->count; }
+  int components() const { return components_; }
+  int type() const { return a_->type; }
+
+  // Component c of element i, as a double (normalized integers are scaled to [0, 1]).
+  double get(std::size_t i, int c) const {
+    const unsigned char* p = base_ + i * stride_ + std::size_t(c) * std::size_t(component_bytes_);
+    switch (a_->componentType) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return load<float>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return scaled(load<std::uint32_t>(p), 4294967295.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return scaled(load<std::uint16_t>(p), 65535.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return scaled(load<std::uint8_t>(p), 255.0);
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return scaled(load<std::int16_t>(p), 32767.0);
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return scaled(load<std::int8_t>(p), 127.0);
+      case TINYGLTF_COMPONENT_TYPE_DOUBLE:
+        return load<double>(p);
+      default:
+        b_.fail(where_, "has an unknown component type");
+    }
+  }
+  // Element i as an index (integer components only).
+  std::uint64_t index(std::size_t i) const {
+    const unsigned char* p = base_ + i * stride_;
+    switch (a_->componentType) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return load<std::uint32_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return load<std::uint16_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return load<std::uint8_t>(p);
+      default:
+        b_.fail(where_, "indices must be unsigned integers");
+    }
+  }
+  vec3 vec(std::size_t i) const { return vec3(get(i, 0), get(i, 1), get(i, 2)); }
+
+ private:
+  template <typename T>
+  static T load(const unsigned char* p) {
+    T v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  double scaled(double v, double max) const { return a_->normalized ? std::max(v / max, -1.0) : v; }
+
+  const mesh_builder& b_;
+  std::string where_;
+  const tinygltf::Accessor* a_ = nullptr;
+  const unsigned char* base_ = nullptr;
+  std::size_t stride_ = 0;
+  int components_ = 0, component_bytes_ = 0;
+};
+
+class gltf_walker {
+ public:
+  gltf_walker(const tinygltf::Model& m, mesh_builder& b, const mesh_placement& how)
+      : m_(m), b_(b), how_(how) {
+    if (how.material < 0)
+      for (const tinygltf::Material& mat : m.materials)
+        materials_.push_back(b.add_material(b.name() + ":" + mat.name, from_gltf(mat)));
+  }
+
+  void walk_scene() {
+    std::vector<int> roots;
+    const int scene = m_.defaultScene >= 0 ? m_.defaultScene : 0;
+    if (std::size_t(scene) < m_.scenes.size()) {
+      roots = m_.scenes[std::size_t(scene)].nodes;
+    } else {  // no scenes: every node that is nobody's child
+      std::vector<bool> child(m_.nodes.size());
+      for (const tinygltf::Node& n : m_.nodes)
+        for (int c : n.children)
+          if (c >= 0 && std::size_t(c) < child.size()) child[std::size_t(c)] = true;
+      for (std::size_t i = 0; i < child.size(); ++i)
+        if (!child[i]) roots.push_back(int(i));
+    }
+    for (int n : roots) walk(n, transform{}, 0);
+  }
+
+ private:
+  void walk(int index, const transform& parent, int depth) {
+    const std::string where = "node " + std::to_string(index);
+    if (index < 0 || std::size_t(index) >= m_.nodes.size()) b_.fail(where, "does not exist");
+    if (depth > 64) b_.fail(where, "the node tree is deeper than 64 levels (or has a cycle)");
+    const tinygltf::Node& n = m_.nodes[std::size_t(index)];
+    const transform t = compose(parent, node_transform(n));
+    if (n.mesh >= 0) {
+      if (const std::optional<std::string> why = degenerate(t))
+        b_.fail(where, "its transform cannot place a mesh: " + *why);
+      add_mesh(n.mesh, t, where);
+    }
+    for (int c : n.children) walk(c, t, depth + 1);
+  }
+
+  void add_mesh(int index, const transform& t, const std::string& node) {
+    if (std::size_t(index) >= m_.meshes.size())
+      b_.fail(node, "mesh " + std::to_string(index) + " does not exist");
+    const tinygltf::Mesh& mesh = m_.meshes[std::size_t(index)];
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
+      add_primitive(mesh.primitives[p], t, where);
+    }
+  }
+
+  std::optional<accessor_reader> attribute(const tinygltf::Primitive& prim, const char* name,
+                                           const std::string& where) const {
+    const auto it = prim.attributes.find(name);
+    if (it == prim.attributes.end()) return std::nullopt;
+    return accessor_reader(m_, it->second, b_, where + " " + name);
+  }
+
+  void add_primitive(const tinygltf::Primitive& prim, const transform& t,
+                     const std::string& where) {
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1)
+      b_.fail(where, "mode " + std::to_string(prim.mode) + " is not triangles (4)");
+    const std::optional<accessor_reader> pos = attribute(prim, "POSITION", where);
+    if (!pos) b_.fail(where, "has no POSITION");
+    if (pos->type() != TINYGLTF_TYPE_VEC3) b_.fail(where + " POSITION", "is not VEC3");
+    std::optional<accessor_reader> nrm = attribute(prim, "NORMAL", where);
+    if (nrm && (nrm->type() != TINYGLTF_TYPE_VEC3 || nrm->count() != pos->count()))
+      b_.fail(where + " NORMAL", "is not one VEC3 per position");
+    std::optional<accessor_reader> tex = attribute(prim, "TEXCOORD_0", where);
+    if (tex && (tex->type() != TINYGLTF_TYPE_VEC2 || tex->count() != pos->count()))
+      b_.fail(where + " TEXCOORD_0", "is not one VEC2 per position");
+    std::optional<accessor_reader> idx;
+    if (prim.indices >= 0) idx.emplace(m_, prim.indices, b_, where + " indices");
+    const std::size_t corners = idx ? idx->count() : pos->count();
+    if (corners % 3 != 0)
+      b_.fail(where, std::to_string(corners) + " vertices are not whole triangles");
+    const int material = material_of(prim, where);
+    for (std::size_t f = 0; f < corners / 3; ++f) {
+      const std::string face = where + " triangle " + std::to_string(f);
+      std::array<point3, 3> p;
+      std::array<vec3, 3> n;
+      std::array<glm::dvec2, 3> uv{};
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::uint64_t v = idx ? idx->index(3 * f + k) : 3 * f + k;
+        if (v >= pos->count())
+          b_.fail(face, "index " + std::to_string(v) + " is not one of the " +
+                            std::to_string(pos->count()) + " vertices");
+        p[k] = b_.position(pos->vec(std::size_t(v)), t, face);
+        if (nrm) n[k] = nrm->vec(std::size_t(v));
+        if (tex) uv[k] = glm::dvec2(tex->get(std::size_t(v), 0), tex->get(std::size_t(v), 1));
+      }
+      b_.add(p, material, nrm ? std::optional(n) : std::nullopt, uv, tex.has_value(), t);
+    }
+  }
+
+  int material_of(const tinygltf::Primitive& prim, const std::string& where) {
+    if (how_.material >= 0) return how_.material;
+    if (prim.material >= 0) {
+      if (std::size_t(prim.material) >= materials_.size())
+        b_.fail(where, "material " + std::to_string(prim.material) + " does not exist");
+      return materials_[std::size_t(prim.material)];
+    }
+    if (fallback_ < 0)
+      fallback_ =
+          b_.add_material(b_.name() + ":default", {material_type::lambertian, color(0.7), 0, 1.5});
+    return fallback_;
+  }
+
+  const tinygltf::Model& m_;
+  mesh_builder& b_;
+  const mesh_placement& how_;
+  std::vector<int> materials_;  // the file's material k -> the scene's
+  int fallback_ = -1;           // primitives without a material: gray diffuse, made when needed
+};
+
+}  // namespace
+
+void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
+               const std::filesystem::path& base, const mesh_placement& how) {
+  if (bytes.size() > 0xffffffffu) throw usage_error(name + ": larger than 4 GiB");
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keep_image_undecoded, nullptr);
+  static int allowed_marker = 0;
+  loader.SetFsCallbacks({file_exists, path_as_written, read_whole_file, write_nothing,
+                         base.empty() ? nullptr : &allowed_marker});
+  tinygltf::Model model;
+  std::string err, warn;
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                           reinterpret_cast<const unsigned char*>(bytes.data()),
+                                           unsigned(bytes.size()), base.string())
+             : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
+                                          base.string());
+  if (!ok) {
+    std::replace(err.begin(), err.end(), '\n', ' ');
+    while (!err.empty() && err.back() == ' ') err.pop_back();
+    throw usage_error(name + ": " + (err.empty() ? "not a glTF 2.0 file" : err));
+  }
+  mesh_builder b(s, name, how.placement);
+  gltf_walker(model, b, how).walk_scene();
+}
+
+}  // namespace rtvk

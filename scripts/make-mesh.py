@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""Writes a generated triangle mesh as Wavefront OBJ, for rtvk's pictures and benchmarks.
+
+  make-mesh.py knot TRIANGLES OUT.obj   a (2, 3) torus knot tube with smooth vertex normals, about
+                                        TRIANGLES triangles (closed, every vertex shared)
+
+The mesh depends only on its arguments, so a benchmark run anywhere reads the same triangles.
+"""
+import math
+import sys
+
+
+def knot(triangles, out):
+    # A tube of `around` sides swept along `along` steps of the curve: 2 * along * around faces.
+    around = max(8, int(round(math.sqrt(triangles / 2 / 8))))
+    along = max(24, int(round(triangles / 2 / around)))
+
+    def curve(t):
+        r = 2 + math.cos(3 * t)
+        return (r * math.cos(2 * t), r * math.sin(2 * t), -math.sin(3 * t))
+
+    def sub(a, b):
+        return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+    def cross(a, b):
+        return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+    def unit(a):
+        n = math.sqrt(a[0] ** 2 + a[1] ** 2 + a[2] ** 2)
+        return (a[0] / n, a[1] / n, a[2] / n)
+
+    radius = 0.45
+    with open(out, "w") as f:
+        f.write("# (2, 3) torus knot: rtvk scripts/make-mesh.py knot %d\n" % triangles)
+        normals = []
+        for i in range(along):
+            t = 2 * math.pi * i / along
+            p, q = curve(t), curve(t + 1e-4)
+            tangent = unit(sub(q, p))
+            side = unit(cross(tangent, (0.0, 0.0, 1.0)))
+            up = cross(side, tangent)
+            for j in range(around):
+                a = 2 * math.pi * j / around
+                n = tuple(math.cos(a) * side[k] + math.sin(a) * up[k] for k in range(3))
+                f.write("v %.6f %.6f %.6f\n" % tuple(p[k] + radius * n[k] for k in range(3)))
+                normals.append(n)
+        for n in normals:
+            f.write("vn %.6f %.6f %.6f\n" % n)
+        for i in range(along):
+            for j in range(around):
+                a = i * around + j + 1
+                b = ((i + 1) % along) * around + j + 1
+                c = ((i + 1) % along) * around + (j + 1) % around + 1
+                d = i * around + (j + 1) % around + 1
+                f.write("f %d//%d %d//%d %d//%d\n" % (a, a, b, b, c, c))
+                f.write("f %d//%d %d//%d %d//%d\n" % (a, a, c, c, d, d))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4 or sys.argv[1] != "knot":
+        sys.exit(__doc__)
+    knot(int(sys.argv[2]), sys.argv[3])

@@ -1,0 +1,25 @@
+// The scene's objects and the BVH over them, as gpu_scene (host/gpu/render/gpu_scene.h) binds
+// them: what world.glsl reads. Included by every shader that traces rays through the scene.
+#ifndef RTVK_SCENE_BUFFERS_GLSL
+#define RTVK_SCENE_BUFFERS_GLSL
+
+layout(std430, set = 0, binding = RTVK_BINDING_SPHERES) readonly buffer sphere_block {
+  gpu_sphere spheres[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_VELOCITIES) readonly buffer velocity_block {
+  vec4 velocities[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_QUADS) readonly buffer quad_block {
+  gpu_quad quads[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_TRIANGLES) readonly buffer triangle_block {
+  gpu_triangle triangles[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_NORMALS) readonly buffer normal_block {
+  vec4 vertex_normals[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
+  bvh_wide_node bvh_nodes[];
+};
+
+#endif
