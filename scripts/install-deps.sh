@@ -16,7 +16,7 @@ packages=(
   libvulkan-dev libvulkan-volk-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev
   mesa-vulkan-drivers vulkan-validationlayers
   clang libclang-rt-14-dev
-  libopenexr-dev libtinyobjloader-dev libtinygltf-dev
+  libopenexr-dev libtinyobjloader-dev libtinygltf-dev libembree-dev
   help2man dpkg-dev file
 )
 if [ "${1:-}" = "--test" ]; then

@@ -44,21 +44,21 @@ void test_object(uint ref, ray r, sheared_ray sr, float t_min, precise inout flo
   uint k = ref & RTVK_LEAF_INDEX_MASK;
   uint kind = ref & RTVK_LEAF_KIND_MASK;
   precise float t;
-  bool hit;
+  int i;  // the object's scene index, read only when it is hit
   if ((!any_quads && !any_triangles) || kind == RTVK_LEAF_SPHERE) {
-    hit = hit_sphere(center_at(k, r.time), spheres[k].radius, r, t_min, closest, t);
+    if (!hit_sphere(center_at(k, r.time), spheres[k].radius, r, t_min, closest, t)) return;
+    i = int(spheres[k].scene_index);
   } else if (!any_triangles || (any_quads && kind == RTVK_LEAF_QUAD)) {
     precise vec2 uv;
-    hit = hit_quad(quad_at(k), r, t_min, closest, t, uv);
+    if (!hit_quad(quad_at(k), r, t_min, closest, t, uv)) return;
+    i = int(quads[k].scene_index);
   } else {
     precise vec3 weights;
-    hit = hit_triangle(triangles[k].a, triangles[k].b, triangles[k].c, r, sr, t_min, closest, t,
-                       weights);
+    if (!hit_triangle(triangles[k].a, triangles[k].b, triangles[k].c, r, sr, t_min, closest, t,
+                      weights))
+      return;
+    i = int(triangles[k].scene_index);
   }
-  if (!hit) return;
-  int i = int(kind == RTVK_LEAF_SPHERE ? spheres[k].scene_index
-                                       : (kind == RTVK_LEAF_QUAD ? quads[k].scene_index
-                                                                 : triangles[k].scene_index));
   if (t < closest || i > best) {
     closest = t;
     best = i;

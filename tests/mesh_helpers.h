@@ -1,5 +1,6 @@
 #pragma once
 // Meshes the tests make themselves, and the same mesh written as Wavefront OBJ and as glTF.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -54,6 +55,36 @@ inline indexed_mesh cube_sphere(int n, double radius = 1.0) {
             m.faces.push_back({p00, p01, p11});
           }
         }
+  return m;
+}
+
+// A (2, 3) torus knot tube of about `triangles` triangles, as scripts/make-mesh.py makes it
+// (without its normals): a closed, non-convex mesh that hides parts of itself, for benchmarks.
+inline indexed_mesh torus_knot(std::size_t triangles) {
+  const int around = std::max(8, int(std::lround(std::sqrt(double(triangles) / 16))));
+  const int along = std::max(24, int(std::lround(double(triangles) / 2 / around)));
+  const auto curve = [](double t) {
+    const double r = 2 + std::cos(3 * t);
+    return point3(r * std::cos(2 * t), r * std::sin(2 * t), -std::sin(3 * t));
+  };
+  indexed_mesh m;
+  for (int i = 0; i < along; ++i) {
+    const double t = 2 * M_PI * i / along;
+    const point3 p = curve(t);
+    const vec3 tangent = glm::normalize(curve(t + 1e-4) - p);
+    const vec3 side = glm::normalize(glm::cross(tangent, vec3(0, 0, 1)));
+    const vec3 up = glm::cross(side, tangent);
+    for (int j = 0; j < around; ++j) {
+      const double a = 2 * M_PI * j / around;
+      m.positions.push_back(p + 0.45 * (std::cos(a) * side + std::sin(a) * up));
+    }
+  }
+  const auto at = [&](int i, int j) { return std::uint32_t((i % along) * around + j % around); };
+  for (int i = 0; i < along; ++i)
+    for (int j = 0; j < around; ++j) {
+      m.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
   return m;
 }
 

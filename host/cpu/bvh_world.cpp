@@ -210,27 +210,29 @@ bvh_world::bvh_world(const primitive_spans& objects, std::span<const triangle_sh
 // Tests the object of leaf reference `ref`, keeping the nearest hit.
 inline void bvh_world::visit(std::uint32_t ref, const ray& r, const sheared_ray& sheared,
                              double t_min, nearest& best) const {
+  if ((ref & RTVK_LEAF_KIND_MASK) != RTVK_LEAF_SPHERE)
+    return visit_flat(ref, r, sheared, t_min, best);
   const std::uint32_t k = ref & RTVK_LEAF_INDEX_MASK;
   double t;
-  switch (ref & RTVK_LEAF_KIND_MASK) {
-    case RTVK_LEAF_SPHERE:
-      if (hit_sphere(center_at(k, spheres_, velocities_, r.time), spheres_[k].radius, r, t_min,
-                     best.t, t))
-        best.offer(t, sphere_index_[k], ref);
-      return;
-    case RTVK_LEAF_QUAD: {
-      real2 uv;
-      if (hit_quad(quads_[k].g, r, t_min, best.t, t, uv)) best.offer(t, quad_index_[k], ref);
-      return;
-    }
-    default: {
-      const leaf_triangle& tri = triangles_[k];
-      real3 weights;
-      if (hit_triangle(tri.p[0], tri.p[1], tri.p[2], r, sheared, t_min, best.t, t, weights))
-        best.offer(t, triangle_index_[k], ref);
-      return;
-    }
+  if (hit_sphere(center_at(k, spheres_, velocities_, r.time), spheres_[k].radius, r, t_min, best.t,
+                 t))
+    best.offer(t, sphere_index_[k], ref);
+}
+
+// Quads and triangles, out of the sphere path's way: a scene of spheres keeps the loop it had.
+void bvh_world::visit_flat(std::uint32_t ref, const ray& r, const sheared_ray& sheared,
+                           double t_min, nearest& best) const {
+  const std::uint32_t k = ref & RTVK_LEAF_INDEX_MASK;
+  double t;
+  if ((ref & RTVK_LEAF_KIND_MASK) == RTVK_LEAF_QUAD) {
+    real2 uv;
+    if (hit_quad(quads_[k].g, r, t_min, best.t, t, uv)) best.offer(t, quad_index_[k], ref);
+    return;
   }
+  const leaf_triangle& tri = triangles_[k];
+  real3 weights;
+  if (hit_triangle(tri.p[0], tri.p[1], tri.p[2], r, sheared, t_min, best.t, t, weights))
+    best.offer(t, triangle_index_[k], ref);
 }
 
 // The record of the winner, `best`.

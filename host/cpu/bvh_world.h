@@ -29,6 +29,8 @@ class bvh_world final : public hittable {
   struct nearest;
   void visit(std::uint32_t ref, const ray& r, const sheared_ray& sheared, double t_min,
              nearest& best) const;
+  [[gnu::noinline]] void visit_flat(std::uint32_t ref, const ray& r, const sheared_ray& sheared,
+                                    double t_min, nearest& best) const;
   void record(const nearest& best, const ray& r, const sheared_ray& sheared, hit_record& rec) const;
 
   // A sphere as the search reads it: what a still one needs, in 40 bytes (a moving one's

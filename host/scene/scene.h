@@ -27,16 +27,6 @@ struct named_camera {
   camera_path path;  // where it stands at each time
 };
 
-// A mesh file placed in a scene file: what `scene dump` writes back (its triangles are in the
-// scene's triangles, first .. first + count - 1).
-struct mesh_instance {
-  std::string file;           // as resolved when loaded (absolute when the scene file's was)
-  std::string material;       // the scene's material for every face; empty: the file's own
-  rtvk::transform placement;  // where the mesh's coordinates go
-  std::size_t first = 0;      // its first triangle in scene::triangles
-  std::size_t count = 0;      // its triangles
-};
-
 struct named_material {
   std::string name;  // how spheres refer to it in scene files
   material m;        // its optics
@@ -57,7 +47,6 @@ struct scene {
   std::vector<quad> quads;                // the second book's (a box is six)
   std::vector<triangle> triangles;        // given alone, or faces of meshes
   std::vector<triangle_shading> shading;  // triangles' vertex normals and uv
-  std::vector<mesh_instance> meshes;      // the mesh files the triangles came from
   time_span motion;  // the instants rays may sample, seconds: BVHs bound moving spheres over it
                      // (render plans widen it to every frame's shutter; default [0, 1])
 };

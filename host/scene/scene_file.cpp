@@ -92,7 +92,7 @@ class scene_reader {
 
   static std::string type_of(const json& j) {
     if (j.is_number()) return "a number";
-    return std::string(j.is_array() ? "an " : "a ") + j.type_name();
+    return std::string(j.is_array() || j.is_object() ? "an " : "a ") + j.type_name();
   }
 
   const std::string& file() const { return file_; }
@@ -419,7 +419,7 @@ void read_meshes(const scene_reader& r, const json& root, const std::filesystem:
 // `material_index` maps a material name to its index in the scene.
 sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
                    const std::map<std::string, int>& material_index) {
-  r.only_fields(j, p, {"center", "center1", "radius", "material"});
+  r.only_fields(j, p, {"center", "center1", "radius", "material", "transform"});
   sphere sp;
   sp.center = r.vector3(r.required(j, p, "center"), p + "/center");
   // A moving sphere: at "center" at time 0 and "center1" at time 1, linear before and after.
@@ -427,6 +427,18 @@ sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
   sp.radius = r.number(r.required(j, p, "radius"), p + "/radius");
   if (sp.radius <= 0)
     r.fail(p + "/radius", "expected a radius > 0, got " + format_number(sp.radius));
+  if (j.contains("transform")) {
+    // A sphere stays a sphere under a rotation and one scale; a non-uniform scale would make an
+    // ellipsoid, which needs object-space instances (docs/geometry.md).
+    const transform t = read_transform(r, j["transform"], p + "/transform");
+    const std::optional<double> scale = t.uniform_scale();
+    if (!scale)
+      r.fail(p + "/transform",
+             "a sphere can be scaled only uniformly (an ellipsoid is not supported yet)");
+    sp.center = t.apply_point(sp.center);
+    if (sp.center1) sp.center1 = t.apply_point(*sp.center1);
+    sp.radius *= *scale;
+  }
   sp.material = material_named(r, j, p, material_index);
   return sp;
 }

@@ -16,8 +16,10 @@ struct transform {
   glm::dmat3 linear{1.0};  // scale and rotation, column-major
   vec3 offset{0.0};        // translation, scene units
 
-  point3 apply_point(const point3& p) const { return linear * p + offset; }
-  vec3 apply_vector(const vec3& v) const { return linear * v; }
+  // The identity leaves every coordinate exactly as it was (-0 stays -0, +0 stays +0), so that a
+  // dumped scene reads back unchanged.
+  point3 apply_point(const point3& p) const { return is_identity() ? p : linear * p + offset; }
+  vec3 apply_vector(const vec3& v) const { return is_identity() ? v : linear * v; }
   // A surface normal's image, unit length: the inverse transpose carries normals.
   vec3 apply_normal(const vec3& n) const;
   double determinant() const;

@@ -7,6 +7,7 @@
 
 #include "errors.h"
 #include "gpu_fixture.h"
+#include "mesh_helpers.h"
 #include "render_helpers.h"
 
 namespace rtvk {
@@ -48,6 +49,20 @@ TEST_F(GpuLimits, AStorageBufferAboveTheRangeIsRefused) {
             "--scene spheres:2000: the BVH needs 121.375 KiB in one storage buffer; "
             "device '" +
                 gpu().device().name + "' allows 100 KiB");
+}
+
+// A mesh too large for the device's storage-buffer range: refused before anything is allocated,
+// naming the buffer and the limit, rather than read past the range. 2 x 40 x 40 x 6 = 19,200
+// triangles: 900 KiB of them at 48 bytes, and their BVH, the largest buffer (one object a leaf:
+// 1.106 MiB of four-wide nodes), is the one named.
+TEST_F(GpuLimits, AMeshAboveTheStorageRangeIsRefusedNamingTheBuffer) {
+  scene s = builtin_scene("seed");
+  test::add_triangles(s, test::cube_sphere(40, 0.4), 0);
+  s.render.width = 16;
+  EXPECT_THAT(render_with(s, {.storage_range = 1 << 20}),
+              testing::HasSubstr("the BVH needs 1.10645 MiB in one storage buffer; device '"));
+  EXPECT_THAT(render_with(s, {.storage_range = 1 << 20}), testing::HasSubstr("allows 1 MiB"));
+  EXPECT_EQ(render_with(s, {.storage_range = 1200 << 10}), "") << "1200 KiB holds it";
 }
 
 TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {

@@ -7,6 +7,7 @@
 
 #include "gpu_fixture.h"
 #include "image_compare.h"
+#include "mesh_file.h"
 #include "mesh_helpers.h"
 #include "probe.h"
 #include "render_gpu.h"
@@ -49,6 +50,43 @@ TEST_F(GpuShapes, EveryKindOfObjectUnderNormalShadingMatchesTheCpu) {
   const image_difference d = gpu_vs_cpu(gpu(), s);
   EXPECT_LE(d.pixels_over, 160 * 90 / 500) << "of " << 160 * 90;
   EXPECT_GE(d.psnr_db, 50);
+}
+
+// A mesh file with vertex normals (smooth shading) and no materials of its own, read from OBJ
+// text, under the lesson's normal shading: the GPU blends the same normals as the CPU.
+TEST_F(GpuShapes, ASmoothMeshFromAnObjFileMatchesTheCpu) {
+  const test::indexed_mesh m = test::cube_sphere(6, 0.5);
+  const std::string plain = test::obj_text(m);
+  std::string obj = plain.substr(0, plain.find("\nf ") + 1);  // the positions
+  for (const point3& p : m.positions) {
+    const vec3 n = glm::normalize(p);
+    obj +=
+        "vn " + std::to_string(n.x) + " " + std::to_string(n.y) + " " + std::to_string(n.z) + "\n";
+  }
+  for (const auto& f : m.faces) {  // "f a//a b//b c//c": each vertex its own normal
+    obj += "f";
+    for (const std::uint32_t v : f)
+      obj += " " + std::to_string(v + 1) + "//" + std::to_string(v + 1);
+    obj += "\n";
+  }
+  scene s = builtin_scene("seed");
+  s.spheres.resize(1);
+  s.spheres[0] = sphere(point3(0, -100.5, -1), 100, 0);
+  load_mesh_bytes(
+      s, obj, "obj", "smooth.obj", "",
+      {.material = 0, .placement = make_transform(vec3(1), vec3(0, 1, 0), 20, vec3(0, 0, -1))});
+  ASSERT_EQ(s.triangles.size(), m.faces.size());
+  ASSERT_GE(s.triangles[0].shading, 0);
+  ASSERT_TRUE(s.shading[std::size_t(s.triangles[0].shading)].has_normals());
+  s.render.width = 160;
+  const image_difference d = gpu_vs_cpu(gpu(), s);
+  EXPECT_LE(d.pixels_over, 160 * 90 / 500) << "of " << 160 * 90;
+  EXPECT_GE(d.psnr_db, 50);
+  // Smooth, not flat: the same mesh without its normals draws another image.
+  scene flat = s;
+  flat.shading.clear();
+  for (triangle& t : flat.triangles) t.shading = -1;
+  EXPECT_GT(compare_images(test::cpu_image(flat), test::cpu_image(s), 2).pixels_over, 500);
 }
 
 TEST_F(GpuShapes, BvhGivesTheLinearScansImageOverEveryKindOfObject) {

@@ -58,6 +58,37 @@ TEST(SceneFile, MovingSpheresAndShuttersRoundTrip) {
   EXPECT_EQ(still.find("shutter"), std::string::npos);
 }
 
+// Quads, boxes and triangles, placed by transforms: read as the book builds them, written
+// placed, and read back the same.
+TEST(SceneFile, QuadsBoxesTrianglesAndTransformsRoundTrip) {
+  const std::string text =
+      R"({"materials":{"m":{"type":"normal"}},)"
+      R"("spheres":[{"center":[1,0,0],"radius":0.5,"material":"m",)"
+      R"("transform":{"scale":2,"rotate":{"axis":[0,0,1],"degrees":90}}}],)"
+      R"("quads":[{"Q":[0,0,0],"u":[1,0,0],"v":[0,1,0],"material":"m",)"
+      R"("transform":{"scale":[2,1,1],"translate":[0,0,-3]}}],)"
+      R"("boxes":[{"a":[0,0,0],"b":[1,2,3],"material":"m","transform":{"rotate":{"axis":[0,1,0],"degrees":90}}}],)"
+      R"("triangles":[{"vertices":[[0,0,0],[1,0,0],[0,1,0]],"normals":[[0,0,1],[0,0.5,1],[0.5,0,1]],)"
+      R"("material":"m"}]})";
+  const scene s = parse_scene_json(text, "flat.json");
+  ASSERT_EQ(s.spheres.size(), 1u);
+  EXPECT_EQ(s.spheres[0].center, point3(0, 2, 0));  // scaled by 2, then turned about z
+  EXPECT_EQ(s.spheres[0].radius, 1);
+  ASSERT_EQ(s.quads.size(), 7u);  // one quad and a box's six
+  EXPECT_EQ(s.quads[0].Q, point3(0, 0, -3));
+  EXPECT_EQ(s.quads[0].u, vec3(2, 0, 0));
+  // The box's front (z = 3 before the quarter turn about y, which takes +z to +x).
+  EXPECT_EQ(s.quads[1].Q, point3(3, 0, 0));
+  EXPECT_EQ(s.quads[1].u, vec3(0, 0, -1));
+  ASSERT_EQ(s.triangles.size(), 1u);
+  ASSERT_EQ(s.triangles[0].shading, 0);
+  EXPECT_EQ(s.shading[0].normal[1], vec3(0, 0.5, 1));  // as written: the renderers normalize
+  check_scene(s);
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "again.json")), dumped);
+  EXPECT_EQ(dumped.find("transform"), std::string::npos) << "objects are written placed";
+}
+
 // Every kind of material, with the parameters it reads, written and read back the same.
 TEST(SceneFile, EveryMaterialKindRoundTrips) {
   const std::string text = R"({"materials":{
@@ -184,6 +215,31 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
        "/camera/shutter/1: expected a number, got a string"},
       {"{" + m + R"(,"spheres":[{"center":[0,0,0],"center1":[0,1],"radius":1,"material":"m"}]})",
        "/spheres/0/center1: expected an array of 3 numbers"},
+      {"{" + m + R"(,"quads":[{"Q":[0,0,0],"u":[1,0,0],"v":[2,0,0],"material":"m"}]})",
+       "/quads/0: u and v are parallel (or zero): the quad has no area"},
+      {"{" + m + R"(,"quads":[{"Q":[0,0,0],"u":[1,0,0],"material":"m"}]})",
+       "/quads/0: missing field \"v\""},
+      {"{" + m + R"(,"quads":{}})", "/quads: expected an array, got an object"},
+      {"{" + m + R"(,"boxes":[{"a":[0,0,0],"b":[1,1,0],"material":"m"}]})",
+       "/boxes/0/b/2: the box is flat: a and b share this coordinate"},
+      {"{" + m + R"(,"triangles":[{"vertices":[[0,0,0],[1,0,0]],"material":"m"}]})",
+       "/triangles/0/vertices: expected an array of 3 points"},
+      {"{" + m +
+           R"(,"triangles":[{"vertices":[[0,0,0],[1,0,0],[0,1,0]],"normals":[[0,0,1],[0,0,0],[0,0,1]],"material":"m"}]})",
+       "/triangles/0/normals/1: expected a nonzero normal"},
+      {"{" + m +
+           R"(,"quads":[{"Q":[0,0,0],"u":[1,0,0],"v":[0,1,0],"material":"m","transform":{"scale":[1,0,1]}}]})",
+       "/quads/0/transform: the transform cannot place anything: it flattens space"},
+      {"{" + m +
+           R"(,"boxes":[{"a":[0,0,0],"b":[1,1,1],"material":"m","transform":{"rotate":{"axis":[0,0,0],"degrees":3}}}]})",
+       "/boxes/0/transform/rotate/axis: expected a nonzero finite axis"},
+      {"{" + m + R"(,"boxes":[{"a":[0,0,0],"b":[1,1,1],"material":"m","transform":{"shear":1}}]})",
+       "/boxes/0/transform/shear: unknown field"},
+      {"{" + m +
+           R"(,"spheres":[{"center":[0,0,0],"radius":1,"material":"m","transform":{"scale":[1,2,1]}}]})",
+       "/spheres/0/transform: a sphere can be scaled only uniformly"},
+      {"{" + m + R"(,"meshes":[{"file":"x.stl"}]})", "/meshes/0/file: \"x.stl\" is not .obj"},
+      {"{" + m + R"(,"meshes":[{"file":""}]})", "/meshes/0/file: expected a mesh file name"},
   };
   for (const auto& c : cases) {
     const std::string e = error_of(c.json);
