@@ -40,7 +40,7 @@ struct scene {
                                                        // default; the lesson's camera unless set
   render_settings render;                              // default image size, samples, depth, ...
   rtvk::sky sky;                                       // what rays that escape see
-  std::vector<named_material> materials;               // spheres index into this
+  std::vector<named_material> materials;               // objects index into this
   // The objects. Hits are tested as if in one list: spheres, then quads, then triangles (each
   // object's index in that list -- its scene index -- decides exact ties: the later wins).
   std::vector<sphere> spheres;            // the first book's
