@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -34,11 +35,15 @@ class mesh_builder {
   void add(const std::array<point3, 3>& p, int material,
            const std::optional<std::array<vec3, 3>>& normals, const std::array<glm::dvec2, 3>& uv,
            bool has_uv, const transform& node) {
-    if (s_.triangles.size() >= max_triangles)
-      fail("faces", "more than " + std::to_string(max_triangles) + " triangles in one scene");
+    if (object_count(s_) >= max_scene_objects)
+      fail("faces", "more than " + std::to_string(max_scene_objects) + " objects in one scene");
     triangle t;
     t.p = p;
     t.material = material;
+    if (!has_area(p)) return;  // no surface: nothing to hit, and no normal to shade it with
+    // A mirroring placement turns counter-clockwise into clockwise: the winding is put back, so
+    // that the front stays where the vertex normals point.
+    const bool mirrored = compose(placement_, node).determinant() < 0;
     bool smooth = false;
     triangle_shading sh;
     if (normals) {
@@ -53,23 +58,33 @@ class mesh_builder {
       }
       if (!smooth) sh.normal = {};
     }
+    if (mirrored) {
+      std::swap(t.p[1], t.p[2]);
+      std::swap(sh.normal[1], sh.normal[2]);
+    }
+    std::array<glm::dvec2, 3> corners = uv;
+    if (mirrored) std::swap(corners[1], corners[2]);
     if (smooth || has_uv) {
-      sh.uv = uv;
+      sh.uv = corners;
       t.shading = std::int32_t(s_.shading.size());
       s_.shading.push_back(sh);
     }
     s_.triangles.push_back(t);
   }
 
-  // A material of the file's, appended to the scene; returns its index.
+  // A material of the file's, appended to the scene under a name no other material has (a file
+  // may repeat names, or be placed twice); returns its index.
   int add_material(const std::string& name, const material& m) {
-    s_.materials.push_back({name, m});
+    std::string unique = name;
+    for (int k = 2; std::any_of(s_.materials.begin(), s_.materials.end(),
+                                [&](const named_material& n) { return n.name == unique; });
+         ++k)
+      unique = name + "#" + std::to_string(k);
+    s_.materials.push_back({unique, m});
     return int(s_.materials.size() - 1);
   }
 
   const std::string& name() const { return name_; }
-
-  static constexpr std::size_t max_triangles = std::size_t(1) << 29;
 
  private:
   scene& s_;

@@ -7,10 +7,8 @@
 
 namespace rtvk {
 
-// The largest mesh file rtvk reads, and the most triangles one scene may hold (a BVH leaf's
-// reference has 29 bits for the position in its kind's array).
+// The largest mesh file rtvk reads (a scene's objects are bounded by max_scene_objects).
 inline constexpr std::uint64_t max_mesh_file_bytes = 2ull << 30;  // 2 GiB
-inline constexpr std::size_t max_scene_triangles = std::size_t(1) << 29;
 
 // How a mesh is put into a scene: the material every face gets (a scene material's index), or
 // -1 for the file's own materials (mapped as docs/geometry.md says), and where it goes.

@@ -133,16 +133,22 @@ class accessor_reader {
     if (components_ <= 0 || component_bytes_ <= 0) b_.fail(where_, "has an unknown type");
     const std::size_t element = std::size_t(components_) * std::size_t(component_bytes_);
     stride_ = view.byteStride ? view.byteStride : element;
-    if (stride_ < element) b_.fail(where_, "its stride is smaller than an element");
-    // Every byte within the view, and the view within the buffer (no overflow: all are below
-    // 2^63 once checked one by one).
+    if (stride_ < element || stride_ > 252)  // glTF's own bounds on a stride
+      b_.fail(where_, "its stride " + std::to_string(stride_) + " is not in [" +
+                          std::to_string(element) + ", 252]");
+    // The view within the buffer, then every byte of the accessor within the view. Each term is
+    // bounded before the sum (offsets by the buffer's size, the stride by 252, the count by
+    // 2^40), so nothing wraps.
+    const auto outside = [&] {
+      b_.fail(where_, "points outside its buffer's " + std::to_string(data.size()) + " bytes");
+    };
+    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) outside();
+    if (a_->byteOffset > view.byteLength || a_->count > (std::uint64_t(1) << 40)) outside();
     const std::uint64_t end =
         a_->count == 0
             ? 0
             : std::uint64_t(a_->byteOffset) + std::uint64_t(stride_) * (a_->count - 1) + element;
-    if (a_->count > (std::uint64_t(1) << 40) || end > view.byteLength ||
-        view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
-      b_.fail(where_, "points outside its buffer's " + std::to_string(data.size()) + " bytes");
+    if (end > view.byteLength) outside();
     base_ = data.data() + view.byteOffset + a_->byteOffset;
   }
 
@@ -211,7 +217,9 @@ class gltf_walker {
       : m_(m), b_(b), how_(how) {
     if (how.material < 0)
       for (const tinygltf::Material& mat : m.materials)
-        materials_.push_back(b.add_material(b.name() + ":" + mat.name, from_gltf(mat)));
+        materials_.push_back(b.add_material(
+            b.name() + ":" + (mat.name.empty() ? std::to_string(materials_.size()) : mat.name),
+            from_gltf(mat)));
   }
 
   void walk_scene() {
@@ -235,6 +243,11 @@ class gltf_walker {
     const std::string where = "node " + std::to_string(index);
     if (index < 0 || std::size_t(index) >= m_.nodes.size()) b_.fail(where, "does not exist");
     if (depth > 64) b_.fail(where, "the node tree is deeper than 64 levels (or has a cycle)");
+    // glTF's nodes form trees: a node reached twice (a shared child, a cycle) would be walked
+    // once per path, exponentially many times.
+    if (walked_.empty()) walked_.resize(m_.nodes.size());
+    if (walked_[std::size_t(index)]) b_.fail(where, "is reached twice (glTF nodes form trees)");
+    walked_[std::size_t(index)] = true;
     const tinygltf::Node& n = m_.nodes[std::size_t(index)];
     const transform t = compose(parent, node_transform(n));
     if (n.mesh >= 0) {
@@ -317,6 +330,7 @@ class gltf_walker {
   const mesh_placement& how_;
   std::vector<int> materials_;  // the file's material k -> the scene's
   int fallback_ = -1;           // primitives without a material: gray diffuse, made when needed
+  std::vector<bool> walked_;    // node k has been walked
 };
 
 }  // namespace

@@ -52,7 +52,8 @@ std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
     file.erase(file.find_last_not_of(" \t\r") + 1);
     if (file.empty() || base.empty()) return "";
     const std::filesystem::path path = base / file;
-    if (!std::filesystem::exists(path))
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
       throw usage_error(name + ": mtllib " + file + ": no such file beside the OBJ");
     return read_regular_file(path, max_mesh_file_bytes, "material library");
   }

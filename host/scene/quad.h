@@ -1,4 +1,8 @@
 #pragma once
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
 #include "hit_quad.h"
 #include "vec3.h"
 
@@ -15,5 +19,15 @@ struct quad {
   // The book's precomputed plane (normal, D, w), in double.
   quad_geometry geometry() const { return make_quad(Q, u, v); }
 };
+
+// Whether edges u and v span an area, in double (the CPU) and in float (the GPU): a quad without
+// one has no plane, and its normal would be 0 / 0.
+inline bool spans_area(const vec3& u, const vec3& v) {
+  const vec3 n = glm::cross(u, v);
+  const glm::vec3 nf = glm::cross(glm::vec3(u), glm::vec3(v));
+  const double len2 = glm::dot(n, n);
+  const float len2f = glm::dot(nf, nf);
+  return len2 > 0 && std::isfinite(len2) && len2f > 0 && std::isfinite(len2f);
+}
 
 }  // namespace rtvk

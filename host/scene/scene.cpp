@@ -32,6 +32,9 @@ void check_scene(const scene& s) {
       throw usage_error(where + ": material index " + std::to_string(material) + " does not exist");
   };
   if (s.cameras.empty()) throw usage_error(s.name + ": the scene has no camera");
+  if (object_count(s) > max_scene_objects)
+    throw usage_error(s.name + ": " + std::to_string(object_count(s)) + " objects are more than " +
+                      std::to_string(max_scene_objects) + " (a BVH leaf reference's 29 bits)");
   for (std::size_t i = 0; i < s.cameras.size(); ++i) {
     const named_camera& c = s.cameras[i];
     if (!valid_camera_name(c.name))
@@ -71,7 +74,7 @@ void check_scene(const scene& s) {
     check_point(where + ": Q + u + v", q.Q + q.u + q.v);
     check_point(where + ": u", q.u);
     check_point(where + ": v", q.v);
-    if (!(glm::length(glm::cross(q.u, q.v)) > 0))
+    if (!spans_area(q.u, q.v))
       throw usage_error(where + ": u and v are parallel (or zero): the quad has no area");
     check_material(where, q.material);
   }
@@ -79,6 +82,7 @@ void check_scene(const scene& s) {
     const triangle& t = s.triangles[i];
     const std::string where = s.name + ": triangle " + std::to_string(i);
     for (int k = 0; k < 3; ++k) check_point(where + ": vertex " + std::to_string(k), t.p[k]);
+    if (!has_area(t.p)) throw usage_error(where + ": its vertices are collinear: no area");
     check_material(where, t.material);
     if (t.shading >= 0 && std::size_t(t.shading) >= s.shading.size())
       throw usage_error(where + ": shading index " + std::to_string(t.shading) + " does not exist");
@@ -88,8 +92,10 @@ void check_scene(const scene& s) {
 void add_box(scene& s, const point3& a, const point3& b, int material, const transform& t) {
   const point3 lo = glm::min(a, b), hi = glm::max(a, b);
   const vec3 dx(hi.x - lo.x, 0, 0), dy(0, hi.y - lo.y, 0), dz(0, 0, hi.z - lo.z);
+  const bool mirrored = t.determinant() < 0;  // then u and v trade places: the front stays out
   const auto side = [&](const point3& Q, const vec3& u, const vec3& v) {
-    s.quads.push_back({t.apply_point(Q), t.apply_vector(u), t.apply_vector(v), material});
+    const vec3 tu = t.apply_vector(u), tv = t.apply_vector(v);
+    s.quads.push_back({t.apply_point(Q), mirrored ? tv : tu, mirrored ? tu : tv, material});
   };
   side({lo.x, lo.y, hi.z}, dx, dy);   // front
   side({hi.x, lo.y, hi.z}, -dz, dy);  // right

@@ -91,6 +91,10 @@ inline constexpr double max_scene_coordinate = 1e18;
 // <= 0, or a quad parallel edges.
 void check_scene(const scene& s);
 
+// The most objects (spheres, quads and triangles together) a scene may hold: a BVH leaf keeps 29
+// bits for an object's position in its kind's array.
+inline constexpr std::size_t max_scene_objects = std::size_t(1) << 29;
+
 // The most spheres spheres:N builds.
 inline constexpr std::uint32_t max_scene_spheres = 4'000'000;
 

@@ -351,8 +351,8 @@ void read_flat_objects(const scene_reader& r, const json& root,
     q.Q = t.apply_point(r.vector3(r.required(j, p, "Q"), p + "/Q"));
     q.u = t.apply_vector(r.vector3(r.required(j, p, "u"), p + "/u"));
     q.v = t.apply_vector(r.vector3(r.required(j, p, "v"), p + "/v"));
-    if (!(glm::length(glm::cross(q.u, q.v)) > 0))
-      r.fail(p, "u and v are parallel (or zero): the quad has no area");
+    if (t.determinant() < 0) std::swap(q.u, q.v);  // mirrored: the front stays where it was
+    if (!spans_area(q.u, q.v)) r.fail(p, "u and v are parallel (or zero): the quad has no area");
     q.material = material_named(r, j, p, material_index);
     s.quads.push_back(q);
   });
@@ -380,6 +380,9 @@ void read_flat_objects(const scene_reader& r, const json& root,
     const std::array<vec3, 3> v = three("vertices");
     for (int k = 0; k < 3; ++k) tri.p[std::size_t(k)] = t.apply_point(v[std::size_t(k)]);
     tri.material = material_named(r, j, p, material_index);
+    if (!has_area(tri.p)) r.fail(p + "/vertices", "the vertices are collinear: no area");
+    const bool mirrored = t.determinant() < 0;  // then the winding is put back
+    if (mirrored) std::swap(tri.p[1], tri.p[2]);
     if (j.contains("normals")) {
       const std::array<vec3, 3> n = three("normals");
       triangle_shading sh;
@@ -390,6 +393,7 @@ void read_flat_objects(const scene_reader& r, const json& root,
         // renderers normalize them.
         sh.normal[k] = t.is_identity() ? n[k] : t.apply_normal(n[k]);
       }
+      if (mirrored) std::swap(sh.normal[1], sh.normal[2]);
       tri.shading = std::int32_t(s.shading.size());
       s.shading.push_back(sh);
     }

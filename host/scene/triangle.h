@@ -1,8 +1,11 @@
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstdint>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "vec3.h"
 
@@ -15,6 +18,18 @@ struct triangle {
   int material = 0;           // index into the scene's materials
   std::int32_t shading = -1;  // index into the scene's triangle_shading; -1: flat, no uv
 };
+
+// Whether the triangle with vertices p has an area to hit and a normal to shade with, in double
+// (the CPU) and in float (the GPU, from the vertices rounded): a zero-area triangle can be hit
+// only through rounding, and its normal would be 0 / 0.
+inline bool has_area(const std::array<point3, 3>& p) {
+  const vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+  const glm::vec3 a(p[0]), b(p[1]), c(p[2]);
+  const glm::vec3 nf = glm::cross(b - a, c - a);
+  const double len2 = glm::dot(n, n);
+  const float len2f = glm::dot(nf, nf);
+  return len2 > 0 && std::isfinite(len2) && len2f > 0 && std::isfinite(len2f);
+}
 
 // What a mesh gives its vertices beyond positions: normals for smooth shading and texture
 // coordinates (kept for textures: nothing reads them yet).

@@ -111,6 +111,17 @@ TEST(Box, IsTheBooksSixQuadsFacingOut) {
   EXPECT_EQ(s.quads[0].v, vec3(0, 2, 0));
 }
 
+// Found in review: a mirroring transform turned boxes inside out (their quads' fronts faced in).
+TEST(Box, AMirroredBoxStillFacesOut) {
+  scene s;
+  add_box(s, point3(1, 2, 3), point3(-1, 0, 0), 0,
+          make_transform(vec3(-1, 1, 1), vec3(0, 1, 0), 0, vec3(0)));
+  for (const quad& q : s.quads) {
+    const point3 center = q.Q + 0.5 * (q.u + q.v);
+    EXPECT_GT(glm::dot(q.geometry().normal, center - point3(0, 1, 1.5)), 0);
+  }
+}
+
 TEST(Transform, ScalesRotatesAndTranslatesInThatOrder) {
   // Scale x by 2, a quarter turn about +y (x goes to -z), then up by 1.
   const transform t = make_transform(vec3(2, 1, 1), vec3(0, 1, 0), 90, vec3(0, 1, 0));

@@ -21,8 +21,9 @@ entries() { field "$1" | tr ',' '\n' | sed -E 's/\(.*\)//; s/^ +//; s/ +$//'; }
 [[ $(field Package) == rtvk ]] || fail "Package is not rtvk"
 [[ $(field Section) == graphics ]] || fail "Section is not graphics"
 grep -qx libvulkan1 <<<"$(entries Depends)" || fail "Depends lacks libvulkan1"
-# dpkg-shlibdeps ran: the libraries rtvk links (libc, libstdc++, OpenEXR) are in Depends.
-for lib in libc6 'libstdc\+\+6' 'libopenexr.*'; do
+# dpkg-shlibdeps ran: the libraries rtvk links (libc, libstdc++, OpenEXR, the mesh loaders) are
+# in Depends.
+for lib in libc6 'libstdc\+\+6' 'libopenexr.*' 'libtinyobjloader.*' 'libtinygltf.*'; do
   grep -Eqx "$lib" <<<"$(entries Depends)" || fail "Depends lacks $lib (dpkg-shlibdeps did not run?)"
 done
 grep -qx mesa-vulkan-drivers <<<"$(entries Recommends)" || fail "Recommends lacks mesa-vulkan-drivers"

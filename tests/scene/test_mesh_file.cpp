@@ -144,6 +144,60 @@ TEST(MeshFile, BadFilesAreRefusedWithTheFileAndWhereInIt) {
   EXPECT_EQ(refusal("", "obj"), "") << "an empty OBJ is read as no faces (load_mesh refuses it)";
 }
 
+// Found in review: a byteOffset near 2^64 wrapped the bounds check's sum (a read before the
+// buffer); a node reached twice (a DAG of 60 levels) was walked 2^60 times; two unnamed
+// materials shared one name in dumps; a long mtllib name threw a filesystem error (exit 1).
+TEST(MeshFile, HostileGltfAndObjAreRefusedNotFollowed) {
+  const test::indexed_mesh m = test::cube_sphere(1, 1.0);
+  std::string wrap = test::gltf_json(m);
+  wrap.replace(wrap.find("\"componentType\":5126"), 20,
+               "\"byteOffset\":18446744073709551580,\"componentType\":5126");
+  EXPECT_NE(refusal(wrap, "gltf").find("points outside its buffer"), std::string::npos)
+      << refusal(wrap, "gltf");
+  std::string dag = test::gltf_json(m);
+  dag.replace(dag.find("\"nodes\":[{\"mesh\":0}]"), 20,
+              "\"nodes\":[{\"children\":[1,1]},{\"mesh\":0}]");
+  EXPECT_EQ(refusal(dag, "gltf"), "m.gltf: node 1: is reached twice (glTF nodes form trees)");
+  EXPECT_EQ(refusal("mtllib " + std::string(300, 'x') + ".mtl\nv 0 0 0\n", "obj"),
+            "m.obj: mtllib " + std::string(300, 'x') + ".mtl: no such file beside the OBJ");
+  std::string two = test::gltf_json(m);
+  two.insert(two.rfind('}'),
+             ",\"materials\":[{\"pbrMetallicRoughness\":{\"metallicFactor\":0}},"
+             "{\"pbrMetallicRoughness\":{\"metallicFactor\":1}}]");
+  scene s;
+  load_mesh_bytes(s, two, "gltf", "m.gltf", "", {});
+  load_mesh_bytes(s, two, "gltf", "m.gltf", "", {});  // placed twice
+  // Each load: the file's two materials, and the gray one its material-less primitive gets.
+  ASSERT_EQ(s.materials.size(), 6u);
+  EXPECT_EQ(s.materials[0].name, "m.gltf:0");
+  EXPECT_EQ(s.materials[1].name, "m.gltf:1");
+  EXPECT_EQ(s.materials[2].name, "m.gltf:default");
+  EXPECT_EQ(s.materials[3].name, "m.gltf:0#2");
+  EXPECT_EQ(s.materials[4].name, "m.gltf:1#2");
+  EXPECT_EQ(s.materials[5].name, "m.gltf:default#2");
+}
+
+// A mirroring placement (a negative scale, in the scene file or a glTF node) keeps each face's
+// front where its vertex normals point: the winding is put back. Faces without area are dropped.
+TEST(MeshFile, MirroredMeshesKeepTheirFrontsAndFacesWithoutAreaAreDropped) {
+  // Faces 1 and 3 face +z (counter-clockwise from there, like the normal); face 2 is collinear.
+  const std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nvn 0 0 1\n"
+      "f 1//1 2//1 3//1\nf 1//1 2//1 4//1\nf 2//1 4//1 3//1\n";
+  for (const double sx : {1.0, -1.0}) {
+    scene s;
+    load_mesh_bytes(
+        s, obj, "obj", "m.obj", "",
+        {.material = -1, .placement = make_transform(vec3(sx, 1, 1), vec3(0, 1, 0), 0, vec3(0))});
+    ASSERT_EQ(s.triangles.size(), 2u) << "the collinear face is dropped";
+    for (const triangle& t : s.triangles) {
+      const vec3 geometric = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+      const vec3 shading = s.shading[std::size_t(t.shading)].normal[0];
+      EXPECT_GT(glm::dot(geometric, shading), 0) << "scale x " << sx;
+    }
+  }
+}
+
 TEST(MeshFile, TheCliRefusesBadMeshesWithExit2AndNoImage) {
   const test::temp_dir dir;
   write(dir.path() / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");

@@ -239,6 +239,10 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
            R"(,"spheres":[{"center":[0,0,0],"radius":1,"material":"m","transform":{"scale":[1,2,1]}}]})",
        "/spheres/0/transform: a sphere can be scaled only uniformly"},
       {"{" + m + R"(,"meshes":[{"file":"x.stl"}]})", "/meshes/0/file: \"x.stl\" is not .obj"},
+      {"{" + m + R"(,"triangles":[{"vertices":[[0,0,0],[1,1,1],[2,2,2]],"material":"m"}]})",
+       "/triangles/0/vertices: the vertices are collinear: no area"},
+      {"{" + m + R"(,"quads":[{"Q":[0,0,0],"u":[1e-30,0,0],"v":[0,1e-30,0],"material":"m"}]})",
+       "/quads/0: u and v are parallel (or zero): the quad has no area"},
       {"{" + m + R"(,"meshes":[{"file":""}]})", "/meshes/0/file: expected a mesh file name"},
   };
   for (const auto& c : cases) {
