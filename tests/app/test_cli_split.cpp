@@ -254,6 +254,43 @@ TEST(CliSplit, PiecesOfOtherInstantsDoNotMergeWhereSpheresMove) {
   EXPECT_TRUE(p.merges("still0.exr", "still1.exr"));
 }
 
+// Quads and meshes are part of what a piece is: pieces of a mesh scene merge into the image a
+// whole render draws, and a piece of the same scene with one vertex or quad moved is refused.
+TEST(CliSplit, PiecesOfMeshScenesMergeOnlyWithTheSameGeometry) {
+  const pieces p;
+  const auto write_mesh = [&](const std::string& file, const std::string& apex) {
+    std::ofstream(p.at(file)) << "v -1 -1 -2\nv 1 -1 -2\n"
+                              << apex << "\nv 0 -1 -3\nf 1 2 3\nf 2 4 3\nf 4 1 3\n";
+  };
+  const auto write_scene = [&](const std::string& file, const std::string& mesh,
+                               const std::string& quad_y) {
+    std::ofstream(p.at(file))
+        << R"({"materials": {"m": {"type": "lambertian", "albedo": [0.5, 0.5, 0.5]}},
+        "quads": [{"Q": [-3, )"
+        << quad_y << R"(, -4], "u": [6, 0, 0], "v": [0, 0, 4], "material": "m"}],
+        "meshes": [{"file": ")"
+        << mesh << R"(", "material": "m"}]})";
+  };
+  write_mesh("tri.obj", "v 0 0.5 -2.5");
+  write_mesh("tri2.obj", "v 0 0.6 -2.5");
+  write_scene("a.json", "tri.obj", "-1");
+  write_scene("b.json", "tri2.obj", "-1");   // one vertex moved
+  write_scene("c.json", "tri.obj", "-1.1");  // the quad moved
+  ASSERT_EQ(p.piece(p.at("a.json"), "0:1", "a0.exr"), 0);
+  ASSERT_EQ(p.piece(p.at("a.json"), "1:2", "a1.exr"), 0);
+  ASSERT_EQ(p.piece(p.at("b.json"), "1:2", "b1.exr"), 0);
+  ASSERT_EQ(p.piece(p.at("c.json"), "1:2", "c1.exr"), 0);
+  EXPECT_TRUE(p.merges("a0.exr", "a1.exr"));
+  EXPECT_EQ(slurp(p.at("m.png")), [&] {
+    const auto whole = run_rtvk({"render", "--scene", p.at("a.json"), "--width", "24", "--spp", "2",
+                                 "--backend", "cpu", "-o", p.at("whole.png"), "-q"});
+    EXPECT_EQ(whole.status, 0) << whole.err;
+    return slurp(p.at("whole.png"));
+  }()) << "the merged pieces are the whole render";
+  EXPECT_FALSE(p.merges("a0.exr", "b1.exr"));
+  EXPECT_FALSE(p.merges("a0.exr", "c1.exr"));
+}
+
 TEST(CliSplit, PiecesOfOtherScenesOrSettingsDoNotMerge) {
   const pieces p;
   std::ofstream(p.at("one.json")) << R"({"spheres": [{"center": [0, 0, -1], "radius": 0.5,
