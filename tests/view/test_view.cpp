@@ -27,6 +27,7 @@
 #include "ci.h"
 #include "fault_layer.h"
 #include "image_io.h"
+#include "mesh_helpers.h"
 #include "process.h"
 #include "render_cpu.h"
 #include "scene.h"
@@ -330,6 +331,15 @@ TEST_F(XvfbTest, ScreenshotsAreTheBytesRtvkRenderWrites) {
 TEST_F(XvfbTest, AMotionBlurredScreenshotIsTheBytesRtvkRenderWrites) {
   expect_screenshot_is_the_render(
       env(), {"--scene", "bouncing-spheres", "--width", "120", "--spp", "4", "--shutter", "0:2"});
+}
+
+// Quads and a mesh file in the viewer: the window's pixels are rtvk render's bytes.
+TEST_F(XvfbTest, QuadsAndAMeshFileScreenshotAreTheBytesRtvkRenderWrites) {
+  expect_screenshot_is_the_render(env(), {"--scene", "quads", "--width", "120", "--spp", "4"});
+  const test::temp_dir dir;
+  const std::string obj = (dir.path() / "knot.obj").string();
+  std::ofstream(obj) << test::obj_text(test::torus_knot(2000));
+  expect_screenshot_is_the_render(env(), {"--scene", obj, "--width", "120", "--spp", "4"});
 }
 
 TEST_F(XvfbTest, CtrlCClosesTheWindowWithExit0AndNoScreenshot) {
