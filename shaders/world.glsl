@@ -77,16 +77,20 @@ void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_r
     record_quad_hit(quad_at(k), quads[k].material, r, t, rec);
   } else {
     gpu_triangle tri = triangles[k];
-    precise vec3 shading = unit_vector(cross3(tri.b - tri.a, tri.c - tri.a));
-    if (tri.normals != RTVK_FLAT) {  // the blend's weights found again, as on the CPU
-      precise float again;
-      precise vec3 weights;
-      if (hit_triangle(tri.a, tri.b, tri.c, r, sr, -3.402823466e+38, 3.402823466e+38, again,
-                       weights))
-        shading = blend_normals(vertex_normals[3u * tri.normals].xyz,
-                                vertex_normals[3u * tri.normals + 1u].xyz,
-                                vertex_normals[3u * tri.normals + 2u].xyz, weights);
+    // The blend's weights found again, as on the CPU (hittable_triangle.h's record_triangle).
+    bool blended = tri.normals != RTVK_FLAT;
+    precise float again;
+    precise vec3 weights = vec3(0.0);
+    if (blended)
+      blended = hit_triangle(tri.a, tri.b, tri.c, r, sr, -3.402823466e+38, 3.402823466e+38, again,
+                            weights);
+    vec3 n0 = vec3(0.0), n1 = vec3(0.0), n2 = vec3(0.0);  // read only where they exist
+    if (blended) {
+      n0 = vertex_normals[3u * tri.normals].xyz;
+      n1 = vertex_normals[3u * tri.normals + 1u].xyz;
+      n2 = vertex_normals[3u * tri.normals + 2u].xyz;
     }
+    precise vec3 shading = shading_normal(tri.a, tri.b, tri.c, blended, n0, n1, n2, weights);
     record_triangle_hit(tri.a, tri.b, tri.c, shading, tri.material, r, t, rec);
   }
 }

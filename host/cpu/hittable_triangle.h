@@ -14,14 +14,16 @@ namespace rtvk {
 inline void record_triangle(const std::array<point3, 3>& p, const std::array<vec3, 3>* normals,
                             uint material, const ray& r, const sheared_ray& s, double t,
                             hit_record& rec) {
-  vec3 shading = unit_vector(cross3(p[1] - p[0], p[2] - p[0]));
+  real3 weights(0);
   if (normals) {
     const double inf = std::numeric_limits<double>::infinity();
     double again;
-    real3 weights;
-    if (hit_triangle(p[0], p[1], p[2], r, s, -inf, inf, again, weights))
-      shading = blend_normals((*normals)[0], (*normals)[1], (*normals)[2], weights);
+    if (!hit_triangle(p[0], p[1], p[2], r, s, -inf, inf, again, weights)) normals = nullptr;
   }
+  const vec3 none(0);
+  const vec3 shading =
+      shading_normal(p[0], p[1], p[2], normals != nullptr, normals ? (*normals)[0] : none,
+                     normals ? (*normals)[1] : none, normals ? (*normals)[2] : none, weights);
   record_triangle_hit(p[0], p[1], p[2], shading, material, r, t, rec);
 }
 

@@ -91,6 +91,14 @@ inline precise real3 blend_normals(real3 n0, real3 n1, real3 n2, real3 weights) 
   return unit_vector(weights.x * n0 + weights.y * n1 + weights.z * n2);
 }
 
+// The normal a hit on the triangle (a, b, c) is shaded with: its vertex normals n0, n1, n2
+// blended by the hit's weights where `blended`, else the geometric normal (flat).
+inline precise real3 shading_normal(real3 a, real3 b, real3 c, bool blended, real3 n0, real3 n1,
+                                    real3 n2, real3 weights) {
+  if (blended) return blend_normals(n0, n1, n2, weights);
+  return unit_vector(cross3(b - a, c - a));
+}
+
 RTVK_KERNELS_END
 
 #endif  // RTVK_HIT_TRIANGLE_H
