@@ -303,8 +303,35 @@ int material_named(const scene_reader& r, const json& j, const std::string& p,
 
 // An object's placement: {"scale": s or [x, y, z], "rotate": {"axis": [x, y, z], "degrees": d},
 // "translate": [x, y, z]}, each optional, applied in that order.
+// A placement as a matrix: 12 numbers (3 rows of x, y, z, translation) or 16 (a 4x4 whose last
+// row must be 0 0 0 1), row-major, as exporters write a node's world matrix.
+transform read_matrix(const scene_reader& r, const json& m, const std::string& p) {
+  if (!m.is_array() || (m.size() != 12 && m.size() != 16))
+    r.fail(p, "expected 12 or 16 numbers (row-major), got " +
+                  (m.is_array() ? std::to_string(m.size()) + " values" : r.type_of(m)));
+  double v[16] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
+  for (std::size_t k = 0; k < m.size(); ++k) v[k] = r.number(m[k], p + "/" + std::to_string(k));
+  if (v[12] != 0 || v[13] != 0 || v[14] != 0 || v[15] != 1)
+    r.fail(p, "the last row must be 0 0 0 1 (an affine placement, no projection)");
+  transform t;
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) t.linear[col][row] = v[4 * row + col];
+    t.offset[row] = v[4 * row + 3];
+  }
+  return t;
+}
+
 transform read_transform(const scene_reader& r, const json& j, const std::string& p) {
-  r.only_fields(j, p, {"scale", "rotate", "translate"});
+  r.only_fields(j, p, {"scale", "rotate", "translate", "matrix"});
+  if (j.contains("matrix")) {
+    for (const char* other : {"scale", "rotate", "translate"})
+      if (j.contains(other))
+        r.fail(p + "/" + other, "a transform is a matrix or scale, rotate and translate, not both");
+    const transform t = read_matrix(r, j["matrix"], p + "/matrix");
+    if (const std::optional<std::string> why = degenerate(t))
+      r.fail(p, "the transform cannot place anything: " + *why);
+    return t;
+  }
   vec3 scale(1), axis(0, 1, 0), offset(0);
   double degrees = 0;
   if (j.contains("scale")) {

@@ -89,6 +89,23 @@ TEST(SceneFile, QuadsBoxesTrianglesAndTransformsRoundTrip) {
   EXPECT_EQ(dumped.find("transform"), std::string::npos) << "objects are written placed";
 }
 
+// A transform given as a row-major matrix places exactly as the same scale, rotation and
+// translation given by parts.
+TEST(SceneFile, AMatrixTransformIsTheSameAsItsParts) {
+  const std::string tri = R"({"materials":{"m":{"type":"normal"}},"triangles":[{"vertices":)"
+                          R"([[1,0,0],[0,2,0],[0,0,3]],"material":"m","transform":)";
+  const scene parts = parse_scene_json(
+      tri + R"({"scale":[2,1,1],"rotate":{"axis":[0,0,1],"degrees":90},"translate":[5,6,7]}}]})",
+      "parts.json");
+  // x' = -y + 5, y' = 2x + 6, z' = z + 7: rows (0 -1 0 5), (2 0 0 6), (0 0 1 7).
+  const scene matrix =
+      parse_scene_json(tri + R"({"matrix":[0,-1,0,5, 2,0,0,6, 0,0,1,7, 0,0,0,1]}}]})", "m.json");
+  ASSERT_EQ(parts.triangles.size(), 1u);
+  ASSERT_EQ(matrix.triangles.size(), 1u);
+  EXPECT_EQ(matrix.triangles[0].p, parts.triangles[0].p);
+  EXPECT_EQ(matrix.triangles[0].p[0], point3(5, 8, 7));
+}
+
 // Every kind of material, with the parameters it reads, written and read back the same.
 TEST(SceneFile, EveryMaterialKindRoundTrips) {
   const std::string text = R"({"materials":{
@@ -239,6 +256,16 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
            R"(,"spheres":[{"center":[0,0,0],"radius":1,"material":"m","transform":{"scale":[1,2,1]}}]})",
        "/spheres/0/transform: a sphere can be scaled only uniformly"},
       {"{" + m + R"(,"meshes":[{"file":"x.stl"}]})", "/meshes/0/file: \"x.stl\" is not .obj"},
+      {"{" + m +
+           R"(,"boxes":[{"a":[0,0,0],"b":[1,1,1],"material":"m","transform":{"matrix":[1,0,0,0,0,1,0,0,0,0,1]}}]})",
+       "/boxes/0/transform/matrix: expected 12 or 16 numbers (row-major), got 11 values"},
+      {"{" + m +
+           R"(,"boxes":[{"a":[0,0,0],"b":[1,1,1],"material":"m","transform":{"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,1,1]}}]})",
+       "/boxes/0/transform/matrix: the last row must be 0 0 0 1"},
+      {"{" + m +
+           R"(,"boxes":[{"a":[0,0,0],"b":[1,1,1],"material":"m","transform":{"matrix":[1,0,0,0,0,1,0,0,0,0,1,0],"scale":2}}]})",
+       "/boxes/0/transform/scale: a transform is a matrix or scale, rotate and translate, not "
+       "both"},
       {"{" + m + R"(,"triangles":[{"vertices":[[0,0,0],[1,1,1],[2,2,2]],"material":"m"}]})",
        "/triangles/0/vertices: the vertices are collinear: no area"},
       {"{" + m + R"(,"quads":[{"Q":[0,0,0],"u":[1e-30,0,0],"v":[0,1e-30,0],"material":"m"}]})",
