@@ -27,27 +27,19 @@ camera_ubo to_ubo(const camera& cam) {
 
 std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint32_t> order) {
   std::vector<gpu_sphere> out;
-  out.reserve(s.spheres.size());
-  const auto add = [&](std::uint32_t i) {
+  out.reserve(order.size());
+  for (const std::uint32_t i : order) {
     const sphere& sp = s.spheres[i];
     out.push_back({vec3(sp.center), float(sp.radius), uint(sp.material), i, 0, 0});
-  };
-  if (order.empty())
-    for (std::size_t i = 0; i < s.spheres.size(); ++i) add(std::uint32_t(i));
-  else
-    for (const std::uint32_t i : order) add(i);
+  }
   return out;
 }
 
 std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const std::uint32_t> order) {
   std::vector<vec4> out;
   if (!scene_moves(s)) return out;
-  out.reserve(s.spheres.size());
-  const auto add = [&](std::uint32_t i) { out.push_back(vec4(vec3(s.spheres[i].velocity()), 0)); };
-  if (order.empty())
-    for (std::size_t i = 0; i < s.spheres.size(); ++i) add(std::uint32_t(i));
-  else
-    for (const std::uint32_t i : order) add(i);
+  out.reserve(order.size());
+  for (const std::uint32_t i : order) out.push_back(vec4(vec3(s.spheres[i].velocity()), 0));
   return out;
 }
 

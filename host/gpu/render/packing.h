@@ -12,12 +12,12 @@ namespace rtvk::gpu {
 // The camera's precomputed vectors and lens, rounded to float, and the image size.
 camera_ubo to_ubo(const camera& cam);
 
-// The scene's spheres, rounded to float, each with its scene index: in the order `order` gives
-// (slot -> scene index, bvh::order()), or in scene order when it is empty.
-std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint32_t> order = {});
+// The scene's spheres, rounded to float, each with its scene index, in the order `order` gives
+// (position -> index into scene::spheres: leaf_layout::spheres, scene order without a BVH).
+std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint32_t> order);
 // Each sphere's velocity (xyz; center1 - center, formed in double), in the same order as
 // to_gpu_spheres; empty when no sphere moves.
-std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const std::uint32_t> order = {});
+std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const std::uint32_t> order);
 // The scene's quads with their planes (formed in double), rounded to float, each with its scene
 // index, in the order `order` gives (position -> index into scene::quads).
 std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const std::uint32_t> order);
