@@ -9,6 +9,8 @@
 //                                Linux's amdgpu/i915 job timeouts do: that submission and every
 //                                later one return VK_ERROR_DEVICE_LOST. Each submission is
 //                                waited for before the call returns, so it is timed alone.
+//   watchdog-us:US               the same in microseconds (a real GPU runs a small render's
+//                                submissions in well under a millisecond)
 //   workgroup-count:N            every device says its maxComputeWorkGroupCount is N in x, y and z,
 //                                and a dispatch of more workgroups than that in any dimension
 //                                loses the device at the next vkQueueSubmit (a real driver's
@@ -107,6 +109,8 @@ std::atomic<bool> graphics_on_compute_queue{false};
 std::mutex memory_mutex;
 std::unordered_map<std::uint64_t, std::uint32_t> memory_type_of;
 std::unordered_map<std::uint64_t, std::uint64_t> memory_of_buffer;
+std::uint32_t real_type_of_fake[3] = {};            // the device's own type behind each fake one
+void choose_real_types(VkPhysicalDevice physical);  // sets real_type_of_fake
 
 // The fault's count when RTVK_TEST_FAULT is "name:N", 0 when it is another fault or none.
 long fault_count(const char* name) {
@@ -197,6 +201,7 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical,
   }
   const VkResult r = create(physical, &real, allocator, device);
   if (r != VK_SUCCESS) return r;
+  if (fault_is("discrete-memory")) choose_real_types(physical);
   next_queue_submit =
       reinterpret_cast<PFN_vkQueueSubmit>(next_device_proc(*device, "vkQueueSubmit"));
   next_queue_wait_idle =
@@ -346,8 +351,31 @@ VKAPI_ATTR void VKAPI_CALL queue_families(VkPhysicalDevice physical, uint32_t* c
   for (uint32_t k = 0; k < *count; ++k) families[k].queueFlags &= ~VK_QUEUE_GRAPHICS_BIT;
 }
 
-// discrete-memory: a discrete GPU's memory types in place of the device's own (lavapipe's one
-// type has every property, so allocations of any fake type are made from the real type 0).
+// discrete-memory: the device's own type that allocations of each fake type are made from, the
+// first with the fake type's properties (lavapipe's one type has every property; a real discrete
+// GPU has a device-local type and host types of its own), preferring one without the properties
+// the fake type lacks.
+void choose_real_types(VkPhysicalDevice physical) {
+  VkPhysicalDeviceMemoryProperties m{};
+  next_memory(physical, &m);
+  const VkMemoryPropertyFlags local = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+                              host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                     VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                              cached = VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
+  const auto pick = [&](VkMemoryPropertyFlags want, VkMemoryPropertyFlags rather_not) {
+    for (const bool strict : {true, false})
+      for (uint32_t t = 0; t < m.memoryTypeCount; ++t) {
+        const VkMemoryPropertyFlags f = m.memoryTypes[t].propertyFlags;
+        if ((f & want) == want && (!strict || (f & rather_not) == 0)) return t;
+      }
+    return uint32_t(0);
+  };
+  real_type_of_fake[0] = pick(local, host);
+  real_type_of_fake[1] = pick(host, local);
+  real_type_of_fake[2] = pick(host | cached, local);
+}
+
+// discrete-memory: a discrete GPU's memory types in place of the device's own.
 void discrete_memory(VkPhysicalDeviceMemoryProperties& m) {
   const VkDeviceSize size = m.memoryHeaps[0].size;
   const VkMemoryPropertyFlags host =
@@ -434,7 +462,7 @@ VKAPI_ATTR VkResult VKAPI_CALL allocate_memory(VkDevice device, const VkMemoryAl
                                                VkDeviceMemory* memory) {
   if (!fault_is("discrete-memory")) return next_allocate(device, info, allocator, memory);
   VkMemoryAllocateInfo real = *info;
-  real.memoryTypeIndex = 0;
+  real.memoryTypeIndex = real_type_of_fake[std::min(info->memoryTypeIndex, 2u)];
   const VkResult r = next_allocate(device, &real, allocator, memory);
   if (r != VK_SUCCESS) return r;
   const std::lock_guard<std::mutex> lock(memory_mutex);
@@ -623,8 +651,9 @@ VKAPI_ATTR VkResult VKAPI_CALL queue_submit(VkQueue queue, uint32_t count,
   const long after = fault_count("lose-device-after-present");
   if ((at > 0 && ++submits >= at) || (after > 0 && presents >= after)) return VK_ERROR_DEVICE_LOST;
   if (dispatched_past_limit || shader_reads_host_memory) return VK_ERROR_DEVICE_LOST;
-  const long watchdog_ms = fault_count("watchdog");
-  if (watchdog_ms <= 0) return next_queue_submit(queue, count, submits_info, fence);
+  const long watchdog_us =
+      fault_count("watchdog") > 0 ? fault_count("watchdog") * 1000 : fault_count("watchdog-us");
+  if (watchdog_us <= 0) return next_queue_submit(queue, count, submits_info, fence);
   if (watchdog_fired) return VK_ERROR_DEVICE_LOST;
   // Whatever ran before this submission is done (each is waited for here), so the time from the
   // call to an idle queue is this submission's alone.
@@ -633,14 +662,14 @@ VKAPI_ATTR VkResult VKAPI_CALL queue_submit(VkQueue queue, uint32_t count,
   if (r != VK_SUCCESS) return r;
   const VkResult idle = next_queue_wait_idle(queue);
   if (idle != VK_SUCCESS) return idle;
-  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+  const auto us = std::chrono::duration_cast<std::chrono::microseconds>(
                       std::chrono::steady_clock::now() - start)
                       .count();
-  if (ms <= watchdog_ms) return VK_SUCCESS;
+  if (us <= watchdog_us) return VK_SUCCESS;
   watchdog_fired = true;
   std::fprintf(stderr,
-               "rtvk test layer: a submission kept the queue busy for %ld ms (watchdog: %ld ms)\n",
-               long(ms), watchdog_ms);
+               "rtvk test layer: a submission kept the queue busy for %ld us (watchdog: %ld us)\n",
+               long(us), watchdog_us);
   return VK_ERROR_DEVICE_LOST;
 }
 
