@@ -15,6 +15,7 @@
 
 #include "atomic_file.h"
 #include "errors.h"
+#include "format.h"
 #include "image_size.h"
 #include "input_file.h"
 
@@ -50,6 +51,24 @@ void check_output_path(const fs::path& path, const std::string& flag, bool float
                       path.string() + "': " + std::strerror(err));
 }
 
+namespace {
+
+std::uint64_t png_row_bytes(int width, int height) {
+  return (3 * std::uint64_t(width) + 1) * std::uint64_t(height);
+}
+
+}  // namespace
+
+void check_output_size(const fs::path& path, int width, int height, const std::string& flag) {
+  if (format_for_path(path, flag) != file_format::png) return;
+  const std::uint64_t rows = png_row_bytes(width, height);
+  if (rows > max_png_row_bytes)
+    throw usage_error(flag + ": '" + path.string() + "': a " + std::to_string(width) + "x" +
+                      std::to_string(height) + " PNG has " + format_bytes(rows) +
+                      " of rows to compress, more than the PNG encoder handles (" +
+                      format_bytes(max_png_row_bytes) + "); write .exr or .ppm");
+}
+
 std::string encode_ppm(const image_rgb8& img, ppm_encoding enc) {
   std::ostringstream out;
   if (enc == ppm_encoding::binary_p6) {
@@ -65,6 +84,9 @@ std::string encode_ppm(const image_rgb8& img, ppm_encoding enc) {
 }
 
 std::string encode_png(const image_rgb8& img) {
+  if (png_row_bytes(img.width, img.height) > max_png_row_bytes)
+    throw std::runtime_error("PNG encoding: a " + std::to_string(img.width) + "x" +
+                             std::to_string(img.height) + " image is past the encoder's size");
   std::string out;
   auto append = [](void* ctx, void* data, int size) {
     static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), std::size_t(size));

@@ -20,6 +20,17 @@ file_format format_for_path(const std::filesystem::path& path, const std::string
 void check_output_path(const std::filesystem::path& path, const std::string& flag,
                        bool float_ok = false);
 
+// The largest PNG rtvk writes, in bytes of filtered rows ((3 x width + 1) x height): libstb's
+// PNG encoder keeps those rows and its deflate stream in buffers sized with int and grows the
+// stream by doubling, so past about 1 GiB it overflows (a 65536x65536 PNG crashed rtvk with
+// SIGSEGV). 900 MiB is 17,700 pixels square; larger images go to .exr or .ppm.
+inline constexpr std::uint64_t max_png_row_bytes = std::uint64_t(900) << 20;
+
+// Checks, before any work, that an image of width x height can be written to `path` in its
+// format. Throws usage_error naming the flag, the size and the limit.
+void check_output_size(const std::filesystem::path& path, int width, int height,
+                       const std::string& flag);
+
 std::string encode_ppm(const image_rgb8& img, ppm_encoding enc);
 std::string encode_png(const image_rgb8& img);
 

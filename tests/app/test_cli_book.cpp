@@ -62,8 +62,9 @@ TEST(CliBook, DumpedSceneRendersTheIdenticalImage) {
   ASSERT_EQ(run_rtvk(builtin).status, 0);
   ASSERT_EQ(run_rtvk(file).status, 0);
   EXPECT_EQ(test::slurp(a), test::slurp(b));
-  EXPECT_EQ(run_rtvk({"scene", "list"}).out,
-            "seed\nmaterials\nbook-final\nbouncing-spheres\nquads\nspheres:N (N from 1 to 4000000)\n");
+  EXPECT_EQ(
+      run_rtvk({"scene", "list"}).out,
+      "seed\nmaterials\nbook-final\nbouncing-spheres\nquads\nspheres:N (N from 1 to 4000000)\n");
 }
 
 // A shutter open past time 1 (the spheres go on rising): bench bounds them over it on both
@@ -221,14 +222,52 @@ TEST(CliBench, SpheresSceneNamesAreChecked) {
 namespace rtvk {
 namespace {
 
+// Runs rtvk with args under `ulimit -v` of `kib` KiB (the shell sets it, then becomes rtvk).
+test::process_result run_rtvk_under_ulimit(long kib, std::vector<std::string> args) {
+  args.insert(args.begin(),
+              {"-c", "ulimit -v " + std::to_string(kib) + " && exec \"$0\" \"$@\"", RTVK_EXE});
+  return test::running_rtvk(args, {}, "", "/bin/sh").wait();
+}
+
 TEST(CliBook, ImageTooLargeForMemoryIsRefusedUpFront) {
   test::temp_dir dir;
-  const auto out = (dir.path() / "huge.png").string();
-  // 65536 x 65536 needs over 100 GiB: refused before any work, naming what it needs.
-  const auto r = run_rtvk({"render", "--width", "65536", "--aspect", "1", "-o", out});
+  const auto out = (dir.path() / "huge.ppm").string();
+  // 65536 x 65536 needs over 150 GiB: refused before any work, naming what it needs. An H200
+  // machine had that much available, and this test then rendered for two minutes: the process's
+  // address space is limited to 4 GiB here, so the answer is the same on every machine.
+  const auto r =
+      run_rtvk_under_ulimit(4 << 20, {"render", "--width", "65536", "--aspect", "1", "-o", out});
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("65536x65536 needs about"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("GiB"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// A Slurm job's --mem, a pod's memory limit and `ulimit -v` bound what rtvk may use, not the
+// machine's free memory: a render that fits the machine but not the limit is refused with exit
+// 2 naming the limit (before, it was started and then killed, or failed an allocation).
+TEST(CliBook, TheRenderFitsUnderTheProcesssMemoryLimit) {
+  test::temp_dir dir;
+  const auto out = (dir.path() / "big.ppm").string();
+  const auto r =
+      run_rtvk_under_ulimit(1 << 20, {"render", "--width", "8192", "--aspect", "1", "-o", out});
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("8192x8192 needs about"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(ulimit -v)"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// libstb's PNG encoder overflows its int-sized buffers past about 1 GiB of rows: a 65536x65536
+// PNG crashed rtvk with SIGSEGV after rendering for two minutes. Refused up front now, on every
+// machine (the PNG check comes before the memory check), naming the flag and the way out.
+TEST(CliBook, APngLargerThanTheEncoderTakesIsRefusedBeforeRendering) {
+  test::temp_dir dir;
+  const auto out = (dir.path() / "huge.png").string();
+  const auto r = run_rtvk({"render", "--width", "65536", "--aspect", "2", "-o", out});
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--output: '" + out + "': a 65536x32768 PNG has 6.00"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("write .exr or .ppm"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

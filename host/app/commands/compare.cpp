@@ -20,6 +20,7 @@ int run_compare(const compare_options& o) {
   if (!o.diff.empty()) check_output_path(o.diff, "--diff");
   const image_rgb8 a = read_image(o.a);
   const image_rgb8 b = read_image(o.b);
+  if (!o.diff.empty()) check_output_size(o.diff, a.width, a.height, "--diff");
   if (a.width != b.width || a.height != b.height) {
     std::printf("different sizes: %dx%d vs %dx%d\n", a.width, a.height, b.width, b.height);
     return 1;

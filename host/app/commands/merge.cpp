@@ -26,7 +26,10 @@ int run_merge(const merge_options& o) {
   render_merger merger(o.allow_mixed_versions);
   for (std::size_t k = 0; k < o.parts.size(); ++k) {
     const partial_image piece = read_partial_exr(o.parts[k]);  // one piece in memory at a time
-    if (k == 0) check_render_memory(piece.image_width, piece.image_height, 3);
+    if (k == 0) {
+      check_output_size(o.output, piece.image_width, piece.image_height, "--output");
+      check_render_memory(piece.image_width, piece.image_height, 3);
+    }
     merger.add(o.parts[k], piece);
   }
   const merged_render m = merger.finish();

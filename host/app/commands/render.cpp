@@ -252,6 +252,7 @@ int run_render(render_options o) {
   check_scene(s);
   render_window win;
   const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags.overrides(), win);
+  for (const render_job& j : jobs) check_output_size(j.output, win.width, win.height, "--output");
   const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win);
   check_render_memory(win.width, win.height,
                       int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));

@@ -11,16 +11,16 @@ namespace rtvk {
 
 std::uint64_t render_memory_bytes(int width, int height, int renders) {
   const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
-  return pixels * (24 + 3 + 4) * std::uint64_t(renders) + gpu::default_band_bytes;
+  return pixels * (24 + 3 + 12) * std::uint64_t(renders) + gpu::default_band_bytes;
 }
 
 void check_render_memory(int width, int height, int renders) {
   const std::uint64_t need = render_memory_bytes(width, height, renders);
-  const std::uint64_t have = available_memory_bytes();
-  if (have == 0 || need <= have) return;
+  const memory_room room = available_memory();
+  if (room.bytes == 0 || need <= room.bytes) return;
   throw usage_error(std::to_string(width) + "x" + std::to_string(height) + " needs about " +
-                    format_bytes(need) + " of memory; " + format_bytes(have) +
-                    " is available (lower --width or use a smaller --aspect)");
+                    format_bytes(need) + " of memory; " + format_bytes(room.bytes) +
+                    " is available (" + room.limit + "): lower --width or use a smaller --aspect");
 }
 
 }  // namespace rtvk

@@ -4,8 +4,8 @@
 namespace rtvk {
 
 // Host memory a render of width x height needs: the double framebuffer (24 bytes a pixel), the
-// 8-bit image (3) and its encoded copy (up to 4 for P3's text), times `renders`, plus the GPU's
-// readback band.
+// 8-bit image (3) and its encoded copy (up to 12 for P3's text, "255 255 255\n"; a PNG's
+// filtered rows and deflate stream take about 6), times `renders`, plus the GPU's readback band.
 std::uint64_t render_memory_bytes(int width, int height, int renders);
 
 // Refuses, before any work, a render that cannot fit: throws usage_error naming the size and the
