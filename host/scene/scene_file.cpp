@@ -1,5 +1,7 @@
 #include "scene_file.h"
 
+#include "object_group.h"
+
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -358,32 +360,33 @@ transform optional_transform(const scene_reader& r, const json& j, const std::st
                                  : transform{};
 }
 
-// The array field `key` of the root (empty when absent), each element read by `read`.
+// The array field `key` of `root` (empty when absent), each element read by `read`; `at` is
+// where `root` is in the file (a JSON pointer; "" for the file's root).
 template <typename Read>
-void read_array(const scene_reader& r, const json& root, const std::string& key, Read read) {
+void read_array(const scene_reader& r, const json& root, const std::string& at,
+                const std::string& key, Read read) {
   if (!root.contains(key)) return;
   const json& items = root[key];
-  if (!items.is_array()) r.fail("/" + key, "expected an array, got " + r.type_of(items));
+  if (!items.is_array()) r.fail(at + "/" + key, "expected an array, got " + r.type_of(items));
   for (std::size_t i = 0; i < items.size(); ++i)
-    read(items[i], "/" + key + "/" + std::to_string(i));
+    read(items[i], at + "/" + key + "/" + std::to_string(i));
 }
 
 // Quads, boxes and triangles, each placed by its optional transform.
-void read_flat_objects(const scene_reader& r, const json& root,
+void read_flat_objects(const scene_reader& r, const json& root, const std::string& at,
                        const std::map<std::string, int>& material_index, scene& s) {
-  read_array(r, root, "quads", [&](const json& j, const std::string& p) {
+  read_array(r, root, at, "quads", [&](const json& j, const std::string& p) {
     r.only_fields(j, p, {"Q", "u", "v", "material", "transform"});
-    const transform t = optional_transform(r, j, p);
     quad q;
-    q.Q = t.apply_point(r.vector3(r.required(j, p, "Q"), p + "/Q"));
-    q.u = t.apply_vector(r.vector3(r.required(j, p, "u"), p + "/u"));
-    q.v = t.apply_vector(r.vector3(r.required(j, p, "v"), p + "/v"));
-    if (t.determinant() < 0) std::swap(q.u, q.v);  // mirrored: the front stays where it was
+    q.Q = r.vector3(r.required(j, p, "Q"), p + "/Q");
+    q.u = r.vector3(r.required(j, p, "u"), p + "/u");
+    q.v = r.vector3(r.required(j, p, "v"), p + "/v");
+    q = placed(q, optional_transform(r, j, p));
     if (!spans_area(q.u, q.v)) r.fail(p, "u and v are parallel (or zero): the quad has no area");
     q.material = material_named(r, j, p, material_index);
     s.quads.push_back(q);
   });
-  read_array(r, root, "boxes", [&](const json& j, const std::string& p) {
+  read_array(r, root, at, "boxes", [&](const json& j, const std::string& p) {
     r.only_fields(j, p, {"a", "b", "material", "transform"});
     const point3 a = r.vector3(r.required(j, p, "a"), p + "/a");
     const point3 b = r.vector3(r.required(j, p, "b"), p + "/b");
@@ -392,7 +395,7 @@ void read_flat_objects(const scene_reader& r, const json& root,
         r.fail(p + "/b/" + std::to_string(k), "the box is flat: a and b share this coordinate");
     add_box(s, a, b, material_named(r, j, p, material_index), optional_transform(r, j, p));
   });
-  read_array(r, root, "triangles", [&](const json& j, const std::string& p) {
+  read_array(r, root, at, "triangles", [&](const json& j, const std::string& p) {
     r.only_fields(j, p, {"vertices", "normals", "material", "transform"});
     const transform t = optional_transform(r, j, p);
     const auto three = [&](const std::string& key) {
@@ -404,25 +407,20 @@ void read_flat_objects(const scene_reader& r, const json& root,
                                  r.vector3(v[2], p + "/" + key + "/2")};
     };
     triangle tri;
-    const std::array<vec3, 3> v = three("vertices");
-    for (int k = 0; k < 3; ++k) tri.p[std::size_t(k)] = t.apply_point(v[std::size_t(k)]);
+    tri.p = three("vertices");
+    tri = placed(tri, t);
     tri.material = material_named(r, j, p, material_index);
     if (!has_area(tri.p)) r.fail(p + "/vertices", "the vertices are collinear: no area");
-    const bool mirrored = t.determinant() < 0;  // then the winding is put back
-    if (mirrored) std::swap(tri.p[1], tri.p[2]);
     if (j.contains("normals")) {
-      const std::array<vec3, 3> n = three("normals");
       triangle_shading sh;
-      for (std::size_t k = 0; k < 3; ++k) {
-        if (!(glm::length(n[k]) > 0) || !std::isfinite(glm::length(n[k])))
+      sh.normal = three("normals");
+      for (std::size_t k = 0; k < 3; ++k)
+        if (!(glm::length(sh.normal[k]) > 0) || !std::isfinite(glm::length(sh.normal[k])))
           r.fail(p + "/normals/" + std::to_string(k), "expected a nonzero normal");
-        // As written when nothing places the triangle (so a dump reads back unchanged); the
-        // renderers normalize them.
-        sh.normal[k] = t.is_identity() ? n[k] : t.apply_normal(n[k]);
-      }
-      if (mirrored) std::swap(sh.normal[1], sh.normal[2]);
+      // As written when nothing places the triangle (so a dump reads back unchanged); the
+      // renderers normalize them.
       tri.shading = std::int32_t(s.shading.size());
-      s.shading.push_back(sh);
+      s.shading.push_back(placed(sh, t));
     }
     s.triangles.push_back(tri);
   });
@@ -430,9 +428,10 @@ void read_flat_objects(const scene_reader& r, const json& root,
 
 // Mesh files, each named relative to the scene file (`base`), with a material of the scene's
 // (or the file's own) and a placement.
-void read_meshes(const scene_reader& r, const json& root, const std::filesystem::path& base,
+void read_meshes(const scene_reader& r, const json& root, const std::string& at,
+                 const std::filesystem::path& base,
                  const std::map<std::string, int>& material_index, scene& s) {
-  read_array(r, root, "meshes", [&](const json& j, const std::string& p) {
+  read_array(r, root, at, "meshes", [&](const json& j, const std::string& p) {
     r.only_fields(j, p, {"file", "material", "transform"});
     const json& f = r.required(j, p, "file");
     if (!f.is_string() || f.get<std::string>().empty())
@@ -461,33 +460,79 @@ sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
   if (j.contains("transform")) {
     // A sphere stays a sphere under a rotation and one scale; a non-uniform scale would make an
     // ellipsoid, which needs object-space instances (docs/geometry.md).
-    const transform t = read_transform(r, j["transform"], p + "/transform");
-    const std::optional<double> scale = t.uniform_scale();
-    if (!scale)
+    const std::optional<sphere> moved =
+        placed(sp, read_transform(r, j["transform"], p + "/transform"));
+    if (!moved)
       r.fail(p + "/transform",
              "a sphere can be scaled only uniformly (an ellipsoid is not supported yet)");
-    sp.center = t.apply_point(sp.center);
-    if (sp.center1) sp.center1 = t.apply_point(*sp.center1);
-    sp.radius *= *scale;
+    sp = *moved;
   }
   sp.material = material_named(r, j, p, material_index);
   return sp;
 }
 
-std::vector<sphere> read_spheres(const scene_reader& r, const json& root,
+std::vector<sphere> read_spheres(const scene_reader& r, const json& root, const std::string& at,
                                  const std::map<std::string, int>& material_index) {
   std::vector<sphere> out;
-  read_array(r, root, "spheres", [&](const json& j, const std::string& p) {
+  read_array(r, root, at, "spheres", [&](const json& j, const std::string& p) {
     out.push_back(read_sphere(r, j, p, material_index));
   });
   return out;
+}
+
+// The groups instances place, by name: each read as the objects of a scene (spheres, quads,
+// boxes, triangles, meshes) with the scene's materials; a mesh file's own materials are added
+// to the scene's.
+std::map<std::string, object_group> read_groups(const scene_reader& r, const json& groups,
+                                                const std::filesystem::path& base,
+                                                const std::map<std::string, int>& material_index,
+                                                scene& s) {
+  if (!groups.is_object())
+    r.fail("/groups", "expected an object of named groups, got " + r.type_of(groups));
+  std::map<std::string, object_group> out;
+  for (const auto& [name, j] : groups.items()) {
+    const std::string p = "/groups/" + escape_pointer(name);
+    if (!j.is_object()) r.fail(p, "expected an object, got " + r.type_of(j));
+    r.only_fields(j, p, {"spheres", "quads", "boxes", "triangles", "meshes"});
+    scene g;
+    g.materials = std::move(s.materials);
+    g.spheres = read_spheres(r, j, p, material_index);
+    read_flat_objects(r, j, p, material_index, g);
+    read_meshes(r, j, p, base, material_index, g);
+    s.materials = std::move(g.materials);
+    object_group& group = out[name];
+    group = {std::move(g.spheres), std::move(g.quads), std::move(g.triangles),
+             std::move(g.shading)};
+    if (empty(group)) r.fail(p, "the group has no object (nothing an instance could place)");
+  }
+  return out;
+}
+
+// Each instance: its group's objects placed by its transform.
+void read_instances(const scene_reader& r, const json& root,
+                    const std::map<std::string, object_group>& groups, scene& s) {
+  read_array(r, root, "", "instances", [&](const json& j, const std::string& p) {
+    r.only_fields(j, p, {"group", "transform"});
+    const json& name = r.required(j, p, "group");
+    const auto found = name.is_string() ? groups.find(name.get<std::string>()) : groups.end();
+    if (found == groups.end()) {
+      std::string known;
+      for (const auto& [n, g] : groups) known += (known.empty() ? "" : ", ") + n;
+      r.fail(p + "/group",
+             "expected the name of a group (" +
+                 (known.empty() ? std::string("the scene has none") : known) + "), got " +
+                 (name.is_string() ? "\"" + name.get<std::string>() + "\"" : r.type_of(name)));
+    }
+    if (const auto why = place_group(s, found->second, optional_transform(r, j, p)))
+      r.fail(p + "/transform", *why);
+  });
 }
 
 scene read_scene(const scene_reader& r, const json& root, const std::string& name,
                  const std::filesystem::path& base) {
   r.only_fields(root, "",
                 {"camera", "cameras", "render", "sky", "background", "materials", "spheres",
-                 "quads", "boxes", "triangles", "meshes"});
+                 "quads", "boxes", "triangles", "meshes", "groups", "instances"});
   scene s;
   s.name = name;
   s.cameras = read_cameras(r, root);
@@ -499,13 +544,20 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
   }
   std::map<std::string, int> material_index;
   if (root.contains("materials")) material_index = read_materials(r, root["materials"], s);
-  s.spheres = read_spheres(r, root, material_index);
-  read_flat_objects(r, root, material_index, s);
-  read_meshes(r, root, base, material_index, s);
-  if (!root.contains("spheres") && object_count(s) == 0 && !root.contains("meshes"))
+  s.spheres = read_spheres(r, root, "", material_index);
+  read_flat_objects(r, root, "", material_index, s);
+  read_meshes(r, root, "", base, material_index, s);
+  if (root.contains("groups") || root.contains("instances")) {
+    const auto groups = root.contains("groups")
+                            ? read_groups(r, root["groups"], base, material_index, s)
+                            : std::map<std::string, object_group>{};
+    read_instances(r, root, groups, s);
+  }
+  if (!root.contains("spheres") && object_count(s) == 0 && !root.contains("meshes") &&
+      !root.contains("instances"))
     r.fail("",
-           "missing field \"spheres\" (a scene needs spheres, quads, boxes, triangles or "
-           "meshes)");
+           "missing field \"spheres\" (a scene needs spheres, quads, boxes, triangles, meshes "
+           "or instances)");
   try {
     camera(camera_pose{}, s.render.aspect, s.render.width);  // the image size, alone
   } catch (const std::invalid_argument& e) {

@@ -89,6 +89,62 @@ TEST(SceneFile, QuadsBoxesTrianglesAndTransformsRoundTrip) {
   EXPECT_EQ(dumped.find("transform"), std::string::npos) << "objects are written placed";
 }
 
+// Instances: a group defined once, placed twice. Each placement appends the group's objects to
+// their kinds, placed by the instance's transform: the values below are worked by hand (a
+// quarter turn about z takes x to y and y to -x; a mirror in x swaps a quad's edges and a
+// triangle's last two vertices, with their normals, so the front stays where it was).
+TEST(SceneFile, InstancesPlaceTheirGroupsObjects) {
+  const std::string text =
+      R"({"materials":{"m":{"type":"normal"},"n":{"type":"normal"}},)"
+      R"("groups":{"g":{"spheres":[{"center":[1,0,0],"radius":0.5,"material":"m"}],)"
+      R"("quads":[{"Q":[0,0,0],"u":[1,0,0],"v":[0,1,0],"material":"n"}],)"
+      R"("triangles":[{"vertices":[[0,0,0],[1,0,0],[0,1,0]],"normals":[[0,0,1],[1,0,0],[0,1,0]],"material":"m"}]}},)"
+      R"("instances":[{"group":"g","transform":{"scale":2,"rotate":{"axis":[0,0,1],"degrees":90},"translate":[0,0,5]}},)"
+      R"({"group":"g","transform":{"scale":[-1,1,1]}}]})";
+  const scene s = parse_scene_json(text, "instances.json");
+  check_scene(s);
+  ASSERT_EQ(s.spheres.size(), 2u);
+  EXPECT_EQ(s.spheres[0].center, point3(0, 2, 5));
+  EXPECT_EQ(s.spheres[0].radius, 1);
+  EXPECT_EQ(s.spheres[1].center, point3(-1, 0, 0));
+  EXPECT_EQ(s.spheres[1].radius, 0.5);
+  ASSERT_EQ(s.quads.size(), 2u);
+  EXPECT_EQ(s.quads[0].Q, point3(0, 0, 5));
+  EXPECT_EQ(s.quads[0].u, vec3(0, 2, 0));
+  EXPECT_EQ(s.quads[0].v, vec3(-2, 0, 0));
+  EXPECT_EQ(s.quads[0].material, 1);
+  EXPECT_EQ(s.quads[1].u, vec3(0, 1, 0));  // mirrored: u and v swapped
+  EXPECT_EQ(s.quads[1].v, vec3(-1, 0, 0));
+  ASSERT_EQ(s.triangles.size(), 2u);
+  EXPECT_EQ(s.triangles[0].p[1], point3(0, 2, 5));
+  EXPECT_EQ(s.triangles[0].p[2], point3(-2, 0, 5));
+  EXPECT_EQ(s.triangles[1].p[1], point3(0, 1, 0));  // mirrored: the last two swapped
+  EXPECT_EQ(s.triangles[1].p[2], point3(-1, 0, 0));
+  ASSERT_EQ(s.shading.size(), 2u);
+  ASSERT_EQ(s.triangles[1].shading, 1);
+  const auto near = [](const vec3& a, const vec3& b) { return glm::length(a - b) < 1e-15; };
+  EXPECT_TRUE(near(s.shading[0].normal[1], vec3(0, 1, 0)));   // (1,0,0) turned a quarter
+  EXPECT_TRUE(near(s.shading[1].normal[1], vec3(0, 1, 0)));   // the second vertex's, moved
+  EXPECT_TRUE(near(s.shading[1].normal[2], vec3(-1, 0, 0)));  // (1,0,0) mirrored, moved
+  // Written placed, as meshes are, and read back the same.
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "again.json")), dumped);
+}
+
+// A group placed with the identity is its objects as if written at the top level.
+TEST(SceneFile, AnInstanceWithoutATransformIsItsGroup) {
+  const std::string objects =
+      R"("spheres":[{"center":[1,2,3],"radius":0.5,"center1":[1,3,3],"material":"m"}],)"
+      R"("boxes":[{"a":[0,0,0],"b":[1,2,3],"material":"m"}],)"
+      R"("triangles":[{"vertices":[[0,0,0],[1,0,0],[0,1,0]],"normals":[[0,0,1],[0,0.5,1],[0.5,0,1]],"material":"m"}])";
+  const std::string m = R"({"materials":{"m":{"type":"lambertian","albedo":[0.5,0.5,0.5]}},)";
+  const scene direct = parse_scene_json(m + objects + "}", "direct.json");
+  const scene placed = parse_scene_json(
+      m + R"("groups":{"thing":{)" + objects + R"(}},"instances":[{"group":"thing"}]})",
+      "placed.json");
+  EXPECT_EQ(dump_scene_json(placed), dump_scene_json(direct));
+}
+
 // A transform given as a row-major matrix places exactly as the same scale, rotation and
 // translation given by parts.
 TEST(SceneFile, AMatrixTransformIsTheSameAsItsParts) {
@@ -237,6 +293,32 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
       {"{" + m + R"(,"quads":[{"Q":[0,0,0],"u":[1,0,0],"material":"m"}]})",
        "/quads/0: missing field \"v\""},
       {"{" + m + R"(,"quads":{}})", "/quads: expected an array, got an object"},
+      {"{" + m + R"(,"instances":[{"group":"tree"}]})",
+       "/instances/0/group: expected the name of a group (the scene has none), got \"tree\""},
+      {"{" + m +
+           R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"m"}]}},"instances":[{"group":"tree"}]})",
+       "/instances/0/group: expected the name of a group (g), got \"tree\""},
+      {"{" + m +
+           R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"m"}]}},"instances":[{"group":3}]})",
+       "/instances/0/group: expected the name of a group (g), got a number"},
+      {"{" + m +
+           R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"m"}]}},"instances":[{}]})",
+       "/instances/0: missing field \"group\""},
+      {"{" + m +
+           R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"m"}]}},"instances":[{"group":"g","transform":{"scale":[1,2,1]}}]})",
+       "/instances/0/transform: the group has a sphere, which can be scaled only uniformly"},
+      {"{" + m +
+           R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"m"}]}},"instances":[{"group":"g","transform":{"scale":[1,0,1]}}]})",
+       "/instances/0/transform: the transform cannot place anything: it flattens space"},
+      {"{" + m + R"(,"groups":{"g":{}},"instances":[{"group":"g"}]})",
+       "/groups/g: the group has no object (nothing an instance could place)"},
+      {"{" + m + R"(,"groups":{"g":{"instances":[]}}})", "/groups/g/instances: unknown field"},
+      {"{" + m + R"(,"groups":[]})", "/groups: expected an object of named groups, got an array"},
+      {"{" + m +
+           R"(,"groups":{"a/b":{"quads":[{"Q":[0,0,0],"u":[1,0,0],"v":[2,0,0],"material":"m"}]}}})",
+       "/groups/a~1b/quads/0: u and v are parallel (or zero): the quad has no area"},
+      {"{" + m + R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"x"}]}}})",
+       "/groups/g/spheres/0/material: "},
       {"{" + m + R"(,"boxes":[{"a":[0,0,0],"b":[1,1,0],"material":"m"}]})",
        "/boxes/0/b/2: the box is flat: a and b share this coordinate"},
       {"{" + m + R"(,"triangles":[{"vertices":[[0,0,0],[1,0,0]],"material":"m"}]})",

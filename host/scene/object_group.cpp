@@ -1,0 +1,72 @@
+#include "object_group.h"
+
+#include <utility>
+
+#include "scene.h"
+
+namespace rtvk {
+
+std::optional<sphere> placed(const sphere& sp, const transform& t) {
+  if (t.is_identity()) return sp;
+  const std::optional<double> scale = t.uniform_scale();
+  if (!scale) return std::nullopt;
+  sphere out = sp;
+  out.center = t.apply_point(sp.center);
+  if (sp.center1) out.center1 = t.apply_point(*sp.center1);
+  out.radius = sp.radius * *scale;
+  return out;
+}
+
+quad placed(const quad& q, const transform& t) {
+  quad out = q;
+  out.Q = t.apply_point(q.Q);
+  out.u = t.apply_vector(q.u);
+  out.v = t.apply_vector(q.v);
+  if (t.determinant() < 0) std::swap(out.u, out.v);  // mirrored: the front stays where it was
+  return out;
+}
+
+triangle placed(const triangle& tri, const transform& t) {
+  triangle out = tri;
+  for (std::size_t k = 0; k < 3; ++k) out.p[k] = t.apply_point(tri.p[k]);
+  if (t.determinant() < 0) std::swap(out.p[1], out.p[2]);  // the winding put back
+  return out;
+}
+
+triangle_shading placed(const triangle_shading& sh, const transform& t) {
+  triangle_shading out = sh;
+  if (sh.has_normals() && !t.is_identity())
+    for (std::size_t k = 0; k < 3; ++k) out.normal[k] = t.apply_normal(sh.normal[k]);
+  if (t.determinant() < 0) {  // as the triangle's vertices
+    std::swap(out.normal[1], out.normal[2]);
+    std::swap(out.uv[1], out.uv[2]);
+  }
+  return out;
+}
+
+std::optional<std::string> place_group(scene& s, const object_group& g, const transform& t) {
+  std::vector<sphere> spheres;
+  for (const sphere& sp : g.spheres) {
+    const std::optional<sphere> p = placed(sp, t);
+    if (!p)
+      return "the group has a sphere, which can be scaled only uniformly (an ellipsoid is not "
+             "supported yet)";
+    spheres.push_back(*p);
+  }
+  s.spheres.insert(s.spheres.end(), spheres.begin(), spheres.end());
+  for (const quad& q : g.quads) s.quads.push_back(placed(q, t));
+  for (triangle tri : g.triangles) {
+    if (tri.shading >= 0) {
+      const triangle_shading sh = placed(g.shading[std::size_t(tri.shading)], t);
+      tri.shading = std::int32_t(s.shading.size());
+      s.shading.push_back(sh);
+    }
+    const std::int32_t shading = tri.shading;
+    tri = placed(tri, t);
+    tri.shading = shading;
+    s.triangles.push_back(tri);
+  }
+  return std::nullopt;
+}
+
+}  // namespace rtvk
