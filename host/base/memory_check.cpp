@@ -23,20 +23,39 @@ std::uint64_t mem_available() {
   return 0;
 }
 
-// The room under memory.max in the process's cgroup v2 folder and every one above it (a limit
-// on a parent binds its children too). "max" means no limit there.
+// Bytes a cgroup's file cache holds that the kernel would drop before refusing memory: its
+// inactive_file (memory.current counts the cache, which a job that reads files fills up to its
+// limit).
+std::uint64_t reclaimable(const std::filesystem::path& dir) {
+  std::ifstream stat(dir / "memory.stat");
+  std::string key;
+  std::uint64_t value = 0;
+  while (stat >> key >> value)
+    if (key == "inactive_file") return value;
+  return 0;
+}
+
+// The room under memory.max in the process's cgroup v2 folder and every one above it, up to the
+// mount's root (a limit on a parent binds its children too; in a container the root is the
+// container's own cgroup). "max" means no limit there.
 void consider_cgroups(memory_room& room) {
   std::ifstream self("/proc/self/cgroup");
   std::string line, path;
   while (std::getline(self, line))
     if (line.rfind("0::", 0) == 0) path = line.substr(3);
-  if (path.empty()) return;
-  for (std::filesystem::path dir = std::filesystem::path("/sys/fs/cgroup") / path.substr(1);
-       dir.string().size() > std::string("/sys/fs/cgroup").size(); dir = dir.parent_path()) {
+  if (path.empty() || path[0] != '/') return;
+  const std::filesystem::path mount("/sys/fs/cgroup");
+  std::filesystem::path dir = (mount / path.substr(1)).lexically_normal();
+  while (true) {
     std::ifstream max_file(dir / "memory.max"), current_file(dir / "memory.current");
     std::uint64_t max = 0, current = 0;
-    if (max_file >> max && current_file >> current)
-      consider(room, max > current ? max - current : 1, "cgroup memory.max");
+    if (max_file >> max && current_file >> current) {
+      const std::uint64_t cache = reclaimable(dir);
+      const std::uint64_t used = current > cache ? current - cache : 0;
+      consider(room, max > used ? max - used : 1, "cgroup memory.max");
+    }
+    if (dir == mount || dir.string().size() <= mount.string().size()) break;
+    dir = dir.parent_path();
   }
 }
 

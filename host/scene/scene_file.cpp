@@ -523,7 +523,12 @@ void read_instances(const scene_reader& r, const json& root,
                  (known.empty() ? std::string("the scene has none") : known) + "), got " +
                  (name.is_string() ? "\"" + name.get<std::string>() + "\"" : r.type_of(name)));
     }
-    if (const auto why = place_group(s, found->second, optional_transform(r, j, p)))
+    const object_group& g = found->second;
+    if (object_count(s) + g.spheres.size() + g.quads.size() + g.triangles.size() >
+        max_scene_objects)
+      r.fail(p, "the instances place more than " + std::to_string(max_scene_objects) +
+                    " objects (a scene's most)");
+    if (const auto why = place_group(s, g, optional_transform(r, j, p)))
       r.fail(p + "/transform", *why);
   });
 }

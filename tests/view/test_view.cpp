@@ -549,6 +549,22 @@ TEST_F(XvfbTest, AFixedSizeTooLargeToAccumulateOnTheDeviceExits2NamingTheFlag) {
   EXPECT_FALSE(std::filesystem::exists(shot));
 }
 
+// A screenshot too large for the PNG encoder (docs/reliability.md) is refused by its flag before
+// the window opens, whatever the device could accumulate.
+TEST_F(XvfbTest, AScreenshotPastThePngEncodersSizeExits2NamingTheFlag) {
+  const test::temp_dir dir;
+  const std::string shot = (dir.path() / "huge.png").string();
+  const test::process_result r =
+      test::run_rtvk_within(120s,
+                            {"view", "--scene", "seed", "--width", "20000", "--aspect", "1",
+                             "--spp", "1", "--screenshot", shot},
+                            env());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--screenshot: '" + shot + "': a 20000x20000 PNG has"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(shot));
+}
+
 // The render follows the window: resized while accumulating, it restarts at the new size, and
 // what it shows is what rtvk render makes of the printed camera at that size.
 TEST_F(XvfbTest, AResizedWindowRestartsAtItsNewSize) {

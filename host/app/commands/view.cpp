@@ -73,7 +73,10 @@ int run_view(view_options o) {
     if (!path) throw usage_error("--camera " + o.camera + ": the scene has no such camera");
   }
   const camera_pose pose = path->at(0);
-  overrides.make_camera(s, pose, "the view");  // refuses impossible poses and sizes up front
+  // Refuses impossible poses and sizes up front, and a screenshot too large for its format.
+  const camera cam = overrides.make_camera(s, pose, "the view");
+  if (!o.screenshot.empty())
+    check_output_size(o.screenshot, cam.image_width(), cam.image_height(), "--screenshot");
 
   view::viewer_options v;
   v.gpu = o.gpu.options();

@@ -373,6 +373,8 @@ void choose_real_types(VkPhysicalDevice physical) {
   real_type_of_fake[0] = pick(local, host);
   real_type_of_fake[1] = pick(host, local);
   real_type_of_fake[2] = pick(host | cached, local);
+  if ((m.memoryTypes[real_type_of_fake[2]].propertyFlags & host) != host)
+    real_type_of_fake[2] = real_type_of_fake[1];  // no coherent cached type: plain host memory
 }
 
 // discrete-memory: a discrete GPU's memory types in place of the device's own.
