@@ -18,6 +18,9 @@ layout(std430, set = 0, binding = RTVK_BINDING_TRIANGLES) readonly buffer triang
 layout(std430, set = 0, binding = RTVK_BINDING_NORMALS) readonly buffer normal_block {
   vec4 vertex_normals[];
 };
+layout(std430, set = 0, binding = RTVK_BINDING_INSTANCES) readonly buffer instance_block {
+  gpu_instance instances[];
+};
 layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_node_block {
   bvh_wide_node bvh_nodes[];
 };

@@ -18,6 +18,8 @@ layout(constant_id = RTVK_SPEC_MOTION) const bool motion = false;
 // Whether the scene has quads, triangles: without, their tests are compiled out.
 layout(constant_id = RTVK_SPEC_QUADS) const bool any_quads = false;
 layout(constant_id = RTVK_SPEC_TRIANGLES) const bool any_triangles = false;
+// Whether the scene has instances: without, no walk enters a group's tree.
+layout(constant_id = RTVK_SPEC_INSTANCES) const bool any_instances = false;
 
 // Where the sphere in slot k is at `time` (sphere::center_at).
 precise vec3 center_at(uint k, float time) {
@@ -36,11 +38,36 @@ quad_geometry quad_at(uint k) {
   return g;
 }
 
+// The ray in instance k's group space (bvh_world.cpp's to_group): the same t reaches the same
+// point, at the same instant.
+ray to_group(uint k, ray r) {
+  ray g;
+  g.origin = vec3(dot(instances[k].to_group_x.xyz, r.origin) + instances[k].to_group_x.w,
+                  dot(instances[k].to_group_y.xyz, r.origin) + instances[k].to_group_y.w,
+                  dot(instances[k].to_group_z.xyz, r.origin) + instances[k].to_group_z.w);
+  g.direction = vec3(dot(instances[k].to_group_x.xyz, r.direction),
+                     dot(instances[k].to_group_y.xyz, r.direction),
+                     dot(instances[k].to_group_z.xyz, r.direction));
+  g.time = r.time;
+  return g;
+}
+
+// A record made in instance k's group space, carried back to the scene's ray r: the point on r,
+// the normal by the inverse transpose, the offset grown by the placement's stretch.
+void carry_back(uint k, ray r, float t, precise inout hit_record rec) {
+  rec.p = ray_at(r, t);
+  precise vec3 n = rec.normal;
+  rec.normal = normalize(vec3(dot(instances[k].normal_x.xyz, n), dot(instances[k].normal_y.xyz, n),
+                              dot(instances[k].normal_z.xyz, n)));
+  rec.offset = rec.offset * instances[k].normal_x.w + flat_offset(rec.p, r);
+}
+
 // Tests the object of leaf reference `ref` (RTVK_LEAF_* kind | position), keeping the nearest
-// hit (`closest`; `best` its scene index, `best_ref` its reference). Ties go to the later object
-// in the scene. The kinds a scene lacks are compiled out.
+// hit (`closest`; `best` its index in the scan order, `best_ref` its reference, `best_inst` the
+// instance + 1 it was reached through, 0 for the scene's own). Ties go to the later object in
+// the scan: the scene's own, then each instance's. The kinds a scene lacks are compiled out.
 void test_object(uint ref, ray r, sheared_ray sr, float t_min, precise inout float closest,
-                 inout int best, inout uint best_ref) {
+                 inout int best, inout uint best_ref, uint inst, inout uint best_inst) {
   uint k = ref & RTVK_LEAF_INDEX_MASK;
   uint kind = ref & RTVK_LEAF_KIND_MASK;
   precise float t;
@@ -59,12 +86,14 @@ void test_object(uint ref, ray r, sheared_ray sr, float t_min, precise inout flo
       return;
     i = int(triangles[k].scene_index);
   }
-  if (t < closest || i > best) {
+  if (t < closest || inst > best_inst || (inst == best_inst && i > best)) {
     closest = t;
     best = i;
     best_ref = ref;
+    best_inst = inst;
   }
 }
+
 
 // The record of a hit at t on the object of leaf reference `ref` (host/cpu/bvh_world.cpp's
 // bvh_world::record).
@@ -93,6 +122,20 @@ void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_r
     precise vec3 shading = shading_normal(tri.a, tri.b, tri.c, blended, n0, n1, n2, weights);
     record_triangle_hit(tri.a, tri.b, tri.c, shading, tri.material, r, t, rec);
   }
+}
+
+// The winner's record: made in its instance's group space when it was reached through one.
+void record_winner(uint ref, uint inst, ray r, sheared_ray sr, float t,
+                   precise inout hit_record rec) {
+  if (any_instances && inst != 0u) {
+    ray g = to_group(inst - 1u, r);
+    sheared_ray gs;
+    if (any_triangles) gs = shear_ray(g);
+    record_object(ref, g, gs, t, rec);
+    carry_back(inst - 1u, r, t, rec);
+    return;
+  }
+  record_object(ref, r, sr, t, rec);
 }
 
 // Puts (key, id) pairs a and b in ascending order of key.
@@ -125,9 +168,14 @@ uint sort_key(bool entered, float t) {
 // each trip counts one iteration against the loop budget. (It takes 13 to 15% less time on
 // lavapipe than the binary tree it replaced: docs/benchmarks.md.)
 bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inout uint iterations) {
-  if (pc.sphere_count + pc.quad_count + pc.triangle_count == 0u) return false;
-  sheared_ray sr;
-  if (any_triangles) sr = shear_ray(r);
+  if (pc.sphere_count + pc.quad_count + pc.triangle_count + pc.instance_count == 0u) return false;
+  sheared_ray world_sr, sr;
+  if (any_triangles) world_sr = shear_ray(r);
+  sr = world_sr;
+  // The ray of the tree being walked: the scene's, or inside an instance its group's (`inst`:
+  // that instance + 1, 0 for the scene's own tree).
+  ray rc = r;
+  uint inst = 0u;
   precise vec3 o = r.origin;
   precise vec3 inv_d = safe_inverse(r.direction);
   precise float margin = origin_margin(o);
@@ -140,14 +188,38 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
   precise float closest = t_max;
   int best = -1;
   uint best_ref = 0u;
+  uint best_inst = 0u;
   while (true) {
     if (++iterations > pc.loop_budget) return false;
     precise float box_max = closest * (1.0 + 1.0 / 1048576.0);
     bool pop = true;
-    if (next_entry > box_max) {
+    if (any_instances && next == RTVK_WIDE_EXIT) {
+      // out of an instance's group tree: the scene's ray again
+      rc = r;
+      inst = 0u;
+      o = r.origin;
+      inv_d = safe_inverse(r.direction);
+      margin = origin_margin(o);
+      sr = world_sr;
+    } else if (next_entry > box_max) {
       // remembered before a closer hit was found: dropped unvisited
+    } else if (any_instances && (next & (RTVK_WIDE_LEAF | RTVK_LEAF_KIND_MASK)) ==
+                                    (RTVK_WIDE_LEAF | RTVK_LEAF_INSTANCE)) {
+      // into an instance's group tree, with the ray in its space, until the marker comes off
+      uint k = next & RTVK_LEAF_INDEX_MASK;
+      stack_node[top] = RTVK_WIDE_EXIT;
+      stack_entry[top++] = 0.0;
+      rc = to_group(k, r);
+      inst = k + 1u;
+      o = rc.origin;
+      inv_d = safe_inverse(rc.direction);
+      margin = origin_margin(o);
+      if (any_triangles) sr = shear_ray(rc);
+      next = instances[k].root;
+      next_entry = 0.0;
+      pop = false;
     } else if ((next & RTVK_WIDE_LEAF) != 0u) {
-      test_object(next & ~RTVK_WIDE_LEAF, r, sr, t_min, closest, best, best_ref);
+      test_object(next & ~RTVK_WIDE_LEAF, rc, sr, t_min, closest, best, best_ref, inst, best_inst);
     } else {
       bvh_wide_node n = bvh_nodes[next];
       precise vec4 t;
@@ -189,7 +261,7 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
     next_entry = stack_entry[top];
   }
   if (best < 0) return false;
-  record_object(best_ref, r, sr, closest, rec);
+  record_winner(best_ref, best_inst, r, world_sr, closest, rec);
   return true;
 }
 
@@ -204,6 +276,7 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
   precise float closest = t_max;
   int best = -1;
   uint best_ref = 0u;
+  uint best_inst = 0u;
   // Scene order: each hit is as near as any before it, and later, so it wins (the scan's tie
   // rule) without comparing scene indices. Spheres in a loop of their own, as tight as before
   // quads and triangles came: --accel none renders of spheres keep their speed.
@@ -219,15 +292,39 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
   if (any_quads)
     for (uint i = 0u; i < pc.quad_count; ++i) {
       if (++iterations > pc.loop_budget) return false;
-      test_object(RTVK_LEAF_QUAD | i, r, sr, t_min, closest, best, best_ref);
+      test_object(RTVK_LEAF_QUAD | i, r, sr, t_min, closest, best, best_ref, 0u, best_inst);
     }
   if (any_triangles)
     for (uint i = 0u; i < pc.triangle_count; ++i) {
       if (++iterations > pc.loop_budget) return false;
-      test_object(RTVK_LEAF_TRIANGLE | i, r, sr, t_min, closest, best, best_ref);
+      test_object(RTVK_LEAF_TRIANGLE | i, r, sr, t_min, closest, best, best_ref, 0u, best_inst);
+    }
+  // Then each instance's group, with the ray in its space.
+  if (any_instances)
+    for (uint k = 0u; k < pc.instance_count; ++k) {
+      ray g = to_group(k, r);
+      sheared_ray gs;
+      if (any_triangles) gs = shear_ray(g);
+      for (uint i = 0u; i < instances[k].sphere_count; ++i) {
+        if (++iterations > pc.loop_budget) return false;
+        test_object(RTVK_LEAF_SPHERE | (instances[k].sphere_first + i), g, gs, t_min, closest, best,
+                    best_ref, k + 1u, best_inst);
+      }
+      if (any_quads)
+        for (uint i = 0u; i < instances[k].quad_count; ++i) {
+          if (++iterations > pc.loop_budget) return false;
+          test_object(RTVK_LEAF_QUAD | (instances[k].quad_first + i), g, gs, t_min, closest, best,
+                      best_ref, k + 1u, best_inst);
+        }
+      if (any_triangles)
+        for (uint i = 0u; i < instances[k].triangle_count; ++i) {
+          if (++iterations > pc.loop_budget) return false;
+          test_object(RTVK_LEAF_TRIANGLE | (instances[k].triangle_first + i), g, gs, t_min, closest,
+                      best, best_ref, k + 1u, best_inst);
+        }
     }
   if (best < 0) return false;
-  record_object(best_ref, r, sr, closest, rec);
+  record_winner(best_ref, best_inst, r, sr, closest, rec);
   return true;
 }
 

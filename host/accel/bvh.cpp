@@ -396,7 +396,13 @@ dbox object_box(const primitive_spans& objects, std::size_t i, time_span motion)
   if (i < objects.spheres.size()) return sphere_box(objects.spheres[i], motion);
   i -= objects.spheres.size();
   if (i < objects.quads.size()) return quad_box(objects.quads[i]);
-  return triangle_box(objects.triangles[i - objects.quads.size()]);
+  i -= objects.quads.size();
+  if (i < objects.triangles.size()) return triangle_box(objects.triangles[i]);
+  const auto& box = objects.boxes[i - objects.triangles.size()];
+  dbox b;
+  b.grow(box[0]);
+  b.grow(box[1]);
+  return b;
 }
 
 // The objects as prims, their boxes rounded outward to float, and the whole range's info.

@@ -1,5 +1,6 @@
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -20,7 +21,11 @@ struct primitive_spans {
   std::span<const sphere> spheres;
   std::span<const quad> quads;
   std::span<const triangle> triangles;
-  std::size_t size() const { return spheres.size() + quads.size() + triangles.size(); }
+  // After the triangles: anything else by its box alone, corners lo and hi (instances).
+  std::span<const std::array<point3, 2>> boxes = {};
+  std::size_t size() const {
+    return spheres.size() + quads.size() + triangles.size() + boxes.size();
+  }
 };
 
 // A bounding volume hierarchy over objects (spheres, quads, triangles), built with binned SAH and

@@ -17,8 +17,12 @@ leaf_layout make_leaf_layout(const bvh& tree, const primitive_spans& objects) {
       out.quads.push_back(std::uint32_t(object - spheres));
       return RTVK_LEAF_QUAD | std::uint32_t(out.quads.size() - 1);
     }
-    out.triangles.push_back(std::uint32_t(object - spheres - quads));
-    return RTVK_LEAF_TRIANGLE | std::uint32_t(out.triangles.size() - 1);
+    if (object < spheres + quads + objects.triangles.size()) {
+      out.triangles.push_back(std::uint32_t(object - spheres - quads));
+      return RTVK_LEAF_TRIANGLE | std::uint32_t(out.triangles.size() - 1);
+    }
+    // A box (an instance): referred to by its own index, nothing to store in leaf order.
+    return RTVK_LEAF_INSTANCE | std::uint32_t(object - spheres - quads - objects.triangles.size());
   };
   if (tree.nodes().empty()) {
     for (std::size_t i = 0; i < objects.size(); ++i) place(std::uint32_t(i));

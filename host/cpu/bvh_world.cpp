@@ -140,17 +140,22 @@ inline bool descend(const wide_node& n, unsigned entered, const float (&t)[4], n
 
 // The search's state: the nearest hit so far, and its object.
 struct bvh_world::nearest {
-  double t;                 // the hit's distance (t_max while there is none)
-  std::int64_t scene = -1;  // the object's scene index, -1 for none
-  std::uint32_t ref = 0;    // and its leaf reference (RTVK_LEAF_* kind | position)
+  double t;                    // the hit's distance (t_max while there is none)
+  std::int64_t key = -1;       // the object's place in the scan order, -1 for none
+  std::uint32_t ref = 0;       // and its leaf reference (RTVK_LEAF_* kind | position)
+  std::int64_t instance = -1;  // the instance it was reached through, -1: the world's own
+  std::int64_t current = -1;   // the instance the walk is in now, -1: the world's tree
 
-  // Keeps a hit at t on object `i` (reference `r`) when it is nearer, or as near and later in
-  // the scene, as in a linear scan, so the order of the tests never matters.
-  void offer(double t_hit, std::int64_t i, std::uint32_t r) {
-    if (t_hit < t || i > scene) {
+  // Keeps a hit at t on object `i` (reference `r`) of `inst` when it is nearer, or as near and
+  // later in the scan order (the world's objects, then each instance's), as in a linear scan,
+  // so the order of the tests never matters.
+  void offer(double t_hit, std::int64_t i, std::uint32_t r, std::int64_t inst) {
+    const std::int64_t k = ((inst + 1) << 32) | i;
+    if (t_hit < t || k > key) {
       t = t_hit;
-      scene = i;
+      key = k;
       ref = r;
+      instance = inst;
     }
   }
 };
@@ -160,63 +165,90 @@ bvh_world::bvh_world(const std::vector<sphere>& spheres, int threads, time_span 
 
 bvh_world::bvh_world(const primitive_spans& objects, std::span<const triangle_shading> shading,
                      int threads, time_span motion) {
-  leaf_layout layout;
-  {
-    const bvh tree(objects, threads, motion);
-    layout = make_leaf_layout(tree, objects);
-    wide_ = wide_bvh(tree, layout.refs);
-  }  // the binary tree is freed before the objects are copied: a lower peak
+  build(objects, shading, {}, {}, threads, motion);
+}
+
+bvh_world::bvh_world(const scene& s, int threads) {
+  build(primitive_spans{s.spheres, s.quads, s.triangles}, s.shading, s.groups, s.instances, threads,
+        s.motion);
+}
+
+void bvh_world::build(const primitive_spans& objects, std::span<const triangle_shading> shading,
+                      std::span<const object_group> groups, std::span<const instance> instances,
+                      int threads, time_span motion) {
+  scene_tree tree = build_scene_tree(objects, groups, instances, true, threads, motion);
+  nodes_ = std::move(tree.nodes);
   const std::uint32_t first_quad = std::uint32_t(objects.spheres.size());
   const std::uint32_t first_triangle = first_quad + std::uint32_t(objects.quads.size());
-  spheres_.resize(layout.spheres.size());
-  sphere_index_ = std::move(layout.spheres);
+  // Each object's data and its key: the scene index for the world's, the group-order index for
+  // a group's.
+  const auto sphere_of = [&](object_slot o) -> const sphere& {
+    return o.group == world_objects ? objects.spheres[o.index] : groups[o.group].spheres[o.index];
+  };
+  spheres_.resize(tree.spheres.size());
+  sphere_index_.resize(tree.spheres.size());
   const bool moves = std::any_of(objects.spheres.begin(), objects.spheres.end(),
                                  [](const sphere& s) { return s.center1.has_value(); });
   if (moves) velocities_.resize(spheres_.size());
   parallel_for(spheres_.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      const sphere& s = objects.spheres[sphere_index_[k]];
+      const sphere& s = sphere_of(tree.spheres[k]);
       spheres_[k] = {s.center, s.radius, s.material};
+      sphere_index_[k] = tree.spheres[k].index;
       if (moves) velocities_[k] = s.velocity();
     }
   });
-  quads_.reserve(layout.quads.size());
-  for (std::uint32_t& i : layout.quads) {
-    const quad& q = objects.quads[i];
+  quads_.reserve(tree.quads.size());
+  for (const object_slot o : tree.quads) {
+    const bool own = o.group == world_objects;
+    const quad& q = own ? objects.quads[o.index] : groups[o.group].quads[o.index];
     quads_.push_back({q.geometry(), q.material});
-    i += first_quad;
+    quad_index_.push_back(o.index +
+                          (own ? first_quad : std::uint32_t(groups[o.group].spheres.size())));
   }
-  quad_index_ = std::move(layout.quads);
-  triangles_.resize(layout.triangles.size());
-  std::vector<std::int32_t> normals_at(shading.size(), -1);  // shading index -> normals_
+  // Smooth triangles' normals, normalized once per shading entry of the world or a group.
+  std::vector<std::vector<std::int32_t>> normals_at(groups.size() + 1);
+  triangles_.resize(tree.triangles.size());
   for (std::size_t k = 0; k < triangles_.size(); ++k) {
-    const triangle& t = objects.triangles[layout.triangles[k]];
+    const object_slot o = tree.triangles[k];
+    const bool own = o.group == world_objects;
+    const triangle& t = own ? objects.triangles[o.index] : groups[o.group].triangles[o.index];
+    const std::span<const triangle_shading> sh = own ? shading : groups[o.group].shading;
+    std::vector<std::int32_t>& at_list = normals_at[own ? 0 : o.group + 1];
+    if (at_list.size() != sh.size()) at_list.assign(sh.size(), -1);
     std::int32_t n = -1;
-    if (t.shading >= 0 && shading[std::size_t(t.shading)].has_normals()) {
-      std::int32_t& at = normals_at[std::size_t(t.shading)];
+    if (t.shading >= 0 && sh[std::size_t(t.shading)].has_normals()) {
+      std::int32_t& at = at_list[std::size_t(t.shading)];
       if (at < 0) {
         at = std::int32_t(normals_.size());
-        const std::array<vec3, 3>& n = shading[std::size_t(t.shading)].normal;
-        normals_.push_back({glm::normalize(n[0]), glm::normalize(n[1]), glm::normalize(n[2])});
+        const std::array<vec3, 3>& v = sh[std::size_t(t.shading)].normal;
+        normals_.push_back({glm::normalize(v[0]), glm::normalize(v[1]), glm::normalize(v[2])});
       }
       n = at;
     }
     triangles_[k] = {t.p, t.material, n};
-    layout.triangles[k] += first_triangle;
+    triangle_index_.push_back(o.index + (own ? first_triangle
+                                             : std::uint32_t(groups[o.group].spheres.size() +
+                                                             groups[o.group].quads.size())));
   }
-  triangle_index_ = std::move(layout.triangles);
+  instances_.reserve(instances.size());
+  for (const instance& i : instances)
+    instances_.push_back({frame_of(i.placement), tree.groups[i.group].root});
 }
 
 // Tests the object of leaf reference `ref`, keeping the nearest hit.
 inline void bvh_world::visit(std::uint32_t ref, const ray& r, const sheared_ray& sheared,
                              double t_min, nearest& best) const {
-  if ((ref & RTVK_LEAF_KIND_MASK) != RTVK_LEAF_SPHERE)
+  if ((ref & RTVK_LEAF_KIND_MASK) != RTVK_LEAF_SPHERE) {
+    if ((ref & RTVK_LEAF_KIND_MASK) == RTVK_LEAF_INSTANCE)
+      return enter(ref & RTVK_LEAF_INDEX_MASK, r, t_min, best);
     return visit_flat(ref, r, sheared, t_min, best);
+  }
   const std::uint32_t k = ref & RTVK_LEAF_INDEX_MASK;
   double t;
   if (hit_sphere(center_at(k, spheres_, velocities_, r.time), spheres_[k].radius, r, t_min, best.t,
                  t))
-    best.offer(t, sphere_index_[k], ref);
+    best.offer(t, sphere_index_[k], ref, best.current);
 }
 
 // Quads and triangles, out of the sphere path's way: a scene of spheres keeps the loop it had.
@@ -226,18 +258,52 @@ void bvh_world::visit_flat(std::uint32_t ref, const ray& r, const sheared_ray& s
   double t;
   if ((ref & RTVK_LEAF_KIND_MASK) == RTVK_LEAF_QUAD) {
     real2 uv;
-    if (hit_quad(quads_[k].g, r, t_min, best.t, t, uv)) best.offer(t, quad_index_[k], ref);
+    if (hit_quad(quads_[k].g, r, t_min, best.t, t, uv))
+      best.offer(t, quad_index_[k], ref, best.current);
     return;
   }
   const leaf_triangle& tri = triangles_[k];
   real3 weights;
   if (hit_triangle(tri.p[0], tri.p[1], tri.p[2], r, sheared, t_min, best.t, t, weights))
-    best.offer(t, triangle_index_[k], ref);
+    best.offer(t, triangle_index_[k], ref, best.current);
 }
 
-// The record of the winner, `best`.
+// The ray in an instance's group space: the same t reaches the same point (the direction is
+// not renormalized), at the same instant.
+namespace {
+ray to_group(const instance_frame& f, const ray& r) {
+  return ray(f.to_group * r.origin + f.to_group_offset, f.to_group * r.direction, r.time);
+}
+}  // namespace
+
+// Walks instance `i`'s group tree with the ray in group space: hits there count as the
+// instance's.
+void bvh_world::enter(std::uint32_t i, const ray& r, double t_min, nearest& best) const {
+  const leaf_instance& in = instances_[i];
+  const ray g = to_group(in.frame, r);
+  const sheared_ray sheared = triangles_.empty() ? sheared_ray{} : shear_ray(g);
+  const std::int64_t outer = best.current;
+  best.current = i;
+  walk(in.root, g, sheared, t_min, best, i);
+  best.current = outer;
+}
+
+// The record of the winner, `best`: found in its group's space for an instance's object, then
+// carried back (the point on the scene-space ray, the normal by the inverse transpose, the
+// offset grown by the placement's stretch).
 void bvh_world::record(const nearest& best, const ray& r, const sheared_ray& sheared,
                        hit_record& rec) const {
+  if (best.instance >= 0) {
+    const instance_frame& f = instances_[std::size_t(best.instance)].frame;
+    const ray g = to_group(f, r);
+    nearest inner = best;
+    inner.instance = -1;
+    record(inner, g, triangles_.empty() ? sheared_ray{} : shear_ray(g), rec);
+    rec.p = ray_at(r, best.t);
+    rec.normal = glm::normalize(f.normal_to_world * rec.normal);
+    rec.offset = rec.offset * f.stretch + flat_offset(rec.p, r);
+    return;
+  }
   const std::uint32_t k = best.ref & RTVK_LEAF_INDEX_MASK;
   switch (best.ref & RTVK_LEAF_KIND_MASK) {
     case RTVK_LEAF_SPHERE:
@@ -258,29 +324,34 @@ void bvh_world::record(const nearest& best, const ray& r, const sheared_ray& she
 
 // At each wide node all four children's boxes are tested at once; the ray goes on into the
 // nearest child it enters before the closest hit so far (a wide node, or a leaf whose object is
-// then tested) and remembers the others with their entry distances. Remembered children behind
-// the closest hit are dropped when they come up.
-bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
-  const std::vector<wide_node>& nodes = wide_.nodes();
-  if (nodes.empty()) return false;
+// then tested, or an instance whose group tree is then walked) and remembers the others with
+// their entry distances. Remembered children behind the closest hit are dropped when they come
+// up.
+void bvh_world::walk(std::uint32_t root, const ray& r, const sheared_ray& sheared, double t_min,
+                     nearest& best, std::int64_t) const {
   const ray_slabs slabs(r);
-  const sheared_ray sheared = triangles_.empty() ? sheared_ray{} : shear_ray(r);
   const float box_min = widen_down(t_min);
   node_stack stack;
-  std::uint32_t next = 0;  // the root
-  nearest best{t_max};
+  std::uint32_t next = root;
   while (true) {
     if (next & wide_node::leaf_bit) {
       visit(next & ~wide_node::leaf_bit, r, sheared, t_min, best);
     } else {
-      const wide_node& n = nodes[next];
+      const wide_node& n = nodes_[next];
       float t[4];
       const unsigned entered = child_entries(n, slabs, box_min, widen_up(best.t), t);
       if (descend(n, entered, t, stack, next)) continue;
     }
     if (!pop_reachable(stack, widen_up(best.t), next)) break;
   }
-  if (best.scene < 0) return false;
+}
+
+bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
+  if (nodes_.empty()) return false;
+  const sheared_ray sheared = triangles_.empty() ? sheared_ray{} : shear_ray(r);
+  nearest best{t_max};
+  walk(0, r, sheared, t_min, best, -1);
+  if (best.key < 0) return false;
   record(best, r, sheared, rec);
   return true;
 }

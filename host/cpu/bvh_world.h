@@ -7,6 +7,8 @@
 #include "hit_quad.h"
 #include "hit_triangle.h"
 #include "hittable.h"
+#include "scene.h"
+#include "scene_tree.h"
 #include "sphere.h"
 #include "wide_bvh.h"
 
@@ -22,11 +24,19 @@ class bvh_world final : public hittable {
   // Over objects of every kind; `shading` holds what the triangles' shading indices refer to.
   bvh_world(const primitive_spans& objects, std::span<const triangle_shading> shading,
             int threads = 0, time_span motion = {});
+  // Over a scene's objects and its instances (a tree per group, one over the instances).
+  explicit bvh_world(const scene& s, int threads = 0);
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
 
  private:
   struct nearest;
+  void build(const primitive_spans& objects, std::span<const triangle_shading> shading,
+             std::span<const object_group> groups, std::span<const instance> instances, int threads,
+             time_span motion);
+  void walk(std::uint32_t root, const ray& r, const sheared_ray& sheared, double t_min,
+            nearest& best, std::int64_t instance) const;
+  void enter(std::uint32_t instance, const ray& r, double t_min, nearest& best) const;
   void visit(std::uint32_t ref, const ray& r, const sheared_ray& sheared, double t_min,
              nearest& best) const;
   [[gnu::noinline]] void visit_flat(std::uint32_t ref, const ray& r, const sheared_ray& sheared,
@@ -54,13 +64,22 @@ class bvh_world final : public hittable {
 
   // The binary tree (the GPU's) is built, collapsed and dropped: the CPU keeps only these. Each
   // kind's array is in leaf order (leaf_layout); *_index_ give each position's scene index.
-  wide_bvh wide_;                         // the tree collapsed four wide: what the CPU traverses
-  std::vector<leaf_sphere> spheres_;      // in leaf order
-  std::vector<vec3> velocities_;          // the spheres', in leaf order; empty when none moves
-  std::vector<leaf_quad> quads_;          // in leaf order
-  std::vector<leaf_triangle> triangles_;  // in leaf order
+  std::vector<wide_node> nodes_;              // the trees collapsed four wide (scene_tree)
+  std::vector<leaf_sphere> spheres_;          // in leaf order
+  std::vector<vec3> velocities_;              // the spheres', in leaf order; empty when none moves
+  std::vector<leaf_quad> quads_;              // in leaf order
+  std::vector<leaf_triangle> triangles_;      // in leaf order
   std::vector<std::array<vec3, 3>> normals_;  // smooth triangles' vertex normals
   std::vector<std::uint32_t> sphere_index_, quad_index_, triangle_index_;  // scene indices
+  // (the world's objects), or indices in their group's order (a group's: spheres, quads,
+  // triangles); exact ties go to the later of (instance, index), the world's objects first.
+
+  // An instance as the search reads it: the way into its group's space, and its tree's root.
+  struct leaf_instance {
+    instance_frame frame;  // the placement's inverse and normal matrix
+    std::uint32_t root;    // the group's root among wide_'s nodes
+  };
+  std::vector<leaf_instance> instances_;
 };
 
 }  // namespace rtvk

@@ -1,28 +1,46 @@
 #include "world.h"
 
 #include "bvh_world.h"
+#include "hittable_instance.h"
 #include "hittable_quad.h"
 #include "hittable_sphere.h"
 #include "hittable_triangle.h"
 
 namespace rtvk {
 
+namespace {
+
+// Objects of one list (the scene's, or a group's), in order: spheres, quads, triangles.
+void add_objects(hittable_list& to, const std::vector<sphere>& spheres,
+                 const std::vector<quad>& quads, const std::vector<triangle>& triangles,
+                 const std::vector<triangle_shading>& shading) {
+  for (const sphere& sp : spheres) to.add(std::make_shared<hittable_sphere>(sp));
+  for (const quad& q : quads) to.add(std::make_shared<hittable_quad>(q));
+  for (const triangle& t : triangles) {
+    const bool smooth = t.shading >= 0 && shading[std::size_t(t.shading)].has_normals();
+    to.add(std::make_shared<hittable_triangle>(
+        t, smooth ? &shading[std::size_t(t.shading)].normal : nullptr));
+  }
+}
+
+}  // namespace
+
 hittable_list make_world(const scene& s) {
   hittable_list world;
-  for (const sphere& sp : s.spheres) world.add(std::make_shared<hittable_sphere>(sp));
-  for (const quad& q : s.quads) world.add(std::make_shared<hittable_quad>(q));
-  for (const triangle& t : s.triangles) {
-    const bool smooth = t.shading >= 0 && s.shading[std::size_t(t.shading)].has_normals();
-    world.add(std::make_shared<hittable_triangle>(
-        t, smooth ? &s.shading[std::size_t(t.shading)].normal : nullptr));
+  add_objects(world, s.spheres, s.quads, s.triangles, s.shading);
+  std::vector<std::shared_ptr<const hittable>> groups;
+  for (const object_group& g : s.groups) {
+    auto list = std::make_shared<hittable_list>();
+    add_objects(*list, g.spheres, g.quads, g.triangles, g.shading);
+    groups.push_back(std::move(list));
   }
+  for (const instance& i : s.instances)
+    world.add(std::make_shared<hittable_instance>(groups[i.group], i.placement));
   return world;
 }
 
 std::unique_ptr<hittable> make_accelerated_world(const scene& s, bool use_bvh, int threads) {
-  if (use_bvh)
-    return std::make_unique<bvh_world>(primitive_spans{s.spheres, s.quads, s.triangles}, s.shading,
-                                       threads, s.motion);
+  if (use_bvh) return std::make_unique<bvh_world>(s, threads);
   return std::make_unique<hittable_list>(make_world(s));
 }
 

@@ -1,5 +1,6 @@
 #include "object_group.h"
 
+#include <stdexcept>
 #include <utility>
 
 #include "scene.h"
@@ -49,8 +50,8 @@ std::optional<std::string> place_group(scene& s, const object_group& g, const tr
   for (const sphere& sp : g.spheres) {
     const std::optional<sphere> p = placed(sp, t);
     if (!p)
-      return "the group has a sphere, which can be scaled only uniformly (an ellipsoid is not "
-             "supported yet)";
+      return "the group has a sphere, which a copy cannot stretch (only an instance can: an "
+             "ellipsoid)";
     spheres.push_back(*p);
   }
   s.spheres.insert(s.spheres.end(), spheres.begin(), spheres.end());
@@ -67,6 +68,16 @@ std::optional<std::string> place_group(scene& s, const object_group& g, const tr
     s.triangles.push_back(tri);
   }
   return std::nullopt;
+}
+
+scene flatten_instances(const scene& s) {
+  scene out = s;
+  out.groups.clear();
+  out.instances.clear();
+  for (const instance& i : s.instances)
+    if (const auto why = place_group(out, s.groups[i.group], i.placement))
+      throw std::invalid_argument(*why);
+  return out;
 }
 
 }  // namespace rtvk

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,11 +17,24 @@ struct scene;
 // with a transform of its own (the book's `translate` and `rotate_y` generalised): a tree, a
 // chair, a mesh read from one file. Its materials are the scene's.
 struct object_group {
-  std::vector<sphere> spheres;
+  std::string name;             // how instances name it in scene files
+  std::vector<sphere> spheres;  // still (a group's spheres do not move)
   std::vector<quad> quads;
   std::vector<triangle> triangles;        // shading indices refer to `shading`
   std::vector<triangle_shading> shading;  // the triangles' vertex normals and uv
 };
+
+// One placement of a group: where its objects are, without copying them. The renderers keep
+// one copy of each group and one BVH over its objects, and trace a ray that reaches an instance
+// in the group's own space (docs/geometry.md, "Instances").
+struct instance {
+  std::uint32_t group = 0;  // index into scene::groups
+  transform placement;      // group space -> scene space; may stretch spheres into ellipsoids
+};
+
+inline std::size_t object_count(const object_group& g) {
+  return g.spheres.size() + g.quads.size() + g.triangles.size();
+}
 
 inline bool empty(const object_group& g) {
   return g.spheres.empty() && g.quads.empty() && g.triangles.empty();
@@ -36,8 +50,12 @@ triangle placed(const triangle& tri, const transform& t);
 triangle_shading placed(const triangle_shading& sh, const transform& t);
 
 // Appends the objects of `g`, placed by `t`, to the scene (each kind after the scene's own).
-// Renderers see the placed copies: a group placed N times costs N times its objects' memory.
 // Returns why it cannot (a sphere of the group under a non-uniform scale), or nothing.
 std::optional<std::string> place_group(scene& s, const object_group& g, const transform& t);
+
+// The scene with every instance replaced by copies of its group's objects, placed (what the
+// renderers draw, written out object by object: tests compare the two). Throws
+// std::invalid_argument where a copy cannot be made (an ellipsoid).
+scene flatten_instances(const scene& s);
 
 }  // namespace rtvk

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "errors.h"
 #include "format.h"
@@ -26,29 +27,23 @@ void check_point(const std::string& what, const point3& p) {
 
 }  // namespace
 
-void check_scene(const scene& s) {
-  const auto check_material = [&](const std::string& where, int material) {
-    if (material < 0 || std::size_t(material) >= s.materials.size())
-      throw usage_error(where + ": material index " + std::to_string(material) + " does not exist");
-  };
-  if (s.cameras.empty()) throw usage_error(s.name + ": the scene has no camera");
-  if (object_count(s) > max_scene_objects)
-    throw usage_error(s.name + ": " + std::to_string(object_count(s)) + " objects are more than " +
-                      std::to_string(max_scene_objects) + " (a BVH leaf reference's 29 bits)");
-  for (std::size_t i = 0; i < s.cameras.size(); ++i) {
-    const named_camera& c = s.cameras[i];
-    if (!valid_camera_name(c.name))
-      throw usage_error(s.name + ": camera " + std::to_string(i) + ": name \"" + c.name +
-                        "\" is not a valid camera name");
-    for (std::size_t k = 0; k < i; ++k)
-      if (s.cameras[k].name == c.name)
-        throw usage_error(s.name + ": two cameras are named \"" + c.name + "\"");
-    try {
-      check_camera_path(c.path);
-    } catch (const std::invalid_argument& e) {
-      throw usage_error(s.name + ": camera " + c.name + ": " + e.what());
-    }
-  }
+namespace {
+
+// What check_objects reads, named as the scene's fields so that its messages read the same.
+struct scene_like {
+  const std::string& name;
+  const std::vector<sphere>& spheres;
+  const std::vector<quad>& quads;
+  const std::vector<triangle>& triangles;
+  const std::vector<triangle_shading>& shading;
+};
+
+// The objects of the scene, or of one of its groups (`who`: "scene" or "scene: group g").
+void check_objects(const std::string& who, const std::vector<sphere>& spheres,
+                   const std::vector<quad>& quads, const std::vector<triangle>& triangles,
+                   const std::vector<triangle_shading>& shading,
+                   const std::function<void(const std::string&, int)>& check_material) {
+  const scene_like s{who, spheres, quads, triangles, shading};
   for (std::size_t i = 0; i < s.spheres.size(); ++i) {
     const sphere& sp = s.spheres[i];
     const std::string where = s.name + ": sphere " + std::to_string(i);
@@ -86,6 +81,72 @@ void check_scene(const scene& s) {
     check_material(where, t.material);
     if (t.shading >= 0 && std::size_t(t.shading) >= s.shading.size())
       throw usage_error(where + ": shading index " + std::to_string(t.shading) + " does not exist");
+  }
+}
+
+// The corners of the box around a group's objects.
+std::vector<point3> group_corners(const object_group& g) {
+  point3 lo(INFINITY), hi(-INFINITY);
+  const auto grow = [&](const point3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  };
+  for (const sphere& sp : g.spheres) {
+    grow(sp.center - vec3(sp.radius));
+    grow(sp.center + vec3(sp.radius));
+  }
+  for (const quad& q : g.quads)
+    for (const point3& p : {q.Q, q.Q + q.u, q.Q + q.v, q.Q + q.u + q.v}) grow(p);
+  for (const triangle& t : g.triangles)
+    for (const point3& p : t.p) grow(p);
+  std::vector<point3> out;
+  for (int c = 0; c < 8; ++c)
+    out.push_back(point3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z));
+  return out;
+}
+
+}  // namespace
+
+void check_scene(const scene& s) {
+  const auto check_material = [&](const std::string& where, int material) {
+    if (material < 0 || std::size_t(material) >= s.materials.size())
+      throw usage_error(where + ": material index " + std::to_string(material) + " does not exist");
+  };
+  if (s.cameras.empty()) throw usage_error(s.name + ": the scene has no camera");
+  if (object_count(s) > max_scene_objects)
+    throw usage_error(s.name + ": " + std::to_string(object_count(s)) + " objects are more than " +
+                      std::to_string(max_scene_objects) + " (a BVH leaf reference's 29 bits)");
+  for (std::size_t i = 0; i < s.cameras.size(); ++i) {
+    const named_camera& c = s.cameras[i];
+    if (!valid_camera_name(c.name))
+      throw usage_error(s.name + ": camera " + std::to_string(i) + ": name \"" + c.name +
+                        "\" is not a valid camera name");
+    for (std::size_t k = 0; k < i; ++k)
+      if (s.cameras[k].name == c.name)
+        throw usage_error(s.name + ": two cameras are named \"" + c.name + "\"");
+    try {
+      check_camera_path(c.path);
+    } catch (const std::invalid_argument& e) {
+      throw usage_error(s.name + ": camera " + c.name + ": " + e.what());
+    }
+  }
+  check_objects(s.name, s.spheres, s.quads, s.triangles, s.shading, check_material);
+  for (const object_group& g : s.groups) {
+    const std::string who = s.name + ": group " + g.name;
+    if (empty(g)) throw usage_error(who + ": the group has no object");
+    check_objects(who, g.spheres, g.quads, g.triangles, g.shading, check_material);
+    for (std::size_t i = 0; i < g.spheres.size(); ++i)
+      if (g.spheres[i].center1)
+        throw usage_error(who + ": sphere " + std::to_string(i) + " moves (a group's cannot)");
+  }
+  for (std::size_t i = 0; i < s.instances.size(); ++i) {
+    const instance& in = s.instances[i];
+    const std::string where = s.name + ": instance " + std::to_string(i);
+    if (in.group >= s.groups.size())
+      throw usage_error(where + ": group index " + std::to_string(in.group) + " does not exist");
+    if (const auto why = degenerate(in.placement)) throw usage_error(where + ": " + *why);
+    for (const point3& c : group_corners(s.groups[in.group]))
+      check_point(where + ": its group's bounds, placed,", in.placement.apply_point(c));
   }
 }
 

@@ -6,6 +6,7 @@
 #include "camera.h"
 #include "camera_path.h"
 #include "material.h"
+#include "object_group.h"
 #include "quad.h"
 #include "render_settings.h"
 #include "sphere.h"
@@ -47,15 +48,22 @@ struct scene {
   std::vector<quad> quads;                // the second book's (a box is six)
   std::vector<triangle> triangles;        // given alone, or faces of meshes
   std::vector<triangle_shading> shading;  // triangles' vertex normals and uv
+  // Groups of objects stored once, and their placements: hit after every object above, in
+  // instance order, each instance's objects in its group's order (spheres, quads, triangles).
+  std::vector<object_group> groups;
+  std::vector<instance> instances;
   time_span motion;  // the instants rays may sample, seconds: BVHs bound moving spheres over it
                      // (render plans widen it to every frame's shutter; default [0, 1])
 };
 
 std::vector<material> scene_materials(const scene& s);
 
-// Objects of every kind: spheres + quads + triangles.
+// Objects stored, of every kind: spheres + quads + triangles, the groups' included once each
+// (however many instances place them).
 inline std::size_t object_count(const scene& s) {
-  return s.spheres.size() + s.quads.size() + s.triangles.size();
+  std::size_t n = s.spheres.size() + s.quads.size() + s.triangles.size();
+  for (const object_group& g : s.groups) n += object_count(g);
+  return n;
 }
 
 // The book's box: the six quads of the axis-aligned box with opposite corners a and b, in its

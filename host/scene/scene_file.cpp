@@ -2,6 +2,7 @@
 
 #include "object_group.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -463,8 +464,9 @@ sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
     const std::optional<sphere> moved =
         placed(sp, read_transform(r, j["transform"], p + "/transform"));
     if (!moved)
-      r.fail(p + "/transform",
-             "a sphere can be scaled only uniformly (an ellipsoid is not supported yet)");
+      r.fail(
+          p + "/transform",
+          "a sphere can be scaled only uniformly (an ellipsoid is a group placed by an instance)");
     sp = *moved;
   }
   sp.material = material_named(r, j, p, material_index);
@@ -483,13 +485,10 @@ std::vector<sphere> read_spheres(const scene_reader& r, const json& root, const 
 // The groups instances place, by name: each read as the objects of a scene (spheres, quads,
 // boxes, triangles, meshes) with the scene's materials; a mesh file's own materials are added
 // to the scene's.
-std::map<std::string, object_group> read_groups(const scene_reader& r, const json& groups,
-                                                const std::filesystem::path& base,
-                                                const std::map<std::string, int>& material_index,
-                                                scene& s) {
+void read_groups(const scene_reader& r, const json& groups, const std::filesystem::path& base,
+                 const std::map<std::string, int>& material_index, scene& s) {
   if (!groups.is_object())
     r.fail("/groups", "expected an object of named groups, got " + r.type_of(groups));
-  std::map<std::string, object_group> out;
   for (const auto& [name, j] : groups.items()) {
     const std::string p = "/groups/" + escape_pointer(name);
     if (!j.is_object()) r.fail(p, "expected an object, got " + r.type_of(j));
@@ -500,36 +499,37 @@ std::map<std::string, object_group> read_groups(const scene_reader& r, const jso
     read_flat_objects(r, j, p, material_index, g);
     read_meshes(r, j, p, base, material_index, g);
     s.materials = std::move(g.materials);
-    object_group& group = out[name];
-    group = {std::move(g.spheres), std::move(g.quads), std::move(g.triangles),
-             std::move(g.shading)};
+    for (std::size_t k = 0; k < g.spheres.size(); ++k)
+      if (g.spheres[k].center1)
+        r.fail(p + "/spheres/" + std::to_string(k) + "/center1",
+               "a group's spheres cannot move (instances place still objects)");
+    object_group group{name, std::move(g.spheres), std::move(g.quads), std::move(g.triangles),
+                       std::move(g.shading)};
     if (empty(group)) r.fail(p, "the group has no object (nothing an instance could place)");
+    s.groups.push_back(std::move(group));
   }
-  return out;
 }
 
-// Each instance: its group's objects placed by its transform.
-void read_instances(const scene_reader& r, const json& root,
-                    const std::map<std::string, object_group>& groups, scene& s) {
+// Each instance: a group and its placement.
+void read_instances(const scene_reader& r, const json& root, scene& s) {
   read_array(r, root, "", "instances", [&](const json& j, const std::string& p) {
     r.only_fields(j, p, {"group", "transform"});
     const json& name = r.required(j, p, "group");
-    const auto found = name.is_string() ? groups.find(name.get<std::string>()) : groups.end();
-    if (found == groups.end()) {
+    const auto found = std::find_if(s.groups.begin(), s.groups.end(), [&](const object_group& g) {
+      return name.is_string() && g.name == name.get<std::string>();
+    });
+    if (found == s.groups.end()) {
       std::string known;
-      for (const auto& [n, g] : groups) known += (known.empty() ? "" : ", ") + n;
+      for (const object_group& g : s.groups) known += (known.empty() ? "" : ", ") + g.name;
       r.fail(p + "/group",
              "expected the name of a group (" +
                  (known.empty() ? std::string("the scene has none") : known) + "), got " +
                  (name.is_string() ? "\"" + name.get<std::string>() + "\"" : r.type_of(name)));
     }
-    const object_group& g = found->second;
-    if (object_count(s) + g.spheres.size() + g.quads.size() + g.triangles.size() >
-        max_scene_objects)
-      r.fail(p, "the instances place more than " + std::to_string(max_scene_objects) +
-                    " objects (a scene's most)");
-    if (const auto why = place_group(s, g, optional_transform(r, j, p)))
-      r.fail(p + "/transform", *why);
+    if (s.instances.size() >= std::size_t(RTVK_LEAF_INDEX_MASK))
+      r.fail(p, "more than " + std::to_string(std::size_t(RTVK_LEAF_INDEX_MASK)) +
+                    " instances (a BVH leaf reference's 29 bits, less one)");
+    s.instances.push_back({std::uint32_t(found - s.groups.begin()), optional_transform(r, j, p)});
   });
 }
 
@@ -553,10 +553,8 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
   read_flat_objects(r, root, "", material_index, s);
   read_meshes(r, root, "", base, material_index, s);
   if (root.contains("groups") || root.contains("instances")) {
-    const auto groups = root.contains("groups")
-                            ? read_groups(r, root["groups"], base, material_index, s)
-                            : std::map<std::string, object_group>{};
-    read_instances(r, root, groups, s);
+    if (root.contains("groups")) read_groups(r, root["groups"], base, material_index, s);
+    read_instances(r, root, s);
   }
   if (!root.contains("spheres") && object_count(s) == 0 && !root.contains("meshes") &&
       !root.contains("instances"))
@@ -653,6 +651,49 @@ std::string dump_camera_json(const camera_pose& pose) {
   return pose_json(pose).dump();
 }
 
+namespace {
+
+// The objects of the scene or of a group, as their fields: spheres always (a scene file's
+// required field), quads and triangles where there are some.
+void write_objects(json& root, const scene& s, const std::vector<sphere>& sphere_list,
+                   const std::vector<quad>& quad_list, const std::vector<triangle>& triangle_list,
+                   const std::vector<triangle_shading>& shading) {
+  const auto material_name = [&](int m) { return s.materials[std::size_t(m)].name; };
+  json spheres = json::array();
+  for (const sphere& sp : sphere_list) {
+    json j = {{"center", vec_json(sp.center)}};
+    if (sp.center1) j["center1"] = vec_json(*sp.center1);
+    j["radius"] = sp.radius;
+    j["material"] = material_name(sp.material);
+    spheres.push_back(j);
+  }
+  root["spheres"] = spheres;
+  if (!quad_list.empty()) {
+    json quads = json::array();
+    for (const quad& q : quad_list)
+      quads.push_back({{"Q", vec_json(q.Q)},
+                       {"u", vec_json(q.u)},
+                       {"v", vec_json(q.v)},
+                       {"material", material_name(q.material)}});
+    root["quads"] = quads;
+  }
+  if (!triangle_list.empty()) {
+    json triangles = json::array();
+    for (const triangle& t : triangle_list) {
+      json j = {{"vertices", json::array({vec_json(t.p[0]), vec_json(t.p[1]), vec_json(t.p[2])})}};
+      if (t.shading >= 0 && shading[std::size_t(t.shading)].has_normals()) {
+        const auto& n = shading[std::size_t(t.shading)].normal;
+        j["normals"] = json::array({vec_json(n[0]), vec_json(n[1]), vec_json(n[2])});
+      }
+      j["material"] = material_name(t.material);
+      triangles.push_back(j);
+    }
+    root["triangles"] = triangles;
+  }
+}
+
+}  // namespace
+
 std::string dump_scene_json(const scene& s) {
   json root;
   if (s.cameras.size() == 1 && s.cameras[0].name == "default") {
@@ -680,37 +721,29 @@ std::string dump_scene_json(const scene& s) {
     mats[name] = j;
   }
   root["materials"] = mats;
-  json spheres = json::array();
-  for (const sphere& sp : s.spheres) {
-    json j = {{"center", vec_json(sp.center)}};
-    if (sp.center1) j["center1"] = vec_json(*sp.center1);
-    j["radius"] = sp.radius;
-    j["material"] = s.materials[std::size_t(sp.material)].name;
-    spheres.push_back(j);
-  }
-  root["spheres"] = spheres;
-  const auto material_name = [&](int m) { return s.materials[std::size_t(m)].name; };
-  if (!s.quads.empty()) {
-    json quads = json::array();
-    for (const quad& q : s.quads)
-      quads.push_back({{"Q", vec_json(q.Q)},
-                       {"u", vec_json(q.u)},
-                       {"v", vec_json(q.v)},
-                       {"material", material_name(q.material)}});
-    root["quads"] = quads;
-  }
-  if (!s.triangles.empty()) {
-    json triangles = json::array();
-    for (const triangle& t : s.triangles) {
-      json j = {{"vertices", json::array({vec_json(t.p[0]), vec_json(t.p[1]), vec_json(t.p[2])})}};
-      if (t.shading >= 0 && s.shading[std::size_t(t.shading)].has_normals()) {
-        const auto& n = s.shading[std::size_t(t.shading)].normal;
-        j["normals"] = json::array({vec_json(n[0]), vec_json(n[1]), vec_json(n[2])});
-      }
-      j["material"] = material_name(t.material);
-      triangles.push_back(j);
+  write_objects(root, s, s.spheres, s.quads, s.triangles, s.shading);
+  if (!s.groups.empty()) {
+    json groups = json::object();
+    for (const object_group& g : s.groups) {
+      json objects = json::object();
+      write_objects(objects, s, g.spheres, g.quads, g.triangles, g.shading);
+      groups[g.name] = objects;
     }
-    root["triangles"] = triangles;
+    root["groups"] = groups;
+    json instances = json::array();
+    for (const instance& i : s.instances) {
+      json j = {{"group", s.groups[i.group].name}};
+      if (!i.placement.is_identity()) {
+        json m = json::array();
+        for (int row = 0; row < 3; ++row) {
+          for (int col = 0; col < 3; ++col) m.push_back(i.placement.linear[col][row]);
+          m.push_back(i.placement.offset[row]);
+        }
+        j["transform"] = {{"matrix", m}};
+      }
+      instances.push_back(j);
+    }
+    root["instances"] = instances;
   }
   std::string out;
   write_json(root, 0, out);

@@ -33,6 +33,7 @@ using uvec2 = glm::uvec2;
 #define RTVK_BINDING_QUADS 8        // storage buffer: gpu_quad[], in the BVH's leaf order
 #define RTVK_BINDING_TRIANGLES 13   // storage buffer: gpu_triangle[], in the BVH's leaf order
 #define RTVK_BINDING_NORMALS 14     // storage buffer: vec4[], smooth triangles' vertex normals
+#define RTVK_BINDING_INSTANCES 15   // storage buffer: gpu_instance[], in scene order
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
 
@@ -45,6 +46,8 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_MOTION 6      // bool: some sphere moves (gpu_sphere::velocity is not zero)
 #define RTVK_SPEC_QUADS 7       // bool: the scene has quads
 #define RTVK_SPEC_TRIANGLES 8   // bool: the scene has triangles
+#define RTVK_SPEC_INSTANCES 9   // bool: the scene has instances
+#define RTVK_SPEC_COUNT 10      // constant ids in use
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 112 camera
 // blocks of 144 bytes are 15.75 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
@@ -135,6 +138,28 @@ struct gpu_triangle {
 };
 #define RTVK_FLAT 0xffffffffu
 
+// std430 array element: one placement of a group (host/accel/scene_tree.h), 128 bytes. The ray
+// enters the group's space as (dot(to_group_x.xyz, p) + to_group_x.w, ...) for points and without
+// the w for directions; normals come back by the rows normal_x, normal_y, normal_z (the inverse
+// transpose), whose w holds a bound on the placement's stretch. The group's objects are the
+// spans [first, first + count) of each kind's array (its tree, at node `root`, refers to them).
+struct gpu_instance {
+  vec4 to_group_x;      // first row of the inverse placement, translation in w
+  vec4 to_group_y;      // second row
+  vec4 to_group_z;      // third row
+  vec4 normal_x;        // first row of the normal matrix; w: the placement's stretch bound
+  vec4 normal_y;        // second row
+  vec4 normal_z;        // third row
+  uint root;            // the group's tree root (bvh_wide_node index)
+  uint sphere_first;    // the group's spheres in the sphere array
+  uint sphere_count;    //
+  uint quad_first;      // its quads in the quad array
+  uint quad_count;      //
+  uint triangle_first;  // its triangles in the triangle array
+  uint triangle_count;  //
+  uint pad0;            // unused
+};
+
 // std430 array element: 32 bytes.
 struct gpu_material {
   vec3 albedo;  // fraction of light kept per channel
@@ -183,7 +208,12 @@ struct bvh_wide_node {
 #define RTVK_LEAF_SPHERE 0x00000000u
 #define RTVK_LEAF_QUAD 0x20000000u
 #define RTVK_LEAF_TRIANGLE 0x40000000u
+#define RTVK_LEAF_INSTANCE 0x60000000u  // position: the instance's index (gpu_instance[])
 #define RTVK_LEAF_INDEX_MASK 0x1fffffffu
+// Not a child: what a walk remembers when it enters an instance, so that it goes back to the
+// scene's ray when it comes off the stack (the instance leaf RTVK_LEAF_INSTANCE | 0x1fffffff, with
+// the leaf bit: no instance has that index).
+#define RTVK_WIDE_EXIT 0xffffffffu
 // Remembered children of a four-wide walk: three at most per level of its path, which is at most
 // RTVK_BVH_STACK levels long.
 #define RTVK_WIDE_STACK (3 * RTVK_BVH_STACK)
@@ -212,6 +242,7 @@ struct render_push {
                         // the buffer holds the whole image: the viewer's accumulation)
   uint quad_count;      // quads in the storage buffer
   uint triangle_count;  // triangles in the storage buffer
+  uint instance_count;  // instances in their storage buffer
 };
 
 // std430 array element: one pixel's exact running sums, 48 bytes. Each channel is a 96-bit
@@ -387,7 +418,8 @@ static_assert(offsetof(render_push, sample_limit) == 68);
 static_assert(offsetof(render_push, sums_row0) == 72);
 static_assert(offsetof(render_push, quad_count) == 76);
 static_assert(offsetof(render_push, triangle_count) == 80);
-static_assert(sizeof(render_push) == 84 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, instance_count) == 84);
+static_assert(sizeof(render_push) == 88 && sizeof(render_push) <= 128);
 static_assert(offsetof(gpu_quad, material) == 12);
 static_assert(offsetof(gpu_quad, u) == 16);
 static_assert(offsetof(gpu_quad, scene_index) == 28);
@@ -402,6 +434,14 @@ static_assert(offsetof(gpu_triangle, scene_index) == 28);
 static_assert(offsetof(gpu_triangle, c) == 32);
 static_assert(offsetof(gpu_triangle, normals) == 44);
 static_assert(sizeof(gpu_triangle) == 48);
+static_assert(offsetof(gpu_instance, to_group_y) == 16);
+static_assert(offsetof(gpu_instance, normal_x) == 48);
+static_assert(offsetof(gpu_instance, normal_z) == 80);
+static_assert(offsetof(gpu_instance, root) == 96);
+static_assert(offsetof(gpu_instance, sphere_count) == 104);
+static_assert(offsetof(gpu_instance, quad_count) == 112);
+static_assert(offsetof(gpu_instance, triangle_count) == 120);
+static_assert(sizeof(gpu_instance) == 128);
 static_assert(offsetof(pixel_sum, r) == 0);
 static_assert(offsetof(pixel_sum, g) == 8);
 static_assert(offsetof(pixel_sum, b) == 16);

@@ -2,6 +2,7 @@
 // them, the BVH as the linear scan, and closed meshes watertight in float too.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -75,12 +76,78 @@ TEST_F(GpuShapes, InstancesOfGroupsMatchTheCpu) {
       R"({"group":"thing","transform":{"scale":[-1,1,1],"translate":[0.4,0,1]}},)"
       R"({"group":"wedge","transform":{"scale":[3,1,0.5],"rotate":{"axis":[1,1,0],"degrees":25},"translate":[-0.6,0.8,0.8]}}]})",
       "instances.json");
-  ASSERT_EQ(s.spheres.size(), 4u);
-  ASSERT_EQ(s.quads.size(), 1u + 4 * 6);
-  ASSERT_EQ(s.triangles.size(), 5u);
+  ASSERT_EQ(s.groups.size(), 2u);  // stored once: the GPU walks each group's tree in its space
+  ASSERT_EQ(s.instances.size(), 5u);
   const image_difference d = gpu_vs_cpu(gpu(), s);
   EXPECT_LE(d.pixels_over, 160 * 90 / 500) << "of " << 160 * 90;
   EXPECT_GE(d.psnr_db, 50);
+  // What copies of the objects draw (flatten_instances: the objects placed one by one).
+  const image_difference copies =
+      compare_images(test::gpu_image(gpu(), s), test::cpu_image(flatten_instances(s)), 2);
+  EXPECT_LE(copies.pixels_over, 160 * 90 / 500) << "of " << 160 * 90;
+  // The GPU's scan without the BVH draws what its two-level walk draws.
+  auto image = [&](bool bvh) {
+    return quantize(gpu::render_gpu(gpu(), test::scene_camera(s), s, s.render, {},
+                                    {.engine = {.use_bvh = bvh}}),
+                    2);
+  };
+  EXPECT_EQ(image(true).rgb, image(false).rgb);
+}
+
+// An ellipsoid (a unit sphere stretched 3 times along x and turned 30 degrees about z), and a
+// mirrored, stretched box, under normal shading: the GPU carries hits back from each group's
+// space as the CPU does.
+TEST_F(GpuShapes, EllipsoidsAndStretchedInstancesMatchTheCpu) {
+  const scene s = parse_scene_json(
+      R"({"materials":{"n":{"type":"normal"}},)"
+      R"("camera":{"lookfrom":[0,1,5],"lookat":[0,0.5,0],"vfov":45},)"
+      R"("render":{"width":160,"aspect":"16:9","spp":1,"jitter":false},)"
+      R"("groups":{"ball":{"spheres":[{"center":[0,0,0],"radius":0.5,"material":"n"}]},)"
+      R"("crate":{"boxes":[{"a":[0,0,0],"b":[1,1,1],"material":"n"}]}},)"
+      R"("instances":[{"group":"ball","transform":{"scale":[3,1,1],"rotate":{"axis":[0,0,1],"degrees":30},"translate":[-0.5,1,0]}},)"
+      R"({"group":"ball","transform":{"scale":[0.5,2,0.5],"translate":[1.6,0.2,0.5]}},)"
+      R"({"group":"crate","transform":{"scale":[-1.5,0.4,0.8],"rotate":{"axis":[0,1,0],"degrees":20},"translate":[0.5,-0.6,-0.5]}}]})",
+      "ellipsoids.json");
+  const image_difference d = gpu_vs_cpu(gpu(), s);
+  EXPECT_LE(d.pixels_over, 160 * 90 / 500) << "of " << 160 * 90;
+  EXPECT_GE(d.psnr_db, 50);
+}
+
+// Through the world probe, ray by ray: exact ties between the scene's quad and two instances'
+// quads at the same place go to the last instance, as in the CPU's scan, through the two-level
+// walk and the scan alike; and an ellipsoid is hit where its equation says (x^2/4 + y^2 + z^2 =
+// 1 at z = -5; bvh_world's test, in float).
+TEST_F(GpuShapes, InstancesKeepTheScansTiesAndHitEllipsoidsWhereTheCpuDoes) {
+  const scene s = parse_scene_json(
+      R"({"materials":{"a":{"type":"normal"},"b":{"type":"normal"},"c":{"type":"normal"}},)"
+      R"("quads":[{"Q":[-1,-1,-3],"u":[2,0,0],"v":[0,2,0],"material":"a"}],)"
+      R"("groups":{"g":{"quads":[{"Q":[-1,-1,0],"u":[2,0,0],"v":[0,2,0],"material":"b"}]},)"
+      R"("h":{"quads":[{"Q":[-1,-1,0],"u":[2,0,0],"v":[0,2,0],"material":"c"}]},)"
+      R"("ball":{"spheres":[{"center":[0,0,0],"radius":1,"material":"c"}]}},)"
+      R"("instances":[{"group":"h","transform":{"translate":[0,0,-3]}},)"
+      R"({"group":"g","transform":{"translate":[0,0,-3]}},)"
+      R"({"group":"ball","transform":{"scale":[2,1,1],"translate":[10,0,-5]}}]})",
+      "ties.json");
+  std::vector<gpu::world_probe_entry> entries(3);
+  entries[0].origin = glm::vec3(0.1f, 0.2f, 0);
+  entries[0].direction = glm::vec3(0, 0, -1);
+  entries[1].origin = glm::vec3(20, 0, -5);  // along -x into the ellipsoid at x = 12
+  entries[1].direction = glm::vec3(-1, 0, 0);
+  entries[2].origin = glm::vec3(14, 4, -5);  // along (-1, -1, 0): x - 10 = y = 2 / sqrt(5)
+  entries[2].direction = glm::vec3(-1, -1, 0);
+  for (const bool use_bvh : {true, false}) {
+    SCOPED_TRACE(use_bvh ? "BVH" : "scan");
+    const auto got = gpu::run_world_probe(gpu(), s, use_bvh, entries);
+    ASSERT_EQ(got[0].hit, 1u);
+    EXPECT_EQ(got[0].material, 1u);  // g's "b": the last placed
+    ASSERT_EQ(got[1].hit, 1u);
+    EXPECT_NEAR(got[1].t, 8, 1e-5);
+    EXPECT_NEAR(got[1].normal.x, 1, 1e-5);
+    ASSERT_EQ(got[2].hit, 1u);
+    EXPECT_NEAR(got[2].t, 4 - 2 / std::sqrt(5.0), 1e-5);
+    EXPECT_NEAR(got[2].normal.x, 1 / std::sqrt(17.0), 1e-5);
+    EXPECT_NEAR(got[2].normal.y, 4 / std::sqrt(17.0), 1e-5);
+  }
 }
 
 // A mesh file with vertex normals (smooth shading) and no materials of its own, read from OBJ

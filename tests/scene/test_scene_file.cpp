@@ -101,7 +101,18 @@ TEST(SceneFile, InstancesPlaceTheirGroupsObjects) {
       R"("triangles":[{"vertices":[[0,0,0],[1,0,0],[0,1,0]],"normals":[[0,0,1],[1,0,0],[0,1,0]],"material":"m"}]}},)"
       R"("instances":[{"group":"g","transform":{"scale":2,"rotate":{"axis":[0,0,1],"degrees":90},"translate":[0,0,5]}},)"
       R"({"group":"g","transform":{"scale":[-1,1,1]}}]})";
-  const scene s = parse_scene_json(text, "instances.json");
+  const scene placed = parse_scene_json(text, "instances.json");
+  check_scene(placed);
+  ASSERT_EQ(placed.groups.size(), 1u);  // stored once
+  ASSERT_EQ(placed.instances.size(), 2u);
+  EXPECT_TRUE(placed.spheres.empty());
+  EXPECT_EQ(placed.instances[1].placement.linear[0][0], -1);
+  // Written as groups and instances (the placements as matrices), and read back the same.
+  const std::string dumped = dump_scene_json(placed);
+  EXPECT_NE(dumped.find("\"instances\""), std::string::npos);
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "again.json")), dumped);
+  // What the renderers must draw: the group's objects copied into place.
+  const scene s = flatten_instances(placed);
   check_scene(s);
   ASSERT_EQ(s.spheres.size(), 2u);
   EXPECT_EQ(s.spheres[0].center, point3(0, 2, 5));
@@ -126,15 +137,12 @@ TEST(SceneFile, InstancesPlaceTheirGroupsObjects) {
   EXPECT_TRUE(near(s.shading[0].normal[1], vec3(0, 1, 0)));   // (1,0,0) turned a quarter
   EXPECT_TRUE(near(s.shading[1].normal[1], vec3(0, 1, 0)));   // the second vertex's, moved
   EXPECT_TRUE(near(s.shading[1].normal[2], vec3(-1, 0, 0)));  // (1,0,0) mirrored, moved
-  // Written placed, as meshes are, and read back the same.
-  const std::string dumped = dump_scene_json(s);
-  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "again.json")), dumped);
 }
 
 // A group placed with the identity is its objects as if written at the top level.
 TEST(SceneFile, AnInstanceWithoutATransformIsItsGroup) {
   const std::string objects =
-      R"("spheres":[{"center":[1,2,3],"radius":0.5,"center1":[1,3,3],"material":"m"}],)"
+      R"("spheres":[{"center":[1,2,3],"radius":0.5,"material":"m"}],)"
       R"("boxes":[{"a":[0,0,0],"b":[1,2,3],"material":"m"}],)"
       R"("triangles":[{"vertices":[[0,0,0],[1,0,0],[0,1,0]],"normals":[[0,0,1],[0,0.5,1],[0.5,0,1]],"material":"m"}])";
   const std::string m = R"({"materials":{"m":{"type":"lambertian","albedo":[0.5,0.5,0.5]}},)";
@@ -142,7 +150,7 @@ TEST(SceneFile, AnInstanceWithoutATransformIsItsGroup) {
   const scene placed = parse_scene_json(
       m + R"("groups":{"thing":{)" + objects + R"(}},"instances":[{"group":"thing"}]})",
       "placed.json");
-  EXPECT_EQ(dump_scene_json(placed), dump_scene_json(direct));
+  EXPECT_EQ(dump_scene_json(flatten_instances(placed)), dump_scene_json(direct));
 }
 
 // A transform given as a row-major matrix places exactly as the same scale, rotation and
@@ -305,8 +313,8 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
            R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"m"}]}},"instances":[{}]})",
        "/instances/0: missing field \"group\""},
       {"{" + m +
-           R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"m"}]}},"instances":[{"group":"g","transform":{"scale":[1,2,1]}}]})",
-       "/instances/0/transform: the group has a sphere, which can be scaled only uniformly"},
+           R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"center1":[0,1,0],"radius":1,"material":"m"}]}}})",
+       "/groups/g/spheres/0/center1: a group's spheres cannot move"},
       {"{" + m +
            R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"m"}]}},"instances":[{"group":"g","transform":{"scale":[1,0,1]}}]})",
        "/instances/0/transform: the transform cannot place anything: it flattens space"},

@@ -70,11 +70,24 @@ std::string scene_identity(const scene& s) {
   }
   // Quads and triangles after markers of their own: sphere-only scenes keep their identity.
   for (const quad& q : s.quads) append_bytes(out, std::uint8_t(0x51), q.Q, q.u, q.v, q.material);
-  for (const triangle& t : s.triangles) {
-    append_bytes(out, std::uint8_t(0x54), t.p, t.material);
-    if (t.shading >= 0 && s.shading[std::size_t(t.shading)].has_normals())
-      append_bytes(out, s.shading[std::size_t(t.shading)].normal);
+  const auto triangles = [&](const std::vector<triangle>& list,
+                             const std::vector<triangle_shading>& shading) {
+    for (const triangle& t : list) {
+      append_bytes(out, std::uint8_t(0x54), t.p, t.material);
+      if (t.shading >= 0 && shading[std::size_t(t.shading)].has_normals())
+        append_bytes(out, shading[std::size_t(t.shading)].normal);
+    }
+  };
+  triangles(s.triangles, s.shading);
+  // Groups and their instances after markers of their own: scenes without keep their identity.
+  for (const object_group& g : s.groups) {
+    append_bytes(out, std::uint8_t(0x47), g.spheres.size(), g.quads.size(), g.triangles.size());
+    for (const sphere& sp : g.spheres) append_bytes(out, sp.center, sp.radius, sp.material);
+    for (const quad& q : g.quads) append_bytes(out, q.Q, q.u, q.v, q.material);
+    triangles(g.triangles, g.shading);
   }
+  for (const instance& i : s.instances)
+    append_bytes(out, std::uint8_t(0x49), i.group, i.placement.linear, i.placement.offset);
   return out;
 }
 

@@ -515,7 +515,7 @@ const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool co
   const std::uint32_t switches = (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u);
   std::unique_ptr<compute_pipeline>& p = pipelines_[switches];
   if (!p) {
-    std::uint32_t spec[RTVK_SPEC_TRIANGLES + 1] = {};  // by constant_id
+    std::uint32_t spec[RTVK_SPEC_COUNT] = {};  // by constant_id
     spec[0] = wg_[0];
     spec[1] = wg_[1];
     spec[RTVK_SPEC_JITTER] = jitter;

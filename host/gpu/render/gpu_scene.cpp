@@ -6,8 +6,8 @@
 #include <cstring>
 #include "bvh.h"
 #include "elapsed.h"
-#include "leaf_layout.h"
 #include "packing.h"
+#include "scene_tree.h"
 #include "wide_bvh.h"
 
 namespace rtvk::gpu {
@@ -36,25 +36,27 @@ enum : int { staging_set = 1, array_set };
 
 gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   const auto start = std::chrono::steady_clock::now();
-  const primitive_spans objects{s.spheres, s.quads, s.triangles};
-  const bvh tree(use_bvh ? objects : primitive_spans{}, 0, s.motion);
-  const leaf_layout layout = make_leaf_layout(tree, objects);
-  const wide_bvh wide(tree, layout.refs);
+  const scene_tree tree = build_scene_tree(primitive_spans{s.spheres, s.quads, s.triangles},
+                                           s.groups, s.instances, use_bvh, 0, s.motion);
   const double seconds = seconds_since(start);
-  std::vector<bvh_wide_node> nodes(wide.nodes().size());
+  std::vector<bvh_wide_node> nodes(tree.nodes.size());
   static_assert(sizeof(bvh_wide_node) == sizeof(wide_node));
   if (!nodes.empty())
-    std::memcpy(nodes.data(), wide.nodes().data(), nodes.size() * sizeof(wide_node));
-  host_arrays a{to_gpu_spheres(s, layout.spheres),
+    std::memcpy(nodes.data(), tree.nodes.data(), nodes.size() * sizeof(wide_node));
+  host_arrays a{to_gpu_spheres(s, tree.spheres),
                 to_gpu_materials(s),
                 std::move(nodes),
-                to_gpu_velocities(s, layout.spheres),
-                to_gpu_quads(s, layout.quads),
+                to_gpu_velocities(s, tree.spheres),
+                to_gpu_quads(s, tree.quads),
                 {},
                 {},
                 seconds,
-                scene_moves(s)};
-  a.triangles = to_gpu_triangles(s, layout.triangles, a.normals);
+                scene_moves(s),
+                to_gpu_instances(s, tree.groups),
+                std::uint32_t(s.spheres.size()),
+                std::uint32_t(s.quads.size()),
+                std::uint32_t(s.triangles.size())};
+  a.triangles = to_gpu_triangles(s, tree.triangles, a.normals);
   return a;
 }
 
@@ -65,6 +67,10 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
     : sphere_count_(std::uint32_t(a.spheres.size())),
       quad_count_(std::uint32_t(a.quads.size())),
       triangle_count_(std::uint32_t(a.triangles.size())),
+      own_spheres_(a.own_spheres),
+      own_quads_(a.own_quads),
+      own_triangles_(a.own_triangles),
+      instance_count_(std::uint32_t(a.instances.size())),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
       specs_{{bytes_of(a.spheres), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
@@ -73,7 +79,8 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
              {bytes_of(a.velocities), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
              {bytes_of(a.quads), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
              {bytes_of(a.triangles), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.normals), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
+             {bytes_of(a.normals), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.instances), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
       staging_(
           host_writes_device_memory(ctx)
               ? std::nullopt
@@ -91,13 +98,14 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
   write_array(to[4], a.quads);
   write_array(to[5], a.triangles);
   write_array(to[6], a.normals);
+  write_array(to[7], a.instances);
 }
 
 std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const host_arrays& a) {
   const VkDeviceSize spheres = bytes_of(a.spheres), materials = bytes_of(a.materials),
                      nodes = bytes_of(a.nodes), velocities = bytes_of(a.velocities),
                      quads = bytes_of(a.quads), triangles = bytes_of(a.triangles),
-                     normals = bytes_of(a.normals);
+                     normals = bytes_of(a.normals), instances = bytes_of(a.instances);
   using u = memory_use;
   if (host_writes_device_memory(ctx))
     return {{"the sphere array", spheres, true, u::device_mapped, array_set},
@@ -106,7 +114,8 @@ std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const hos
             {"the velocity array", velocities, true, u::device_mapped, array_set},
             {"the quad array", quads, true, u::device_mapped, array_set},
             {"the triangle array", triangles, true, u::device_mapped, array_set},
-            {"the vertex normal array", normals, true, u::device_mapped, array_set}};
+            {"the vertex normal array", normals, true, u::device_mapped, array_set},
+            {"the instance array", instances, true, u::device_mapped, array_set}};
   return {{"the spheres' upload copy", spheres, false, u::staging, staging_set},
           {"the sphere array", spheres, true, u::device_local, array_set},
           {"the materials' upload copy", materials, false, u::staging, staging_set},
@@ -120,27 +129,35 @@ std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const hos
           {"the triangles' upload copy", triangles, false, u::staging, staging_set},
           {"the triangle array", triangles, true, u::device_local, array_set},
           {"the vertex normals' upload copy", normals, false, u::staging, staging_set},
-          {"the vertex normal array", normals, true, u::device_local, array_set}};
+          {"the vertex normal array", normals, true, u::device_local, array_set},
+          {"the instances' upload copy", instances, false, u::staging, staging_set},
+          {"the instance array", instances, true, u::device_local, array_set}};
 }
 
 std::vector<buffer_binding> gpu_scene::object_bindings() const {
   constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  return {
-      {RTVK_BINDING_SPHERES, storage, spheres()}, {RTVK_BINDING_VELOCITIES, storage, velocities()},
-      {RTVK_BINDING_QUADS, storage, quads()},     {RTVK_BINDING_TRIANGLES, storage, triangles()},
-      {RTVK_BINDING_NORMALS, storage, normals()}, {RTVK_BINDING_BVH_NODES, storage, nodes()}};
+  return {{RTVK_BINDING_SPHERES, storage, spheres()},
+          {RTVK_BINDING_VELOCITIES, storage, velocities()},
+          {RTVK_BINDING_QUADS, storage, quads()},
+          {RTVK_BINDING_TRIANGLES, storage, triangles()},
+          {RTVK_BINDING_NORMALS, storage, normals()},
+          {RTVK_BINDING_BVH_NODES, storage, nodes()},
+          {RTVK_BINDING_INSTANCES, storage, instances()}};
 }
 
 void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
   spec[RTVK_SPEC_MOTION] = moves_;
   spec[RTVK_SPEC_QUADS] = quad_count_ > 0;
   spec[RTVK_SPEC_TRIANGLES] = triangle_count_ > 0;
+  spec[RTVK_SPEC_INSTANCES] = instance_count_ > 0;
 }
 
 void gpu_scene::set_counts(render_push& push) const {
-  push.sphere_count = sphere_count_;
-  push.quad_count = quad_count_;
-  push.triangle_count = triangle_count_;
+  // The scene's own: a scan without the BVH tests them, then each instance's group.
+  push.sphere_count = own_spheres_;
+  push.quad_count = own_quads_;
+  push.triangle_count = own_triangles_;
+  push.instance_count = instance_count_;
 }
 
 void gpu_scene::record_upload(VkCommandBuffer cb) const {

@@ -35,6 +35,9 @@ class gpu_scene {
     std::vector<vec4> normals;            // smooth triangles' vertex normals, three each
     double build_seconds;                 // building the BVH took
     bool moves;                           // some sphere has a velocity
+    std::vector<gpu_instance> instances;  // in scene order
+    // The scene's own objects of each kind: the first of each array (the groups' follow).
+    std::uint32_t own_spheres = 0, own_quads = 0, own_triangles = 0;
   };
   // The scene's arrays, its BVH built (over no spheres when !use_bvh).
   static host_arrays build(const scene& s, bool use_bvh);
@@ -60,6 +63,7 @@ class gpu_scene {
   VkBuffer quads() const { return arrays_[4].get(); }
   VkBuffer triangles() const { return arrays_[5].get(); }
   VkBuffer normals() const { return arrays_[6].get(); }
+  VkBuffer instances() const { return arrays_[7].get(); }
   // The bindings of the objects and the BVH (shaders/scene_buffers.glsl's), for every shader
   // that traces rays through the scene.
   std::vector<buffer_binding> object_bindings() const;
@@ -70,11 +74,13 @@ class gpu_scene {
   void set_counts(render_push& push) const;
 
  private:
-  std::uint32_t sphere_count_;         // spheres the scene has
-  std::uint32_t quad_count_;           // quads
-  std::uint32_t triangle_count_;       // triangles
-  double build_seconds_;               // building the BVH took
-  bool moves_;                         // some sphere has a velocity
+  std::uint32_t sphere_count_;                             // spheres the scene has
+  std::uint32_t quad_count_;                               // quads
+  std::uint32_t triangle_count_;                           // triangles
+  std::uint32_t own_spheres_, own_quads_, own_triangles_;  // of them, the scene's own
+  std::uint32_t instance_count_;                           // instances
+  double build_seconds_;                                   // building the BVH took
+  bool moves_;                                             // some sphere has a velocity
   std::vector<buffer_spec> specs_;     // spheres, materials, nodes, velocities, quads, triangles,
                                        // normals: sizes for copies
   std::optional<buffer_set> staging_;  // host copies; none when written in place

@@ -25,52 +25,102 @@ camera_ubo to_ubo(const camera& cam) {
   return u;
 }
 
-std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint32_t> order) {
+namespace {
+
+// The objects of the list a slot refers to, and the index its kind starts at in the scan order.
+struct object_list {
+  const std::vector<sphere>& spheres;
+  const std::vector<quad>& quads;
+  const std::vector<triangle>& triangles;
+  const std::vector<triangle_shading>& shading;
+};
+object_list list_of(const scene& s, object_slot o) {
+  if (o.group == world_objects) return {s.spheres, s.quads, s.triangles, s.shading};
+  const object_group& g = s.groups[o.group];
+  return {g.spheres, g.quads, g.triangles, g.shading};
+}
+
+}  // namespace
+
+std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const object_slot> slots) {
   std::vector<gpu_sphere> out;
-  out.reserve(order.size());
-  for (const std::uint32_t i : order) {
-    const sphere& sp = s.spheres[i];
-    out.push_back({vec3(sp.center), float(sp.radius), uint(sp.material), i, 0, 0});
+  out.reserve(slots.size());
+  for (const object_slot o : slots) {
+    const sphere& sp = list_of(s, o).spheres[o.index];
+    out.push_back({vec3(sp.center), float(sp.radius), uint(sp.material), o.index, 0, 0});
   }
   return out;
 }
 
-std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const std::uint32_t> order) {
+std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const object_slot> slots) {
   std::vector<vec4> out;
   if (!scene_moves(s)) return out;
-  out.reserve(order.size());
-  for (const std::uint32_t i : order) out.push_back(vec4(vec3(s.spheres[i].velocity()), 0));
+  out.reserve(slots.size());
+  for (const object_slot o : slots)
+    out.push_back(o.group == world_objects ? vec4(vec3(s.spheres[o.index].velocity()), 0)
+                                           : vec4(0));
   return out;
 }
 
-std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const std::uint32_t> order) {
+std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const object_slot> slots) {
   std::vector<gpu_quad> out;
-  out.reserve(order.size());
-  const std::uint32_t first = std::uint32_t(s.spheres.size());
-  for (const std::uint32_t i : order) {
-    const quad& q = s.quads[i];
+  out.reserve(slots.size());
+  for (const object_slot o : slots) {
+    const object_list l = list_of(s, o);
+    const quad& q = l.quads[o.index];
     const quad_geometry g = q.geometry();
-    out.push_back({vec3(g.Q), uint(q.material), vec3(g.u), first + i, vec3(g.v), float(g.D),
-                   vec3(g.normal), 0, vec3(g.w), 0});
+    out.push_back({vec3(g.Q), uint(q.material), vec3(g.u), uint(l.spheres.size()) + o.index,
+                   vec3(g.v), float(g.D), vec3(g.normal), 0, vec3(g.w), 0});
   }
   return out;
 }
 
-std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const std::uint32_t> order,
+std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const object_slot> slots,
                                            std::vector<vec4>& normals) {
   std::vector<gpu_triangle> out;
-  out.reserve(order.size());
+  out.reserve(slots.size());
   normals.clear();
-  const std::uint32_t first = std::uint32_t(s.spheres.size() + s.quads.size());
-  for (const std::uint32_t i : order) {
-    const triangle& t = s.triangles[i];
+  for (const object_slot o : slots) {
+    const object_list l = list_of(s, o);
+    const triangle& t = l.triangles[o.index];
     uint smooth = RTVK_FLAT;
-    if (t.shading >= 0 && s.shading[std::size_t(t.shading)].has_normals()) {
+    if (t.shading >= 0 && l.shading[std::size_t(t.shading)].has_normals()) {
       smooth = uint(normals.size() / 3);
-      for (const rtvk::vec3& n : s.shading[std::size_t(t.shading)].normal)
+      for (const rtvk::vec3& n : l.shading[std::size_t(t.shading)].normal)
         normals.push_back(vec4(vec3(glm::normalize(n)), 0));
     }
-    out.push_back({vec3(t.p[0]), uint(t.material), vec3(t.p[1]), first + i, vec3(t.p[2]), smooth});
+    const uint first = uint(l.spheres.size() + l.quads.size());
+    out.push_back(
+        {vec3(t.p[0]), uint(t.material), vec3(t.p[1]), first + o.index, vec3(t.p[2]), smooth});
+  }
+  return out;
+}
+
+std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group_span> groups) {
+  std::vector<gpu_instance> out;
+  out.reserve(s.instances.size());
+  for (const instance& i : s.instances) {
+    const instance_frame f = frame_of(i.placement);
+    const group_span& g = groups[i.group];
+    gpu_instance in{};
+    // Rows of column-major glm matrices: row r is (m[0][r], m[1][r], m[2][r]).
+    const auto row = [](const glm::dmat3& m, int r, double w) {
+      return vec4(float(m[0][r]), float(m[1][r]), float(m[2][r]), float(w));
+    };
+    in.to_group_x = row(f.to_group, 0, f.to_group_offset.x);
+    in.to_group_y = row(f.to_group, 1, f.to_group_offset.y);
+    in.to_group_z = row(f.to_group, 2, f.to_group_offset.z);
+    in.normal_x = row(f.normal_to_world, 0, f.stretch);
+    in.normal_y = row(f.normal_to_world, 1, 0);
+    in.normal_z = row(f.normal_to_world, 2, 0);
+    in.root = g.root;
+    in.sphere_first = g.first[0];
+    in.sphere_count = g.count[0];
+    in.quad_first = g.first[1];
+    in.quad_count = g.count[1];
+    in.triangle_first = g.first[2];
+    in.triangle_count = g.count[2];
+    out.push_back(in);
   }
   return out;
 }

@@ -5,6 +5,7 @@
 
 #include "camera.h"
 #include "scene.h"
+#include "scene_tree.h"
 #include "shared_types.h"
 
 namespace rtvk::gpu {
@@ -12,19 +13,22 @@ namespace rtvk::gpu {
 // The camera's precomputed vectors and lens, rounded to float, and the image size.
 camera_ubo to_ubo(const camera& cam);
 
-// The scene's spheres, rounded to float, each with its scene index, in the order `order` gives
-// (position -> index into scene::spheres: leaf_layout::spheres, scene order without a BVH).
-std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const std::uint32_t> order);
+// The objects of each kind in the order `slots` gives (scene_tree: position -> the scene's own
+// object, or a group's), rounded to float, each with its index in the scan order: the scene
+// index for the scene's own, the index in its group's order (spheres, quads, triangles) for a
+// group's.
+std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const object_slot> slots);
 // Each sphere's velocity (xyz; center1 - center, formed in double), in the same order as
-// to_gpu_spheres; empty when no sphere moves.
-std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const std::uint32_t> order);
-// The scene's quads with their planes (formed in double), rounded to float, each with its scene
-// index, in the order `order` gives (position -> index into scene::quads).
-std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const std::uint32_t> order);
-// The scene's triangles, rounded to float, in the order `order` gives (position -> index into
-// scene::triangles), and the vertex normals of the smooth ones (three vec4 each, in `normals`).
-std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const std::uint32_t> order,
+// to_gpu_spheres (a group's spheres stand still); empty when no sphere moves.
+std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const object_slot> slots);
+// Quads with their planes (formed in double).
+std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const object_slot> slots);
+// Triangles, and the vertex normals of the smooth ones (three vec4 each, in `normals`).
+std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const object_slot> slots,
                                            std::vector<vec4>& normals);
+// The instances, in scene order: the inverse placements and normal matrices rounded to float
+// (formed in double), and where their groups are (scene_tree::groups).
+std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group_span> groups);
 // The scene's materials, in order, rounded to float.
 std::vector<gpu_material> to_gpu_materials(const scene& s);
 

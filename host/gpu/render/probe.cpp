@@ -71,7 +71,7 @@ std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s,
   const std::size_t bytes = entries.size() * sizeof(world_probe_entry);
   gpu_buffer buf(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::upload);
   buf.write(entries.data(), bytes);
-  std::uint32_t spec[RTVK_SPEC_TRIANGLES + 1] = {};
+  std::uint32_t spec[RTVK_SPEC_COUNT] = {};
   spec[RTVK_SPEC_USE_BVH] = use_bvh;
   g.specialize(spec);
   std::vector<buffer_binding> bindings = g.object_bindings();

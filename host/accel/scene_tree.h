@@ -1,0 +1,56 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "bvh.h"
+#include "object_group.h"
+#include "wide_bvh.h"
+
+namespace rtvk {
+
+// Which object an array position holds: one of the scene's own (group == world_objects, index in
+// scene order: its scene index within the kind), or object `index` of group `group` (in the
+// group's own order within the kind).
+struct object_slot {
+  std::uint32_t group;  // world_objects, or index into scene::groups
+  std::uint32_t index;  // in its list of that kind
+};
+inline constexpr std::uint32_t world_objects = ~0u;
+
+// Where a group's objects are: its tree's root among the wide nodes (with a BVH), and its
+// objects' positions in each kind's array (first, count: spheres, quads, triangles).
+struct group_span {
+  std::uint32_t root = 0;
+  std::array<std::uint32_t, 3> first{}, count{};
+};
+
+// Two levels for both backends, as hardware acceleration structures are built: one tree over
+// the scene's own objects and its instances (an instance is a leaf: RTVK_LEAF_INSTANCE | its
+// index), and one tree per group over the group's objects, stored once however many instances
+// place it. All trees' wide nodes share one array (the world's root at 0); each kind's objects
+// share one array, the world's first (in leaf order), then each group's (in its leaf order).
+// Without a BVH there are no nodes and every array is in scene order, then group order.
+struct scene_tree {
+  std::vector<wide_node> nodes;
+  std::vector<object_slot> spheres, quads, triangles;  // array position -> object
+  std::vector<group_span> groups;
+  int depth = 0;  // wide levels on the longest world path plus the longest group path
+};
+
+// `world`: the scene's own objects (no boxes). Each instance's box is its group's, placed.
+scene_tree build_scene_tree(const primitive_spans& world, std::span<const object_group> groups,
+                            std::span<const instance> instances, bool use_bvh, int threads,
+                            time_span motion);
+
+// An instance's group-space ray and back: the inverse placement, and what carries normals.
+struct instance_frame {
+  glm::dmat3 to_group;         // inverse of the placement's linear part
+  vec3 to_group_offset;        // -to_group * placement offset
+  glm::dmat3 normal_to_world;  // transpose of to_group: normals back to scene space
+  double stretch;              // the placement's largest stretch (bound): offsets grow by it
+};
+instance_frame frame_of(const transform& placement);
+
+}  // namespace rtvk

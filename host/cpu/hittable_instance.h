@@ -1,0 +1,34 @@
+#pragma once
+#include <memory>
+
+#include "hittable.h"
+#include "scene_tree.h"
+
+namespace rtvk {
+
+// The book's `translate` and `rotate_y`, for any placement: a group of objects (stored once, one
+// hittable shared by every instance) hit by the ray carried into the group's space, the hit
+// carried back. The same t reaches the same point in both spaces (the direction is not
+// renormalized); the normal goes back by the inverse transpose, so the side a ray comes from
+// (front_face) is the same in both.
+class hittable_instance final : public hittable {
+ public:
+  hittable_instance(std::shared_ptr<const hittable> group, const transform& placement)
+      : group_(std::move(group)), frame_(frame_of(placement)) {}
+
+  bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override {
+    const ray g(frame_.to_group * r.origin + frame_.to_group_offset, frame_.to_group * r.direction,
+                r.time);
+    if (!group_->hit(g, t_min, t_max, rec)) return false;
+    rec.p = ray_at(r, rec.t);
+    rec.normal = glm::normalize(frame_.normal_to_world * rec.normal);
+    rec.offset = rec.offset * frame_.stretch + flat_offset(rec.p, r);
+    return true;
+  }
+
+ private:
+  std::shared_ptr<const hittable> group_;  // the group's objects, in its own space
+  instance_frame frame_;                   // the way into that space and back
+};
+
+}  // namespace rtvk
