@@ -68,6 +68,7 @@ bench final-4k-gpu --scene book-final --width 3840 --aspect 16:9 --spp 16 --dept
 bench spheres1m-gpu --scene spheres:1000000 --width 1200 --spp 4 --backend gpu --repeat 3
 bench knot-all --scene docs/scenes/knot.json --backend all --spp 32 --repeat 3
 bench quads-all --scene quads --backend all --spp 100 --repeat 3
+bench forest-all --scene docs/scenes/forest.json --backend all --spp 16 --repeat 3
 fi
 
 if [[ $steps == *" meshes "* ]]; then
@@ -95,7 +96,9 @@ both knot --scene docs/scenes/knot.json --spp 16
 both equirect --scene book-final --projection equirectangular --aperture 0 --width 512 --aspect 2 --spp 8
 both fisheye --scene book-final --projection fisheye-equisolid --aperture 0 --width 400 --aspect 1 --spp 8
 both motion --scene bouncing-spheres --width 320 --spp 32 --shutter 0:1
-cp /tmp/both-final.png /tmp/both-knot.png /tmp/both-quads.png "$out/" 2>/dev/null
+both forest --scene docs/scenes/forest.json --spp 16
+both forest-scan --scene docs/scenes/forest.json --spp 4 --accel none
+cp /tmp/both-final.png /tmp/both-knot.png /tmp/both-forest.png "$out/" 2>/dev/null
 fi
 
 if [[ $steps == *" tests "* ]]; then

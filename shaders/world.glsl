@@ -41,13 +41,15 @@ quad_geometry quad_at(uint k) {
 // The ray in instance k's group space (bvh_world.cpp's to_group): the same t reaches the same
 // point, at the same instant.
 ray to_group(uint k, ray r) {
+  precise vec3 o = vec3(dot3(instances[k].to_group_x.xyz, r.origin) + instances[k].to_group_x.w,
+                        dot3(instances[k].to_group_y.xyz, r.origin) + instances[k].to_group_y.w,
+                        dot3(instances[k].to_group_z.xyz, r.origin) + instances[k].to_group_z.w);
+  precise vec3 d = vec3(dot3(instances[k].to_group_x.xyz, r.direction),
+                        dot3(instances[k].to_group_y.xyz, r.direction),
+                        dot3(instances[k].to_group_z.xyz, r.direction));
   ray g;
-  g.origin = vec3(dot(instances[k].to_group_x.xyz, r.origin) + instances[k].to_group_x.w,
-                  dot(instances[k].to_group_y.xyz, r.origin) + instances[k].to_group_y.w,
-                  dot(instances[k].to_group_z.xyz, r.origin) + instances[k].to_group_z.w);
-  g.direction = vec3(dot(instances[k].to_group_x.xyz, r.direction),
-                     dot(instances[k].to_group_y.xyz, r.direction),
-                     dot(instances[k].to_group_z.xyz, r.direction));
+  g.origin = o;
+  g.direction = d;
   g.time = r.time;
   return g;
 }
@@ -57,9 +59,11 @@ ray to_group(uint k, ray r) {
 void carry_back(uint k, ray r, float t, precise inout hit_record rec) {
   rec.p = ray_at(r, t);
   precise vec3 n = rec.normal;
-  rec.normal = normalize(vec3(dot(instances[k].normal_x.xyz, n), dot(instances[k].normal_y.xyz, n),
-                              dot(instances[k].normal_z.xyz, n)));
-  rec.offset = rec.offset * instances[k].normal_x.w + flat_offset(rec.p, r);
+  precise vec3 m = vec3(dot3(instances[k].normal_x.xyz, n), dot3(instances[k].normal_y.xyz, n),
+                        dot3(instances[k].normal_z.xyz, n));
+  rec.normal = unit_vector(m);
+  precise float offset = rec.offset * instances[k].normal_x.w + flat_offset(rec.p, r);
+  rec.offset = offset;
 }
 
 // Tests the object of leaf reference `ref` (RTVK_LEAF_* kind | position), keeping the nearest
