@@ -98,7 +98,7 @@ scene_tree build_scene_tree(const primitive_spans& world, std::span<const object
     layout = make_leaf_layout(bvh(primitive_spans{}), world);
   }
   if (3 * out.depth + (instances.empty() ? 0 : 1) > wide_bvh::max_stack)
-    throw std::length_error("the scene's trees are " + std::to_string(out.depth) +
+    throw std::invalid_argument("the scene's trees are " + std::to_string(out.depth) +
                             " levels deep with an instance's: more than a traversal's stack holds");
   append_slots(out.spheres, layout.spheres, world_objects);
   append_slots(out.quads, layout.quads, world_objects);
@@ -140,7 +140,7 @@ scene_tree build_scene_tree(const primitive_spans& world, std::span<const object
   }
   for (const auto* list : {&out.spheres, &out.quads, &out.triangles})
     if (list->size() > std::size_t(RTVK_LEAF_INDEX_MASK) + 1)
-      throw std::length_error("more objects of a kind than a leaf reference's 29 bits hold");
+      throw std::invalid_argument("more objects of a kind than a leaf reference's 29 bits hold");
   return out;
 }
 
