@@ -4,9 +4,15 @@
   make-mesh.py knot TRIANGLES OUT.obj   a (2, 3) torus knot tube with smooth vertex normals, about
                                         TRIANGLES triangles (closed, every vertex shared)
 
+  make-mesh.py knots N MESH.obj DIR   two scene files in DIR placing MESH.obj (a path relative to
+                                        DIR) N times on a grid: knots-instanced.json (one group,
+                                        N instances) and knots-copied.json (N meshes, each placed)
+
 The mesh depends only on its arguments, so a benchmark run anywhere reads the same triangles.
 """
+import json
 import math
+import os
 import sys
 
 
@@ -56,7 +62,31 @@ def knot(triangles, out):
                 f.write("f %d//%d %d//%d %d//%d\n" % (a, a, c, c, d, d))
 
 
+def knots(n, mesh, folder):
+    # The same placements written twice: as instances of one group, and as n placed meshes.
+    columns = max(1, int(math.ceil(math.sqrt(2 * n))))
+    placements = []
+    for k in range(n):
+        i, j = k % columns, k // columns
+        placements.append({"scale": 0.4, "rotate": {"axis": [0, 1, 0], "degrees": (37 * i + 11 * j) % 360},
+                           "translate": [1.6 * i - 0.8 * (columns - 1), 0.9, -1.6 * j]})
+    base = {"camera": {"lookfrom": [0, 6, 10], "lookat": [0, 0.5, -3], "vfov": 50},
+            "render": {"width": 320, "aspect": "16:9", "spp": 4, "max_depth": 20},
+            "materials": {"gold": {"type": "metal", "albedo": [0.9, 0.7, 0.3], "fuzz": 0.1},
+                          "ground": {"type": "lambertian", "albedo": [0.5, 0.5, 0.5]}},
+            "quads": [{"Q": [-50, 0, -50], "u": [0, 0, 100], "v": [100, 0, 0], "material": "ground"}]}
+    instanced = dict(base, groups={"knot": {"meshes": [{"file": mesh, "material": "gold"}]}},
+                     instances=[{"group": "knot", "transform": t} for t in placements])
+    copied = dict(base, meshes=[{"file": mesh, "material": "gold", "transform": t} for t in placements])
+    for name, scene in (("knots-instanced.json", instanced), ("knots-copied.json", copied)):
+        with open(os.path.join(folder, name), "w") as out:
+            json.dump(scene, out, indent=1)
+
+
 if __name__ == "__main__":
-    if len(sys.argv) != 4 or sys.argv[1] != "knot":
+    if len(sys.argv) == 4 and sys.argv[1] == "knot":
+        knot(int(sys.argv[2]), sys.argv[3])
+    elif len(sys.argv) == 5 and sys.argv[1] == "knots":
+        knots(int(sys.argv[2]), sys.argv[3], sys.argv[4])
+    else:
         sys.exit(__doc__)
-    knot(int(sys.argv[2]), sys.argv[3])
