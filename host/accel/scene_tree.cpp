@@ -65,12 +65,24 @@ scene_tree build_scene_tree(const primitive_spans& world, std::span<const object
                             time_span motion) {
   scene_tree out;
   out.groups.resize(groups.size());
+  if (instances.size() >= std::size_t(RTVK_LEAF_INDEX_MASK))
+    throw std::invalid_argument(std::to_string(instances.size()) +
+                                " instances are more than a leaf reference holds");
+  // Only the groups some instance places get a tree and a place in the arrays: one nothing
+  // places costs nothing and limits nothing.
+  std::vector<bool> placed(groups.size(), false);
+  for (const instance& i : instances) {
+    if (i.group >= groups.size() || empty(groups[i.group]))
+      throw std::invalid_argument("an instance places a group that does not exist or is empty");
+    placed[i.group] = true;
+  }
   // Each group's tree first (its box places the instances), then the world's over its objects
   // and the instances' boxes; the world's nodes go first in the shared array.
   std::vector<wide_bvh> group_trees(groups.size());
   std::vector<leaf_layout> group_layouts(groups.size());
   int group_depth = 0;
   for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (!placed[g]) continue;
     const bvh tree(use_bvh ? spans_of(groups[g]) : primitive_spans{}, threads);
     group_layouts[g] = use_bvh ? make_leaf_layout(tree, spans_of(groups[g]))
                                : make_leaf_layout(bvh(primitive_spans{}), spans_of(groups[g]));
@@ -93,17 +105,20 @@ scene_tree build_scene_tree(const primitive_spans& world, std::span<const object
     layout = make_leaf_layout(tree, top);
     const wide_bvh wide(tree, layout.refs);
     out.nodes = wide.nodes();
+    out.world_nodes = std::uint32_t(out.nodes.size());
     out.depth = wide.depth() + group_depth;
   } else {
     layout = make_leaf_layout(bvh(primitive_spans{}), world);
   }
   if (3 * out.depth + (instances.empty() ? 0 : 1) > wide_bvh::max_stack)
-    throw std::invalid_argument("the scene's trees are " + std::to_string(out.depth) +
-                            " levels deep with an instance's: more than a traversal's stack holds");
+    throw std::invalid_argument(
+        "the scene's trees are " + std::to_string(out.depth) +
+        " levels deep with an instance's: more than a traversal's stack holds");
   append_slots(out.spheres, layout.spheres, world_objects);
   append_slots(out.quads, layout.quads, world_objects);
   append_slots(out.triangles, layout.triangles, world_objects);
   for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (!placed[g]) continue;
     group_span& span = out.groups[g];
     const leaf_layout& l = group_layouts[g];
     const std::array<std::uint32_t, 3> base = {std::uint32_t(out.spheres.size()),

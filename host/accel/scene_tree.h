@@ -35,7 +35,8 @@ struct group_span {
 struct scene_tree {
   std::vector<wide_node> nodes;
   std::vector<object_slot> spheres, quads, triangles;  // array position -> object
-  std::vector<group_span> groups;
+  std::vector<group_span> groups;                      // a group no instance places: an empty span
+  std::uint32_t world_nodes = 0;  // the world's tree's nodes (0: no objects, no instances)
   int depth = 0;  // wide levels on the longest world path plus the longest group path
 };
 

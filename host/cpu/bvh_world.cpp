@@ -177,6 +177,9 @@ void bvh_world::build(const primitive_spans& objects, std::span<const triangle_s
                       std::span<const object_group> groups, std::span<const instance> instances,
                       int threads, time_span motion) {
   scene_tree tree = build_scene_tree(objects, groups, instances, true, threads, motion);
+  // No tree of the world's own (no objects, no instances): nothing to hit, whatever groups
+  // follow at node 0.
+  if (tree.world_nodes == 0) tree.nodes.clear();
   nodes_ = std::move(tree.nodes);
   const std::uint32_t first_quad = std::uint32_t(objects.spheres.size());
   const std::uint32_t first_triangle = first_quad + std::uint32_t(objects.quads.size());

@@ -113,5 +113,19 @@ TEST(Instances, ExactTiesGoToTheLaterInstanceAsInTheScan) {
   }
 }
 
+// A group nothing places draws nothing, on the BVH as on the list: with no objects of the
+// scene's own, its tree once sat at node 0 where the scene's should be, and the CPU's BVH drew it
+// (found in review).
+TEST(Instances, AGroupNoInstancePlacesIsNotDrawn) {
+  const scene s = parse_scene_json(
+      R"({"materials":{"n":{"type":"normal"}},"spheres":[],)"
+      R"("groups":{"ball":{"spheres":[{"center":[0,0,-3],"radius":1,"material":"n"}]}}})",
+      "unplaced.json");
+  const bvh_world tree(s);
+  hit_record rec;
+  EXPECT_FALSE(tree.hit(ray(point3(0, 0, 0), vec3(0, 0, -1)), 1e-3, INFINITY, rec));
+  EXPECT_FALSE(make_world(s).hit(ray(point3(0, 0, 0), vec3(0, 0, -1)), 1e-3, INFINITY, rec));
+}
+
 }  // namespace
 }  // namespace rtvk
