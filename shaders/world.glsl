@@ -10,6 +10,7 @@
 #include "hit_quad.h"
 #include "hit_sphere.h"
 #include "hit_triangle.h"
+#include "instance_space.h"
 
 // Whether some sphere moves: without, the velocities (`velocities`, vec4[] in the spheres' order)
 // are never read. The host sets it for
@@ -38,32 +39,19 @@ quad_geometry quad_at(uint k) {
   return g;
 }
 
-// The ray in instance k's group space (bvh_world.cpp's to_group): the same t reaches the same
-// point, at the same instant.
-ray to_group(uint k, ray r) {
-  precise vec3 o = vec3(dot3(instances[k].to_group_x.xyz, r.origin) + instances[k].to_group_x.w,
-                        dot3(instances[k].to_group_y.xyz, r.origin) + instances[k].to_group_y.w,
-                        dot3(instances[k].to_group_z.xyz, r.origin) + instances[k].to_group_z.w);
-  precise vec3 d = vec3(dot3(instances[k].to_group_x.xyz, r.direction),
-                        dot3(instances[k].to_group_y.xyz, r.direction),
-                        dot3(instances[k].to_group_z.xyz, r.direction));
-  ray g;
-  g.origin = o;
-  g.direction = d;
-  g.time = r.time;
-  return g;
-}
-
-// A record made in instance k's group space, carried back to the scene's ray r: the point on r,
-// the normal by the inverse transpose, the offset grown by the placement's stretch.
-void carry_back(uint k, ray r, float t, precise inout hit_record rec) {
-  rec.p = ray_at(r, t);
-  precise vec3 n = rec.normal;
-  precise vec3 m = vec3(dot3(instances[k].normal_x.xyz, n), dot3(instances[k].normal_y.xyz, n),
-                        dot3(instances[k].normal_z.xyz, n));
-  rec.normal = unit_vector(m);
-  precise float offset = rec.offset * instances[k].normal_x.w + flat_offset(rec.p, r);
-  rec.offset = offset;
+// Instance k's placement as the shared kernels read it (instance_space.h: to_group, carry_back).
+instance_frame frame_of(uint k) {
+  instance_frame f;
+  f.to_group_x = instances[k].to_group_x.xyz;
+  f.to_group_y = instances[k].to_group_y.xyz;
+  f.to_group_z = instances[k].to_group_z.xyz;
+  f.to_group_offset =
+      vec3(instances[k].to_group_x.w, instances[k].to_group_y.w, instances[k].to_group_z.w);
+  f.normal_x = instances[k].normal_x.xyz;
+  f.normal_y = instances[k].normal_y.xyz;
+  f.normal_z = instances[k].normal_z.xyz;
+  f.stretch = instances[k].normal_x.w;
+  return f;
 }
 
 // Tests the object of leaf reference `ref` (RTVK_LEAF_* kind | position), keeping the nearest
@@ -132,11 +120,12 @@ void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_r
 void record_winner(uint ref, uint inst, ray r, sheared_ray sr, float t,
                    precise inout hit_record rec) {
   if (any_instances && inst != 0u) {
-    ray g = to_group(inst - 1u, r);
+    instance_frame f = frame_of(inst - 1u);
+    ray g = to_group(f, r);
     sheared_ray gs;
     if (any_triangles) gs = shear_ray(g);
     record_object(ref, g, gs, t, rec);
-    carry_back(inst - 1u, r, t, rec);
+    carry_back(f, r, t, rec);
     return;
   }
   record_object(ref, r, sr, t, rec);
@@ -213,7 +202,7 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
       uint k = next & RTVK_LEAF_INDEX_MASK;
       stack_node[top] = RTVK_WIDE_EXIT;
       stack_entry[top++] = 0.0;
-      rc = to_group(k, r);
+      rc = to_group(frame_of(k), r);
       inst = k + 1u;
       o = rc.origin;
       inv_d = safe_inverse(rc.direction);
@@ -306,7 +295,7 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
   // Then each instance's group, with the ray in its space.
   if (any_instances)
     for (uint k = 0u; k < pc.instance_count; ++k) {
-      ray g = to_group(k, r);
+      ray g = to_group(frame_of(k), r);
       sheared_ray gs;
       if (any_triangles) gs = shear_ray(g);
       for (uint i = 0u; i < instances[k].sphere_count; ++i) {

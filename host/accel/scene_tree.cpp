@@ -50,14 +50,15 @@ void append_slots(std::vector<object_slot>& to, const std::vector<std::uint32_t>
 }  // namespace
 
 instance_frame frame_of(const transform& placement) {
-  instance_frame f;
-  f.to_group = glm::inverse(placement.linear);
-  f.to_group_offset = -(f.to_group * placement.offset);
-  f.normal_to_world = glm::transpose(f.to_group);
+  const glm::dmat3 to_group = glm::inverse(placement.linear);
+  const vec3 offset = -(to_group * placement.offset);
+  // Rows of the column-major matrices: row r of m is (m[0][r], m[1][r], m[2][r]); the normal
+  // matrix is the transpose of to_group, so its rows are to_group's columns.
+  const auto row = [&](int r) { return vec3(to_group[0][r], to_group[1][r], to_group[2][r]); };
   double frobenius = 0;
   for (int c = 0; c < 3; ++c) frobenius += glm::dot(placement.linear[c], placement.linear[c]);
-  f.stretch = std::sqrt(frobenius);
-  return f;
+  return instance_frame{row(0),      row(1),      row(2),      offset,
+                        to_group[0], to_group[1], to_group[2], std::sqrt(frobenius)};
 }
 
 scene_tree build_scene_tree(const primitive_spans& world, std::span<const object_group> groups,

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "bvh.h"
+#include "instance_space.h"
 #include "object_group.h"
 #include "wide_bvh.h"
 
@@ -45,13 +46,7 @@ scene_tree build_scene_tree(const primitive_spans& world, std::span<const object
                             std::span<const instance> instances, bool use_bvh, int threads,
                             time_span motion);
 
-// An instance's group-space ray and back: the inverse placement, and what carries normals.
-struct instance_frame {
-  glm::dmat3 to_group;         // inverse of the placement's linear part
-  vec3 to_group_offset;        // -to_group * placement offset
-  glm::dmat3 normal_to_world;  // transpose of to_group: normals back to scene space
-  double stretch;              // the placement's largest stretch (bound): offsets grow by it
-};
+// A placement as the shared kernels carry rays and hits with it (shaders/shared/instance_space.h).
 instance_frame frame_of(const transform& placement);
 
 }  // namespace rtvk

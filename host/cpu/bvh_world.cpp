@@ -273,11 +273,6 @@ void bvh_world::visit_flat(std::uint32_t ref, const ray& r, const sheared_ray& s
 
 // The ray in an instance's group space: the same t reaches the same point (the direction is
 // not renormalized), at the same instant.
-namespace {
-ray to_group(const instance_frame& f, const ray& r) {
-  return ray(f.to_group * r.origin + f.to_group_offset, f.to_group * r.direction, r.time);
-}
-}  // namespace
 
 // Walks instance `i`'s group tree with the ray in group space: hits there count as the
 // instance's.
@@ -302,9 +297,7 @@ void bvh_world::record(const nearest& best, const ray& r, const sheared_ray& she
     nearest inner = best;
     inner.instance = -1;
     record(inner, g, triangles_.empty() ? sheared_ray{} : shear_ray(g), rec);
-    rec.p = ray_at(r, best.t);
-    rec.normal = glm::normalize(f.normal_to_world * rec.normal);
-    rec.offset = rec.offset * f.stretch + flat_offset(rec.p, r);
+    carry_back(f, r, best.t, rec);
     return;
   }
   const std::uint32_t k = best.ref & RTVK_LEAF_INDEX_MASK;

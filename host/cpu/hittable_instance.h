@@ -17,12 +17,8 @@ class hittable_instance final : public hittable {
       : group_(std::move(group)), frame_(frame_of(placement)) {}
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override {
-    const ray g(frame_.to_group * r.origin + frame_.to_group_offset, frame_.to_group * r.direction,
-                r.time);
-    if (!group_->hit(g, t_min, t_max, rec)) return false;
-    rec.p = ray_at(r, rec.t);
-    rec.normal = glm::normalize(frame_.normal_to_world * rec.normal);
-    rec.offset = rec.offset * frame_.stretch + flat_offset(rec.p, r);
+    if (!group_->hit(to_group(frame_, r), t_min, t_max, rec)) return false;
+    carry_back(frame_, r, rec.t, rec);
     return true;
   }
 

@@ -103,16 +103,13 @@ std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group
     const instance_frame f = frame_of(i.placement);
     const group_span& g = groups[i.group];
     gpu_instance in{};
-    // Rows of column-major glm matrices: row r is (m[0][r], m[1][r], m[2][r]).
-    const auto row = [](const glm::dmat3& m, int r, double w) {
-      return vec4(float(m[0][r]), float(m[1][r]), float(m[2][r]), float(w));
-    };
-    in.to_group_x = row(f.to_group, 0, f.to_group_offset.x);
-    in.to_group_y = row(f.to_group, 1, f.to_group_offset.y);
-    in.to_group_z = row(f.to_group, 2, f.to_group_offset.z);
-    in.normal_x = row(f.normal_to_world, 0, f.stretch);
-    in.normal_y = row(f.normal_to_world, 1, 0);
-    in.normal_z = row(f.normal_to_world, 2, 0);
+    const auto row = [](const rtvk::vec3& v, double w) { return vec4(vec3(v), float(w)); };
+    in.to_group_x = row(f.to_group_x, f.to_group_offset.x);
+    in.to_group_y = row(f.to_group_y, f.to_group_offset.y);
+    in.to_group_z = row(f.to_group_z, f.to_group_offset.z);
+    in.normal_x = row(f.normal_x, f.stretch);
+    in.normal_y = row(f.normal_y, 0);
+    in.normal_z = row(f.normal_z, 0);
     in.root = g.root;
     in.sphere_first = g.first[0];
     in.sphere_count = g.count[0];

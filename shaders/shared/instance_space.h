@@ -1,0 +1,45 @@
+// An instance's way into its group's space and back, for both backends: the ray carried in by
+// the inverse placement (its direction not renormalized, so the same t reaches the same point),
+// and a hit found there carried back (the point on the scene's ray, the normal by the inverse
+// transpose, which keeps the side a ray comes from, the offset grown by the placement's stretch).
+#ifndef RTVK_INSTANCE_SPACE_H
+#define RTVK_INSTANCE_SPACE_H
+#include "kernel_lang.h"
+#include "ray.h"
+
+RTVK_KERNELS_BEGIN
+
+// A placement as the two functions below read it, by rows.
+struct instance_frame {
+  precise real3 to_group_x;       // first row of the inverse placement's linear part
+  precise real3 to_group_y;       // second row
+  precise real3 to_group_z;       // third row
+  precise real3 to_group_offset;  // its translation: -inverse(linear) * placement offset
+  precise real3 normal_x;         // first row of the normal matrix (the inverse's transpose)
+  precise real3 normal_y;         // second row
+  precise real3 normal_z;         // third row
+  precise real stretch;           // a bound on how far the placement stretches (Frobenius norm)
+};
+
+// The ray in the group's space, at the same instant.
+inline ray to_group(instance_frame f, ray r) {
+  precise real3 o = real3(dot3(f.to_group_x, r.origin), dot3(f.to_group_y, r.origin),
+                          dot3(f.to_group_z, r.origin)) +
+                    f.to_group_offset;
+  precise real3 d = real3(dot3(f.to_group_x, r.direction), dot3(f.to_group_y, r.direction),
+                          dot3(f.to_group_z, r.direction));
+  return ray(o, d, r.time);
+}
+
+// A record made in the group's space, at t, carried back to the scene's ray r.
+inline void carry_back(instance_frame f, ray r, real t, precise INOUT(hit_record) rec) {
+  rec.p = ray_at(r, t);
+  precise real3 n = rec.normal;
+  rec.normal = unit_vector(real3(dot3(f.normal_x, n), dot3(f.normal_y, n), dot3(f.normal_z, n)));
+  precise real offset = rec.offset * f.stretch + flat_offset(rec.p, r);
+  rec.offset = offset;
+}
+
+RTVK_KERNELS_END
+
+#endif  // RTVK_INSTANCE_SPACE_H
