@@ -331,8 +331,7 @@ void session::focus_at(double x, double y) {
   const double px = (x - (w - acc_.width * scale) / 2) / scale;
   const double py = (y - (h - acc_.height * scale) / 2) / scale;
   if (px < 0 || py < 0 || px >= acc_.width || py >= acc_.height) return;
-  if (!world_)
-    world_ = std::make_unique<bvh_world>(s_);
+  if (!world_) world_ = std::make_unique<bvh_world>(s_);
   const camera cam(pose_, rs_.aspect, rs_.width);
   // Pixel (px, py) from the top is the render's (i, j) = (px, height - 1 - py) from the bottom.
   const double u = pixel_coordinate(px, acc_.width);
