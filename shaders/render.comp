@@ -37,6 +37,7 @@ layout(push_constant) uniform push_block {
   render_push pc;
 };
 #include "scene_buffers.glsl"
+#include "appearance_buffers.glsl"
 
 #include "camera_rays.h"
 #include "fixed_sum.h"

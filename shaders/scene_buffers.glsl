@@ -18,6 +18,9 @@ layout(std430, set = 0, binding = RTVK_BINDING_TRIANGLES) readonly buffer triang
 layout(std430, set = 0, binding = RTVK_BINDING_NORMALS) readonly buffer normal_block {
   vec4 vertex_normals[];
 };
+layout(std430, set = 0, binding = RTVK_BINDING_TEXCOORDS) readonly buffer texcoord_block {
+  vec2 vertex_uvs[];
+};
 layout(std430, set = 0, binding = RTVK_BINDING_INSTANCES) readonly buffer instance_block {
   gpu_instance instances[];
 };

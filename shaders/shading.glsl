@@ -4,8 +4,26 @@
 // the including shader.
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
+#include "medium.h"
 #include "ray_color.h"
+#include "texture.h"
 #include "world.glsl"
+
+// Medium k as the shared kernels take it.
+medium_geometry medium_at(uint k) {
+  medium_geometry m;
+  m.to_local_x = media[k].to_local_x.xyz;
+  m.to_local_y = media[k].to_local_y.xyz;
+  m.to_local_z = media[k].to_local_z.xyz;
+  m.to_local_offset = vec3(media[k].to_local_x.w, media[k].to_local_y.w, media[k].to_local_z.w);
+  m.shape = media[k].shape;
+  m.lo = media[k].lo;
+  m.hi = media[k].hi;
+  m.neg_inv_density = media[k].neg_inv_density;
+  m.material = media[k].material;
+  m.index = media[k].index;
+  return m;
+}
 
 const float max_float = 3.402823466e+38;  // stands in for the host's infinity as t_max
 
@@ -20,12 +38,21 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   if (path_ends_unlit(p, pc.max_depth)) return true;
   ++rays;
   hit_record rec;
-  if (!hit_world(p.r, t_min, max_float, rec, iterations)) {
+  bool hit = hit_world(p.r, t_min, max_float, rec, iterations);
+  // The media after the world, within its hit (host/cpu/shading.cpp's ray_color does the same).
+  random_stream s = at_bounce(p.s, p.depth + 1u);
+  for (uint k = 0u; k < pc.medium_count; ++k) {
+    ++iterations;
+    if (hit_medium(medium_at(k), p.r, t_min, hit ? rec.t : max_float, medium_random(s, k), rec))
+      hit = true;
+  }
+  if (!hit) {
     if (iterations <= pc.loop_budget) c = path_missed(p, pc.sky_horizon, pc.sky_zenith);
     return true;
   }
   gpu_material m = materials[rec.material];
-  return path_hit(p, rec, m.type, m.albedo, m.fuzz, m.ir, c);
+  vec3 albedo = material_color(m.albedo, m.texture, rec);
+  return path_hit(p, rec, m.type, albedo, m.fuzz, m.ir, c);
 }
 
 #endif

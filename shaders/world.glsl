@@ -21,6 +21,8 @@ layout(constant_id = RTVK_SPEC_QUADS) const bool any_quads = false;
 layout(constant_id = RTVK_SPEC_TRIANGLES) const bool any_triangles = false;
 // Whether the scene has instances: without, no walk enters a group's tree.
 layout(constant_id = RTVK_SPEC_INSTANCES) const bool any_instances = false;
+// Whether sphere hits find their texture coordinates (some image texture reads them).
+layout(constant_id = RTVK_SPEC_UV) const bool with_uv = false;
 
 // Where the sphere in slot k is at `time` (sphere::center_at).
 precise vec3 center_at(uint k, float time) {
@@ -93,26 +95,34 @@ void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_r
   uint k = ref & RTVK_LEAF_INDEX_MASK;
   uint kind = ref & RTVK_LEAF_KIND_MASK;
   if ((!any_quads && !any_triangles) || kind == RTVK_LEAF_SPHERE) {
-    record_hit(center_at(k, r.time), spheres[k].radius, spheres[k].material, r, t, rec);
+    record_hit(center_at(k, r.time), spheres[k].radius, spheres[k].material, r, t, with_uv, rec);
   } else if (!any_triangles || (any_quads && kind == RTVK_LEAF_QUAD)) {
     record_quad_hit(quad_at(k), quads[k].material, r, t, rec);
   } else {
     gpu_triangle tri = triangles[k];
     // The blend's weights found again, as on the CPU (hittable_triangle.h's record_triangle).
-    bool blended = tri.normals != RTVK_FLAT;
     precise float again;
     precise vec3 weights = vec3(0.0);
-    if (blended)
-      blended = hit_triangle(tri.a, tri.b, tri.c, r, sr, -3.402823466e+38, 3.402823466e+38, again,
-                            weights);
+    bool found = hit_triangle(tri.a, tri.b, tri.c, r, sr, -3.402823466e+38, 3.402823466e+38, again,
+                              weights);
+    bool shaded = tri.normals != RTVK_FLAT;
+    bool blended = found && shaded && vertex_normals[3u * tri.normals].w != 0.0;
+    bool has_uv = shaded && vertex_normals[3u * tri.normals + 1u].w != 0.0;
     vec3 n0 = vec3(0.0), n1 = vec3(0.0), n2 = vec3(0.0);  // read only where they exist
     if (blended) {
       n0 = vertex_normals[3u * tri.normals].xyz;
       n1 = vertex_normals[3u * tri.normals + 1u].xyz;
       n2 = vertex_normals[3u * tri.normals + 2u].xyz;
     }
+    vec2 uv0 = vec2(0.0), uv1 = vec2(0.0), uv2 = vec2(0.0);
+    if (has_uv) {
+      uv0 = vertex_uvs[3u * tri.normals];
+      uv1 = vertex_uvs[3u * tri.normals + 1u];
+      uv2 = vertex_uvs[3u * tri.normals + 2u];
+    }
     precise vec3 shading = shading_normal(tri.a, tri.b, tri.c, blended, n0, n1, n2, weights);
-    record_triangle_hit(tri.a, tri.b, tri.c, shading, tri.material, r, t, rec);
+    precise vec2 uv = triangle_uv(has_uv, uv0, uv1, uv2, weights);
+    record_triangle_hit(tri.a, tri.b, tri.c, shading, uv, tri.material, r, t, rec);
   }
 }
 

@@ -168,7 +168,7 @@ bvh_world::bvh_world(const primitive_spans& objects, std::span<const triangle_sh
   build(objects, shading, {}, {}, threads, motion);
 }
 
-bvh_world::bvh_world(const scene& s, int threads) {
+bvh_world::bvh_world(const scene& s, int threads) : with_uv_(scene_reads_uv(s)) {
   build(primitive_spans{s.spheres, s.quads, s.triangles}, s.shading, s.groups, s.instances, threads,
         s.motion);
 }
@@ -209,23 +209,22 @@ void bvh_world::build(const primitive_spans& objects, std::span<const triangle_s
     quad_index_.push_back(o.index +
                           (own ? first_quad : std::uint32_t(groups[o.group].spheres.size())));
   }
-  // Smooth triangles' normals, normalized once per shading entry of the world or a group.
-  std::vector<std::vector<std::int32_t>> normals_at(groups.size() + 1);
+  // Triangles' shading, normals normalized once per shading entry of the world or a group.
+  std::vector<std::vector<std::int32_t>> attributes_at(groups.size() + 1);
   triangles_.resize(tree.triangles.size());
   for (std::size_t k = 0; k < triangles_.size(); ++k) {
     const object_slot o = tree.triangles[k];
     const bool own = o.group == world_objects;
     const triangle& t = own ? objects.triangles[o.index] : groups[o.group].triangles[o.index];
     const std::span<const triangle_shading> sh = own ? shading : groups[o.group].shading;
-    std::vector<std::int32_t>& at_list = normals_at[own ? 0 : o.group + 1];
+    std::vector<std::int32_t>& at_list = attributes_at[own ? 0 : o.group + 1];
     if (at_list.size() != sh.size()) at_list.assign(sh.size(), -1);
     std::int32_t n = -1;
-    if (t.shading >= 0 && sh[std::size_t(t.shading)].has_normals()) {
+    if (t.shading >= 0) {
       std::int32_t& at = at_list[std::size_t(t.shading)];
       if (at < 0) {
-        at = std::int32_t(normals_.size());
-        const std::array<vec3, 3>& v = sh[std::size_t(t.shading)].normal;
-        normals_.push_back({glm::normalize(v[0]), glm::normalize(v[1]), glm::normalize(v[2])});
+        at = std::int32_t(attributes_.size());
+        attributes_.push_back(attributes_of(sh[std::size_t(t.shading)]));
       }
       n = at;
     }
@@ -304,14 +303,14 @@ void bvh_world::record(const nearest& best, const ray& r, const sheared_ray& she
   switch (best.ref & RTVK_LEAF_KIND_MASK) {
     case RTVK_LEAF_SPHERE:
       record_hit(center_at(k, spheres_, velocities_, r.time), spheres_[k].radius,
-                 uint(spheres_[k].material), r, best.t, rec);
+                 uint(spheres_[k].material), r, best.t, with_uv_, rec);
       return;
     case RTVK_LEAF_QUAD:
       record_quad_hit(quads_[k].g, uint(quads_[k].material), r, best.t, rec);
       return;
     default: {
       const leaf_triangle& tri = triangles_[k];
-      record_triangle(tri.p, tri.normals < 0 ? nullptr : &normals_[std::size_t(tri.normals)],
+      record_triangle(tri.p, tri.shading < 0 ? nullptr : &attributes_[std::size_t(tri.shading)],
                       uint(tri.material), r, sheared, best.t, rec);
       return;
     }

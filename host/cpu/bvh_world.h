@@ -59,17 +59,17 @@ class bvh_world final : public hittable {
   struct leaf_triangle {
     std::array<point3, 3> p;  // vertices, scene units
     int material;             // index into the scene's materials
-    std::int32_t normals;     // index into normals_, or -1: flat
+    std::int32_t shading;     // index into attributes_, or -1: flat, uv barycentric
   };
 
   // The binary tree (the GPU's) is built, collapsed and dropped: the CPU keeps only these. Each
   // kind's array is in leaf order (leaf_layout); *_index_ give each position's scene index.
-  std::vector<wide_node> nodes_;              // the trees collapsed four wide (scene_tree)
-  std::vector<leaf_sphere> spheres_;          // in leaf order
-  std::vector<vec3> velocities_;              // the spheres', in leaf order; empty when none moves
-  std::vector<leaf_quad> quads_;              // in leaf order
-  std::vector<leaf_triangle> triangles_;      // in leaf order
-  std::vector<std::array<vec3, 3>> normals_;  // smooth triangles' vertex normals
+  std::vector<wide_node> nodes_;          // the trees collapsed four wide (scene_tree)
+  std::vector<leaf_sphere> spheres_;      // in leaf order
+  std::vector<vec3> velocities_;          // the spheres', in leaf order; empty when none moves
+  std::vector<leaf_quad> quads_;          // in leaf order
+  std::vector<leaf_triangle> triangles_;  // in leaf order
+  std::vector<triangle_attributes> attributes_;  // triangles' vertex normals and uv
   std::vector<std::uint32_t> sphere_index_, quad_index_, triangle_index_;  // scene indices
   // (the world's objects), or indices in their group's order (a group's: spheres, quads,
   // triangles); exact ties go to the later of (instance, index), the world's objects first.
@@ -80,6 +80,7 @@ class bvh_world final : public hittable {
     std::uint32_t root;    // the group's root among wide_'s nodes
   };
   std::vector<leaf_instance> instances_;
+  bool with_uv_ = false;  // spheres' hits carry texture coordinates (the scene has images)
 };
 
 }  // namespace rtvk

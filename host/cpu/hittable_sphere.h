@@ -12,7 +12,9 @@ inline bool hit_distance(const sphere& s, const ray& r, double t_min, double t_m
   return hit_sphere(s.center_at(r.time), s.radius, r, t_min, t_max, t);
 }
 inline void record_hit(const sphere& s, const ray& r, double t, hit_record& rec) {
-  record_hit(s.center_at(r.time), s.radius, uint(s.material), r, t, rec);
+  // The lesson's list always finds a sphere's texture coordinates (the BVH only when an image
+  // texture reads them): the same records either way where they are read.
+  record_hit(s.center_at(r.time), s.radius, uint(s.material), r, t, true, rec);
 }
 
 // A scene sphere as a hittable, for the lesson's hittable_list.

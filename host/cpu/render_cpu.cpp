@@ -33,11 +33,11 @@ class counting_world final : public hittable {
 
 // What every pixel of one render reads.
 struct pixel_inputs {
-  const camera& cam;                       // sets the image size and casts the rays
-  const rtvk::sky& sky;                    // what rays that escape see
-  const render_settings& rs;               // seed, jitter and bounce limit
-  const std::vector<material>& materials;  // the scene's, by sphere material index
-  const render_window& win;                // the samples to take
+  const camera& cam;             // sets the image size and casts the rays
+  const rtvk::sky& sky;          // what rays that escape see
+  const render_settings& rs;     // seed, jitter and bounce limit
+  const scene_shading& shading;  // the scene's materials, textures and media
+  const render_window& win;      // the samples to take
 };
 
 // The mean of pixel (i, y)'s samples [win.sample_begin, win.sample_end), y counted from the top.
@@ -51,7 +51,7 @@ color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y) {
         pixel_sample_stream(in.rs.seed, uint(y) * uint(width) + uint(i), uint(sample));
     const ray r = sample_ray(in.cam.frame(), uint(width), uint(height), uint(i), uint(j), rnd,
                              in.rs.jitter, true);
-    sum += ray_color(r, world, in.materials, in.sky, in.rs.max_depth, rnd);
+    sum += ray_color(r, world, in.shading, in.sky, in.rs.max_depth, rnd);
   }
   return divide(sum, in.win.samples());
 }
@@ -86,8 +86,8 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
   check_motion_span(s.motion, scene_moves(s), cam);
   double build_seconds = 0;
   const std::unique_ptr<hittable> world = timed_world(s, engine, build_seconds);
-  const std::vector<material> materials = scene_materials(s);
-  const pixel_inputs in{cam, s.sky, rs, materials, win};
+  const scene_shading shading(s);
+  const pixel_inputs in{cam, s.sky, rs, shading, win};
   framebuffer fb(win.width, win.height);
   const std::size_t width = std::size_t(win.width), pixels = width * std::size_t(win.height);
   std::atomic<std::size_t> pixels_done{0};

@@ -4,26 +4,47 @@
 
 namespace rtvk {
 
+scene_shading::scene_shading(const scene& s)
+    : materials(scene_materials(s)),
+      textures(pack_textures(s.textures)),
+      perlin(make_perlin(s.noise_seed)) {
+  for (std::size_t k = 0; k < s.media.size(); ++k)
+    media.push_back(geometry_of(s.media[k], std::uint32_t(k)));
+}
+
 // The book's recursion as a loop over the shared steps (ray_color.h); shaders/shading.glsl runs
-// the same steps, a bounce per trip.
-color ray_color(const ray& r_in, const hittable& world, std::span<const material> materials,
+// the same steps, a bounce per trip. The media are tested after the world, within its hit: the
+// nearest of the world's hit and the media's scattering points wins.
+color ray_color(const ray& r_in, const hittable& world, const scene_shading& shading,
                 const sky& background, int max_depth, const random_stream& rnd) {
   const double infinity = std::numeric_limits<double>::infinity();
+  const texture_tables tables = shading.tables();
   path_state p = start_path(r_in, rnd);
   while (!path_ends_unlit(p, uint(max_depth))) {
     hit_record rec{};
-    if (!world.hit(p.r, t_min, infinity, rec))
-      return path_missed(p, background.horizon, background.zenith);
-    const material& m = materials[rec.material];
+    bool hit = world.hit(p.r, t_min, infinity, rec);
+    if (!shading.media.empty()) {
+      const random_stream s = at_bounce(p.s, p.depth + 1u);
+      for (const medium_geometry& m : shading.media)
+        if (hit_medium(m, p.r, t_min, hit ? rec.t : infinity, medium_random(s, m.index), rec))
+          hit = true;
+    }
+    if (!hit) return path_missed(p, background.horizon, background.zenith);
+    const material& m = shading.materials[rec.material];
+    const color albedo = material_color(tables, m.albedo, uint(m.texture), rec);
     color c;
-    if (path_hit(p, rec, uint(m.type), m.albedo, m.fuzz, m.ir, c)) return c;
+    if (path_hit(p, rec, uint(m.type), albedo, m.fuzz, m.ir, c)) return c;
   }
   return color(0, 0, 0);  // out of bounces, or no ray: no light gathered
 }
 
 color ray_color(const ray& r, const hittable& world) {
-  const material normal_shading{};
-  return ray_color(r, world, std::span(&normal_shading, 1), sky{}, 1, random_stream{});
+  static const scene_shading normal_shading = [] {
+    scene s;
+    s.materials.push_back({"normal", material{}});
+    return scene_shading(s);
+  }();
+  return ray_color(r, world, normal_shading, sky{}, 1, random_stream{});
 }
 
 }  // namespace rtvk

@@ -3,16 +3,32 @@
 
 #include "hittable.h"
 #include "material.h"
+#include "medium.h"
 #include "random.h"
 #include "ray_color.h"
 #include "scene.h"
+#include "texture.h"
 
 namespace rtvk {
+
+// What shading reads besides the hit: the materials, the textures' tables and the media, as the
+// shared kernels take them (texture.h, medium.h).
+struct scene_shading {
+  explicit scene_shading(const scene& s);
+  std::vector<material> materials;     // by index
+  packed_textures textures;            // records and texels
+  perlin_tables perlin;                // the noise's lattice (the scene's noise seed)
+  std::vector<medium_geometry> media;  // in scene order
+  texture_tables tables() const {
+    return {textures.records.data(), textures.texels.data(), perlin.vectors.data(),
+            perlin.perm.data()};
+  }
+};
 
 // The color seen along r: bounces through the materials up to max_depth scatter events, and
 // returns the sky on a miss. A "normal" material ends the path with the lesson's normal color.
 // The loop's body is the shared kernels' (ray_color.h), which the GPU runs too.
-color ray_color(const ray& r, const hittable& world, std::span<const material> materials,
+color ray_color(const ray& r, const hittable& world, const scene_shading& shading,
                 const sky& background, int max_depth, const random_stream& rnd);
 
 // The lesson's shading: every surface colored by its normal, the sky on a miss.

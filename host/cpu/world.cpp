@@ -16,11 +16,9 @@ void add_objects(hittable_list& to, const std::vector<sphere>& spheres,
                  const std::vector<triangle_shading>& shading) {
   for (const sphere& sp : spheres) to.add(std::make_shared<hittable_sphere>(sp));
   for (const quad& q : quads) to.add(std::make_shared<hittable_quad>(q));
-  for (const triangle& t : triangles) {
-    const bool smooth = t.shading >= 0 && shading[std::size_t(t.shading)].has_normals();
+  for (const triangle& t : triangles)
     to.add(std::make_shared<hittable_triangle>(
-        t, smooth ? &shading[std::size_t(t.shading)].normal : nullptr));
-  }
+        t, t.shading >= 0 ? &shading[std::size_t(t.shading)] : nullptr));
 }
 
 }  // namespace

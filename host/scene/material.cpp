@@ -11,6 +11,8 @@ constexpr material_kind kinds[] = {
     {material_type::metal, "metal", true, true, false, true},
     {material_type::dielectric, "dielectric", false, false, true, true},
     {material_type::flat, "flat", true, false, false, false},
+    {material_type::diffuse_light, "diffuse_light", true, false, false, false},
+    {material_type::isotropic, "isotropic", true, false, false, true},
 };
 
 }  // namespace

@@ -16,6 +16,8 @@ enum class material_type : std::uint32_t {
   metal = RTVK_MATERIAL_METAL,            // mirror, blurred by fuzz
   dielectric = RTVK_MATERIAL_DIELECTRIC,  // glass: refracts, reflects by Schlick, total reflection
   flat = RTVK_MATERIAL_FLAT,              // its albedo, unlit; no bounce (geometry and colors)
+  diffuse_light = RTVK_MATERIAL_DIFFUSE_LIGHT,  // a lamp: emits its color, both sides; no bounce
+  isotropic = RTVK_MATERIAL_ISOTROPIC,          // a medium's phase function: scatters every way
 };
 
 // A surface's optics. One flat struct (rather than a class per material) so the GPU copy is the
@@ -23,9 +25,12 @@ enum class material_type : std::uint32_t {
 // ray_color.h), which both backends compile.
 struct material {
   material_type type = material_type::normal;
-  color albedo{1, 1, 1};  // fraction of light kept per channel (lambertian, metal)
+  color albedo{1, 1, 1};  // fraction of light kept per channel (lambertian, metal, isotropic,
+                          // flat); diffuse_light: the radiance it emits, any strength
   double fuzz = 0;        // metal: radius of the reflection's blur sphere, 0 to 1
   double ir = 1.5;        // dielectric: index of refraction
+  int texture = -1;       // index into the scene's textures: the color at a hit is the texture's
+                          // value there instead of albedo; -1: albedo everywhere
 };
 
 // What a kind is called in scene files and which of material's parameters it reads: the one
@@ -33,7 +38,7 @@ struct material {
 struct material_kind {
   material_type type;
   std::string_view name;  // in scene files, e.g. "lambertian"
-  bool albedo;            // reads `albedo` (required in scene files)
+  bool albedo;            // reads a color (required in scene files; a texture may stand in)
   bool fuzz;              // reads `fuzz` (optional, default 0)
   bool ir;                // reads `ir` (required)
   bool random;            // draws random numbers: its images are Monte Carlo estimates

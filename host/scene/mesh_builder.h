@@ -66,6 +66,7 @@ class mesh_builder {
     if (mirrored) std::swap(corners[1], corners[2]);
     if (smooth || has_uv) {
       sh.uv = corners;
+      sh.has_uv = has_uv;
       t.shading = std::int32_t(s_.shading.size());
       s_.shading.push_back(sh);
     }

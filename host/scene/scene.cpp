@@ -166,6 +166,12 @@ void add_box(scene& s, const point3& a, const point3& b, int material, const tra
   side({lo.x, lo.y, lo.z}, dx, dz);   // bottom
 }
 
+bool scene_reads_uv(const scene& s) {
+  for (const texture& t : s.textures)
+    if (t.type == texture_type::image) return true;
+  return false;
+}
+
 bool scene_moves(const scene& s) {
   return std::any_of(s.spheres.begin(), s.spheres.end(),
                      [](const sphere& sp) { return sp.velocity() != vec3(0); });

@@ -10,8 +10,10 @@
 #include "quad.h"
 #include "render_settings.h"
 #include "sphere.h"
+#include "textures.h"
 #include "transform.h"
 #include "triangle.h"
+#include "volumes.h"
 
 namespace rtvk {
 
@@ -52,6 +54,10 @@ struct scene {
   // instance order, each instance's objects in its group's order (spheres, quads, triangles).
   std::vector<object_group> groups;
   std::vector<instance> instances;
+  // What colors materials (their `texture` indices) and what fills space.
+  std::vector<texture> textures;  // checker, image and noise textures
+  std::uint32_t noise_seed = 0;   // makes the noise textures' tables (make_perlin)
+  std::vector<medium> media;      // constant-density media, tested after every object
   time_span motion;  // the instants rays may sample, seconds: BVHs bound moving spheres over it
                      // (render plans widen it to every frame's shutter; default [0, 1])
 };
@@ -69,6 +75,10 @@ inline std::size_t object_count(const scene& s) {
 // The book's box: the six quads of the axis-aligned box with opposite corners a and b, in its
 // order (front, right, back, left, top, bottom), each placed by `t`.
 void add_box(scene& s, const point3& a, const point3& b, int material, const transform& t = {});
+
+// Whether some texture of the scene reads the hits' texture coordinates (an image): only then do
+// the searches find spheres' (u, v), which costs two inverse trigonometric functions a hit.
+bool scene_reads_uv(const scene& s);
 
 // Whether some sphere of the scene moves.
 bool scene_moves(const scene& s);

@@ -32,11 +32,29 @@ inline bool has_area(const std::array<point3, 3>& p) {
 }
 
 // What a mesh gives its vertices beyond positions: normals for smooth shading and texture
-// coordinates (kept for textures: nothing reads them yet).
+// coordinates (image textures read them).
 struct triangle_shading {
   std::array<vec3, 3> normal{};    // unit vertex normals, or all zero: flat
   std::array<glm::dvec2, 3> uv{};  // texture coordinates (0, 0 where the mesh has none)
+  bool has_uv = false;             // uv came from the mesh (else a hit's uv is barycentric)
   bool has_normals() const { return normal[0] != vec3(0); }
 };
+
+// A triangle's shading as both backends' searches keep it: normals normalized once.
+struct triangle_attributes {
+  std::array<vec3, 3> normal{};    // unit vertex normals, when smooth
+  std::array<glm::dvec2, 3> uv{};  // texture coordinates, when has_uv
+  bool smooth = false;             // shaded by the blended normals, else flat
+  bool has_uv = false;             // uv given by the mesh
+};
+inline triangle_attributes attributes_of(const triangle_shading& sh) {
+  triangle_attributes a;
+  a.smooth = sh.has_normals();
+  if (a.smooth)
+    for (std::size_t k = 0; k < 3; ++k) a.normal[k] = glm::normalize(sh.normal[k]);
+  a.has_uv = sh.has_uv;
+  a.uv = sh.uv;
+  return a;
+}
 
 }  // namespace rtvk

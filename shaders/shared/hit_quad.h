@@ -52,11 +52,14 @@ inline bool hit_quad(quad_geometry q, ray r, real t_min, real t_max, precise OUT
   return true;
 }
 
-// The record of a hit at t on the quad.
+// The record of a hit at t on the quad; its texture coordinates are the plane coordinates
+// (alpha, beta), found again as hit_quad finds them.
 inline void record_quad_hit(quad_geometry q, uint material, ray r, real t,
                             precise INOUT(hit_record) rec) {
   rec.t = t;
   rec.p = ray_at(r, t);
+  precise real3 planar = rec.p - q.Q;
+  rec.uv = real2(dot3(q.w, cross3(planar, q.v)), dot3(q.w, cross3(q.u, planar)));
   set_face_normal(rec, r, q.normal);
   rec.material = material;
   rec.offset = flat_offset(rec.p, r);

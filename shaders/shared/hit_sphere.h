@@ -44,14 +44,24 @@ inline bool hit_sphere(real3 center, real radius, ray r, real t_min, real t_max,
   return true;
 }
 
-// The record of a hit at t on the sphere.
-inline void record_hit(real3 center, real radius, uint material, ray r, real t,
+// A sphere's texture coordinates at the unit vector n from its center (the book's get_sphere_uv):
+// u the angle around the y axis from -x, v the angle from -y, each over [0, 1].
+inline precise real2 sphere_uv(real3 n) {
+  precise real theta = acos(max(real(-1.0), min(real(1.0), -n.y)));
+  precise real phi = atan2(-n.z, n.x) + pi;
+  return real2(phi / (real(2.0) * pi), theta / pi);
+}
+
+// The record of a hit at t on the sphere; its texture coordinates only `with_uv` (two inverse
+// trigonometric functions a hit: only scenes with image textures pay for them).
+inline void record_hit(real3 center, real radius, uint material, ray r, real t, bool with_uv,
                        precise INOUT(hit_record) rec) {
   rec.t = t;
   rec.p = ray_at(r, t);
   precise real3 outward_normal = divide(rec.p - center, radius);
   set_face_normal(rec, r, outward_normal);
   rec.material = material;
+  rec.uv = with_uv ? sphere_uv(outward_normal) : real2(0.0);
   // About eight float ulps of the largest coordinate involved -- the sphere's, and the ray's
   // origin's, which p = origin + t * direction inherits the rounding of -- covers the GPU's
   // rounding (ScatterOrigin.RaysLeavingASphereStartOutsideIt...).

@@ -74,10 +74,12 @@ inline bool hit_triangle(real3 a, real3 b, real3 c, ray r, sheared_ray s, real t
 
 // The record of a hit at t on the triangle: its geometric normal (cross(b - a, c - a), the front
 // side counter-clockwise) decides the side; the normal shaded is `shading` (unit: the vertex
-// normals blended, or the geometric one for a flat triangle) turned to that side.
-inline void record_triangle_hit(real3 a, real3 b, real3 c, real3 shading, uint material, ray r,
-                                real t, precise INOUT(hit_record) rec) {
+// normals blended, or the geometric one for a flat triangle) turned to that side; uv its texture
+// coordinates (triangle_uv).
+inline void record_triangle_hit(real3 a, real3 b, real3 c, real3 shading, real2 uv, uint material,
+                                ray r, real t, precise INOUT(hit_record) rec) {
   rec.t = t;
+  rec.uv = uv;
   rec.p = ray_at(r, t);
   precise real3 geometric = unit_vector(cross3(b - a, c - a));
   set_face_normal(rec, r, geometric);
@@ -97,6 +99,14 @@ inline precise real3 shading_normal(real3 a, real3 b, real3 c, bool blended, rea
                                     real3 n2, real3 weights) {
   if (blended) return blend_normals(n0, n1, n2, weights);
   return unit_vector(cross3(b - a, c - a));
+}
+
+// A triangle's texture coordinates at barycentric weights `weights`: the vertices' uv0, uv1, uv2
+// blended where the mesh gives them (`given`), else the weights of b and c, as a quad's plane
+// coordinates are its corners' (the vertices at (0, 0), (1, 0) and (0, 1)).
+inline precise real2 triangle_uv(bool given, real2 uv0, real2 uv1, real2 uv2, real3 weights) {
+  if (!given) return real2(weights.y, weights.z);
+  return weights.x * uv0 + weights.y * uv1 + weights.z * uv2;
 }
 
 RTVK_KERNELS_END

@@ -13,7 +13,8 @@
 //   precise             GLSL: no reassociation and no fused multiply-adds; C++ is built with
 //                       -ffp-contract=off and never reassociates, so the word is empty there.
 //   inline              C++: header functions; GLSL: empty.
-// and call only the GLSL built-ins listed below, which C++ finds in std:: and glm.
+// and call only the GLSL built-ins listed below, which C++ finds in std:: and glm (atan2 is C's
+// name, which GLSL gets here).
 #ifndef RTVK_KERNEL_LANG_H
 #define RTVK_KERNEL_LANG_H
 
@@ -49,12 +50,16 @@ using uint = std::uint32_t;
 using uvec2 = glm::uvec2;
 using uvec3 = glm::uvec3;
 // The GLSL built-ins the kernels call.
+using glm::floor;
 using glm::max;
 using glm::min;
 using std::abs;
+using std::acos;
 using std::asin;
+using std::atan2;
 using std::cos;
 using std::floor;
+using std::log;
 using std::sin;
 using std::sqrt;
 // Where one source cannot serve: GLSL has no cube root. pow(x, 1/3) there, cbrt here; the two
@@ -87,6 +92,9 @@ inline uint floatBitsToUint(float x) {  // GLSL's built-in
 #define real3 vec3
 precise float cube_root(float x) {
   return pow(x, 1.0 / 3.0);
+}
+float atan2(float y, float x) {  // C's name for GLSL's two-argument atan
+  return atan(y, x);
 }
 bool is_finite(float x) {
   return (floatBitsToUint(x) & 0x7f800000u) != 0x7f800000u;  // the exponent is not all ones

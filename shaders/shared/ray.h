@@ -51,6 +51,7 @@ struct hit_record {
   bool front_face;       // the ray arrived from outside the surface
   uint material;         // index into the scene's materials
   precise real offset;   // how far a ray leaving p starts off the surface, scene units
+  precise real2 uv;      // texture coordinates of p on the object (image textures read them)
 };
 
 // Where a ray leaving the hit along `direction` starts: lifted off the surface to the side it

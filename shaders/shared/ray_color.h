@@ -54,9 +54,10 @@ inline precise real3 path_missed(path_state p, real3 horizon, real3 zenith) {
   return p.throughput * sky_color(p.r.direction, horizon, zenith);
 }
 
-// p.r hit `rec`, whose material is of `type` with these parameters (scatter's). Either ends the
-// path, its color in `c` (the lesson's normal shading; a flat material's albedo, unlit; black
-// when absorbed), or scatters it for the next trip (false).
+// p.r hit `rec`, whose material is of `type` with these parameters (scatter's; albedo is the
+// material's color at the hit, its texture's value there when it has one). Either ends the path,
+// its color in `c` (the lesson's normal shading; a flat material's albedo, unlit; a lamp's
+// emitted color; black when absorbed), or scatters it for the next trip (false).
 inline bool path_hit(precise INOUT(path_state) p, hit_record rec, uint type, real3 albedo,
                      real fuzz, real ir, precise OUT(real3) c) {
   c = real3(0.0);
@@ -64,7 +65,9 @@ inline bool path_hit(precise INOUT(path_state) p, hit_record rec, uint type, rea
     c = p.throughput * (real(0.5) * (rec.normal + real3(1.0, 1.0, 1.0)));
     return true;
   }
-  if (type == RTVK_MATERIAL_FLAT) {
+  // The book's diffuse_light emits on both sides and reflects nothing: its emitted color, seen
+  // through the path's attenuations, is all the path gathers (exactly the color, seen directly).
+  if (type == RTVK_MATERIAL_FLAT || type == RTVK_MATERIAL_DIFFUSE_LIGHT) {
     c = p.throughput * albedo;
     return true;
   }

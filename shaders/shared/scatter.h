@@ -72,9 +72,20 @@ inline bool scatter_dielectric(real ir, ray r_in, hit_record rec, random_stream 
   return true;
 }
 
+// The book's isotropic phase function: a medium scatters a ray every way alike, from the point
+// inside it where it scattered (no surface to lift off).
+inline bool scatter_isotropic(real3 albedo, ray r_in, hit_record rec, random_stream s,
+                              precise OUT(real3) attenuation, precise OUT(ray) scattered) {
+  precise real3 direction =
+      random_unit_vector(real(rnd(s, dim_direction_a)), real(rnd(s, dim_direction_b)));
+  scattered = ray(rec.p, direction, r_in.time);
+  attenuation = albedo;
+  return true;
+}
+
 // The material of type `type` (RTVK_MATERIAL_*) with these parameters: albedo for lambertian and
-// metal, fuzz for metal, ir for dielectric. The normal material scatters nothing (ray_color
-// shades it).
+// metal and isotropic, fuzz for metal, ir for dielectric. The normal, flat and diffuse_light
+// materials scatter nothing (ray_color shades them).
 inline bool scatter(uint type, real3 albedo, real fuzz, real ir, ray r_in, hit_record rec,
                     random_stream s, precise OUT(real3) attenuation, precise OUT(ray) scattered) {
   attenuation = real3(0.0);
@@ -85,6 +96,8 @@ inline bool scatter(uint type, real3 albedo, real fuzz, real ir, ray r_in, hit_r
     return scatter_metal(albedo, fuzz, r_in, rec, s, attenuation, scattered);
   if (type == RTVK_MATERIAL_DIELECTRIC)
     return scatter_dielectric(ir, r_in, rec, s, attenuation, scattered);
+  if (type == RTVK_MATERIAL_ISOTROPIC)
+    return scatter_isotropic(albedo, r_in, rec, s, attenuation, scattered);
   return false;
 }
 

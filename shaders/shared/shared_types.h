@@ -32,8 +32,13 @@ using uvec2 = glm::uvec2;
                                     // in the spheres' order; one unused element when none moves
 #define RTVK_BINDING_QUADS 8        // storage buffer: gpu_quad[], in the BVH's leaf order
 #define RTVK_BINDING_TRIANGLES 13   // storage buffer: gpu_triangle[], in the BVH's leaf order
-#define RTVK_BINDING_NORMALS 14     // storage buffer: vec4[], smooth triangles' vertex normals
+#define RTVK_BINDING_NORMALS 14     // storage buffer: vec4[], triangles' vertex normals
 #define RTVK_BINDING_INSTANCES 15   // storage buffer: gpu_instance[], in scene order
+#define RTVK_BINDING_TEXCOORDS 16   // storage buffer: vec2[], triangles' vertex uv (as normals)
+#define RTVK_BINDING_TEXTURES 17    // storage buffer: gpu_texture[]
+#define RTVK_BINDING_TEXELS 18      // storage buffer: uint[], image textures' RGBA8 texels
+#define RTVK_BINDING_PERLIN 19      // storage buffer: gpu_perlin, the noise textures' tables
+#define RTVK_BINDING_MEDIA 20       // storage buffer: gpu_medium[], in scene order
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
 
@@ -47,7 +52,10 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_QUADS 7       // bool: the scene has quads
 #define RTVK_SPEC_TRIANGLES 8   // bool: the scene has triangles
 #define RTVK_SPEC_INSTANCES 9   // bool: the scene has instances
-#define RTVK_SPEC_COUNT 10      // constant ids in use
+#define RTVK_SPEC_UV \
+  10                        // bool: hits on spheres find their texture coordinates (an image
+                            // texture reads them)
+#define RTVK_SPEC_COUNT 11  // constant ids in use
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 112 camera
 // blocks of 144 bytes are 15.75 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
@@ -68,6 +76,22 @@ using uvec2 = glm::uvec2;
 #define RTVK_MATERIAL_METAL 2
 #define RTVK_MATERIAL_DIELECTRIC 3
 #define RTVK_MATERIAL_FLAT 4
+#define RTVK_MATERIAL_DIFFUSE_LIGHT 5  // emits its color (any strength); no bounce
+#define RTVK_MATERIAL_ISOTROPIC 6      // scatters every way alike: a medium's phase function
+
+// What a material's color is (gpu_material::texture): its albedo, or one of these.
+#define RTVK_NO_TEXTURE 0xffffffffu
+#define RTVK_TEXTURE_CHECKER 0   // the book's spatial checker: cells of `scale` scene units
+#define RTVK_TEXTURE_IMAGE 1     // an image, nearest texel at the hit's (u, v)
+#define RTVK_TEXTURE_NOISE 2     // Perlin noise at scale * p, in one of the styles below
+#define RTVK_NOISE_SMOOTH 0      // 0.5 * (1 + noise(scale p))
+#define RTVK_NOISE_TURBULENCE 1  // turb(scale p), seven octaves
+#define RTVK_NOISE_MARBLE 2      // 0.5 * (1 + sin(scale p.z + 10 turb(p))): the book's final one
+#define RTVK_PERLIN_POINTS 256   // random vectors (and entries of each permutation) of the noise
+
+// What bounds a medium (gpu_medium::shape).
+#define RTVK_BOUNDARY_SPHERE 0
+#define RTVK_BOUNDARY_BOX 1
 
 // Camera models, as rtvk::projection (host/scene/camera.h).
 #define RTVK_PROJECTION_PERSPECTIVE 0
@@ -134,7 +158,9 @@ struct gpu_triangle {
   vec3 b;            // second vertex (counter-clockwise from the front)
   uint scene_index;  // the triangle's scene index (spheres and quads first)
   vec3 c;            // third vertex
-  uint normals;      // its vertex normals at 3 * normals in the normals buffer; RTVK_FLAT: none
+  uint normals;      // its shading at 3 * normals in the normals and texcoords buffers (vertex
+                     // normals; uv); RTVK_FLAT: none (flat, uv barycentric). The first normal's
+                     // w is 1 when they blend (else flat), the second's when the uv are given.
 };
 #define RTVK_FLAT 0xffffffffu
 
@@ -162,12 +188,47 @@ struct gpu_instance {
 
 // std430 array element: 32 bytes.
 struct gpu_material {
-  vec3 albedo;  // fraction of light kept per channel
-  uint type;    // RTVK_MATERIAL_*
-  float fuzz;   // metal: blur radius
-  float ir;     // dielectric: index of refraction
-  uint pad0;    // unused
-  uint pad1;    // unused
+  vec3 albedo;   // fraction of light kept per channel; diffuse_light: the radiance it emits
+  uint type;     // RTVK_MATERIAL_*
+  float fuzz;    // metal: blur radius
+  float ir;      // dielectric: index of refraction
+  uint texture;  // its color's texture (gpu_texture index), or RTVK_NO_TEXTURE: albedo
+  uint pad1;     // unused
+};
+
+// std430 array element: one texture, 48 bytes (shaders/shared/texture.h reads it).
+struct gpu_texture {
+  vec3 even;    // checker: the color of even cells; noise: the color noise 1 has
+  uint type;    // RTVK_TEXTURE_*
+  vec3 odd;     // checker: the color of odd cells
+  float scale;  // checker: a cell's size, scene units; noise: frequency, per scene unit
+  uint first;   // image: its first texel in the texel array
+  uint width;   // image: texels across
+  uint height;  // image: rows of texels
+  uint style;   // noise: RTVK_NOISE_*
+};
+
+// std430: the noise's tables, made from the scene's noise seed on the host (host/scene/perlin.h).
+struct gpu_perlin {
+  vec4 vectors[RTVK_PERLIN_POINTS];   // xyz: random unit vectors at the lattice points
+  uint perm[3 * RTVK_PERLIN_POINTS];  // permutations of 0..255 for x, y and z, one after another
+};
+
+// std430 array element: a constant-density medium (the book's constant_medium), 96 bytes.
+// Its boundary is in its own space: a point p of the scene is (dot(to_local_x.xyz, p) +
+// to_local_x.w, ...) there, and a direction without the w.
+struct gpu_medium {
+  vec4 to_local_x;        // first row of the inverse placement, translation in w
+  vec4 to_local_y;        // second row
+  vec4 to_local_z;        // third row
+  vec3 lo;                // box: its minimum corner; sphere: its center (local units)
+  uint shape;             // RTVK_BOUNDARY_*
+  vec3 hi;                // box: its maximum corner; sphere: x is its radius
+  float neg_inv_density;  // -1 / density, scene units (the scene's, not the local space's)
+  uint material;          // its phase function's material (isotropic)
+  uint index;             // its index among the scene's media: picks its random numbers
+  uint pad0;              // unused
+  uint pad1;              // unused
 };
 
 // One interior node of the binary bounding volume hierarchy the host builds (host/accel/bvh.h),
@@ -243,6 +304,7 @@ struct render_push {
   uint quad_count;      // quads in the storage buffer
   uint triangle_count;  // triangles in the storage buffer
   uint instance_count;  // instances in their storage buffer
+  uint medium_count;    // media in their storage buffer
 };
 
 // std430 array element: one pixel's exact running sums, 48 bytes. Each channel is a 96-bit
@@ -400,7 +462,25 @@ static_assert(offsetof(gpu_material, albedo) == 0);
 static_assert(offsetof(gpu_material, type) == 12);
 static_assert(offsetof(gpu_material, fuzz) == 16);
 static_assert(offsetof(gpu_material, ir) == 20);
+static_assert(offsetof(gpu_material, texture) == 24);
 static_assert(sizeof(gpu_material) == 32);
+static_assert(offsetof(gpu_texture, type) == 12);
+static_assert(offsetof(gpu_texture, odd) == 16);
+static_assert(offsetof(gpu_texture, scale) == 28);
+static_assert(offsetof(gpu_texture, first) == 32);
+static_assert(offsetof(gpu_texture, width) == 36);
+static_assert(offsetof(gpu_texture, height) == 40);
+static_assert(offsetof(gpu_texture, style) == 44);
+static_assert(sizeof(gpu_texture) == 48);
+static_assert(offsetof(gpu_perlin, perm) == 16 * RTVK_PERLIN_POINTS);
+static_assert(sizeof(gpu_perlin) == 28 * RTVK_PERLIN_POINTS);
+static_assert(offsetof(gpu_medium, lo) == 48);
+static_assert(offsetof(gpu_medium, shape) == 60);
+static_assert(offsetof(gpu_medium, hi) == 64);
+static_assert(offsetof(gpu_medium, neg_inv_density) == 76);
+static_assert(offsetof(gpu_medium, material) == 80);
+static_assert(offsetof(gpu_medium, index) == 84);
+static_assert(sizeof(gpu_medium) == 96);
 static_assert(offsetof(render_push, sky_horizon) == 0);
 static_assert(offsetof(render_push, sphere_count) == 12);
 static_assert(offsetof(render_push, sky_zenith) == 16);
@@ -419,7 +499,8 @@ static_assert(offsetof(render_push, sums_row0) == 72);
 static_assert(offsetof(render_push, quad_count) == 76);
 static_assert(offsetof(render_push, triangle_count) == 80);
 static_assert(offsetof(render_push, instance_count) == 84);
-static_assert(sizeof(render_push) == 88 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, medium_count) == 88);
+static_assert(sizeof(render_push) == 92 && sizeof(render_push) <= 128);
 static_assert(offsetof(gpu_quad, material) == 12);
 static_assert(offsetof(gpu_quad, u) == 16);
 static_assert(offsetof(gpu_quad, scene_index) == 28);

@@ -86,8 +86,9 @@ TEST(Triangle, HitsWhereWorkedByHand) {
 // Smooth shading: the vertex normals blended by the hit's weights, turned to the ray's side.
 TEST(Triangle, SmoothNormalsBlendByBarycentricWeights) {
   const triangle tri{{point3(0, 0, 0), point3(1, 0, 0), point3(0, 1, 0)}, 0};
-  const std::array<vec3, 3> normals{vec3(0, 0, 1), vec3(1, 0, 0), vec3(0, 1, 0)};
-  const hittable_triangle h(tri, &normals);
+  triangle_shading shading;
+  shading.normal = {vec3(0, 0, 1), vec3(1, 0, 0), vec3(0, 1, 0)};
+  const hittable_triangle h(tri, &shading);
   hit_record rec{};
   ASSERT_TRUE(h.hit(ray(point3(0.25, 0.25, 1), vec3(0, 0, -1)), 0.001, inf, rec));
   // 0.5 (0,0,1) + 0.25 (1,0,0) + 0.25 (0,1,0), normalized.

@@ -41,7 +41,7 @@ bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_ma
 
 glm::vec3 scatter_origin(glm::vec3 center, float radius, ray_f r, float t, glm::vec3 leaving) {
   k::hit_record rec;
-  k::record_hit(center, radius, 0u, k::ray(r.origin, r.direction), t, rec);
+  k::record_hit(center, radius, 0u, k::ray(r.origin, r.direction), t, false, rec);
   return k::scatter_origin(rec, leaving);
 }
 

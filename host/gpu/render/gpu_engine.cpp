@@ -142,6 +142,7 @@ std::vector<buffer_binding> render_bindings(const gpu_scene& g, const render_tar
       {RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.sums.get()},
       {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.status.get()}};
   for (const buffer_binding& o : g.object_bindings()) b.push_back(o);
+  for (const buffer_binding& o : g.appearance_bindings()) b.push_back(o);
   return b;
 }
 

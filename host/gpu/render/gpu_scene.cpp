@@ -56,7 +56,11 @@ gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
                 std::uint32_t(s.spheres.size()),
                 std::uint32_t(s.quads.size()),
                 std::uint32_t(s.triangles.size())};
-  a.triangles = to_gpu_triangles(s, tree.triangles, a.normals);
+  a.triangles = to_gpu_triangles(s, tree.triangles, a.normals, a.uvs);
+  a.textures = to_gpu_textures(s, a.texels);
+  a.perlin = {to_gpu_perlin(make_perlin(s.noise_seed))};
+  a.media = to_gpu_media(s);
+  a.with_uv = scene_reads_uv(s);
   return a;
 }
 
@@ -71,6 +75,8 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       own_quads_(a.own_quads),
       own_triangles_(a.own_triangles),
       instance_count_(std::uint32_t(a.instances.size())),
+      medium_count_(std::uint32_t(a.media.size())),
+      with_uv_(a.with_uv),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
       specs_{{bytes_of(a.spheres), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
@@ -80,7 +86,12 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
              {bytes_of(a.quads), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
              {bytes_of(a.triangles), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
              {bytes_of(a.normals), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.instances), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
+             {bytes_of(a.instances), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.uvs), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.textures), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.texels), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.perlin), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.media), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
       staging_(
           host_writes_device_memory(ctx)
               ? std::nullopt
@@ -99,13 +110,21 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
   write_array(to[5], a.triangles);
   write_array(to[6], a.normals);
   write_array(to[7], a.instances);
+  write_array(to[8], a.uvs);
+  write_array(to[9], a.textures);
+  write_array(to[10], a.texels);
+  write_array(to[11], a.perlin);
+  write_array(to[12], a.media);
 }
 
 std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const host_arrays& a) {
   const VkDeviceSize spheres = bytes_of(a.spheres), materials = bytes_of(a.materials),
                      nodes = bytes_of(a.nodes), velocities = bytes_of(a.velocities),
                      quads = bytes_of(a.quads), triangles = bytes_of(a.triangles),
-                     normals = bytes_of(a.normals), instances = bytes_of(a.instances);
+                     normals = bytes_of(a.normals), instances = bytes_of(a.instances),
+                     uvs = bytes_of(a.uvs), textures = bytes_of(a.textures),
+                     texels = bytes_of(a.texels), perlin = bytes_of(a.perlin),
+                     media = bytes_of(a.media);
   using u = memory_use;
   if (host_writes_device_memory(ctx))
     return {{"the sphere array", spheres, true, u::device_mapped, array_set},
@@ -115,7 +134,12 @@ std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const hos
             {"the quad array", quads, true, u::device_mapped, array_set},
             {"the triangle array", triangles, true, u::device_mapped, array_set},
             {"the vertex normal array", normals, true, u::device_mapped, array_set},
-            {"the instance array", instances, true, u::device_mapped, array_set}};
+            {"the instance array", instances, true, u::device_mapped, array_set},
+            {"the texture coordinate array", uvs, true, u::device_mapped, array_set},
+            {"the texture array", textures, true, u::device_mapped, array_set},
+            {"the image textures' texels", texels, true, u::device_mapped, array_set},
+            {"the noise tables", perlin, true, u::device_mapped, array_set},
+            {"the media array", media, true, u::device_mapped, array_set}};
   return {{"the spheres' upload copy", spheres, false, u::staging, staging_set},
           {"the sphere array", spheres, true, u::device_local, array_set},
           {"the materials' upload copy", materials, false, u::staging, staging_set},
@@ -131,7 +155,17 @@ std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const hos
           {"the vertex normals' upload copy", normals, false, u::staging, staging_set},
           {"the vertex normal array", normals, true, u::device_local, array_set},
           {"the instances' upload copy", instances, false, u::staging, staging_set},
-          {"the instance array", instances, true, u::device_local, array_set}};
+          {"the instance array", instances, true, u::device_local, array_set},
+          {"the texture coordinates' upload copy", uvs, false, u::staging, staging_set},
+          {"the texture coordinate array", uvs, true, u::device_local, array_set},
+          {"the textures' upload copy", textures, false, u::staging, staging_set},
+          {"the texture array", textures, true, u::device_local, array_set},
+          {"the texels' upload copy", texels, false, u::staging, staging_set},
+          {"the image textures' texels", texels, true, u::device_local, array_set},
+          {"the noise tables' upload copy", perlin, false, u::staging, staging_set},
+          {"the noise tables", perlin, true, u::device_local, array_set},
+          {"the media's upload copy", media, false, u::staging, staging_set},
+          {"the media array", media, true, u::device_local, array_set}};
 }
 
 std::vector<buffer_binding> gpu_scene::object_bindings() const {
@@ -142,7 +176,16 @@ std::vector<buffer_binding> gpu_scene::object_bindings() const {
           {RTVK_BINDING_TRIANGLES, storage, triangles()},
           {RTVK_BINDING_NORMALS, storage, normals()},
           {RTVK_BINDING_BVH_NODES, storage, nodes()},
-          {RTVK_BINDING_INSTANCES, storage, instances()}};
+          {RTVK_BINDING_INSTANCES, storage, instances()},
+          {RTVK_BINDING_TEXCOORDS, storage, uvs()}};
+}
+
+std::vector<buffer_binding> gpu_scene::appearance_bindings() const {
+  constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  return {{RTVK_BINDING_TEXTURES, storage, textures()},
+          {RTVK_BINDING_TEXELS, storage, texels()},
+          {RTVK_BINDING_PERLIN, storage, perlin()},
+          {RTVK_BINDING_MEDIA, storage, media()}};
 }
 
 void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
@@ -150,6 +193,7 @@ void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
   spec[RTVK_SPEC_QUADS] = quad_count_ > 0;
   spec[RTVK_SPEC_TRIANGLES] = triangle_count_ > 0;
   spec[RTVK_SPEC_INSTANCES] = instance_count_ > 0;
+  spec[RTVK_SPEC_UV] = with_uv_;
 }
 
 void gpu_scene::set_counts(render_push& push) const {
@@ -158,6 +202,7 @@ void gpu_scene::set_counts(render_push& push) const {
   push.quad_count = own_quads_;
   push.triangle_count = own_triangles_;
   push.instance_count = instance_count_;
+  push.medium_count = medium_count_;
 }
 
 void gpu_scene::record_upload(VkCommandBuffer cb) const {

@@ -38,6 +38,12 @@ class gpu_scene {
     std::vector<gpu_instance> instances;  // in scene order
     // The scene's own objects of each kind: the first of each array (the groups' follow).
     std::uint32_t own_spheres = 0, own_quads = 0, own_triangles = 0;
+    std::vector<glm::vec2> uvs;         // triangles' vertex uv, as `normals`
+    std::vector<gpu_texture> textures;  // by material's texture index
+    std::vector<std::uint32_t> texels;  // the images', one after another
+    std::vector<gpu_perlin> perlin;     // one: the noise's tables
+    std::vector<gpu_medium> media;      // in scene order
+    bool with_uv = false;               // some texture reads sphere hits' uv (RTVK_SPEC_UV)
   };
   // The scene's arrays, its BVH built (over no spheres when !use_bvh).
   static host_arrays build(const scene& s, bool use_bvh);
@@ -64,9 +70,17 @@ class gpu_scene {
   VkBuffer triangles() const { return arrays_[5].get(); }
   VkBuffer normals() const { return arrays_[6].get(); }
   VkBuffer instances() const { return arrays_[7].get(); }
+  VkBuffer uvs() const { return arrays_[8].get(); }
+  VkBuffer textures() const { return arrays_[9].get(); }
+  VkBuffer texels() const { return arrays_[10].get(); }
+  VkBuffer perlin() const { return arrays_[11].get(); }
+  VkBuffer media() const { return arrays_[12].get(); }
   // The bindings of the objects and the BVH (shaders/scene_buffers.glsl's), for every shader
   // that traces rays through the scene.
   std::vector<buffer_binding> object_bindings() const;
+  // The bindings of what shading reads besides the materials (textures, texels, the noise's
+  // tables, media): render.comp's.
+  std::vector<buffer_binding> appearance_bindings() const;
   // The switches render.comp and the probes are specialized with (RTVK_SPEC_MOTION, QUADS,
   // TRIANGLES), written into `spec` (indexed by constant id, at least RTVK_SPEC_TRIANGLES + 1).
   void specialize(std::span<std::uint32_t> spec) const;
@@ -79,6 +93,8 @@ class gpu_scene {
   std::uint32_t triangle_count_;                           // triangles
   std::uint32_t own_spheres_, own_quads_, own_triangles_;  // of them, the scene's own
   std::uint32_t instance_count_;                           // instances
+  std::uint32_t medium_count_;                             // media
+  bool with_uv_;                                           // RTVK_SPEC_UV
   double build_seconds_;                                   // building the BVH took
   bool moves_;                                             // some sphere has a velocity
   std::vector<buffer_spec> specs_;     // spheres, materials, nodes, velocities, quads, triangles,

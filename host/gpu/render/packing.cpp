@@ -76,18 +76,25 @@ std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const object_slot> 
 }
 
 std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const object_slot> slots,
-                                           std::vector<vec4>& normals) {
+                                           std::vector<vec4>& normals,
+                                           std::vector<glm::vec2>& uvs) {
   std::vector<gpu_triangle> out;
   out.reserve(slots.size());
   normals.clear();
+  uvs.clear();
   for (const object_slot o : slots) {
     const object_list l = list_of(s, o);
     const triangle& t = l.triangles[o.index];
     uint smooth = RTVK_FLAT;
-    if (t.shading >= 0 && l.shading[std::size_t(t.shading)].has_normals()) {
+    if (t.shading >= 0) {
+      const triangle_attributes a = attributes_of(l.shading[std::size_t(t.shading)]);
       smooth = uint(normals.size() / 3);
-      for (const rtvk::vec3& n : l.shading[std::size_t(t.shading)].normal)
-        normals.push_back(vec4(vec3(glm::normalize(n)), 0));
+      for (std::size_t k = 0; k < 3; ++k) {
+        // w flags (shared_types.h, gpu_triangle::normals): blended on the first, uv on the second.
+        const float flag = k == 0 ? float(a.smooth) : k == 1 ? float(a.has_uv) : 0.0f;
+        normals.push_back(vec4(vec3(a.smooth ? a.normal[k] : rtvk::vec3(0)), flag));
+        uvs.push_back(glm::vec2(a.uv[k]));
+      }
     }
     const uint first = uint(l.spheres.size() + l.quads.size());
     out.push_back(
@@ -126,7 +133,37 @@ std::vector<gpu_material> to_gpu_materials(const scene& s) {
   std::vector<gpu_material> out;
   out.reserve(s.materials.size());
   for (const auto& [name, m] : s.materials)
-    out.push_back({vec3(m.albedo), uint(m.type), float(m.fuzz), float(m.ir), 0, 0});
+    out.push_back({vec3(m.albedo), uint(m.type), float(m.fuzz), float(m.ir),
+                   m.texture < 0 ? RTVK_NO_TEXTURE : uint(m.texture), 0});
+  return out;
+}
+
+std::vector<gpu_texture> to_gpu_textures(const scene& s, std::vector<std::uint32_t>& texels) {
+  packed_textures packed = pack_textures(s.textures);
+  std::vector<gpu_texture> out;
+  for (const texture_record& r : packed.records)
+    out.push_back(
+        {vec3(r.even), r.type, vec3(r.odd), float(r.scale), r.first, r.width, r.height, r.style});
+  texels = std::move(packed.texels);
+  return out;
+}
+
+gpu_perlin to_gpu_perlin(const perlin_tables& p) {
+  gpu_perlin out{};
+  for (std::size_t i = 0; i < p.vectors.size(); ++i) out.vectors[i] = vec4(vec3(p.vectors[i]), 0);
+  for (std::size_t i = 0; i < p.perm.size(); ++i) out.perm[i] = p.perm[i];
+  return out;
+}
+
+std::vector<gpu_medium> to_gpu_media(const scene& s) {
+  std::vector<gpu_medium> out;
+  for (std::size_t k = 0; k < s.media.size(); ++k) {
+    const medium_geometry g = geometry_of(s.media[k], uint(k));
+    out.push_back({vec4(vec3(g.to_local_x), float(g.to_local_offset.x)),
+                   vec4(vec3(g.to_local_y), float(g.to_local_offset.y)),
+                   vec4(vec3(g.to_local_z), float(g.to_local_offset.z)), vec3(g.lo), g.shape,
+                   vec3(g.hi), float(g.neg_inv_density), g.material, g.index, 0, 0});
+  }
   return out;
 }
 

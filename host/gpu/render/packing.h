@@ -23,13 +23,20 @@ std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const object_sl
 std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const object_slot> slots);
 // Quads with their planes (formed in double).
 std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const object_slot> slots);
-// Triangles, and the vertex normals of the smooth ones (three vec4 each, in `normals`).
+// Triangles, and the shading of those that have some: vertex normals (three vec4 each, in
+// `normals`, with gpu_triangle::normals's flags) and texture coordinates (three each, in `uvs`).
 std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const object_slot> slots,
-                                           std::vector<vec4>& normals);
+                                           std::vector<vec4>& normals, std::vector<glm::vec2>& uvs);
 // The instances, in scene order: the inverse placements and normal matrices rounded to float
 // (formed in double), and where their groups are (scene_tree::groups).
 std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group_span> groups);
 // The scene's materials, in order, rounded to float.
 std::vector<gpu_material> to_gpu_materials(const scene& s);
+// The scene's textures (pack_textures), rounded to float, and every image's texels in `texels`.
+std::vector<gpu_texture> to_gpu_textures(const scene& s, std::vector<std::uint32_t>& texels);
+// The noise's tables, the vectors rounded to float.
+gpu_perlin to_gpu_perlin(const perlin_tables& p);
+// The scene's media (geometry_of), rounded to float.
+std::vector<gpu_medium> to_gpu_media(const scene& s);
 
 }  // namespace rtvk::gpu

@@ -1,0 +1,173 @@
+#include "textures.h"
+
+#include <stb_image.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "errors.h"
+#include "input_file.h"
+#include "texture.h"
+
+namespace rtvk {
+namespace {
+
+// splitmix64: a small, portable generator (the standard library's distributions differ between
+// implementations; the noise must be the same everywhere).
+struct splitmix {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  double unit() { return double(next() >> 11) * 0x1.0p-53; }  // [0, 1)
+};
+
+}  // namespace
+
+std::uint8_t linear_to_byte(float v) {
+  if (!(v > 0)) return 0;
+  if (v >= 1) return 255;
+  return std::uint8_t(256.0f * v);
+}
+
+std::shared_ptr<const texel_image> load_texel_image(const std::filesystem::path& file,
+                                                    const std::string& name) {
+  const std::string what = "image texture (" + name + ")";
+  const std::string bytes = read_regular_file(file, max_texture_file_bytes, what);
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int length = int(std::min<std::size_t>(bytes.size(), 0x7fffffff));
+  int w = 0, h = 0, channels = 0;
+  if (!stbi_info_from_memory(data, length, &w, &h, &channels))
+    throw usage_error(name + ": " + file.string() + ": not an image stb_image reads (" +
+                      stbi_failure_reason() + ")");
+  if (w > max_texture_side || h > max_texture_side ||
+      std::uint64_t(w) * std::uint64_t(h) > max_texture_texels)
+    throw usage_error(name + ": " + file.string() + ": " + std::to_string(w) + "x" +
+                      std::to_string(h) + " texels is past the limit (" +
+                      std::to_string(max_texture_side) + " a side, " +
+                      std::to_string(max_texture_texels) + " in all)");
+  stbi_uc* pixels = stbi_load_from_memory(data, length, &w, &h, &channels, 3);
+  if (!pixels)
+    throw usage_error(name + ": " + file.string() + ": cannot decode the image (" +
+                      stbi_failure_reason() + ")");
+  // stb_image's own LDR-to-linear rule (stbi_loadf: (byte / 255)^2.2 in float), then the book's
+  // byte per channel.
+  std::array<std::uint8_t, 256> to_linear{};
+  for (int b = 0; b < 256; ++b)
+    to_linear[std::size_t(b)] = linear_to_byte(std::pow(float(b) / 255.0f, 2.2f));
+  auto image = std::make_shared<texel_image>();
+  image->width = w;
+  image->height = h;
+  image->texels.resize(std::size_t(w) * std::size_t(h));
+  for (std::size_t i = 0; i < image->texels.size(); ++i) {
+    const stbi_uc* p = pixels + 3 * i;
+    image->texels[i] = std::uint32_t(to_linear[p[0]]) | std::uint32_t(to_linear[p[1]]) << 8 |
+                       std::uint32_t(to_linear[p[2]]) << 16 | 0xff000000u;
+  }
+  stbi_image_free(pixels);
+  return image;
+}
+
+perlin_tables make_perlin(std::uint32_t seed) {
+  splitmix rng{0x7065726c696eull ^ (std::uint64_t(seed) << 17)};
+  perlin_tables t;
+  for (vec3& v : t.vectors) {
+    // The book's unit_vector(vec3::random(-1, 1)); a vector too short to normalize is drawn again.
+    do {
+      v = vec3(2 * rng.unit() - 1, 2 * rng.unit() - 1, 2 * rng.unit() - 1);
+    } while (glm::dot(v, v) < 1e-6);
+    v = v / std::sqrt(glm::dot(v, v));
+  }
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    std::uint32_t* p = t.perm.data() + axis * RTVK_PERLIN_POINTS;
+    for (std::uint32_t i = 0; i < RTVK_PERLIN_POINTS; ++i) p[i] = i;
+    for (std::uint32_t i = RTVK_PERLIN_POINTS - 1; i > 0; --i)  // the book's shuffle
+      std::swap(p[i], p[std::uint32_t(rng.next() % (i + 1))]);
+  }
+  return t;
+}
+
+std::shared_ptr<const texel_image> planet_image(int width, int height, std::uint32_t seed) {
+  const perlin_tables noise = make_perlin(seed);
+  const texture_tables tables{nullptr, nullptr, noise.vectors.data(), noise.perm.data()};
+  auto image = std::make_shared<texel_image>();
+  image->width = width;
+  image->height = height;
+  image->texels.resize(std::size_t(width) * std::size_t(height));
+  const auto pack = [](color c) {
+    return std::uint32_t(linear_to_byte(float(c.x))) |
+           std::uint32_t(linear_to_byte(float(c.y))) << 8 |
+           std::uint32_t(linear_to_byte(float(c.z))) << 16 | 0xff000000u;
+  };
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      // The texel's direction, as sphere_uv maps a sphere onto (u, v) (row 0 is v = 1: the top).
+      const double u = (i + 0.5) / width, v = 1 - (j + 0.5) / height;
+      const double theta = v * pi, phi = u * 2 * pi - pi;
+      const vec3 n(-std::sin(theta) * std::cos(phi), -std::cos(theta),
+                   std::sin(theta) * std::sin(phi));
+      const double height_at = perlin_noise(tables, 1.6 * n) + 0.5 * perlin_noise(tables, 3.2 * n) +
+                               0.25 * perlin_noise(tables, 6.4 * n);
+      const double latitude = std::abs(0.5 - v) * 2;  // 0 at the equator, 1 at the poles
+      color c;
+      if (latitude + 0.1 * height_at > 0.86)
+        c = color(0.85, 0.88, 0.9);  // ice
+      else if (height_at < 0.05)
+        c = glm::mix(color(0.01, 0.03, 0.12), color(0.03, 0.12, 0.3),
+                     std::clamp(height_at + 0.6, 0.0, 1.0));
+      else
+        c = glm::mix(color(0.08, 0.22, 0.04), color(0.3, 0.22, 0.1),
+                     std::clamp(height_at * 2, 0.0, 1.0));
+      image->texels[std::size_t(j) * std::size_t(width) + std::size_t(i)] = pack(c);
+    }
+  return image;
+}
+
+packed_textures pack_textures(const std::vector<texture>& textures) {
+  packed_textures out;
+  for (const texture& t : textures) {
+    texture_record r;
+    r.type = std::uint32_t(t.type);
+    r.even = t.even;
+    r.odd = t.odd;
+    r.scale = t.scale;
+    r.style = std::uint32_t(t.style);
+    if (t.type == texture_type::image && t.image) {
+      r.first = std::uint32_t(out.texels.size());
+      r.width = std::uint32_t(t.image->width);
+      r.height = std::uint32_t(t.image->height);
+      out.texels.insert(out.texels.end(), t.image->texels.begin(), t.image->texels.end());
+    }
+    out.records.push_back(r);
+  }
+  return out;
+}
+
+std::string type_name(texture_type t) {
+  switch (t) {
+    case texture_type::checker:
+      return "checker";
+    case texture_type::image:
+      return "image";
+    case texture_type::noise:
+      return "noise";
+  }
+  return "checker";
+}
+
+std::string style_name(noise_style s) {
+  switch (s) {
+    case noise_style::smooth:
+      return "smooth";
+    case noise_style::turbulence:
+      return "turbulence";
+    case noise_style::marble:
+      return "marble";
+  }
+  return "marble";
+}
+
+}  // namespace rtvk

@@ -1,0 +1,91 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "shared_types.h"
+#include "texture.h"
+#include "vec3.h"
+
+namespace rtvk {
+
+// The kinds of texture, numbered as the shaders number them (shared_types.h). A solid color is
+// no texture: the material's albedo.
+enum class texture_type : std::uint32_t {
+  checker = RTVK_TEXTURE_CHECKER,  // the book's spatial checker
+  image = RTVK_TEXTURE_IMAGE,      // an image, nearest texel at the hit's (u, v)
+  noise = RTVK_TEXTURE_NOISE,      // the book's Perlin noise
+};
+
+enum class noise_style : std::uint32_t {
+  smooth = RTVK_NOISE_SMOOTH,          // 0.5 * (1 + noise(scale p))
+  turbulence = RTVK_NOISE_TURBULENCE,  // turb(scale p)
+  marble = RTVK_NOISE_MARBLE,          // 0.5 * (1 + sin(scale p.z + 10 turb(p))): the book's
+};
+
+// An image's texels as both backends read them: linear values, a byte a channel, RGBA8 with red
+// in the lowest byte (alpha unused), rows from the top.
+struct texel_image {
+  int width = 0;                      // texels across
+  int height = 0;                     // rows
+  std::vector<std::uint32_t> texels;  // width * height
+};
+
+// One texture of a scene: plain data (shaders/shared/texture.h says what each kind draws).
+struct texture {
+  texture_type type = texture_type::checker;
+  double scale = 1;     // checker: a cell's size, scene units; noise: frequency
+  color even{1, 1, 1};  // checker: even cells' color; noise: the color noise 1 has
+  color odd{0, 0, 0};   // checker: odd cells' color
+  noise_style style = noise_style::marble;  // noise
+  std::string file;  // image: the file read, as written in the scene file (or
+                     // "builtin:planet" for the image rtvk draws itself)
+  std::shared_ptr<const texel_image> image;  // image: its texels (shared by copies of a scene)
+};
+
+// The most texels an image texture may have across or down, and in all: 16384 is what most GPUs
+// take for a 2D image side, and 2^26 texels (256 MiB of RGBA8) fit every device's storage
+// buffer range with room for the rest of the scene.
+inline constexpr int max_texture_side = 16384;
+inline constexpr std::uint64_t max_texture_texels = std::uint64_t(1) << 26;
+inline constexpr std::uint64_t max_texture_file_bytes = std::uint64_t(1) << 30;
+
+// Reads a PNG or JPEG (8 bits a channel; what stb_image reads) as the book's rtw_image does:
+// linear by gamma 2.2, then a byte a channel (floor(256 v), clamped). Throws usage_error naming
+// `name` (the scene file's path of the field) and the file: missing, unreadable, not an image,
+// truncated, or larger than the limits above.
+std::shared_ptr<const texel_image> load_texel_image(const std::filesystem::path& file,
+                                                    const std::string& name);
+
+// The book's linear-to-byte rule for one channel value: 0 at or below 0, 255 at or above 1,
+// else floor(256 v).
+std::uint8_t linear_to_byte(float v);
+
+// The noise textures' tables (the book's perlin class), made from a seed: random unit vectors at
+// the lattice points and three shuffles of 0..255. Every noise texture of a scene shares them;
+// both backends read the same numbers (the GPU's rounded to float).
+struct perlin_tables {
+  std::array<vec3, RTVK_PERLIN_POINTS> vectors{};            // unit vectors
+  std::array<std::uint32_t, 3 * RTVK_PERLIN_POINTS> perm{};  // x's, then y's, then z's
+};
+perlin_tables make_perlin(std::uint32_t seed);
+
+// An image rtvk draws itself: a planet of oceans, land and ice caps in equirectangular layout
+// (what the book's earth texture is), for the built-in scenes (no image file to ship).
+std::shared_ptr<const texel_image> planet_image(int width, int height, std::uint32_t seed);
+
+// A scene's textures as the kernels read them: a record each (texture.h's texture_record, an
+// image's `first` its offset in `texels`) and every image's texels one after another.
+struct packed_textures {
+  std::vector<texture_record> records;  // by texture index
+  std::vector<std::uint32_t> texels;    // the images', in texture order
+};
+packed_textures pack_textures(const std::vector<texture>& textures);
+
+std::string type_name(texture_type t);  // "checker", "image", "noise"
+std::string style_name(noise_style s);  // "smooth", "turbulence", "marble"
+
+}  // namespace rtvk

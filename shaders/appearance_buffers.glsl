@@ -1,0 +1,19 @@
+// What shading reads besides the materials, as gpu_scene::appearance_bindings binds it: the
+// textures (texture.h reads `textures`, `texels` and `perlin`) and the media. render.comp's.
+#ifndef RTVK_APPEARANCE_BUFFERS_GLSL
+#define RTVK_APPEARANCE_BUFFERS_GLSL
+
+layout(std430, set = 0, binding = RTVK_BINDING_TEXTURES) readonly buffer texture_block {
+  gpu_texture textures[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_TEXELS) readonly buffer texel_block {
+  uint texels[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_PERLIN) readonly buffer perlin_block {
+  gpu_perlin perlin;
+};
+layout(std430, set = 0, binding = RTVK_BINDING_MEDIA) readonly buffer medium_block {
+  gpu_medium media[];
+};
+
+#endif
