@@ -113,6 +113,9 @@ void check_scene(const scene& s);
 // bits for an object's position in its kind's array.
 inline constexpr std::size_t max_scene_objects = std::size_t(1) << 29;
 
+// The most media a scene may hold: every ray tests each of them (no BVH over media).
+inline constexpr std::size_t max_scene_media = 64;
+
 // The most spheres spheres:N builds.
 inline constexpr std::uint32_t max_scene_spheres = 4'000'000;
 

@@ -248,7 +248,73 @@ render_settings read_render(const scene_reader& r, const json& j) {
   return s;
 }
 
-material read_material(const scene_reader& r, const json& j, const std::string& p) {
+// A noise style's name.
+noise_style read_style(const scene_reader& r, const json& j, const std::string& p) {
+  for (noise_style st : {noise_style::smooth, noise_style::turbulence, noise_style::marble})
+    if (j.is_string() && j.get<std::string>() == style_name(st)) return st;
+  r.fail(p, "expected \"smooth\", \"turbulence\" or \"marble\", got " +
+                (j.is_string() ? "\"" + j.get<std::string>() + "\"" : r.type_of(j)));
+}
+
+// A color field that may be a texture instead: a color (in [0, 1], or any value >= 0 for a lamp's
+// `emit`), or a texture object ({"type": "checker" | "image" | "noise" | "solid", ...}), which is
+// appended to s.textures. Sets m.albedo or m.texture.
+void read_color_or_texture(const scene_reader& r, const json& j, const std::string& p,
+                           bool radiance, const std::filesystem::path& base, scene& s,
+                           material& m) {
+  if (!j.is_object()) {
+    m.albedo = radiance ? r.radiance(j, p) : r.albedo(j, p);
+    return;
+  }
+  const json& type = r.required(j, p, "type");
+  const std::string t = type.is_string() ? type.get<std::string>() : "";
+  texture tex;
+  if (t == "solid") {
+    r.only_fields(j, p, {"type", "color"});
+    read_color_or_texture(r, r.required(j, p, "color"), p + "/color", radiance, base, s, m);
+    if (m.texture >= 0) r.fail(p + "/color", "expected a color, got a texture");
+    return;
+  } else if (t == "checker") {
+    r.only_fields(j, p, {"type", "scale", "even", "odd"});
+    tex.type = texture_type::checker;
+    tex.even = radiance ? r.radiance(r.required(j, p, "even"), p + "/even")
+                        : r.albedo(r.required(j, p, "even"), p + "/even");
+    tex.odd = radiance ? r.radiance(r.required(j, p, "odd"), p + "/odd")
+                       : r.albedo(r.required(j, p, "odd"), p + "/odd");
+  } else if (t == "noise") {
+    r.only_fields(j, p, {"type", "scale", "style", "color"});
+    tex.type = texture_type::noise;
+    if (j.contains("style")) tex.style = read_style(r, j["style"], p + "/style");
+    if (j.contains("color"))
+      tex.even =
+          radiance ? r.radiance(j["color"], p + "/color") : r.albedo(j["color"], p + "/color");
+  } else if (t == "image") {
+    r.only_fields(j, p, {"type", "file"});
+    tex.type = texture_type::image;
+    const json& f = r.required(j, p, "file");
+    if (!f.is_string() || f.get<std::string>().empty())
+      r.fail(p + "/file", "expected a file name, got " + r.type_of(f));
+    tex.file = f.get<std::string>();
+    tex.image = tex.file == builtin_planet
+                    ? planet_image(1024, 512, 0)
+                    : load_texel_image(base / tex.file, r.file() + ": " + p + "/file");
+  } else {
+    r.fail(p + "/type", "unknown texture type " +
+                            (type.is_string() ? "\"" + t + "\"" : r.type_of(type)) +
+                            " (expected solid, checker, image or noise)");
+  }
+  if (j.contains("scale")) {
+    tex.scale = r.number(j["scale"], p + "/scale");
+    if (!(tex.scale > 0))
+      r.fail(p + "/scale", "expected a scale > 0, got " + format_number(tex.scale));
+  }
+  if (s.textures.size() >= 1000000) r.fail(p, "more than a million textures");
+  m.texture = int(s.textures.size());
+  s.textures.push_back(std::move(tex));
+}
+
+material read_material(const scene_reader& r, const json& j, const std::string& p,
+                       const std::filesystem::path& base, scene& s) {
   if (!j.is_object()) r.fail(p, "expected an object, got " + r.type_of(j));
   const json& type = r.required(j, p, "type");
   if (!type.is_string()) r.fail(p + "/type", "expected a string, got " + r.type_of(type));
@@ -256,14 +322,19 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
   const std::optional<material_kind> kind = kind_named(t);
   if (!kind)
     r.fail(p + "/type", "unknown material type \"" + t + "\" (expected " + kind_names() + ")");
+  // A lamp's color is what it emits (the book's `emit`, any strength); the others' what they keep.
+  const bool lamp = kind->type == material_type::diffuse_light;
+  const std::string color_field = lamp ? "emit" : "albedo";
   std::set<std::string> fields{"type"};
-  if (kind->albedo) fields.insert("albedo");
+  if (kind->albedo) fields.insert(color_field);
   if (kind->fuzz) fields.insert("fuzz");
   if (kind->ir) fields.insert("ir");
   r.only_fields(j, p, fields);
   material m;
   m.type = kind->type;
-  if (kind->albedo) m.albedo = r.albedo(r.required(j, p, "albedo"), p + "/albedo");
+  if (kind->albedo)
+    read_color_or_texture(r, r.required(j, p, color_field), p + "/" + color_field, lamp, base, s,
+                          m);
   if (kind->fuzz && j.contains("fuzz")) m.fuzz = r.number_in(j["fuzz"], p + "/fuzz", 0, 1);
   if (kind->ir) {
     m.ir = r.number(r.required(j, p, "ir"), p + "/ir");
@@ -282,13 +353,15 @@ sky read_sky(const scene_reader& r, const json& j) {
 }
 
 // Fills s.materials from /materials, in the file's order; returns each name's index there.
-std::map<std::string, int> read_materials(const scene_reader& r, const json& mats, scene& s) {
+std::map<std::string, int> read_materials(const scene_reader& r, const json& mats,
+                                          const std::filesystem::path& base, scene& s) {
   if (!mats.is_object())
     r.fail("/materials", "expected an object of named materials, got " + r.type_of(mats));
   std::map<std::string, int> index;
   for (const auto& [key, value] : mats.items()) {
     index[key] = int(s.materials.size());
-    s.materials.push_back({key, read_material(r, value, "/materials/" + escape_pointer(key))});
+    material m = read_material(r, value, "/materials/" + escape_pointer(key), base, s);
+    s.materials.push_back({key, m});
   }
   return index;
 }
@@ -397,7 +470,7 @@ void read_flat_objects(const scene_reader& r, const json& root, const std::strin
     add_box(s, a, b, material_named(r, j, p, material_index), optional_transform(r, j, p));
   });
   read_array(r, root, at, "triangles", [&](const json& j, const std::string& p) {
-    r.only_fields(j, p, {"vertices", "normals", "material", "transform"});
+    r.only_fields(j, p, {"vertices", "normals", "uv", "material", "transform"});
     const transform t = optional_transform(r, j, p);
     const auto three = [&](const std::string& key) {
       const json& v = r.required(j, p, key);
@@ -412,16 +485,30 @@ void read_flat_objects(const scene_reader& r, const json& root, const std::strin
     tri = placed(tri, t);
     tri.material = material_named(r, j, p, material_index);
     if (!has_area(tri.p)) r.fail(p + "/vertices", "the vertices are collinear: no area");
-    if (j.contains("normals")) {
+    if (j.contains("normals") || j.contains("uv")) {
       triangle_shading sh;
-      sh.normal = three("normals");
-      for (std::size_t k = 0; k < 3; ++k)
-        if (!(glm::length(sh.normal[k]) > 0) || !std::isfinite(glm::length(sh.normal[k])))
-          r.fail(p + "/normals/" + std::to_string(k), "expected a nonzero normal");
+      if (j.contains("normals")) {
+        sh.normal = three("normals");
+        for (std::size_t k = 0; k < 3; ++k)
+          if (!(glm::length(sh.normal[k]) > 0) || !std::isfinite(glm::length(sh.normal[k])))
+            r.fail(p + "/normals/" + std::to_string(k), "expected a nonzero normal");
+      }
+      if (j.contains("uv")) {  // texture coordinates, a pair per vertex
+        const json& uv = j["uv"];
+        if (!uv.is_array() || uv.size() != 3)
+          r.fail(p + "/uv", "expected an array of 3 [u, v] pairs, got " + r.type_of(uv));
+        for (std::size_t k = 0; k < 3; ++k) {
+          const std::string at = p + "/uv/" + std::to_string(k);
+          if (!uv[k].is_array() || uv[k].size() != 2)
+            r.fail(at, "expected [u, v], got " + r.type_of(uv[k]));
+          sh.uv[k] = glm::dvec2(r.number(uv[k][0], at + "/0"), r.number(uv[k][1], at + "/1"));
+        }
+        sh.has_uv = true;
+      }
       // As written when nothing places the triangle (so a dump reads back unchanged); the
       // renderers normalize them.
       tri.shading = std::int32_t(s.shading.size());
-      s.shading.push_back(placed(sh, t));
+      s.shading.push_back(sh.has_normals() ? placed(sh, t) : sh);
     }
     s.triangles.push_back(tri);
   });
@@ -533,11 +620,56 @@ void read_instances(const scene_reader& r, const json& root, scene& s) {
   });
 }
 
+// /media: the book's constant_medium, a sphere ({"shape": "sphere", "center", "radius"}) or a
+// box ({"shape": "box", "a", "b", "transform"}) of fog, {"density", "material"} (isotropic).
+void read_media(const scene_reader& r, const json& root,
+                const std::map<std::string, int>& material_index, scene& s) {
+  read_array(r, root, "", "media", [&](const json& j, const std::string& p) {
+    const json& shape = r.required(j, p, "shape");
+    const std::string sh = shape.is_string() ? shape.get<std::string>() : "";
+    medium m;
+    if (sh == "sphere") {
+      r.only_fields(j, p, {"shape", "center", "radius", "density", "material"});
+      m.shape = boundary_shape::sphere;
+      m.center = r.vector3(r.required(j, p, "center"), p + "/center");
+      m.radius = r.number(r.required(j, p, "radius"), p + "/radius");
+      if (!(m.radius > 0))
+        r.fail(p + "/radius", "expected a radius > 0, got " + format_number(m.radius));
+    } else if (sh == "box") {
+      r.only_fields(j, p, {"shape", "a", "b", "transform", "density", "material"});
+      m.shape = boundary_shape::box;
+      const point3 a = r.vector3(r.required(j, p, "a"), p + "/a");
+      const point3 b = r.vector3(r.required(j, p, "b"), p + "/b");
+      for (int k = 0; k < 3; ++k)
+        if (a[k] == b[k])
+          r.fail(p + "/b/" + std::to_string(k), "the box is flat: a and b share this coordinate");
+      m.lo = glm::min(a, b);
+      m.hi = glm::max(a, b);
+      m.placement = optional_transform(r, j, p);
+    } else {
+      r.fail(p + "/shape", "expected \"sphere\" or \"box\", got " +
+                               (shape.is_string() ? "\"" + sh + "\"" : r.type_of(shape)));
+    }
+    m.density = r.number(r.required(j, p, "density"), p + "/density");
+    if (!(m.density > 0))
+      r.fail(p + "/density", "expected a density > 0, got " + format_number(m.density));
+    m.material = material_named(r, j, p, material_index);
+    if (s.materials[std::size_t(m.material)].m.type != material_type::isotropic)
+      r.fail(p + "/material", "a medium scatters by an isotropic material, \"" +
+                                  s.materials[std::size_t(m.material)].name + "\" is " +
+                                  type_name(s.materials[std::size_t(m.material)].m.type));
+    if (s.media.size() >= max_scene_media)
+      r.fail(p, "more than " + std::to_string(max_scene_media) + " media");
+    s.media.push_back(m);
+  });
+}
+
 scene read_scene(const scene_reader& r, const json& root, const std::string& name,
                  const std::filesystem::path& base) {
-  r.only_fields(root, "",
-                {"camera", "cameras", "render", "sky", "background", "materials", "spheres",
-                 "quads", "boxes", "triangles", "meshes", "groups", "instances"});
+  r.only_fields(
+      root, "",
+      {"camera", "cameras", "render", "sky", "background", "materials", "spheres", "quads", "boxes",
+       "triangles", "meshes", "groups", "instances", "media", "noise_seed"});
   scene s;
   s.name = name;
   s.cameras = read_cameras(r, root);
@@ -548,7 +680,9 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
     s.sky.horizon = s.sky.zenith = r.radiance(root["background"], "/background");
   }
   std::map<std::string, int> material_index;
-  if (root.contains("materials")) material_index = read_materials(r, root["materials"], s);
+  if (root.contains("noise_seed"))
+    s.noise_seed = std::uint32_t(r.integer(root["noise_seed"], "/noise_seed", 0, 0xffffffffll));
+  if (root.contains("materials")) material_index = read_materials(r, root["materials"], base, s);
   s.spheres = read_spheres(r, root, "", material_index);
   read_flat_objects(r, root, "", material_index, s);
   read_meshes(r, root, "", base, material_index, s);
@@ -556,8 +690,9 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
     if (root.contains("groups")) read_groups(r, root["groups"], base, material_index, s);
     read_instances(r, root, s);
   }
+  read_media(r, root, material_index, s);
   if (!root.contains("spheres") && object_count(s) == 0 && !root.contains("meshes") &&
-      !root.contains("instances"))
+      !root.contains("instances") && s.media.empty())
     r.fail("",
            "missing field \"spheres\" (a scene needs spheres, quads, boxes, triangles, meshes "
            "or instances)");
@@ -571,6 +706,36 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
 
 json vec_json(const vec3& v) {
   return json::array({v.x, v.y, v.z});
+}
+
+// A placement as the 12 numbers read_matrix reads (row-major, translation last in each row).
+json matrix_json(const transform& t) {
+  json m = json::array();
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) m.push_back(t.linear[col][row]);
+    m.push_back(t.offset[row]);
+  }
+  return m;
+}
+
+json texture_json(const texture& t) {
+  json j = {{"type", type_name(t.type)}};
+  switch (t.type) {
+    case texture_type::checker:
+      j["scale"] = t.scale;
+      j["even"] = vec_json(t.even);
+      j["odd"] = vec_json(t.odd);
+      break;
+    case texture_type::noise:
+      j["scale"] = t.scale;
+      j["style"] = style_name(t.style);
+      j["color"] = vec_json(t.even);
+      break;
+    case texture_type::image:
+      j["file"] = t.file;
+      break;
+  }
+  return j;
 }
 
 json pose_json(const camera_pose& c) {
@@ -685,6 +850,12 @@ void write_objects(json& root, const scene& s, const std::vector<sphere>& sphere
         const auto& n = shading[std::size_t(t.shading)].normal;
         j["normals"] = json::array({vec_json(n[0]), vec_json(n[1]), vec_json(n[2])});
       }
+      if (t.shading >= 0 && shading[std::size_t(t.shading)].has_uv) {
+        json uv = json::array();
+        for (const glm::dvec2& c : shading[std::size_t(t.shading)].uv)
+          uv.push_back(json::array({c.x, c.y}));
+        j["uv"] = uv;
+      }
       j["material"] = material_name(t.material);
       triangles.push_back(j);
     }
@@ -711,11 +882,15 @@ std::string dump_scene_json(const scene& s) {
     root["background"] = vec_json(s.sky.horizon);
   else
     root["sky"] = {{"horizon", vec_json(s.sky.horizon)}, {"zenith", vec_json(s.sky.zenith)}};
+  if (s.noise_seed != 0) root["noise_seed"] = s.noise_seed;
   json mats = json::object();
   for (const auto& [name, m] : s.materials) {
     const material_kind& kind = kind_of(m.type);
     json j = {{"type", type_name(m.type)}};
-    if (kind.albedo) j["albedo"] = vec_json(m.albedo);
+    const std::string color_field = m.type == material_type::diffuse_light ? "emit" : "albedo";
+    if (kind.albedo)
+      j[color_field] =
+          m.texture >= 0 ? texture_json(s.textures[std::size_t(m.texture)]) : vec_json(m.albedo);
     if (kind.fuzz) j["fuzz"] = m.fuzz;
     if (kind.ir) j["ir"] = m.ir;
     mats[name] = j;
@@ -733,17 +908,28 @@ std::string dump_scene_json(const scene& s) {
     json instances = json::array();
     for (const instance& i : s.instances) {
       json j = {{"group", s.groups[i.group].name}};
-      if (!i.placement.is_identity()) {
-        json m = json::array();
-        for (int row = 0; row < 3; ++row) {
-          for (int col = 0; col < 3; ++col) m.push_back(i.placement.linear[col][row]);
-          m.push_back(i.placement.offset[row]);
-        }
-        j["transform"] = {{"matrix", m}};
-      }
+      if (!i.placement.is_identity()) j["transform"] = {{"matrix", matrix_json(i.placement)}};
       instances.push_back(j);
     }
     root["instances"] = instances;
+  }
+  if (!s.media.empty()) {
+    json media = json::array();
+    for (const medium& m : s.media) {
+      json j = {{"shape", shape_name(m.shape)}};
+      if (m.shape == boundary_shape::sphere) {
+        j["center"] = vec_json(m.center);
+        j["radius"] = m.radius;
+      } else {
+        j["a"] = vec_json(m.lo);
+        j["b"] = vec_json(m.hi);
+        if (!m.placement.is_identity()) j["transform"] = {{"matrix", matrix_json(m.placement)}};
+      }
+      j["density"] = m.density;
+      j["material"] = s.materials[std::size_t(m.material)].name;
+      media.push_back(j);
+    }
+    root["media"] = media;
   }
   std::string out;
   write_json(root, 0, out);

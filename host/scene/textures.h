@@ -76,6 +76,8 @@ perlin_tables make_perlin(std::uint32_t seed);
 // An image rtvk draws itself: a planet of oceans, land and ice caps in equirectangular layout
 // (what the book's earth texture is), for the built-in scenes (no image file to ship).
 std::shared_ptr<const texel_image> planet_image(int width, int height, std::uint32_t seed);
+// The file name that stands for it in scene files: {"type": "image", "file": "builtin:planet"}.
+inline constexpr const char* builtin_planet = "builtin:planet";
 
 // A scene's textures as the kernels read them: a record each (texture.h's texture_record, an
 // image's `first` its offset in `texels`) and every image's texels one after another.
