@@ -2,7 +2,10 @@
 
 #include <fstream>
 
+#include <cstdio>
+
 #include "errors.h"
+#include "image_io.h"
 #include "render_helpers.h"
 #include "scene_file.h"
 #include "temp_dir.h"
@@ -187,6 +190,115 @@ TEST(SceneFile, EveryMaterialKindRoundTrips) {
   EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "back.json")), dumped);
 }
 
+// Textures wherever a color goes, lamps, media and the noise seed: read as written, dumped the
+// same (an image texture as its file name, relative to the scene file).
+TEST(SceneFile, TexturesLampsAndMediaRoundTrip) {
+  test::temp_dir dir;
+  image_rgb8 img{2, 1, {255, 0, 0, 0, 0, 255}};
+  write_image(img, dir.path() / "two.png");
+  const std::string text = R"({"noise_seed":7,"materials":{
+    "lamp":{"type":"diffuse_light","emit":[4,4,15]},
+    "lit_checker":{"type":"diffuse_light","emit":{"type":"checker","scale":0.5,"even":[2,2,2],"odd":[0,0,1]}},
+    "check":{"type":"lambertian","albedo":{"type":"checker","scale":0.32,"even":[0.2,0.3,0.1],"odd":[0.9,0.9,0.9]}},
+    "marble":{"type":"metal","albedo":{"type":"noise","scale":4,"style":"turbulence","color":[1,0.5,0.25]},"fuzz":0.5},
+    "picture":{"type":"lambertian","albedo":{"type":"image","file":"two.png"}},
+    "plain":{"type":"lambertian","albedo":{"type":"solid","color":[0.5,0.5,0.5]}},
+    "fog":{"type":"isotropic","albedo":[1,1,1]}},
+    "spheres":[{"center":[0,0,0],"radius":1,"material":"picture"}],
+    "triangles":[{"vertices":[[0,0,0],[1,0,0],[0,1,0]],"uv":[[0,0],[1,0],[0.5,1]],"material":"check"}],
+    "media":[{"shape":"sphere","center":[0,0,0],"radius":2,"density":0.5,"material":"fog"},
+             {"shape":"box","a":[1,2,3],"b":[0,0,0],"transform":{"rotate":{"axis":[0,1,0],"degrees":15}},"density":0.01,"material":"fog"}]})";
+  const std::string file = (dir.path() / "t.json").string();
+  const scene s = parse_scene_json(text, file);
+  EXPECT_EQ(s.noise_seed, 7u);
+  ASSERT_EQ(s.textures.size(), 4u);
+  EXPECT_EQ(s.materials[0].m.type, material_type::diffuse_light);
+  EXPECT_EQ(s.materials[0].m.albedo, color(4, 4, 15));  // a lamp is not clamped
+  EXPECT_EQ(s.materials[1].m.texture, 0);
+  EXPECT_EQ(s.textures[0].even, color(2, 2, 2));
+  EXPECT_EQ(s.textures[2].style, noise_style::turbulence);
+  ASSERT_EQ(s.textures[3].type, texture_type::image);
+  ASSERT_TRUE(s.textures[3].image);
+  EXPECT_EQ(s.textures[3].image->width, 2);
+  EXPECT_EQ(s.textures[3].image->texels[0], 0xff0000ffu);  // red, linear: 255 stays 255
+  EXPECT_EQ(s.textures[3].image->texels[1], 0xffff0000u);  // blue
+  EXPECT_EQ(s.materials[5].m.texture, -1);  // a solid color is the albedo
+  EXPECT_EQ(s.materials[5].m.albedo, color(0.5));
+  ASSERT_EQ(s.media.size(), 2u);
+  EXPECT_EQ(s.media[1].lo, point3(0, 0, 0));
+  EXPECT_EQ(s.media[1].hi, point3(1, 2, 3));
+  ASSERT_EQ(s.shading.size(), 1u);
+  EXPECT_TRUE(s.shading[0].has_uv);
+  EXPECT_FALSE(s.shading[0].has_normals());
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, file)), dumped);
+  EXPECT_NE(dumped.find("\"two.png\""), std::string::npos) << dumped;
+}
+
+// The book's byte rule after stb_image's gamma 2.2: mid grey 128 is (128/255)^2.2 = 0.2195,
+// floor(256 * 0.2195) = 56.
+TEST(SceneFile, ImageTexturesAreLinearBytesAsTheBookMakesThem) {
+  test::temp_dir dir;
+  image_rgb8 img{1, 1, {128, 0, 255}};
+  write_image(img, dir.path() / "grey.png");
+  const auto t = load_texel_image(dir.path() / "grey.png", "test");
+  EXPECT_EQ(t->texels[0], 0xffff0038u);
+  EXPECT_EQ(linear_to_byte(1.0f), 255);
+  EXPECT_EQ(linear_to_byte(-0.5f), 0);
+  EXPECT_EQ(linear_to_byte(0.5f), 128);
+}
+
+// Image files that cannot be a texture: each message names the field and the file.
+TEST(SceneFile, BadImageTexturesNameTheFieldAndTheFile) {
+  test::temp_dir dir;
+  image_rgb8 img{4, 4, std::vector<std::uint8_t>(48, 200)};
+  write_image(img, dir.path() / "ok.png");
+  std::string bytes = encode_png(img);
+  const auto write = [&](const std::string& name, const std::string& content) {
+    std::FILE* f = std::fopen((dir.path() / name).c_str(), "wb");
+    std::fwrite(content.data(), 1, content.size(), f);
+    std::fclose(f);
+  };
+  write("truncated.png", bytes.substr(0, bytes.size() / 2));
+  write("text.png", "not an image at all");
+  // PNG headers claiming 17000 x 17000 and 10000 x 10000 pixels: refused before anything is
+  // decoded (the first past the side limit, the second past the texel limit).
+  const auto be32 = [](std::uint32_t v) {
+    return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+  };
+  std::string huge = bytes.substr(0, 33), many = huge;
+  huge.replace(16, 8, be32(17000) + be32(17000));
+  many.replace(16, 8, be32(10000) + be32(10000));
+  write("huge.png", huge);
+  write("many.png", many);
+  const auto error_for = [&](const std::string& file) {
+    const std::string text =
+        R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"image","file":")" + file +
+        R"("}}},"spheres":[]})";
+    try {
+      parse_scene_json(text, (dir.path() / "s.json").string());
+    } catch (const usage_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_for("ok.png"), "no error");
+  for (const char* file : {"missing.png", "truncated.png", "text.png", "huge.png", "many.png"}) {
+    const std::string e = error_for(file);
+    EXPECT_NE(e.find("/materials/m/albedo/file"), std::string::npos) << e;
+    EXPECT_NE(e.find(file), std::string::npos) << e;
+  }
+  EXPECT_NE(error_for("huge.png").find("17000x17000 texels is past the limit (16384 a side"),
+            std::string::npos)
+      << error_for("huge.png");
+  EXPECT_NE(error_for("many.png").find("10000x10000 texels is past the limit (16384 a side, "
+                                       "67108864 in all)"),
+            std::string::npos)
+      << error_for("many.png");
+  EXPECT_NE(error_for("missing.png").find("No such file"), std::string::npos)
+      << error_for("missing.png");
+}
+
 TEST(SceneFile, BookFinalIsTheSameSceneEveryRun) {
   const scene a = builtin_scene("book-final"), b = builtin_scene("book-final");
   EXPECT_EQ(dump_scene_json(a), dump_scene_json(b));
@@ -236,6 +348,31 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
        "/spheres/0: missing field \"material\""},
       {"{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":1,"material":"m","colour":1}]})",
        "/spheres/0/colour: unknown field"},
+      {R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"wood"}}},"spheres":[]})",
+       "/materials/m/albedo/type: unknown texture type \"wood\""},
+      {R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"checker","even":[1,1,1]}}},"spheres":[]})",
+       "/materials/m/albedo: missing field \"odd\""},
+      {R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"checker","scale":0,"even":[1,1,1],"odd":[0,0,0]}}},"spheres":[]})",
+       "/materials/m/albedo/scale: expected a scale > 0, got 0"},
+      {R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"noise","style":"wavy"}}},"spheres":[]})",
+       "/materials/m/albedo/style: expected \"smooth\", \"turbulence\" or \"marble\", got \"wavy\""},
+      {R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"checker","even":[2,1,1],"odd":[0,0,0]}}},"spheres":[]})",
+       "/materials/m/albedo/even/0: expected an albedo in [0, 1], got 2"},
+      {R"({"materials":{"m":{"type":"diffuse_light","emit":[4,-1,4]}},"spheres":[]})",
+       "/materials/m/emit/1: expected a color >= 0, got -1"},
+      {R"({"materials":{"m":{"type":"diffuse_light","albedo":[4,1,4]}},"spheres":[]})",
+       "/materials/m/albedo: unknown field"},
+      {R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"image"}}},"spheres":[]})",
+       "/materials/m/albedo: missing field \"file\""},
+      {R"({"materials":{"f":{"type":"isotropic","albedo":[1,1,1]}},"media":[{"shape":"sphere","center":[0,0,0],"radius":1,"density":-2,"material":"f"}]})",
+       "/media/0/density: expected a density > 0, got -2"},
+      {R"({"materials":{"f":{"type":"isotropic","albedo":[1,1,1]}},"media":[{"shape":"cone","density":1,"material":"f"}]})",
+       "/media/0/shape: expected \"sphere\" or \"box\", got \"cone\""},
+      {R"({"materials":{"f":{"type":"isotropic","albedo":[1,1,1]}},"media":[{"shape":"box","a":[0,0,0],"b":[1,0,1],"density":1,"material":"f"}]})",
+       "/media/0/b/1: the box is flat"},
+      {"{" + m + R"(,"media":[{"shape":"sphere","center":[0,0,0],"radius":1,"density":1,"material":"m"}]})",
+       "/media/0/material: a medium scatters by an isotropic material, \"m\" is normal"},
+      {R"({"noise_seed":-1,"spheres":[]})", "/noise_seed: expected an integer in [0, 4294967295]"},
       {R"({"materials":{"m":{"type":"plastic"}},"spheres":[]})",
        "/materials/m/type: unknown material type \"plastic\""},
       {R"({"materials":{"m":{"type":"lambertian"}},"spheres":[]})",
