@@ -222,7 +222,7 @@ TEST(SceneFile, TexturesLampsAndMediaRoundTrip) {
   EXPECT_EQ(s.textures[3].image->width, 2);
   EXPECT_EQ(s.textures[3].image->texels[0], 0xff0000ffu);  // red, linear: 255 stays 255
   EXPECT_EQ(s.textures[3].image->texels[1], 0xffff0000u);  // blue
-  EXPECT_EQ(s.materials[5].m.texture, -1);  // a solid color is the albedo
+  EXPECT_EQ(s.materials[5].m.texture, -1);                 // a solid color is the albedo
   EXPECT_EQ(s.materials[5].m.albedo, color(0.5));
   ASSERT_EQ(s.media.size(), 2u);
   EXPECT_EQ(s.media[1].lo, point3(0, 0, 0));
@@ -291,8 +291,9 @@ TEST(SceneFile, BadImageTexturesNameTheFieldAndTheFile) {
   EXPECT_NE(error_for("huge.png").find("17000x17000 texels is past the limit (16384 a side"),
             std::string::npos)
       << error_for("huge.png");
-  EXPECT_NE(error_for("many.png").find("10000x10000 texels is past the limit (16384 a side, "
-                                       "67108864 in all)"),
+  EXPECT_NE(error_for("many.png")
+                .find("10000x10000 texels is past the limit (16384 a side, "
+                      "67108864 in all)"),
             std::string::npos)
       << error_for("many.png");
   EXPECT_NE(error_for("missing.png").find("No such file"), std::string::npos)
@@ -355,7 +356,8 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
       {R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"checker","scale":0,"even":[1,1,1],"odd":[0,0,0]}}},"spheres":[]})",
        "/materials/m/albedo/scale: expected a scale > 0, got 0"},
       {R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"noise","style":"wavy"}}},"spheres":[]})",
-       "/materials/m/albedo/style: expected \"smooth\", \"turbulence\" or \"marble\", got \"wavy\""},
+       "/materials/m/albedo/style: expected \"smooth\", \"turbulence\" or \"marble\", got "
+       "\"wavy\""},
       {R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"checker","even":[2,1,1],"odd":[0,0,0]}}},"spheres":[]})",
        "/materials/m/albedo/even/0: expected an albedo in [0, 1], got 2"},
       {R"({"materials":{"m":{"type":"diffuse_light","emit":[4,-1,4]}},"spheres":[]})",
@@ -370,7 +372,8 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
        "/media/0/shape: expected \"sphere\" or \"box\", got \"cone\""},
       {R"({"materials":{"f":{"type":"isotropic","albedo":[1,1,1]}},"media":[{"shape":"box","a":[0,0,0],"b":[1,0,1],"density":1,"material":"f"}]})",
        "/media/0/b/1: the box is flat"},
-      {"{" + m + R"(,"media":[{"shape":"sphere","center":[0,0,0],"radius":1,"density":1,"material":"m"}]})",
+      {"{" + m +
+           R"(,"media":[{"shape":"sphere","center":[0,0,0],"radius":1,"density":1,"material":"m"}]})",
        "/media/0/material: a medium scatters by an isotropic material, \"m\" is normal"},
       {R"({"noise_seed":-1,"spheres":[]})", "/noise_seed: expected an integer in [0, 4294967295]"},
       {R"({"materials":{"m":{"type":"plastic"}},"spheres":[]})",
