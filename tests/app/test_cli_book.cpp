@@ -64,7 +64,9 @@ TEST(CliBook, DumpedSceneRendersTheIdenticalImage) {
   EXPECT_EQ(test::slurp(a), test::slurp(b));
   EXPECT_EQ(
       run_rtvk({"scene", "list"}).out,
-      "seed\nmaterials\nbook-final\nbouncing-spheres\nquads\nspheres:N (N from 1 to 4000000)\n");
+      "seed\nmaterials\nbook-final\nbouncing-spheres\nquads\ncheckered-spheres\nperlin-spheres\n"
+      "simple-light\ncornell-box\ncornell-smoke\nnext-week-final\nspheres:N (N from 1 to "
+      "4000000)\n");
 }
 
 // A shutter open past time 1 (the spheres go on rising): bench bounds them over it on both
