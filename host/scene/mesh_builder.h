@@ -85,6 +85,12 @@ class mesh_builder {
     return int(s_.materials.size() - 1);
   }
 
+  // A texture of the file's (a glTF's base color image); returns its index.
+  int add_texture(texture t) {
+    s_.textures.push_back(std::move(t));
+    return int(s_.textures.size() - 1);
+  }
+
   const std::string& name() const { return name_; }
 
  private:

@@ -1,9 +1,11 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "scene.h"
+#include "textures.h"
 
 namespace rtvk {
 
@@ -33,6 +35,11 @@ void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind
 
 // The kind of mesh file a path names by its extension ("obj", "gltf", "glb"), or "" for none.
 std::string mesh_kind(const std::filesystem::path& file);
+
+// Image `index` of a glTF file, decoded as an image texture (what a dumped scene names as
+// "FILE#images/N"); throws usage_error naming `name`, the file and the image.
+std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file, std::size_t index,
+                                              const std::string& name);
 
 // A scene of one mesh file, with its own materials, and a camera that frames its bounds.
 scene mesh_scene(const std::filesystem::path& file);

@@ -3,6 +3,7 @@
 // coordinates and materials. Every accessor is checked against its buffer before it is read.
 #include <algorithm>
 #include <cstring>
+#include <map>
 
 #include <tiny_gltf.h>
 #include <glm/gtc/quaternion.hpp>
@@ -15,10 +16,11 @@
 namespace rtvk {
 namespace {
 
-// Images are kept as their bytes, undecoded: nothing draws textures yet, and a decoder is one
-// more parser for hostile input to reach.
-bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                          const unsigned char*, int, void*) {
+// Images are kept as their encoded bytes: rtvk decodes the ones a material's base color uses,
+// with its own limits (textures.h's decode_texel_image), when the material is made.
+bool keep_image_undecoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                          const unsigned char* bytes, int size, void*) {
+  if (image && bytes && size > 0) image->image.assign(bytes, bytes + size);
   return true;
 }
 
@@ -61,15 +63,29 @@ double unit(double x) {
   return std::clamp(std::isfinite(x) ? x : 0.0, 0.0, 1.0);
 }
 
-// A glTF material as one of rtvk's (docs/geometry.md): KHR_materials_transmission's factor >= 0.5
-// is glass of KHR_materials_ior's index (1.5 by default); else metallicFactor >= 0.5 is metal of
-// the base color, blurred by the roughness; else diffuse of the base color.
-material from_gltf(const tinygltf::Material& m) {
+// A glTF material as one of rtvk's (docs/geometry.md): an emissive factor that is not black is a
+// lamp of that color (times KHR_materials_emissive_strength); else KHR_materials_transmission's
+// factor >= 0.5 is glass of KHR_materials_ior's index (1.5 by default); else metallicFactor >=
+// 0.5 is metal of the base color, blurred by the roughness; else diffuse of the base color. A
+// base color texture (`base_texture`, the scene's texture index, or -1) stands in for the
+// base color factor.
+material from_gltf(const tinygltf::Material& m, int base_texture) {
   material out;
   const auto ext = [&](const char* name) {
     const auto it = m.extensions.find(name);
     return it == m.extensions.end() ? tinygltf::Value() : it->second;
   };
+  color emit(0);
+  for (std::size_t k = 0; k < 3 && k < m.emissiveFactor.size(); ++k)
+    emit[int(k)] = unit(m.emissiveFactor[k]);
+  if (emit != color(0)) {
+    const double strength =
+        number_or(ext("KHR_materials_emissive_strength"), "emissiveStrength", 1);
+    out.type = material_type::diffuse_light;
+    out.albedo =
+        emit * (strength >= 0 && std::isfinite(strength) && strength < 1e6 ? strength : 1.0);
+    return out;
+  }
   if (number_or(ext("KHR_materials_transmission"), "transmissionFactor", 0) >= 0.5) {
     out.type = material_type::dielectric;
     const double ior = number_or(ext("KHR_materials_ior"), "ior", 1.5);
@@ -80,14 +96,14 @@ material from_gltf(const tinygltf::Material& m) {
   color base(1);
   for (std::size_t k = 0; k < 3 && k < pbr.baseColorFactor.size(); ++k)
     base[int(k)] = unit(pbr.baseColorFactor[k]);
+  out.albedo = base;
+  out.texture = base_texture;
   if (pbr.metallicFactor >= 0.5) {
     out.type = material_type::metal;
-    out.albedo = base;
     out.fuzz = unit(pbr.roughnessFactor);
     return out;
   }
   out.type = material_type::lambertian;
-  out.albedo = base;
   return out;
 }
 
@@ -219,7 +235,35 @@ class gltf_walker {
       for (const tinygltf::Material& mat : m.materials)
         materials_.push_back(b.add_material(
             b.name() + ":" + (mat.name.empty() ? std::to_string(materials_.size()) : mat.name),
-            from_gltf(mat)));
+            from_gltf(mat, base_texture(mat))));
+  }
+
+  // The scene's texture for a material's base color image (decoded once per image), or -1.
+  int base_texture(const tinygltf::Material& mat) {
+    const int t = mat.pbrMetallicRoughness.baseColorTexture.index;
+    if (t < 0) return -1;
+    const std::string where = "materials \"" + mat.name + "\" baseColorTexture";
+    if (std::size_t(t) >= m_.textures.size())
+      b_.fail(where, "texture " + std::to_string(t) + " does not exist");
+    if (mat.pbrMetallicRoughness.baseColorTexture.texCoord != 0)
+      b_.fail(where, "reads TEXCOORD_" +
+                         std::to_string(mat.pbrMetallicRoughness.baseColorTexture.texCoord) +
+                         " (rtvk reads TEXCOORD_0 only)");
+    const int source = m_.textures[std::size_t(t)].source;
+    if (source < 0 || std::size_t(source) >= m_.images.size())
+      b_.fail(where, "texture " + std::to_string(t) + " has no image");
+    const auto cached = image_textures_.find(source);
+    if (cached != image_textures_.end()) return cached->second;
+    const tinygltf::Image& img = m_.images[std::size_t(source)];
+    if (img.image.empty()) b_.fail(where, "image " + std::to_string(source) + " has no data");
+    texture tex;
+    tex.type = texture_type::image;
+    tex.file = b_.name() + "#images/" + std::to_string(source);
+    tex.image = decode_texel_image(std::string(img.image.begin(), img.image.end()),
+                                   b_.name() + ": images/" + std::to_string(source));
+    const int index = b_.add_texture(std::move(tex));
+    image_textures_[source] = index;
+    return index;
   }
 
   void walk_scene() {
@@ -306,7 +350,9 @@ class gltf_walker {
                             std::to_string(pos->count()) + " vertices");
         p[k] = b_.position(pos->vec(std::size_t(v)), t, face);
         if (nrm) n[k] = nrm->vec(std::size_t(v));
-        if (tex) uv[k] = glm::dvec2(tex->get(std::size_t(v), 0), tex->get(std::size_t(v), 1));
+        // glTF's v runs down the image from its top; rtvk's (the book's, OBJ's) up from its
+        // bottom.
+        if (tex) uv[k] = glm::dvec2(tex->get(std::size_t(v), 0), 1 - tex->get(std::size_t(v), 1));
       }
       b_.add(p, material, nrm ? std::optional(n) : std::nullopt, uv, tex.has_value(), t);
     }
@@ -328,15 +374,19 @@ class gltf_walker {
   const tinygltf::Model& m_;
   mesh_builder& b_;
   const mesh_placement& how_;
-  std::vector<int> materials_;  // the file's material k -> the scene's
-  int fallback_ = -1;           // primitives without a material: gray diffuse, made when needed
-  std::vector<bool> walked_;    // node k has been walked
+  std::vector<int> materials_;         // the file's material k -> the scene's
+  std::map<int, int> image_textures_;  // the file's image k -> the scene's texture
+  int fallback_ = -1;         // primitives without a material: gray diffuse, made when needed
+  std::vector<bool> walked_;  // node k has been walked
 };
 
 }  // namespace
 
-void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
-               const std::filesystem::path& base, const mesh_placement& how) {
+namespace {
+
+// Parses a glTF (its images kept encoded, its external files read by rtvk's reader).
+tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::string& name,
+                           const std::filesystem::path& base) {
   if (bytes.size() > 0xffffffffu) throw usage_error(name + ": larger than 4 GiB");
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_undecoded, nullptr);
@@ -356,8 +406,33 @@ void load_gltf(scene& s, const std::string& bytes, bool binary, const std::strin
     while (!err.empty() && err.back() == ' ') err.pop_back();
     throw usage_error(name + ": " + (err.empty() ? "not a glTF 2.0 file" : err));
   }
+  return model;
+}
+
+}  // namespace
+
+void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
+               const std::filesystem::path& base, const mesh_placement& how) {
+  const tinygltf::Model model = parse_gltf(bytes, binary, name, base);
   mesh_builder b(s, name, how.placement);
   gltf_walker(model, b, how).walk_scene();
+}
+
+std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file, std::size_t index,
+                                              const std::string& name) {
+  const std::string kind = mesh_kind(file);
+  if (kind != "gltf" && kind != "glb")
+    throw usage_error(name + ": " + file.string() + " is not .gltf or .glb");
+  const std::string bytes =
+      read_regular_file(file, max_mesh_file_bytes, "glTF file (" + name + ")");
+  const std::filesystem::path base = file.parent_path();
+  const tinygltf::Model model =
+      parse_gltf(bytes, kind == "glb", file.string(), base.empty() ? "." : base);
+  if (index >= model.images.size() || model.images[index].image.empty())
+    throw usage_error(name + ": " + file.string() + " has no image " + std::to_string(index));
+  const std::vector<unsigned char>& img = model.images[index].image;
+  return decode_texel_image(std::string(img.begin(), img.end()),
+                            name + ": " + file.string() + "#images/" + std::to_string(index));
 }
 
 }  // namespace rtvk

@@ -107,6 +107,55 @@ std::vector<point3> group_corners(const object_group& g) {
 
 }  // namespace
 
+namespace {
+
+// Textures that exist and can be drawn; media with an isotropic material, a density and a
+// boundary the kernels can use.
+void check_appearance(const scene& s) {
+  for (const named_material& m : s.materials) {
+    const int t = m.m.texture;
+    if (t != -1 && (t < 0 || std::size_t(t) >= s.textures.size()))
+      throw usage_error(s.name + ": material " + m.name + ": texture index " + std::to_string(t) +
+                        " does not exist");
+  }
+  for (std::size_t i = 0; i < s.textures.size(); ++i) {
+    const texture& t = s.textures[i];
+    const std::string who = s.name + ": texture " + std::to_string(i);
+    if (!(t.scale > 0) || !std::isfinite(t.scale))
+      throw usage_error(who + ": scale must be finite and > 0, got " + format_number(t.scale));
+    if (t.type == texture_type::image &&
+        (!t.image || t.image->width <= 0 || t.image->height <= 0 ||
+         t.image->texels.size() != std::size_t(t.image->width) * std::size_t(t.image->height)))
+      throw usage_error(who + ": an image texture without its texels");
+  }
+  if (s.media.size() > max_scene_media)
+    throw usage_error(s.name + ": " + std::to_string(s.media.size()) + " media are more than " +
+                      std::to_string(max_scene_media));
+  for (std::size_t i = 0; i < s.media.size(); ++i) {
+    const medium& m = s.media[i];
+    const std::string who = s.name + ": medium " + std::to_string(i);
+    if (m.material < 0 || std::size_t(m.material) >= s.materials.size() ||
+        s.materials[std::size_t(m.material)].m.type != material_type::isotropic)
+      throw usage_error(who + ": its material must be an isotropic one of the scene's");
+    if (!(m.density > 0) || !std::isfinite(m.density))
+      throw usage_error(who + ": density must be finite and > 0, got " + format_number(m.density));
+    if (m.shape == boundary_shape::sphere) {
+      check_point(who + ": center", m.center);
+      if (!(m.radius > 0) || !(m.radius <= max_scene_coordinate))
+        throw usage_error(who + ": radius must be > 0 and within 1e18, got " +
+                          format_number(m.radius));
+    } else {
+      check_point(who + ": corner", m.lo);
+      check_point(who + ": corner", m.hi);
+      if (!(m.lo.x < m.hi.x && m.lo.y < m.hi.y && m.lo.z < m.hi.z))
+        throw usage_error(who + ": its box is flat or inside out");
+      if (const auto why = degenerate(m.placement)) throw usage_error(who + ": " + *why);
+    }
+  }
+}
+
+}  // namespace
+
 void check_scene(const scene& s) {
   const auto check_material = [&](const std::string& where, int material) {
     if (material < 0 || std::size_t(material) >= s.materials.size())
@@ -148,6 +197,7 @@ void check_scene(const scene& s) {
     for (const point3& c : group_corners(s.groups[in.group]))
       check_point(where + ": its group's bounds, placed,", in.placement.apply_point(c));
   }
+  check_appearance(s);
 }
 
 void add_box(scene& s, const point3& a, const point3& b, int material, const transform& t) {

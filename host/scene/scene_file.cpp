@@ -295,9 +295,19 @@ void read_color_or_texture(const scene_reader& r, const json& j, const std::stri
     if (!f.is_string() || f.get<std::string>().empty())
       r.fail(p + "/file", "expected a file name, got " + r.type_of(f));
     tex.file = f.get<std::string>();
-    tex.image = tex.file == builtin_planet
-                    ? planet_image(1024, 512, 0)
-                    : load_texel_image(base / tex.file, r.file() + ": " + p + "/file");
+    const std::string field = r.file() + ": " + p + "/file";
+    const std::size_t hash = tex.file.rfind("#images/");
+    if (tex.file == builtin_planet) {
+      tex.image = planet_image(1024, 512, 0);
+    } else if (hash != std::string::npos && !mesh_kind(tex.file.substr(0, hash)).empty()) {
+      // A glTF's embedded image, as rtvk scene dump names a mesh's base color texture.
+      const std::string n = tex.file.substr(hash + 8);
+      if (n.empty() || n.size() > 9 || n.find_first_not_of("0123456789") != std::string::npos)
+        r.fail(p + "/file", "expected FILE#images/N, got \"" + tex.file + "\"");
+      tex.image = gltf_image(base / tex.file.substr(0, hash), std::stoul(n), field);
+    } else {
+      tex.image = load_texel_image(base / tex.file, field);
+    }
   } else {
     r.fail(p + "/type", "unknown texture type " +
                             (type.is_string() ? "\"" + t + "\"" : r.type_of(type)) +

@@ -37,22 +37,24 @@ std::shared_ptr<const texel_image> load_texel_image(const std::filesystem::path&
                                                     const std::string& name) {
   const std::string what = "image texture (" + name + ")";
   const std::string bytes = read_regular_file(file, max_texture_file_bytes, what);
+  return decode_texel_image(bytes, name + ": " + file.string());
+}
+
+std::shared_ptr<const texel_image> decode_texel_image(const std::string& bytes,
+                                                      const std::string& where) {
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int length = int(std::min<std::size_t>(bytes.size(), 0x7fffffff));
   int w = 0, h = 0, channels = 0;
   if (!stbi_info_from_memory(data, length, &w, &h, &channels))
-    throw usage_error(name + ": " + file.string() + ": not an image stb_image reads (" +
-                      stbi_failure_reason() + ")");
+    throw usage_error(where + ": not an image stb_image reads (" + stbi_failure_reason() + ")");
   if (w > max_texture_side || h > max_texture_side ||
       std::uint64_t(w) * std::uint64_t(h) > max_texture_texels)
-    throw usage_error(name + ": " + file.string() + ": " + std::to_string(w) + "x" +
-                      std::to_string(h) + " texels is past the limit (" +
-                      std::to_string(max_texture_side) + " a side, " +
-                      std::to_string(max_texture_texels) + " in all)");
+    throw usage_error(where + ": " + std::to_string(w) + "x" + std::to_string(h) +
+                      " texels is past the limit (" + std::to_string(max_texture_side) +
+                      " a side, " + std::to_string(max_texture_texels) + " in all)");
   stbi_uc* pixels = stbi_load_from_memory(data, length, &w, &h, &channels, 3);
   if (!pixels)
-    throw usage_error(name + ": " + file.string() + ": cannot decode the image (" +
-                      stbi_failure_reason() + ")");
+    throw usage_error(where + ": cannot decode the image (" + stbi_failure_reason() + ")");
   // stb_image's own LDR-to-linear rule (stbi_loadf: (byte / 255)^2.2 in float), then the book's
   // byte per channel.
   std::array<std::uint8_t, 256> to_linear{};

@@ -59,6 +59,9 @@ inline constexpr std::uint64_t max_texture_file_bytes = std::uint64_t(1) << 30;
 // truncated, or larger than the limits above.
 std::shared_ptr<const texel_image> load_texel_image(const std::filesystem::path& file,
                                                     const std::string& name);
+// The same for an image's encoded bytes (a glTF's embedded image); `name` leads every message.
+std::shared_ptr<const texel_image> decode_texel_image(const std::string& bytes,
+                                                      const std::string& name);
 
 // The book's linear-to-byte rule for one channel value: 0 at or below 0, 255 at or above 1,
 // else floor(256 v).

@@ -65,6 +65,23 @@ TEST_F(GpuLimits, AMeshAboveTheStorageRangeIsRefusedNamingTheBuffer) {
   EXPECT_EQ(render_with(s, {.storage_range = 1200 << 10}), "") << "1200 KiB holds it";
 }
 
+// An image texture too large for the device's storage-buffer range: refused naming the texels'
+// buffer and the limit (512 x 512 texels are 1 MiB), rendered where it fits.
+TEST_F(GpuLimits, AnImageTextureAboveTheStorageRangeIsRefusedNamingIt) {
+  scene s = builtin_scene("seed");
+  s.render.width = 16;
+  texture t;
+  t.type = texture_type::image;
+  t.image = std::make_shared<texel_image>(
+      texel_image{512, 512, std::vector<std::uint32_t>(512 * 512, 0xff808080u)});
+  s.textures.push_back(t);
+  s.materials[0].m = {material_type::lambertian, color(1), 0, 1.5, 0};
+  EXPECT_EQ(render_with(s, {.storage_range = 512 << 10}),
+            "--scene seed: the image textures' texels needs 1 MiB in one storage buffer; device '" +
+                gpu().device().name + "' allows 512 KiB");
+  EXPECT_EQ(render_with(s, {.storage_range = 2 << 20}), "");
+}
+
 TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
   const scene s = two_thousand_spheres();
   EXPECT_EQ(render_with(s, {.storage_range = 200 << 10}), "") << "everything fits 200 KiB";

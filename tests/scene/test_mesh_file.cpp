@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "errors.h"
+#include "image_io.h"
 #include "mesh_file.h"
 #include "mesh_helpers.h"
 #include "process.h"
@@ -77,6 +78,69 @@ TEST(MeshFile, GltfNodeMatricesAndMaterialsAreApplied) {
   EXPECT_EQ(s.materials[0].m.type, material_type::metal);
   EXPECT_EQ(s.materials[0].m.albedo, color(0.5, 0.25, 1));
   EXPECT_EQ(s.materials[0].m.fuzz, 0.3);
+}
+
+// A glTF square of two triangles with texture coordinates, its first material's base color an
+// embedded 2x1 PNG (red, blue), its second an emissive lamp.
+std::string textured_gltf() {
+  std::string bin;
+  const auto put = [&bin](float f) { bin.append(reinterpret_cast<const char*>(&f), 4); };
+  for (float p : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f}) put(p);
+  for (float t : {0.f, 1.f, 1.f, 1.f, 1.f, 0.f, 0.f, 0.f}) put(t);  // glTF: v = 0 at the top
+  for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) bin.append(reinterpret_cast<const char*>(&i), 4);
+  const std::string png = encode_png(image_rgb8{2, 1, {255, 0, 0, 0, 0, 255}});
+  return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],)"
+         R"("nodes":[{"mesh":0},{"mesh":1,"translation":[0,0,-1]}],)"
+         R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"indices":2,"material":0}]},)"
+         R"({"primitives":[{"attributes":{"POSITION":0},"indices":2,"material":1}]}],)"
+         R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0},"metallicFactor":0}},)"
+         R"({"emissiveFactor":[1,0.5,0.25],"extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":4}}}],)"
+         R"("textures":[{"source":0}],"images":[{"uri":"data:image/png;base64,)" +
+         test::base64(png) + R"("}],"buffers":[{"uri":"data:application/octet-stream;base64,)" +
+         test::base64(bin) +
+         R"(","byteLength":104}],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},)"
+         R"({"buffer":0,"byteOffset":48,"byteLength":32},{"buffer":0,"byteOffset":80,"byteLength":24}],)"
+         R"("accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},)"
+         R"({"bufferView":1,"componentType":5126,"count":4,"type":"VEC2"},)"
+         R"({"bufferView":2,"componentType":5125,"count":6,"type":"SCALAR"}]})";
+}
+
+TEST(MeshFile, GltfBaseColorTexturesAndEmissiveMaterialsAreDrawn) {
+  const test::temp_dir dir;
+  write(dir.path() / "sq.gltf", textured_gltf());
+  write(dir.path() / "s.json", R"({"meshes":[{"file":"sq.gltf"}]})");
+  const scene s = load_scene_file(dir.path() / "s.json");
+  ASSERT_EQ(s.materials.size(), 2u);
+  EXPECT_EQ(s.materials[0].m.type, material_type::lambertian);
+  ASSERT_EQ(s.materials[0].m.texture, 0);
+  ASSERT_EQ(s.textures.size(), 1u);
+  ASSERT_EQ(s.textures[0].image->width, 2);
+  EXPECT_EQ(s.textures[0].image->texels[0], 0xff0000ffu);
+  EXPECT_EQ(s.materials[1].m.type, material_type::diffuse_light);
+  EXPECT_EQ(s.materials[1].m.albedo, color(4, 2, 1));
+  // v flipped to rtvk's (the book's) up-from-the-bottom: the first vertex's (0, 1) is (0, 0).
+  ASSERT_GE(s.triangles[0].shading, 0);
+  const triangle_shading& sh = s.shading[std::size_t(s.triangles[0].shading)];
+  EXPECT_TRUE(sh.has_uv);
+  EXPECT_EQ(sh.uv[0], glm::dvec2(0, 0));
+  EXPECT_EQ(sh.uv[2], glm::dvec2(1, 1));
+  // Drawn: the left half of the square red, the right half blue (flat, unlit, to see texels).
+  scene flat = s;
+  flat.materials[0].m.type = material_type::flat;
+  main_camera(flat).pose.lookfrom = point3(0.5, 0.5, 2);
+  main_camera(flat).pose.lookat = point3(0.5, 0.5, 0);
+  main_camera(flat).pose.vfov = 20;
+  flat.render.width = 20;
+  flat.render.aspect = 1;
+  flat.render.spp = 1;
+  const framebuffer fb = render_cpu(test::scene_camera(flat), flat, flat.render);
+  EXPECT_EQ(fb.at(5, 10), color(1, 0, 0));
+  EXPECT_EQ(fb.at(14, 10), color(0, 0, 1));
+  // A dump names the image by the glTF it came from, and reads back the same.
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_NE(dumped.find("sq.gltf#images/0"), std::string::npos) << dumped;
+  write(dir.path() / "d.json", dumped);
+  EXPECT_EQ(dump_scene_json(load_scene_file(dir.path() / "d.json")), dumped);
 }
 
 TEST(MeshFile, ObjNormalsShadeSmoothAndMtlMaterialsMap) {
