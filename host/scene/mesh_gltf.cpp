@@ -2,6 +2,7 @@
 // node's transform, triangle primitives with their positions, normals, first texture
 // coordinates and materials. Every accessor is checked against its buffer before it is read.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 
@@ -67,8 +68,8 @@ double unit(double x) {
 // lamp of that color (times KHR_materials_emissive_strength); else KHR_materials_transmission's
 // factor >= 0.5 is glass of KHR_materials_ior's index (1.5 by default); else metallicFactor >=
 // 0.5 is metal of the base color, blurred by the roughness; else diffuse of the base color. A
-// base color texture (`base_texture`, the scene's texture index, or -1) stands in for the
-// base color factor.
+// base color texture (`base_texture`, the scene's texture index, or -1; the factor tints it)
+// stands in for the base color.
 material from_gltf(const tinygltf::Material& m, int base_texture) {
   material out;
   const auto ext = [&](const char* name) {
@@ -78,7 +79,10 @@ material from_gltf(const tinygltf::Material& m, int base_texture) {
   color emit(0);
   for (std::size_t k = 0; k < 3 && k < m.emissiveFactor.size(); ++k)
     emit[int(k)] = unit(m.emissiveFactor[k]);
-  if (emit != color(0)) {
+  // An emissive texture marks the parts of a surface that glow (a lamp's dial, a screen); rtvk's
+  // lamps emit everywhere and reflect nothing, so such a material stays what its base color makes
+  // it rather than turning wholly into a lamp.
+  if (emit != color(0) && m.emissiveTexture.index < 0) {
     const double strength =
         number_or(ext("KHR_materials_emissive_strength"), "emissiveStrength", 1);
     out.type = material_type::diffuse_light;
@@ -105,6 +109,13 @@ material from_gltf(const tinygltf::Material& m, int base_texture) {
   }
   out.type = material_type::lambertian;
   return out;
+}
+
+// A glTF sampler's wrap mode as an image texture's.
+image_wrap wrap_of(int gl_wrap) {
+  if (gl_wrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return image_wrap::clamp;
+  if (gl_wrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return image_wrap::mirror;
+  return image_wrap::repeat;
 }
 
 // A node's own transform: its matrix, or translation * rotation * scale.
@@ -258,7 +269,20 @@ class gltf_walker {
     if (img.image.empty()) b_.fail(where, "image " + std::to_string(source) + " has no data");
     texture tex;
     tex.type = texture_type::image;
-    tex.file = b_.name() + "#images/" + std::to_string(source);
+    // Absolute, so that a dumped scene finds the file from wherever it is read.
+    std::error_code ec;
+    const std::filesystem::path file = std::filesystem::absolute(b_.name(), ec);
+    tex.file =
+        (ec ? b_.name() : file.lexically_normal().string()) + "#images/" + std::to_string(source);
+    const std::vector<double>& f = mat.pbrMetallicRoughness.baseColorFactor;
+    for (std::size_t k = 0; k < 3 && k < f.size(); ++k) tex.even[int(k)] = unit(f[k]);
+    const int sampler = m_.textures[std::size_t(t)].sampler;
+    if (sampler >= 0 && std::size_t(sampler) < m_.samplers.size()) {
+      tex.wrap_u = wrap_of(m_.samplers[std::size_t(sampler)].wrapS);
+      tex.wrap_v = wrap_of(m_.samplers[std::size_t(sampler)].wrapT);
+    } else {
+      tex.wrap_u = tex.wrap_v = image_wrap::repeat;  // glTF's default sampler
+    }
     tex.image = decode_texel_image(std::string(img.image.begin(), img.image.end()),
                                    b_.name() + ": images/" + std::to_string(source));
     const int index = b_.add_texture(std::move(tex));
@@ -352,7 +376,11 @@ class gltf_walker {
         if (nrm) n[k] = nrm->vec(std::size_t(v));
         // glTF's v runs down the image from its top; rtvk's (the book's, OBJ's) up from its
         // bottom.
-        if (tex) uv[k] = glm::dvec2(tex->get(std::size_t(v), 0), 1 - tex->get(std::size_t(v), 1));
+        if (tex) {
+          uv[k] = glm::dvec2(tex->get(std::size_t(v), 0), 1 - tex->get(std::size_t(v), 1));
+          if (!(std::abs(uv[k].x) <= 1e6 && std::abs(uv[k].y) <= 1e6))
+            b_.fail(face + " TEXCOORD_0", "is not finite or beyond +-1e6");
+        }
       }
       b_.add(p, material, nrm ? std::optional(n) : std::nullopt, uv, tex.has_value(), t);
     }

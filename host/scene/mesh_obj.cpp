@@ -1,6 +1,7 @@
 // Wavefront OBJ, through Debian's tinyobjloader: polygons triangulated as fans, every index
 // checked against the arrays it points into, materials from the MTL the file names.
 #include <algorithm>
+#include <map>
 #include <sstream>
 
 #include <tiny_obj_loader.h>
@@ -40,6 +41,30 @@ material from_mtl(const tinyobj::material_t& m) {
   return out;
 }
 
+// An MTL material's map_Kd as an image texture beside the OBJ (tinted by Kd, tiled as MTL
+// textures are), decoded once however many materials name it; the file is named absolute, so a
+// dumped scene finds it from anywhere. Returns the scene's texture index.
+int diffuse_texture(mesh_builder& b, const tinyobj::material_t& m,
+                    const std::filesystem::path& base, const std::string& name,
+                    std::map<std::string, int>& textures) {
+  const auto known = textures.find(m.diffuse_texname);
+  if (known != textures.end()) return known->second;
+  if (base.empty())
+    throw usage_error(name + ": material " + m.name + ": map_Kd " + m.diffuse_texname +
+                      ": no folder to read it from");
+  std::error_code ec;
+  const std::filesystem::path file = std::filesystem::absolute(base / m.diffuse_texname, ec);
+  texture t;
+  t.type = texture_type::image;
+  t.file = (ec ? base / m.diffuse_texname : file.lexically_normal()).string();
+  t.image = load_texel_image(t.file, name + ": material " + m.name + ": map_Kd");
+  t.even = color(unit(m.diffuse[0]), unit(m.diffuse[1]), unit(m.diffuse[2]));
+  t.wrap_u = t.wrap_v = image_wrap::repeat;
+  const int index = b.add_texture(std::move(t));
+  textures[m.diffuse_texname] = index;
+  return index;
+}
+
 // The MTL file an OBJ names on its first mtllib line, read from `base` ("" when none).
 std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
                      const std::string& name) {
@@ -77,9 +102,15 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
   mesh_builder b(s, name, how.placement);
   const tinyobj::attrib_t& a = reader.GetAttrib();
   std::vector<int> materials;  // the file's material k -> the scene's
-  if (how.material < 0)
-    for (const tinyobj::material_t& m : reader.GetMaterials())
-      materials.push_back(b.add_material(name + ":" + m.name, from_mtl(m)));
+  if (how.material < 0) {
+    std::map<std::string, int> textures;  // map_Kd file -> the scene's texture
+    for (const tinyobj::material_t& m : reader.GetMaterials()) {
+      material out = from_mtl(m);
+      if (!m.diffuse_texname.empty() && out.type != material_type::dielectric)
+        out.texture = diffuse_texture(b, m, base, name, textures);
+      materials.push_back(b.add_material(name + ":" + m.name, out));
+    }
+  }
   int fallback = how.material;  // faces without a material: a gray diffuse one, made when needed
   const transform node;
   const std::size_t positions = a.vertices.size() / 3, normals = a.normals.size() / 3,
@@ -116,6 +147,9 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
         if (i.texcoord_index >= 0 && std::size_t(i.texcoord_index) < uvs) {
           const std::size_t t = std::size_t(i.texcoord_index);
           uv[k] = glm::dvec2(a.texcoords[2 * t], a.texcoords[2 * t + 1]);
+          if (!(std::abs(uv[k].x) <= 1e6 && std::abs(uv[k].y) <= 1e6))
+            b.fail(where, "texture coordinate " + std::to_string(t + 1) +
+                              " is not finite or beyond +-1e6");
         } else if (i.texcoord_index >= 0) {
           b.fail(where, "texture coordinate index " + std::to_string(i.texcoord_index + 1) +
                             " is not one of the " + std::to_string(uvs) + " coordinates");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <set>
 
 #include "errors.h"
 #include "format.h"
@@ -118,16 +119,22 @@ void check_appearance(const scene& s) {
       throw usage_error(s.name + ": material " + m.name + ": texture index " + std::to_string(t) +
                         " does not exist");
   }
+  std::set<const texel_image*> images;
+  std::uint64_t texels = 0;
   for (std::size_t i = 0; i < s.textures.size(); ++i) {
     const texture& t = s.textures[i];
     const std::string who = s.name + ": texture " + std::to_string(i);
-    if (!(t.scale > 0) || !std::isfinite(t.scale))
-      throw usage_error(who + ": scale must be finite and > 0, got " + format_number(t.scale));
+    if (!(t.scale >= 1e-6 && t.scale <= 1e6))
+      throw usage_error(who + ": scale must be in [1e-06, 1e+06], got " + format_number(t.scale));
+    if (t.image && images.insert(t.image.get()).second) texels += t.image->texels.size();
     if (t.type == texture_type::image &&
         (!t.image || t.image->width <= 0 || t.image->height <= 0 ||
          t.image->texels.size() != std::size_t(t.image->width) * std::size_t(t.image->height)))
       throw usage_error(who + ": an image texture without its texels");
   }
+  if (texels > max_scene_texels)
+    throw usage_error(s.name + ": the scene's images hold " + std::to_string(texels) +
+                      " texels, past the limit of " + std::to_string(max_scene_texels));
   if (s.media.size() > max_scene_media)
     throw usage_error(s.name + ": " + std::to_string(s.media.size()) + " media are more than " +
                       std::to_string(max_scene_media));

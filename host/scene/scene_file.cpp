@@ -102,6 +102,11 @@ class scene_reader {
 
  private:
   std::string file_;  // named in every message
+
+ public:
+  // Images already decoded for this file, by the path read: a scene naming one image in many
+  // textures holds and uploads its texels once.
+  mutable std::map<std::string, std::shared_ptr<const texel_image>> images;
 };
 
 std::string escape_pointer(const std::string& key) {
@@ -256,6 +261,14 @@ noise_style read_style(const scene_reader& r, const json& j, const std::string& 
                 (j.is_string() ? "\"" + j.get<std::string>() + "\"" : r.type_of(j)));
 }
 
+// An image's wrap mode's name.
+image_wrap read_wrap(const scene_reader& r, const json& j, const std::string& p) {
+  for (image_wrap w : {image_wrap::clamp, image_wrap::repeat, image_wrap::mirror})
+    if (j.is_string() && j.get<std::string>() == wrap_name(w)) return w;
+  r.fail(p, "expected \"clamp\", \"repeat\" or \"mirror\", got " +
+                (j.is_string() ? "\"" + j.get<std::string>() + "\"" : r.type_of(j)));
+}
+
 // A color field that may be a texture instead: a color (in [0, 1], or any value >= 0 for a lamp's
 // `emit`), or a texture object ({"type": "checker" | "image" | "noise" | "solid", ...}), which is
 // appended to s.textures. Sets m.albedo or m.texture.
@@ -271,8 +284,8 @@ void read_color_or_texture(const scene_reader& r, const json& j, const std::stri
   texture tex;
   if (t == "solid") {
     r.only_fields(j, p, {"type", "color"});
-    read_color_or_texture(r, r.required(j, p, "color"), p + "/color", radiance, base, s, m);
-    if (m.texture >= 0) r.fail(p + "/color", "expected a color, got a texture");
+    const json& c = r.required(j, p, "color");
+    m.albedo = radiance ? r.radiance(c, p + "/color") : r.albedo(c, p + "/color");
     return;
   } else if (t == "checker") {
     r.only_fields(j, p, {"type", "scale", "even", "odd"});
@@ -289,15 +302,30 @@ void read_color_or_texture(const scene_reader& r, const json& j, const std::stri
       tex.even =
           radiance ? r.radiance(j["color"], p + "/color") : r.albedo(j["color"], p + "/color");
   } else if (t == "image") {
-    r.only_fields(j, p, {"type", "file"});
+    r.only_fields(j, p, {"type", "file", "color", "wrap"});
     tex.type = texture_type::image;
+    if (j.contains("color"))
+      tex.even =
+          radiance ? r.radiance(j["color"], p + "/color") : r.albedo(j["color"], p + "/color");
+    if (j.contains("wrap")) {  // one mode for both axes, or [u's, v's]
+      const json& w = j["wrap"];
+      if (w.is_array() && w.size() == 2) {
+        tex.wrap_u = read_wrap(r, w[0], p + "/wrap/0");
+        tex.wrap_v = read_wrap(r, w[1], p + "/wrap/1");
+      } else {
+        tex.wrap_u = tex.wrap_v = read_wrap(r, w, p + "/wrap");
+      }
+    }
     const json& f = r.required(j, p, "file");
     if (!f.is_string() || f.get<std::string>().empty())
       r.fail(p + "/file", "expected a file name, got " + r.type_of(f));
     tex.file = f.get<std::string>();
     const std::string field = r.file() + ": " + p + "/file";
     const std::size_t hash = tex.file.rfind("#images/");
-    if (tex.file == builtin_planet) {
+    std::shared_ptr<const texel_image>& cached = r.images[tex.file];
+    if (cached) {
+      tex.image = cached;
+    } else if (tex.file == builtin_planet) {
       tex.image = planet_image(1024, 512, 0);
     } else if (hash != std::string::npos && !mesh_kind(tex.file.substr(0, hash)).empty()) {
       // A glTF's embedded image, as rtvk scene dump names a mesh's base color texture.
@@ -308,16 +336,20 @@ void read_color_or_texture(const scene_reader& r, const json& j, const std::stri
     } else {
       tex.image = load_texel_image(base / tex.file, field);
     }
+    cached = tex.image;
+    std::uint64_t texels = 0;
+    for (const auto& [name, image] : r.images)
+      if (image) texels += image->texels.size();
+    if (texels > max_scene_texels)
+      r.fail(p + "/file", "the scene's images hold " + std::to_string(texels) +
+                              " texels, past the limit of " + std::to_string(max_scene_texels));
   } else {
     r.fail(p + "/type", "unknown texture type " +
                             (type.is_string() ? "\"" + t + "\"" : r.type_of(type)) +
                             " (expected solid, checker, image or noise)");
   }
-  if (j.contains("scale")) {
-    tex.scale = r.number(j["scale"], p + "/scale");
-    if (!(tex.scale > 0))
-      r.fail(p + "/scale", "expected a scale > 0, got " + format_number(tex.scale));
-  }
+  // Scales float keeps (its 1 / scale too): the GPU reads them in float.
+  if (j.contains("scale")) tex.scale = r.number_in(j["scale"], p + "/scale", 1e-6, 1e6);
   if (s.textures.size() >= 1000000) r.fail(p, "more than a million textures");
   m.texture = int(s.textures.size());
   s.textures.push_back(std::move(tex));
@@ -511,14 +543,15 @@ void read_flat_objects(const scene_reader& r, const json& root, const std::strin
           const std::string at = p + "/uv/" + std::to_string(k);
           if (!uv[k].is_array() || uv[k].size() != 2)
             r.fail(at, "expected [u, v], got " + r.type_of(uv[k]));
-          sh.uv[k] = glm::dvec2(r.number(uv[k][0], at + "/0"), r.number(uv[k][1], at + "/1"));
+          sh.uv[k] = glm::dvec2(r.number_in(uv[k][0], at + "/0", -1e6, 1e6),
+                                r.number_in(uv[k][1], at + "/1", -1e6, 1e6));
         }
         sh.has_uv = true;
       }
       // As written when nothing places the triangle (so a dump reads back unchanged); the
       // renderers normalize them.
       tri.shading = std::int32_t(s.shading.size());
-      s.shading.push_back(sh.has_normals() ? placed(sh, t) : sh);
+      s.shading.push_back(placed(sh, t));
     }
     s.triangles.push_back(tri);
   });
@@ -743,6 +776,11 @@ json texture_json(const texture& t) {
       break;
     case texture_type::image:
       j["file"] = t.file;
+      if (t.even != color(1)) j["color"] = vec_json(t.even);
+      if (t.wrap_u != t.wrap_v)
+        j["wrap"] = json::array({wrap_name(t.wrap_u), wrap_name(t.wrap_v)});
+      else if (t.wrap_u != image_wrap::clamp)
+        j["wrap"] = wrap_name(t.wrap_u);
       break;
   }
   return j;

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <tuple>
 
 #include "errors.h"
 #include "input_file.h"
@@ -26,6 +29,9 @@ struct splitmix {
 };
 
 }  // namespace
+
+// The planet's texels, drawn (planet_image keeps them).
+std::shared_ptr<const texel_image> draw_planet(int width, int height, std::uint32_t seed);
 
 std::uint8_t linear_to_byte(float v) {
   if (!(v > 0)) return 0;
@@ -93,6 +99,16 @@ perlin_tables make_perlin(std::uint32_t seed) {
 }
 
 std::shared_ptr<const texel_image> planet_image(int width, int height, std::uint32_t seed) {
+  // Drawn once per size and seed: every scene and texture naming it shares the texels.
+  static std::mutex lock;
+  static std::map<std::tuple<int, int, std::uint32_t>, std::shared_ptr<const texel_image>> made;
+  const std::lock_guard<std::mutex> hold(lock);
+  std::shared_ptr<const texel_image>& cached = made[{width, height, seed}];
+  if (!cached) cached = draw_planet(width, height, seed);
+  return cached;
+}
+
+std::shared_ptr<const texel_image> draw_planet(int width, int height, std::uint32_t seed) {
   const perlin_tables noise = make_perlin(seed);
   const texture_tables tables{nullptr, nullptr, noise.vectors.data(), noise.perm.data()};
   auto image = std::make_shared<texel_image>();
@@ -130,6 +146,7 @@ std::shared_ptr<const texel_image> planet_image(int width, int height, std::uint
 
 packed_textures pack_textures(const std::vector<texture>& textures) {
   packed_textures out;
+  std::map<const texel_image*, std::uint32_t> first_of;  // images packed so far
   for (const texture& t : textures) {
     texture_record r;
     r.type = std::uint32_t(t.type);
@@ -138,14 +155,30 @@ packed_textures pack_textures(const std::vector<texture>& textures) {
     r.scale = t.scale;
     r.style = std::uint32_t(t.style);
     if (t.type == texture_type::image && t.image) {
-      r.first = std::uint32_t(out.texels.size());
+      const auto [at, added] =
+          first_of.try_emplace(t.image.get(), std::uint32_t(out.texels.size()));
+      if (added)
+        out.texels.insert(out.texels.end(), t.image->texels.begin(), t.image->texels.end());
+      r.first = at->second;
       r.width = std::uint32_t(t.image->width);
       r.height = std::uint32_t(t.image->height);
-      out.texels.insert(out.texels.end(), t.image->texels.begin(), t.image->texels.end());
+      r.style = std::uint32_t(t.wrap_u) | std::uint32_t(t.wrap_v) << 2;
     }
     out.records.push_back(r);
   }
   return out;
+}
+
+std::string wrap_name(image_wrap w) {
+  switch (w) {
+    case image_wrap::clamp:
+      return "clamp";
+    case image_wrap::repeat:
+      return "repeat";
+    case image_wrap::mirror:
+      return "mirror";
+  }
+  return "clamp";
 }
 
 std::string type_name(texture_type t) {

@@ -26,6 +26,13 @@ enum class noise_style : std::uint32_t {
   marble = RTVK_NOISE_MARBLE,          // 0.5 * (1 + sin(scale p.z + 10 turb(p))): the book's
 };
 
+// How an image texture reads coordinates outside [0, 1].
+enum class image_wrap : std::uint32_t {
+  clamp = RTVK_WRAP_CLAMP,    // the edge's texel: the book's
+  repeat = RTVK_WRAP_REPEAT,  // tiled: glTF's default
+  mirror = RTVK_WRAP_MIRROR,  // tiled, every other copy mirrored
+};
+
 // An image's texels as both backends read them: linear values, a byte a channel, RGBA8 with red
 // in the lowest byte (alpha unused), rows from the top.
 struct texel_image {
@@ -38,12 +45,15 @@ struct texel_image {
 struct texture {
   texture_type type = texture_type::checker;
   double scale = 1;     // checker: a cell's size, scene units; noise: frequency
-  color even{1, 1, 1};  // checker: even cells' color; noise: the color noise 1 has
+  color even{1, 1, 1};  // checker: even cells' color; noise: the color noise 1 has; image: a
+                        // tint the texels are multiplied by
   color odd{0, 0, 0};   // checker: odd cells' color
   noise_style style = noise_style::marble;  // noise
   std::string file;  // image: the file read, as written in the scene file (or
                      // "builtin:planet" for the image rtvk draws itself)
   std::shared_ptr<const texel_image> image;  // image: its texels (shared by copies of a scene)
+  image_wrap wrap_u = image_wrap::clamp;     // image: outside [0, 1] along u
+  image_wrap wrap_v = image_wrap::clamp;     // and along v
 };
 
 // The most texels an image texture may have across or down, and in all: 16384 is what most GPUs
@@ -52,6 +62,9 @@ struct texture {
 inline constexpr int max_texture_side = 16384;
 inline constexpr std::uint64_t max_texture_texels = std::uint64_t(1) << 26;
 inline constexpr std::uint64_t max_texture_file_bytes = std::uint64_t(1) << 30;
+// The most texels a scene's images may have together (each image counted once however many
+// textures use it): 1 GiB of RGBA8, and every texel index fits 32 bits.
+inline constexpr std::uint64_t max_scene_texels = std::uint64_t(1) << 28;
 
 // Reads a PNG or JPEG (8 bits a channel; what stb_image reads) as the book's rtw_image does:
 // linear by gamma 2.2, then a byte a channel (floor(256 v), clamped). Throws usage_error naming
@@ -83,7 +96,8 @@ std::shared_ptr<const texel_image> planet_image(int width, int height, std::uint
 inline constexpr const char* builtin_planet = "builtin:planet";
 
 // A scene's textures as the kernels read them: a record each (texture.h's texture_record, an
-// image's `first` its offset in `texels`) and every image's texels one after another.
+// image's `first` its offset in `texels`) and every image's texels one after another, each image
+// once however many textures use it.
 struct packed_textures {
   std::vector<texture_record> records;  // by texture index
   std::vector<std::uint32_t> texels;    // the images', in texture order
@@ -92,5 +106,6 @@ packed_textures pack_textures(const std::vector<texture>& textures);
 
 std::string type_name(texture_type t);  // "checker", "image", "noise"
 std::string style_name(noise_style s);  // "smooth", "turbulence", "marble"
+std::string wrap_name(image_wrap w);    // "clamp", "repeat", "mirror"
 
 }  // namespace rtvk

@@ -88,6 +88,11 @@ using uvec2 = glm::uvec2;
 #define RTVK_NOISE_TURBULENCE 1  // turb(scale p), seven octaves
 #define RTVK_NOISE_MARBLE 2      // 0.5 * (1 + sin(scale p.z + 10 turb(p))): the book's final one
 #define RTVK_PERLIN_POINTS 256   // random vectors (and entries of each permutation) of the noise
+// How an image texture reads coordinates outside [0, 1] (gpu_texture::style, u in bits 0-1,
+// v in bits 2-3).
+#define RTVK_WRAP_CLAMP 0   // the edge's texel (the book's)
+#define RTVK_WRAP_REPEAT 1  // the image tiled (glTF's default)
+#define RTVK_WRAP_MIRROR 2  // tiled, every other copy mirrored
 
 // What bounds a medium (gpu_medium::shape).
 #define RTVK_BOUNDARY_SPHERE 0
@@ -198,14 +203,15 @@ struct gpu_material {
 
 // std430 array element: one texture, 48 bytes (shaders/shared/texture.h reads it).
 struct gpu_texture {
-  vec3 even;    // checker: the color of even cells; noise: the color noise 1 has
+  vec3 even;    // checker: the color of even cells; noise: the color noise 1 has; image: a
+                // tint its texels are multiplied by
   uint type;    // RTVK_TEXTURE_*
   vec3 odd;     // checker: the color of odd cells
   float scale;  // checker: a cell's size, scene units; noise: frequency, per scene unit
   uint first;   // image: its first texel in the texel array
   uint width;   // image: texels across
   uint height;  // image: rows of texels
-  uint style;   // noise: RTVK_NOISE_*
+  uint style;   // noise: RTVK_NOISE_*; image: RTVK_WRAP_* of u | that of v << 2
 };
 
 // std430: the noise's tables, made from the scene's noise seed on the host (host/scene/perlin.h).

@@ -117,11 +117,25 @@ inline precise real3 noise_value(TABLES_PARAM real scale, uint style, real3 tint
   return level * tint;
 }
 
+// A texture coordinate brought into [0, 1] by an image's wrap mode (RTVK_WRAP_*); not a finite
+// number: 0.
+inline precise real wrap_coordinate(real x, uint mode) {
+  if (!is_finite(x)) return real(0.0);
+  if (mode == RTVK_WRAP_REPEAT) return x - floor(x);
+  if (mode == RTVK_WRAP_MIRROR) {
+    precise real m = x - real(2.0) * floor(real(0.5) * x);  // in [0, 2)
+    return m > real(1.0) ? real(2.0) - m : m;
+  }
+  return max(real(0.0), min(real(1.0), x));
+}
+
 // The book's image_texture: the nearest texel to (u, v), v = 1 the image's top row, coordinates
-// outside [0, 1] clamped to its edge. Texels hold linear values, a byte a channel (/ 255).
-inline precise real3 image_value(TABLES_PARAM uint first, uint width, uint height, real2 uv) {
-  precise real u = uv.x >= real(0.0) ? min(uv.x, real(1.0)) : real(0.0);  // NaN: 0
-  precise real v = uv.y >= real(0.0) ? real(1.0) - min(uv.y, real(1.0)) : real(1.0);
+// outside [0, 1] wrapped by `wrap` (RTVK_WRAP_* of u, and of v shifted left by 2; the book
+// clamps). Texels hold linear values, a byte a channel (/ 255).
+inline precise real3 image_value(TABLES_PARAM uint first, uint width, uint height, uint wrap,
+                                 real2 uv) {
+  precise real u = wrap_coordinate(uv.x, wrap & 3u);
+  precise real v = real(1.0) - wrap_coordinate(uv.y, (wrap >> 2u) & 3u);
   precise real x = u * real(width);
   precise real y = v * real(height);
   uint i = min(uint(x), width - 1u);
@@ -139,7 +153,8 @@ inline precise real3 texture_value(TABLES_PARAM uint index, real2 uv, real3 p) {
                          real3(TEXTURE_AT(index).odd), p);
   if (type == RTVK_TEXTURE_IMAGE)
     return image_value(TABLES TEXTURE_AT(index).first, TEXTURE_AT(index).width,
-                       TEXTURE_AT(index).height, uv);
+                       TEXTURE_AT(index).height, TEXTURE_AT(index).style, uv) *
+           real3(TEXTURE_AT(index).even);
   return noise_value(TABLES real(TEXTURE_AT(index).scale), TEXTURE_AT(index).style,
                      real3(TEXTURE_AT(index).even), p);
 }

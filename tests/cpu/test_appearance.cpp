@@ -78,11 +78,24 @@ TEST(Textures, ImageLookupIsTheNearestTexelWithVUp) {
   // 2 x 2: top row red, green; bottom row blue, white.
   const std::vector<std::uint32_t> texels{0xff0000ffu, 0xff00ff00u, 0xffff0000u, 0xffffffffu};
   const texture_tables tables{nullptr, texels.data(), nullptr, nullptr};
-  EXPECT_EQ(image_value(tables, 0, 2, 2, glm::dvec2(0.25, 0.75)), color(1, 0, 0));
-  EXPECT_EQ(image_value(tables, 0, 2, 2, glm::dvec2(0.75, 0.75)), color(0, 1, 0));
-  EXPECT_EQ(image_value(tables, 0, 2, 2, glm::dvec2(0.25, 0.25)), color(0, 0, 1));
-  EXPECT_EQ(image_value(tables, 0, 2, 2, glm::dvec2(1.0, 0.0)), color(1, 1, 1));  // clamped
-  EXPECT_EQ(image_value(tables, 0, 2, 2, glm::dvec2(-3.0, 7.0)), color(1, 0, 0));
+  const uint clamp = RTVK_WRAP_CLAMP, repeat = RTVK_WRAP_REPEAT | RTVK_WRAP_REPEAT << 2,
+             mirror = RTVK_WRAP_MIRROR | RTVK_WRAP_MIRROR << 2;
+  EXPECT_EQ(image_value(tables, 0, 2, 2, clamp, glm::dvec2(0.25, 0.75)), color(1, 0, 0));
+  EXPECT_EQ(image_value(tables, 0, 2, 2, clamp, glm::dvec2(0.75, 0.75)), color(0, 1, 0));
+  EXPECT_EQ(image_value(tables, 0, 2, 2, clamp, glm::dvec2(0.25, 0.25)), color(0, 0, 1));
+  EXPECT_EQ(image_value(tables, 0, 2, 2, clamp, glm::dvec2(1.0, 0.0)), color(1, 1, 1));
+  EXPECT_EQ(image_value(tables, 0, 2, 2, clamp, glm::dvec2(-3.0, 7.0)), color(1, 0, 0));
+  // Tiled: 2.75 is 0.75 of the third copy; -0.25 is 0.75 of the copy before.
+  EXPECT_EQ(image_value(tables, 0, 2, 2, repeat, glm::dvec2(2.75, 0.75)), color(0, 1, 0));
+  EXPECT_EQ(image_value(tables, 0, 2, 2, repeat, glm::dvec2(-0.25, -0.75)), color(1, 1, 1));
+  // Mirrored: 1.25 reads 0.75, 2.25 reads 0.25 again.
+  EXPECT_EQ(image_value(tables, 0, 2, 2, mirror, glm::dvec2(1.25, 0.75)), color(0, 1, 0));
+  EXPECT_EQ(image_value(tables, 0, 2, 2, mirror, glm::dvec2(2.25, 1.25)), color(1, 0, 0));
+  // Either axis alone: u repeats, v clamps.
+  EXPECT_EQ(image_value(tables, 0, 2, 2, RTVK_WRAP_REPEAT, glm::dvec2(1.25, 5.0)), color(1, 0, 0));
+  // Not a number: the first column, the bottom row.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(image_value(tables, 0, 2, 2, repeat, glm::dvec2(nan, nan)), color(0, 0, 1));
 }
 
 // Texture coordinates where the book puts them: a sphere's from its angles, a quad's from its
@@ -165,8 +178,9 @@ TEST_F(GpuTextures, NoiseValuesMatchTheHosts) {
   }
 }
 
-// A checker and an image through a flat material: the same cell or texel in every pixel but
-// those a float rounding puts across a boundary.
+// A checker and an image (clamped on a quad; tinted, repeated along u and mirrored along v on
+// triangles whose uv run past [0, 1]) through a flat material: the same cell or texel in every
+// pixel but those a float rounding puts across a boundary.
 TEST_F(GpuTextures, CheckerAndImageValuesMatchTheHosts) {
   texture checker;
   checker.type = texture_type::checker;
@@ -180,8 +194,23 @@ TEST_F(GpuTextures, CheckerAndImageValuesMatchTheHosts) {
   img->height = 3;
   for (std::uint32_t k = 0; k < 15; ++k) img->texels.push_back(0xff000000u | (k * 17) | (k << 12));
   image.image = img;
-  for (const texture& t : {checker, image}) {
-    const scene s = flat_square({material_type::flat, color(1), 0, 1.5}, t);
+  texture tiled = image;  // tinted and tiled: the square's corners at uv (-1, -1) and (2, 2)
+  tiled.even = color(0.5, 1, 0.25);
+  tiled.wrap_u = image_wrap::repeat;
+  tiled.wrap_v = image_wrap::mirror;
+  for (const texture& t : {checker, image, tiled}) {
+    scene s = flat_square({material_type::flat, color(1), 0, 1.5}, t);
+    if (t.wrap_u == image_wrap::repeat) {  // two triangles whose uv run past [0, 1]
+      s.quads.clear();
+      const point3 a(-1, -1, 0), b(2, -1, 0), c(2, 2, 0), d(-1, 2, 0);
+      triangle_shading sh;
+      sh.has_uv = true;
+      sh.uv = {glm::dvec2(-1, -1), glm::dvec2(2, -1), glm::dvec2(2, 2)};
+      s.shading.push_back(sh);
+      sh.uv = {glm::dvec2(-1, -1), glm::dvec2(2, 2), glm::dvec2(-1, 2)};
+      s.shading.push_back(sh);
+      s.triangles = {{{a, b, c}, 0, 0}, {{a, c, d}, 0, 1}};
+    }
     const framebuffer c = render_cpu(test::scene_camera(s), s, s.render);
     const framebuffer g = gpu::render_gpu(gpu(), test::scene_camera(s), s, s.render);
     int differ = 0;

@@ -116,6 +116,8 @@ TEST(MeshFile, GltfBaseColorTexturesAndEmissiveMaterialsAreDrawn) {
   ASSERT_EQ(s.textures.size(), 1u);
   ASSERT_EQ(s.textures[0].image->width, 2);
   EXPECT_EQ(s.textures[0].image->texels[0], 0xff0000ffu);
+  EXPECT_EQ(s.textures[0].wrap_u, image_wrap::repeat);  // glTF's default sampler
+  EXPECT_EQ(s.textures[0].even, color(1));              // the base color factor's default
   EXPECT_EQ(s.materials[1].m.type, material_type::diffuse_light);
   EXPECT_EQ(s.materials[1].m.albedo, color(4, 2, 1));
   // v flipped to rtvk's (the book's) up-from-the-bottom: the first vertex's (0, 1) is (0, 0).
@@ -141,6 +143,40 @@ TEST(MeshFile, GltfBaseColorTexturesAndEmissiveMaterialsAreDrawn) {
   EXPECT_NE(dumped.find("sq.gltf#images/0"), std::string::npos) << dumped;
   write(dir.path() / "d.json", dumped);
   EXPECT_EQ(dump_scene_json(load_scene_file(dir.path() / "d.json")), dumped);
+}
+
+// An MTL's map_Kd: an image texture beside the OBJ, tinted by Kd and tiled; one decoded image
+// for every material naming it; a material with an emissive texture in glTF stays diffuse.
+TEST(MeshFile, ObjDiffuseMapsAreImageTexturesTintedByKd) {
+  const test::temp_dir dir;
+  write_image(image_rgb8{1, 1, {255, 255, 255}}, dir.path() / "white.png");
+  write(dir.path() / "m.mtl",
+        "newmtl a\nKd 0.5 0.25 1\nmap_Kd white.png\nnewmtl b\nKd 1 1 1\nmap_Kd white.png\n");
+  write(dir.path() / "m.obj",
+        "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 3 0\nvt 0 3\n"
+        "usemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 1/1 3/3 2/2\n");
+  const scene s = mesh_scene(dir.path() / "m.obj");
+  ASSERT_EQ(s.textures.size(), 1u);  // one image, two materials
+  EXPECT_EQ(s.materials[0].m.texture, 0);
+  EXPECT_EQ(s.materials[1].m.texture, 0);
+  EXPECT_EQ(s.textures[0].even, color(0.5, 0.25, 1));
+  EXPECT_EQ(s.textures[0].wrap_u, image_wrap::repeat);
+  EXPECT_TRUE(std::filesystem::path(s.textures[0].file).is_absolute()) << s.textures[0].file;
+  write(dir.path() / "bad.mtl", "newmtl a\nKd 1 1 1\nmap_Kd nowhere.png\n");
+  write(dir.path() / "bad.obj", "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+  try {
+    mesh_scene(dir.path() / "bad.obj");
+    ADD_FAILURE() << "a missing map_Kd was accepted";
+  } catch (const usage_error& e) {
+    EXPECT_NE(std::string(e.what()).find("material a: map_Kd"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nowhere.png"), std::string::npos) << e.what();
+  }
+  // glTF: an emissive factor with an emissive texture (a glowing dial) is not a lamp.
+  std::string doc = textured_gltf();
+  doc.replace(doc.find(R"("emissiveFactor")"), 0, R"("emissiveTexture":{"index":0},)");
+  scene g;
+  load_mesh_bytes(g, doc, "gltf", "sq.gltf", "", {});
+  EXPECT_NE(g.materials[1].m.type, material_type::diffuse_light);  // metal: glTF's default
 }
 
 TEST(MeshFile, ObjNormalsShadeSmoothAndMtlMaterialsMap) {
