@@ -510,6 +510,12 @@ void read_flat_objects(const scene_reader& r, const json& root, const std::strin
       if (a[k] == b[k])
         r.fail(p + "/b/" + std::to_string(k), "the box is flat: a and b share this coordinate");
     add_box(s, a, b, material_named(r, j, p, material_index), optional_transform(r, j, p));
+    // Each side as a quad file would have to read it (a dump writes them so): a side too thin or
+    // too large for its normal in float has no area to hit.
+    for (std::size_t k = s.quads.size() - 6; k < s.quads.size(); ++k)
+      if (!spans_area(s.quads[k].u, s.quads[k].v))
+        r.fail(p, "side " + std::to_string(k + 6 - s.quads.size()) +
+                      " of the box has no area in float (too thin or too large)");
   });
   read_array(r, root, at, "triangles", [&](const json& j, const std::string& p) {
     r.only_fields(j, p, {"vertices", "normals", "uv", "material", "transform"});

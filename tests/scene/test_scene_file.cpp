@@ -382,6 +382,10 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
            R"(,"media":[{"shape":"sphere","center":[0,0,0],"radius":1,"density":1,"material":"m"}]})",
        "/media/0/material: a medium scatters by an isotropic material, \"m\" is normal"},
       {R"({"noise_seed":-1,"spheres":[]})", "/noise_seed: expected an integer in [0, 4294967295]"},
+      // Found by the fuzzer: a box whose sides' normals overflow float read once, then its dump
+      // (the sides as quads) did not read back.
+      {"{" + m + R"(,"boxes":[{"a":[0,8,0],"b":[1.3e35,2,1],"material":"m"}]})",
+       "/boxes/0: side 0 of the box has no area in float (too thin or too large)"},
       {R"({"materials":{"m":{"type":"plastic"}},"spheres":[]})",
        "/materials/m/type: unknown material type \"plastic\""},
       {R"({"materials":{"m":{"type":"lambertian"}},"spheres":[]})",
