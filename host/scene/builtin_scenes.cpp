@@ -206,13 +206,22 @@ void next_week_camera(scene& s, const point3& from, const point3& at, double vfo
   c.aperture = 0;
 }
 
+// The second book's early scenes' set-up: 400 pixels wide at 16:9, 100 samples, the camera at
+// `from` looking at `at` (vfov 20), a constant background.
+scene next_week_scene(const std::string& name, const point3& from, const point3& at,
+                      const color& background) {
+  scene s;
+  s.name = name;
+  next_week_camera(s, from, at, 20);
+  s.render = book_render(400, 16.0 / 9.0, 100);
+  s.sky.horizon = s.sky.zenith = background;
+  return s;
+}
+
 // "The Next Week", chapter 4: two large spheres in the spatial checker (cells of 0.32 units).
 scene checkered_spheres_scene() {
-  scene s;
-  s.name = "checkered-spheres";
-  next_week_camera(s, point3(13, 2, 3), point3(0, 0, 0), 20);
-  s.render = book_render(400, 16.0 / 9.0, 100);
-  s.sky.horizon = s.sky.zenith = color(0.70, 0.80, 1.00);
+  scene s = next_week_scene("checkered-spheres", point3(13, 2, 3), point3(0, 0, 0),
+                            color(0.70, 0.80, 1.00));
   texture checker;
   checker.type = texture_type::checker;
   checker.scale = 0.32;
@@ -231,22 +240,15 @@ void add_perlin_spheres(scene& s) {
 }
 
 scene perlin_spheres_scene() {
-  scene s;
-  s.name = "perlin-spheres";
-  next_week_camera(s, point3(13, 2, 3), point3(0, 0, 0), 20);
-  s.render = book_render(400, 16.0 / 9.0, 100);
-  s.sky.horizon = s.sky.zenith = color(0.70, 0.80, 1.00);
+  scene s =
+      next_week_scene("perlin-spheres", point3(13, 2, 3), point3(0, 0, 0), color(0.70, 0.80, 1.00));
   add_perlin_spheres(s);
   return s;
 }
 
 // Chapter 7: the marble spheres lit by a lamp sphere and a lamp quad, in the dark.
 scene simple_light_scene() {
-  scene s;
-  s.name = "simple-light";
-  next_week_camera(s, point3(26, 3, 6), point3(0, 2, 0), 20);
-  s.render = book_render(400, 16.0 / 9.0, 100);
-  s.sky.horizon = s.sky.zenith = color(0, 0, 0);
+  scene s = next_week_scene("simple-light", point3(26, 3, 6), point3(0, 2, 0), color(0, 0, 0));
   add_perlin_spheres(s);
   const int light = add_material(s, "light", lamp(color(4, 4, 4)));
   s.spheres.push_back(sphere(point3(0, 7, 0), 2, light));

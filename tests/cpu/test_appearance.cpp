@@ -255,7 +255,7 @@ TEST_F(GpuTextures, ALampSeenDirectlyIsExactlyItsColor) {
 }
 
 // The white furnace with an emitting background (0.5, 1, 2) and everything new present: a white
-// checker, a white image, and a ball of white fog overlapping the spheres. Every path that
+// checker, a white image, and a ball of white fog above the spheres. Every path that
 // escapes carries the background's color exactly (the media make a path longer, not darker).
 scene furnace_with_fog() {
   scene s;
