@@ -53,9 +53,11 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_TRIANGLES 8   // bool: the scene has triangles
 #define RTVK_SPEC_INSTANCES 9   // bool: the scene has instances
 #define RTVK_SPEC_UV \
-  10                        // bool: hits on spheres find their texture coordinates (an image
-                            // texture reads them)
-#define RTVK_SPEC_COUNT 11  // constant ids in use
+  10                           // bool: hits on spheres find their texture coordinates (an image
+                               // texture reads them)
+#define RTVK_SPEC_TEXTURES 11  // bool: some material has a texture (render.comp)
+#define RTVK_SPEC_MEDIA 12     // bool: the scene has media (render.comp)
+#define RTVK_SPEC_COUNT 13     // constant ids in use
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 112 camera
 // blocks of 144 bytes are 15.75 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.

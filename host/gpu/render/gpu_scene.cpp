@@ -77,6 +77,9 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       instance_count_(std::uint32_t(a.instances.size())),
       medium_count_(std::uint32_t(a.media.size())),
       with_uv_(a.with_uv),
+      any_textures_(
+          std::any_of(a.materials.begin(), a.materials.end(),
+                      [](const gpu_material& m) { return m.texture != RTVK_NO_TEXTURE; })),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
       specs_{{bytes_of(a.spheres), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
@@ -194,6 +197,8 @@ void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
   spec[RTVK_SPEC_TRIANGLES] = triangle_count_ > 0;
   spec[RTVK_SPEC_INSTANCES] = instance_count_ > 0;
   spec[RTVK_SPEC_UV] = with_uv_;
+  spec[RTVK_SPEC_TEXTURES] = any_textures_;
+  spec[RTVK_SPEC_MEDIA] = medium_count_ > 0;
 }
 
 void gpu_scene::set_counts(render_push& push) const {

@@ -95,6 +95,7 @@ class gpu_scene {
   std::uint32_t instance_count_;                           // instances
   std::uint32_t medium_count_;                             // media
   bool with_uv_;                                           // RTVK_SPEC_UV
+  bool any_textures_;                                      // RTVK_SPEC_TEXTURES
   double build_seconds_;                                   // building the BVH took
   bool moves_;                                             // some sphere has a velocity
   std::vector<buffer_spec> specs_;     // spheres, materials, nodes, velocities, quads, triangles,
