@@ -275,8 +275,12 @@ image_wrap read_wrap(const scene_reader& r, const json& j, const std::string& p)
 void read_color_or_texture(const scene_reader& r, const json& j, const std::string& p,
                            bool radiance, const std::filesystem::path& base, scene& s,
                            material& m) {
+  // A color of this field's kind: a lamp's radiance (>= 0) or an albedo (in [0, 1]).
+  const auto color_at = [&](const json& c, const std::string& at) {
+    return radiance ? r.radiance(c, at) : r.albedo(c, at);
+  };
   if (!j.is_object()) {
-    m.albedo = radiance ? r.radiance(j, p) : r.albedo(j, p);
+    m.albedo = color_at(j, p);
     return;
   }
   const json& type = r.required(j, p, "type");
@@ -285,28 +289,22 @@ void read_color_or_texture(const scene_reader& r, const json& j, const std::stri
   if (t == "solid") {
     r.only_fields(j, p, {"type", "color"});
     const json& c = r.required(j, p, "color");
-    m.albedo = radiance ? r.radiance(c, p + "/color") : r.albedo(c, p + "/color");
+    m.albedo = color_at(c, p + "/color");
     return;
   } else if (t == "checker") {
     r.only_fields(j, p, {"type", "scale", "even", "odd"});
     tex.type = texture_type::checker;
-    tex.even = radiance ? r.radiance(r.required(j, p, "even"), p + "/even")
-                        : r.albedo(r.required(j, p, "even"), p + "/even");
-    tex.odd = radiance ? r.radiance(r.required(j, p, "odd"), p + "/odd")
-                       : r.albedo(r.required(j, p, "odd"), p + "/odd");
+    tex.even = color_at(r.required(j, p, "even"), p + "/even");
+    tex.odd = color_at(r.required(j, p, "odd"), p + "/odd");
   } else if (t == "noise") {
     r.only_fields(j, p, {"type", "scale", "style", "color"});
     tex.type = texture_type::noise;
     if (j.contains("style")) tex.style = read_style(r, j["style"], p + "/style");
-    if (j.contains("color"))
-      tex.even =
-          radiance ? r.radiance(j["color"], p + "/color") : r.albedo(j["color"], p + "/color");
+    if (j.contains("color")) tex.even = color_at(j["color"], p + "/color");
   } else if (t == "image") {
     r.only_fields(j, p, {"type", "file", "color", "wrap"});
     tex.type = texture_type::image;
-    if (j.contains("color"))
-      tex.even =
-          radiance ? r.radiance(j["color"], p + "/color") : r.albedo(j["color"], p + "/color");
+    if (j.contains("color")) tex.even = color_at(j["color"], p + "/color");
     if (j.contains("wrap")) {  // one mode for both axes, or [u's, v's]
       const json& w = j["wrap"];
       if (w.is_array() && w.size() == 2) {
