@@ -49,6 +49,7 @@ if ! build/ci/rtvk devices; then
 fi
 export RTVK_DEVICE=${RTVK_DEVICE:-nvidia} RTVK_TEST_DEVICE=${RTVK_TEST_DEVICE:-nvidia}
 rtvk=build/ci/rtvk
+python3 scripts/make-mesh.py knot 20000 docs/scenes/knot.obj  # docs/scenes/knot.json's mesh (git ignores it)
 
 if [[ $steps == *" bench "* ]]; then
 step bench
@@ -69,6 +70,9 @@ bench spheres1m-gpu --scene spheres:1000000 --width 1200 --spp 4 --backend gpu -
 bench knot-all --scene docs/scenes/knot.json --backend all --spp 32 --repeat 3
 bench quads-all --scene quads --backend all --spp 100 --repeat 3
 bench forest-all --scene docs/scenes/forest.json --backend all --spp 16 --repeat 3
+bench cornell-gpu --scene cornell-box --backend gpu --spp 200 --repeat 3
+bench cornell-1000spp-gpu --scene cornell-box --backend gpu --spp 1000 --repeat 3
+bench next-week-final-gpu --scene next-week-final --backend gpu --spp 1000 --repeat 1
 fi
 
 if [[ $steps == *" meshes "* ]]; then
@@ -98,7 +102,13 @@ both fisheye --scene book-final --projection fisheye-equisolid --aperture 0 --wi
 both motion --scene bouncing-spheres --width 320 --spp 32 --shutter 0:1
 both forest --scene docs/scenes/forest.json --spp 16
 both forest-scan --scene docs/scenes/forest.json --spp 4 --accel none
-cp /tmp/both-final.png /tmp/both-knot.png /tmp/both-forest.png "$out/" 2>/dev/null
+both checkered --scene checkered-spheres --width 400 --spp 16
+both perlin --scene perlin-spheres --width 400 --spp 16
+both simple-light --scene simple-light --width 400 --spp 64
+both cornell --scene cornell-box --width 300 --spp 64
+both cornell-smoke --scene cornell-smoke --width 300 --spp 64
+both next-week-final --scene next-week-final --width 400 --spp 16
+cp /tmp/both-final.png /tmp/both-knot.png /tmp/both-forest.png /tmp/both-next-week-final.png "$out/" 2>/dev/null
 fi
 
 if [[ $steps == *" tests "* ]]; then
