@@ -1,5 +1,6 @@
 // What shading reads besides the materials, as gpu_scene::appearance_bindings binds it: the
-// textures (texture.h reads `textures`, `texels` and `perlin`) and the media. render.comp's.
+// textures (texture.h reads `textures`, `texels` and `perlin`), the media and the lights (pdf.h
+// reads `lights`). render.comp's.
 #ifndef RTVK_APPEARANCE_BUFFERS_GLSL
 #define RTVK_APPEARANCE_BUFFERS_GLSL
 
@@ -14,6 +15,9 @@ layout(std430, set = 0, binding = RTVK_BINDING_PERLIN) readonly buffer perlin_bl
 };
 layout(std430, set = 0, binding = RTVK_BINDING_MEDIA) readonly buffer medium_block {
   gpu_medium media[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_LIGHTS) readonly buffer light_block {
+  gpu_light lights[];
 };
 
 #endif

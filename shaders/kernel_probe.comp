@@ -11,6 +11,13 @@ layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block {
   kernel_probe_entry entries[];
 };
 
+// pdf.h's table of lights (ray_color.h includes it): the probe aims at none.
+const gpu_light lights[1] = gpu_light[1](
+    gpu_light(vec3(0.0), 0u, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0u));
+uint light_count() {
+  return 0u;
+}
+
 #include "kernel_probe.h"
 
 void main() {

@@ -20,6 +20,7 @@ layout(constant_id = RTVK_SPEC_JITTER) const bool jitter = false;   // random sp
 layout(constant_id = RTVK_SPEC_LENS) const bool any_lens = false;   // a view has an aperture
 layout(constant_id = RTVK_SPEC_USE_BVH) const bool use_bvh = true;  // else every sphere in turn
 layout(constant_id = RTVK_SPEC_COUNT_RAYS) const bool count_rays = false;  // per-pixel counts
+layout(constant_id = RTVK_SPEC_LIGHTS) const bool sample_lights = false;  // the third book's
 
 layout(std140, set = 0, binding = RTVK_BINDING_CAMERA) uniform camera_block {
   camera_ubo cams[RTVK_MAX_VIEWS];
@@ -39,6 +40,12 @@ layout(push_constant) uniform push_block {
 #include "scene_buffers.glsl"
 #include "appearance_buffers.glsl"
 
+// The lights scattering aims at (pdf.h's LIGHT_COUNT): none unless the pipeline samples them, so
+// that plain renders compile the lights' code out.
+uint light_count() {
+  return sample_lights ? pc.light_count : 0u;
+}
+
 #include "camera_rays.h"
 #include "fixed_sum.h"
 #include "random.h"
@@ -49,7 +56,8 @@ layout(push_constant) uniform push_block {
 path_state pixel_path(camera_ubo cam, uvec2 pixel, uint j, uint sample_index) {
   random_stream s =
       pixel_sample_stream(pc.seed, pixel.y * cam.image_width + pixel.x, sample_index);
-  ray r = sample_ray(cam, cam.image_width, cam.image_height, pixel.x, j, s, jitter, any_lens);
+  ray r = sample_ray(cam, cam.image_width, cam.image_height, pixel.x, j, s, jitter, any_lens,
+                     pc.strata, sample_index);
   return start_path(r, s);
 }
 
@@ -63,8 +71,13 @@ void add_fixed(inout uvec2 sum, inout uint top, uvec3 x) {
 }
 
 // Adds one sample's color (and its rays, when counted) to the pixel's sums; returns whether a
-// channel was past the limit (sum_overflows: the render fails rather than clamp it).
-bool add_sample(inout pixel_sum acc, vec3 c, uint rays) {
+// channel was past the limit (sum_overflows: the render fails rather than clamp it). A sample
+// with a NaN or infinite channel adds black and counts in `dropped`.
+bool add_sample(inout pixel_sum acc, vec3 c, uint rays, inout uint dropped) {
+  if (!sample_is_finite(c.r) || !sample_is_finite(c.g) || !sample_is_finite(c.b)) {
+    ++dropped;
+    c = vec3(0.0);
+  }
   add_fixed(acc.r, acc.r_top, to_fixed(c.r, pc.sample_limit, pc.sum_scale));
   add_fixed(acc.g, acc.g_top, to_fixed(c.g, pc.sample_limit, pc.sum_scale));
   add_fixed(acc.b, acc.b_top, to_fixed(c.b, pc.sample_limit, pc.sum_scale));
@@ -94,6 +107,7 @@ void main() {
   uint iterations = 0u;
   uint rays = 0u;  // of the path in flight
   uint overflowed = 0u;  // samples past the limit
+  uint dropped = 0u;     // samples not finite
   uint rays_added = 0u;  // by the samples added (when counted)
   path_state p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   while (true) {
@@ -101,7 +115,7 @@ void main() {
     bool ended = ray_color_step(p, c, iterations, rays);
     if (iterations > pc.loop_budget) break;  // the path in flight is dropped and drawn again
     if (!ended) continue;
-    if (add_sample(acc, c, rays)) ++overflowed;
+    if (add_sample(acc, c, rays, dropped)) ++overflowed;
     rays_added += rays;
     rays = 0u;
     if (acc.samples >= pc.sample_target) break;
@@ -116,6 +130,7 @@ void main() {
     }
   }
   if (overflowed != 0u) atomicAdd(status.overflowed_samples, overflowed);
+  if (dropped != 0u) atomicAdd(status.dropped_samples, dropped);
   if (count_rays && rays_added != 0u) {  // a 64-bit count: the carry goes to the high word
     uint before = atomicAdd(status.rays_low, rays_added);
     if (before + rays_added < before) atomicAdd(status.rays_high, 1u);

@@ -1,7 +1,7 @@
 // ray_color's loop, a bounce per trip: the steps are the shared kernels' (ray_color.h), which
 // the CPU runs too (host/cpu/shading.cpp); what is the GPU's own is the world search (world.glsl)
-// and the loop budget. Expects `materials` (gpu_material[]) and `pc` (render_push) declared by
-// the including shader.
+// and the loop budget. Expects `materials` (gpu_material[]), `pc` (render_push), `lights` and
+// light_count() (pdf.h) declared by the including shader.
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
 #include "medium.h"
@@ -59,7 +59,9 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   }
   gpu_material m = materials[rec.material];
   vec3 albedo = any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo;
-  return path_hit(p, rec, m.type, albedo, m.fuzz, m.ir, c);
+  // The lights' densities loop over every light (pdf.h): lavapipe counts those trips too.
+  iterations += light_count();
+  return path_hit(p, rec, m.type, m.flags, albedo, m.fuzz, m.ir, c);
 }
 
 #endif

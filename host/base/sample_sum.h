@@ -18,8 +18,9 @@ namespace rtvk {
 // pixel without either being clamped or rounded away. Why this scheme: float partial sums depend
 // on the order of the additions, and an exponent chosen per pixel or per tile as bright samples
 // arrive makes the bits kept depend on when they arrived (batching) and on where a farm split
-// the samples. A sample brighter than the limit (a firefly 2^33 times the scene's brightest, or
-// +infinity) is not clamped into bias: the render fails, saying so (sample_overflow_error).
+// the samples. A finite sample brighter than the limit (a firefly 2^33 times the scene's
+// brightest) is not clamped into bias: the render fails, saying so (sample_overflow_error). A
+// sample with a NaN or infinite channel is dropped: it adds black, and the render counts it.
 __extension__ typedef unsigned __int128 exact_sum;  // a channel's sum; 96 bits are used
 
 inline constexpr int max_sum_samples_log2 = 20;  // samples per pixel a sum has room for: max_spp
@@ -38,15 +39,16 @@ inline double sum_sample_limit(int exponent) {
   return std::ldexp(1.0, sum_bits - 1 - max_sum_samples_log2 - exponent);
 }
 
-// Whether a channel value is past the limit (+infinity included): the shader's sum_overflows
-// (shaders/shared/fixed_sum.h). NaN and negatives are not: they add 0.
+// Whether a finite channel value is past the limit: the shader's sum_overflows
+// (shaders/shared/fixed_sum.h). NaN, infinities and negatives are not: they add 0.
 inline bool sum_overflows(float c, int exponent) {
-  return !std::isnan(c) && c > sum_sample_limit(exponent);
+  return std::isfinite(c) && c > sum_sample_limit(exponent);
 }
 
 // One sample channel as the shader converts it (to_fixed in fixed_sum.h): floor(c * 2^F); 0 for
-// NaN, negatives and values past the limit (which fail the render instead).
+// NaN, infinities, negatives and values past the limit (which fail the render instead).
 inline exact_sum to_fixed(float c, int exponent) {
+  if (!std::isfinite(c)) return 0;
   if (!(c > 0) || sum_overflows(c, exponent)) return 0;
   return exact_sum(std::floor(std::ldexp(double(c), exponent)));  // exact: 24 bits, < 2^76
 }

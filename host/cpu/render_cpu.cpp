@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -10,6 +11,7 @@
 #include "elapsed.h"
 #include "errors.h"
 #include "parallel.h"
+#include "light_sources.h"
 #include "random.h"
 #include "shading.h"
 #include "world.h"
@@ -38,10 +40,22 @@ struct pixel_inputs {
   const render_settings& rs;     // seed, jitter and bounce limit
   const scene_shading& shading;  // the scene's materials, textures and media
   const render_window& win;      // the samples to take
+  std::uint32_t strata;          // pixel_strata: the cells a side the samples spread over
 };
 
+// Whether a sample's color can be added: a NaN or an infinity (a density of zero where a
+// direction was drawn, an overflow) would spoil the pixel's sum. The GPU tells them apart by
+// their float bits (fixed_sum.h); here in double, and past float's range counts as infinite.
+bool finite_sample(const color& c) {
+  const double most = 3.4028234663852886e38;  // FLT_MAX
+  for (int k = 0; k < 3; ++k)
+    if (!(std::abs(c[k]) <= most)) return false;
+  return true;
+}
+
 // The mean of pixel (i, y)'s samples [win.sample_begin, win.sample_end), y counted from the top.
-color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y) {
+color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y,
+                  std::uint64_t& dropped) {
   const int width = in.cam.image_width();
   const int height = in.cam.image_height();
   const int j = height - 1 - y;  // the lesson counts rows from the bottom
@@ -50,8 +64,12 @@ color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y) {
     const random_stream rnd =
         pixel_sample_stream(in.rs.seed, uint(y) * uint(width) + uint(i), uint(sample));
     const ray r = sample_ray(in.cam.frame(), uint(width), uint(height), uint(i), uint(j), rnd,
-                             in.rs.jitter, true);
-    sum += ray_color(r, world, in.shading, in.sky, in.rs.max_depth, rnd);
+                             in.rs.jitter, true, in.strata, uint(sample));
+    const color c = ray_color(r, world, in.shading, in.sky, in.rs.max_depth, rnd);
+    if (finite_sample(c))
+      sum += c;
+    else
+      ++dropped;
   }
   return divide(sum, in.win.samples());
 }
@@ -86,12 +104,14 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
   check_motion_span(s.motion, scene_moves(s), cam);
   double build_seconds = 0;
   const std::unique_ptr<hittable> world = timed_world(s, engine, build_seconds);
-  const scene_shading shading(s);
-  const pixel_inputs in{cam, s.sky, rs, shading, win};
+  const bool lights = samples_lights(s, rs);
+  const scene_shading shading(s, lights);
+  const pixel_inputs in{cam, s.sky, rs, shading, win, pixel_strata(rs, lights)};
   framebuffer fb(win.width, win.height);
   const std::size_t width = std::size_t(win.width), pixels = width * std::size_t(win.height);
   std::atomic<std::size_t> pixels_done{0};
   std::atomic<std::uint64_t> rays{0};
+  std::atomic<std::uint64_t> dropped{0};
   const std::thread::id caller = std::this_thread::get_id();
 
   // Chunks of a few hundred pixels in reading order: enough work to amortize a task, small
@@ -102,11 +122,13 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
         const counting_world counted(*world);
         // Counting costs a virtual call per ray: only when someone asked for it.
         const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
+        std::uint64_t chunk_dropped = 0;
         for (std::size_t p = begin; p < end; ++p) {
           const int row = int(p / width), column = int(p % width);
-          fb.at(column, row) = pixel_color(in, target, win.x + column, win.y + row);
+          fb.at(column, row) = pixel_color(in, target, win.x + column, win.y + row, chunk_dropped);
         }
         rays += counted.rays;
+        dropped += chunk_dropped;
         const std::size_t done = pixels_done.fetch_add(end - begin) + (end - begin);
         // The progress bar is drawn by the calling thread only, which works on chunks too.
         if (progress && std::this_thread::get_id() == caller) progress(int(done / width));
@@ -116,6 +138,7 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
                            std::to_string(win.height) + " rows");
   if (stats) {
     stats->rays = rays.load();
+    stats->dropped_samples = dropped.load();
     stats->build_seconds = build_seconds;
   }
   return fb;

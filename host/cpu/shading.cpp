@@ -4,12 +4,13 @@
 
 namespace rtvk {
 
-scene_shading::scene_shading(const scene& s)
+scene_shading::scene_shading(const scene& s, bool sample_lights)
     : materials(scene_materials(s)),
       textures(pack_textures(s.textures)),
       perlin(make_perlin(s.noise_seed)) {
   for (std::size_t k = 0; k < s.media.size(); ++k)
     media.push_back(geometry_of(s.media[k], std::uint32_t(k)));
+  if (sample_lights) lights = scene_lights(s);
 }
 
 // The book's recursion as a loop over the shared steps (ray_color.h); shaders/shading.glsl runs
@@ -19,6 +20,7 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
                 const sky& background, int max_depth, const random_stream& rnd) {
   const double infinity = std::numeric_limits<double>::infinity();
   const texture_tables tables = shading.tables();
+  const light_table lights = shading.light_list();
   path_state p = start_path(r_in, rnd);
   while (!path_ends_unlit(p, uint(max_depth))) {
     hit_record rec{};
@@ -33,7 +35,9 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
     const material& m = shading.materials[rec.material];
     const color albedo = material_color(tables, m.albedo, uint(m.texture), rec);
     color c;
-    if (path_hit(p, rec, uint(m.type), albedo, m.fuzz, m.ir, c)) return c;
+    if (path_hit(lights, p, rec, uint(m.type), m.one_sided ? RTVK_MATERIAL_ONE_SIDED : 0u, albedo,
+                 m.fuzz, m.ir, c))
+      return c;
   }
   return color(0, 0, 0);  // out of bounces, or no ray: no light gathered
 }

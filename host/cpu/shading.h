@@ -3,6 +3,7 @@
 
 #include "hittable.h"
 #include "material.h"
+#include "light_sources.h"
 #include "medium.h"
 #include "random.h"
 #include "ray_color.h"
@@ -11,18 +12,21 @@
 
 namespace rtvk {
 
-// What shading reads besides the hit: the materials, the textures' tables and the media, as the
-// shared kernels take them (texture.h, medium.h).
+// What shading reads besides the hit: the materials, the textures' tables, the media and the
+// lights to sample, as the shared kernels take them (texture.h, medium.h, pdf.h). The lights
+// only when `sample_lights` (samples_lights: the third book's mixture), else none: plain.
 struct scene_shading {
-  explicit scene_shading(const scene& s);
+  explicit scene_shading(const scene& s, bool sample_lights = false);
   std::vector<material> materials;     // by index
   packed_textures textures;            // records and texels
   perlin_tables perlin;                // the noise's lattice (the scene's noise seed)
   std::vector<medium_geometry> media;  // in scene order
+  std::vector<light_record> lights;    // what scattering aims at; empty: plain sampling
   texture_tables tables() const {
     return {textures.records.data(), textures.texels.data(), perlin.vectors.data(),
             perlin.perm.data()};
   }
+  light_table light_list() const { return {lights.data(), uint(lights.size())}; }
 };
 
 // The color seen along r: bounces through the materials up to max_depth scatter events, and

@@ -295,6 +295,37 @@ scene cornell_box_scene() {
   return s;
 }
 
+// "The Rest of Your Life", its final scene (main.cc of the book's source): the Cornell box with
+// its tall box and a glass sphere, the lamp lit from its front only (the third book's
+// diffuse_light), and the glass sphere aimed at by lights sampling beside the lamp (the book's
+// `lights` list). 100 samples, as the book's main.
+scene rest_of_life_final_scene() {
+  scene s;
+  s.name = "rest-of-life-final";
+  next_week_camera(s, point3(278, 278, -800), point3(278, 278, 0), 40);
+  s.render = book_render(600, 1.0, 100);
+  s.sky.horizon = s.sky.zenith = color(0, 0, 0);
+  const int red = add_material(s, "red", lambertian(color(.65, .05, .05)));
+  const int white = add_material(s, "white", lambertian(color(.73, .73, .73)));
+  const int green = add_material(s, "green", lambertian(color(.12, .45, .15)));
+  material front_lamp = lamp(color(15, 15, 15));
+  front_lamp.one_sided = true;
+  const int light = add_material(s, "light", front_lamp);
+  const int glass = add_material(s, "glass", dielectric(1.5));
+  s.quads.push_back({point3(555, 0, 0), vec3(0, 0, 555), vec3(0, 555, 0), green});
+  s.quads.push_back({point3(0, 0, 555), vec3(0, 0, -555), vec3(0, 555, 0), red});
+  s.quads.push_back({point3(0, 555, 0), vec3(555, 0, 0), vec3(0, 0, 555), white});
+  s.quads.push_back({point3(0, 0, 555), vec3(555, 0, 0), vec3(0, 0, -555), white});
+  s.quads.push_back({point3(555, 0, 555), vec3(-555, 0, 0), vec3(0, 555, 0), white});
+  s.quads.push_back({point3(213, 554, 227), vec3(130, 0, 0), vec3(0, 0, 105), light});
+  add_box(s, point3(0, 0, 0), point3(165, 330, 165), white,
+          turned_and_moved(15, vec3(265, 0, 295)));
+  sphere ball(point3(190, 90, 190), 90, glass);
+  ball.sampled = true;
+  s.spheres.push_back(ball);
+  return s;
+}
+
 // Chapter 9: the boxes as smoke (black and white fog of density 0.01) under a larger lamp.
 scene cornell_smoke_scene() {
   scene s;
@@ -427,7 +458,7 @@ scene spheres_scene(std::uint32_t n) {
 std::vector<std::string> builtin_scene_names() {
   return {"seed",        "materials",         "book-final",     "bouncing-spheres",
           "quads",       "checkered-spheres", "perlin-spheres", "simple-light",
-          "cornell-box", "cornell-smoke",     "next-week-final"};
+          "cornell-box", "cornell-smoke",     "next-week-final", "rest-of-life-final"};
 }
 
 scene builtin_scene(std::string_view name) {
@@ -442,6 +473,7 @@ scene builtin_scene(std::string_view name) {
   if (name == "cornell-box") return cornell_box_scene();
   if (name == "cornell-smoke") return cornell_smoke_scene();
   if (name == "next-week-final") return next_week_final_scene();
+  if (name == "rest-of-life-final") return rest_of_life_final_scene();
   if (name.rfind("spheres:", 0) == 0) {
     const std::string_view count = name.substr(8);
     std::uint32_t n = 0;

@@ -31,6 +31,7 @@ struct material {
   double ir = 1.5;        // dielectric: index of refraction
   int texture = -1;       // index into the scene's textures: the color at a hit is the texture's
                           // value there instead of albedo; -1: albedo everywhere
+  bool one_sided = false;  // diffuse_light: emits from its front side only (the third book's)
 };
 
 // What a kind is called in scene files and which of material's parameters it reads: the one

@@ -15,6 +15,7 @@ struct quad {
   vec3 u{};          // the edge from Q to the next corner, scene units
   vec3 v{};          // the other edge from Q, scene units; the front side is cross(u, v)
   int material = 0;  // index into the scene's materials
+  bool sampled = false;  // lights sampling aims at it though it emits nothing (as sphere's)
 
   // The book's precomputed plane (normal, D, w), in double.
   quad_geometry geometry() const { return make_quad(Q, u, v); }

@@ -3,6 +3,14 @@
 
 namespace rtvk {
 
+// How paths pick their directions at diffuse surfaces and in media (docs/sampling.md).
+enum class sampling_mode : std::uint8_t {
+  automatic,  // `lights` where the scene has lights to aim at, else `plain`
+  plain,      // the first two books': each material's own scattering
+  lights,     // the third book's: half toward the lights, weighted by the mixture's density,
+              // and stratified pixel samples
+};
+
 // How to render a scene: what a scene file's "render" object holds, and what the CLI overrides.
 struct render_settings {
   int width = 400;             // image width, pixels
@@ -12,6 +20,7 @@ struct render_settings {
   std::uint32_t seed = 0;      // random number seed: same seed, same image
   double gamma = 1;            // output encoding: 1 linear (the lesson), 2 the book's sqrt
   bool jitter = false;         // random sample positions inside each pixel (antialiasing)
+  sampling_mode sampling = sampling_mode::automatic;  // --sampling, "sampling"
 };
 
 // The part of a render that one run draws: a rectangle of the image and a range of each pixel's

@@ -13,6 +13,7 @@
 #include "errors.h"
 #include "format.h"
 #include "input_file.h"
+#include "light_sources.h"
 #include "mesh_file.h"
 #include "parse_values.h"
 
@@ -225,9 +226,18 @@ std::vector<named_camera> read_cameras(const scene_reader& r, const json& root) 
   return cams;
 }
 
+// An optional true or false field (default false).
+bool read_flag(const scene_reader& r, const json& j, const std::string& p, const char* key) {
+  if (!j.contains(key)) return false;
+  if (!j[key].is_boolean())
+    r.fail(p + "/" + key, "expected true or false, got " + r.type_of(j[key]));
+  return j[key].get<bool>();
+}
+
 render_settings read_render(const scene_reader& r, const json& j) {
   const std::string p = "/render";
-  r.only_fields(j, p, {"width", "aspect", "spp", "max_depth", "seed", "gamma", "jitter"});
+  r.only_fields(j, p,
+                {"width", "aspect", "spp", "max_depth", "seed", "gamma", "jitter", "sampling"});
   render_settings s;
   if (j.contains("width")) s.width = int(r.integer(j["width"], p + "/width", 1, max_image_side));
   if (j.contains("aspect")) {
@@ -249,6 +259,14 @@ render_settings read_render(const scene_reader& r, const json& j) {
     if (!j["jitter"].is_boolean())
       r.fail(p + "/jitter", "expected true or false, got " + r.type_of(j["jitter"]));
     s.jitter = j["jitter"].get<bool>();
+  }
+  if (j.contains("sampling")) {
+    const json& m = j["sampling"];
+    const std::string name = m.is_string() ? m.get<std::string>() : "";
+    if (name == "plain") s.sampling = sampling_mode::plain;
+    else if (name == "lights") s.sampling = sampling_mode::lights;
+    else if (name == "auto") s.sampling = sampling_mode::automatic;
+    else r.fail(p + "/sampling", "expected \"plain\", \"lights\" or \"auto\", got " + m.dump());
   }
   return s;
 }
@@ -369,6 +387,7 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
   if (kind->albedo) fields.insert(color_field);
   if (kind->fuzz) fields.insert("fuzz");
   if (kind->ir) fields.insert("ir");
+  if (lamp) fields.insert("one_sided");
   r.only_fields(j, p, fields);
   material m;
   m.type = kind->type;
@@ -376,6 +395,7 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
     read_color_or_texture(r, r.required(j, p, color_field), p + "/" + color_field, lamp, base, s,
                           m);
   if (kind->fuzz && j.contains("fuzz")) m.fuzz = r.number_in(j["fuzz"], p + "/fuzz", 0, 1);
+  m.one_sided = lamp && read_flag(r, j, p, "one_sided");
   if (kind->ir) {
     m.ir = r.number(r.required(j, p, "ir"), p + "/ir");
     if (m.ir <= 0)
@@ -490,8 +510,9 @@ void read_array(const scene_reader& r, const json& root, const std::string& at,
 void read_flat_objects(const scene_reader& r, const json& root, const std::string& at,
                        const std::map<std::string, int>& material_index, scene& s) {
   read_array(r, root, at, "quads", [&](const json& j, const std::string& p) {
-    r.only_fields(j, p, {"Q", "u", "v", "material", "transform"});
+    r.only_fields(j, p, {"Q", "u", "v", "material", "transform", "sample"});
     quad q;
+    q.sampled = read_flag(r, j, p, "sample");
     q.Q = r.vector3(r.required(j, p, "Q"), p + "/Q");
     q.u = r.vector3(r.required(j, p, "u"), p + "/u");
     q.v = r.vector3(r.required(j, p, "v"), p + "/v");
@@ -584,8 +605,9 @@ void read_meshes(const scene_reader& r, const json& root, const std::string& at,
 // `material_index` maps a material name to its index in the scene.
 sphere read_sphere(const scene_reader& r, const json& j, const std::string& p,
                    const std::map<std::string, int>& material_index) {
-  r.only_fields(j, p, {"center", "center1", "radius", "material", "transform"});
+  r.only_fields(j, p, {"center", "center1", "radius", "material", "transform", "sample"});
   sphere sp;
+  sp.sampled = read_flag(r, j, p, "sample");
   sp.center = r.vector3(r.required(j, p, "center"), p + "/center");
   // A moving sphere: at "center" at time 0 and "center1" at time 1, linear before and after.
   if (j.contains("center1")) sp.center1 = r.vector3(j["center1"], p + "/center1");
@@ -637,6 +659,14 @@ void read_groups(const scene_reader& r, const json& groups, const std::filesyste
       if (g.spheres[k].center1)
         r.fail(p + "/spheres/" + std::to_string(k) + "/center1",
                "a group's spheres cannot move (instances place still objects)");
+    for (std::size_t k = 0; k < g.spheres.size(); ++k)
+      if (g.spheres[k].sampled)
+        r.fail(p + "/spheres/" + std::to_string(k) + "/sample",
+               "lights sampling aims only at the scene's own objects, not a group's");
+    for (std::size_t k = 0; k < g.quads.size(); ++k)
+      if (g.quads[k].sampled)
+        r.fail(p + "/quads/" + std::to_string(k) + "/sample",
+               "lights sampling aims only at the scene's own objects, not a group's");
     object_group group{name, std::move(g.spheres), std::move(g.quads), std::move(g.triangles),
                        std::move(g.shading)};
     if (empty(group)) r.fail(p, "the group has no object (nothing an instance could place)");
@@ -882,16 +912,20 @@ void write_objects(json& root, const scene& s, const std::vector<sphere>& sphere
     if (sp.center1) j["center1"] = vec_json(*sp.center1);
     j["radius"] = sp.radius;
     j["material"] = material_name(sp.material);
+    if (sp.sampled) j["sample"] = true;
     spheres.push_back(j);
   }
   root["spheres"] = spheres;
   if (!quad_list.empty()) {
     json quads = json::array();
-    for (const quad& q : quad_list)
-      quads.push_back({{"Q", vec_json(q.Q)},
-                       {"u", vec_json(q.u)},
-                       {"v", vec_json(q.v)},
-                       {"material", material_name(q.material)}});
+    for (const quad& q : quad_list) {
+      json j = {{"Q", vec_json(q.Q)},
+                {"u", vec_json(q.u)},
+                {"v", vec_json(q.v)},
+                {"material", material_name(q.material)}};
+      if (q.sampled) j["sample"] = true;
+      quads.push_back(j);
+    }
     root["quads"] = quads;
   }
   if (!triangle_list.empty()) {
@@ -930,6 +964,7 @@ std::string dump_scene_json(const scene& s) {
   root["render"] = {{"width", r.width},         {"aspect", r.aspect}, {"spp", r.spp},
                     {"max_depth", r.max_depth}, {"seed", r.seed},     {"gamma", r.gamma},
                     {"jitter", r.jitter}};
+  if (r.sampling != sampling_mode::automatic) root["render"]["sampling"] = sampling_name(r.sampling);
   if (s.sky.horizon == s.sky.zenith)
     root["background"] = vec_json(s.sky.horizon);
   else
@@ -945,6 +980,7 @@ std::string dump_scene_json(const scene& s) {
           m.texture >= 0 ? texture_json(s.textures[std::size_t(m.texture)]) : vec_json(m.albedo);
     if (kind.fuzz) j["fuzz"] = m.fuzz;
     if (kind.ir) j["ir"] = m.ir;
+    if (m.one_sided) j["one_sided"] = true;
     mats[name] = j;
   }
   root["materials"] = mats;

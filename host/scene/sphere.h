@@ -18,6 +18,8 @@ struct sphere {
   double radius = 0.0;            // scene units, > 0
   int material = 0;               // index into the scene's materials
   std::optional<point3> center1;  // at time 1, scene units, for a sphere that moves
+  bool sampled = false;           // lights sampling aims at it though it emits nothing (the
+                                  // third book's glass sphere); a lamp is aimed at anyway
 
   // Scene units per second: center1 - center, or zero.
   vec3 velocity() const { return center1 ? *center1 - center : vec3(0); }

@@ -86,11 +86,22 @@ inline precise real pixel_coordinate(real x, uint n) {
 // bottom as the lesson does: through a random spot of the pixel when `jitter`, else its corner,
 // and through a random point of the lens when `lens` and the camera has an aperture, at an
 // instant drawn uniformly while the shutter is open. `s` is the sample's stream
-// (pixel_sample_stream).
+// (pixel_sample_stream). Stratified (the third book's final chapter) when strata > 1: the pixel
+// is cut into strata x strata cells, and sample k < strata^2 jitters inside cell k (row by row),
+// so the first strata^2 samples cover the pixel evenly. A sample's spot depends on its index
+// alone: sample ranges drawn apart still merge into the whole render.
+inline precise real2 pixel_spot(random_stream s, uint strata, uint sample_index) {
+  precise real2 spot = real2(real(rnd(s, dim_jitter_u)), real(rnd(s, dim_jitter_v)));
+  if (strata <= 1u || sample_index >= strata * strata) return spot;
+  precise real2 cell = real2(real(sample_index % strata), real(sample_index / strata));
+  return (cell + spot) / real(strata);
+}
+
 inline ray sample_ray(camera_frame cam, uint width, uint height, uint i, uint j, random_stream s,
-                      bool jitter, bool lens) {
-  precise real x = jitter ? real(i) + real(rnd(s, dim_jitter_u)) : real(i);
-  precise real y = jitter ? real(j) + real(rnd(s, dim_jitter_v)) : real(j);
+                      bool jitter, bool lens, uint strata, uint sample_index) {
+  precise real2 spot = jitter ? pixel_spot(s, strata, sample_index) : real2(0.0);
+  precise real x = real(i) + spot.x;
+  precise real y = real(j) + spot.y;
   precise real u = pixel_coordinate(x, width);
   precise real v = pixel_coordinate(y, height);
   precise real2 on_lens =

@@ -8,14 +8,20 @@
 
 RTVK_KERNELS_BEGIN
 
-// Whether c is past the limit (+infinity included), by the bits: for floats that are not NaN
-// and not negative the bit patterns order like the values, and a driver may assume no float is
-// NaN or infinite and fold a comparison with one. Such a sample fails the render (sample_sum.h).
+// Whether c is neither NaN nor infinite, by the bits (a driver may assume no float is NaN or
+// infinite and fold a test of one). A sample that is not is dropped: it adds black, and the
+// render counts it (render_status::dropped_samples).
+inline bool sample_is_finite(float c) {
+  return (floatBitsToUint(c) & 0x7f800000u) != 0x7f800000u;  // the exponent is not all ones
+}
+
+// Whether finite c is past the limit, by the bits: for floats that are not NaN and not negative
+// the bit patterns order like the values, and a driver may fold a comparison with NaN or
+// infinity. Such a sample fails the render (sample_sum.h); infinities are dropped instead.
 inline bool sum_overflows(float c, float limit) {
   uint bits = floatBitsToUint(c);
-  bool not_a_number = (bits & 0x7fffffffu) > 0x7f800000u;
   bool negative = (bits & 0x80000000u) != 0u;
-  return !not_a_number && !negative && bits > floatBitsToUint(limit);
+  return sample_is_finite(c) && !negative && bits > floatBitsToUint(limit);
 }
 
 // floor(c * scale) as (low word, high word, top word) of a 96-bit integer, scale = 2^F: the
@@ -25,9 +31,8 @@ inline bool sum_overflows(float c, float limit) {
 // the sum).
 inline uvec3 to_fixed(float c, float limit, float scale) {
   uint bits = floatBitsToUint(c);
-  bool not_a_number = (bits & 0x7fffffffu) > 0x7f800000u;
   bool negative = (bits & 0x80000000u) != 0u;
-  bool zero = not_a_number || negative || sum_overflows(c, limit);
+  bool zero = !sample_is_finite(c) || negative || sum_overflows(c, limit);
   precise float x = (zero ? 0.0f : c) * scale;
   precise float t = floor(x * (1.0f / 18446744073709551616.0f));
   precise float r = x - t * 18446744073709551616.0f;

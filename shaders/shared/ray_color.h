@@ -5,6 +5,7 @@
 #ifndef RTVK_RAY_COLOR_H
 #define RTVK_RAY_COLOR_H
 #include "kernel_lang.h"
+#include "pdf.h"
 #include "random.h"
 #include "ray.h"
 #include "scatter.h"
@@ -55,11 +56,13 @@ inline precise real3 path_missed(path_state p, real3 horizon, real3 zenith) {
 }
 
 // p.r hit `rec`, whose material is of `type` with these parameters (scatter's; albedo is the
-// material's color at the hit, its texture's value there when it has one). Either ends the path,
-// its color in `c` (the lesson's normal shading; a flat material's albedo, unlit; a lamp's
-// emitted color; black when absorbed), or scatters it for the next trip (false).
-inline bool path_hit(precise INOUT(path_state) p, hit_record rec, uint type, real3 albedo,
-                     real fuzz, real ir, precise OUT(real3) c) {
+// material's color at the hit, its texture's value there when it has one; flags
+// RTVK_MATERIAL_*). Either ends the path, its color in `c` (the lesson's normal shading; a flat
+// material's albedo, unlit; a lamp's emitted color; black when absorbed), or scatters it for the
+// next trip (false). With lights to sample (LIGHT_COUNT > 0), lambertian and isotropic scatter
+// by the mixture of their density and the lights' (pdf.h); without, as the first two books do.
+inline bool path_hit(LIGHTS_PARAM precise INOUT(path_state) p, hit_record rec, uint type,
+                     uint flags, real3 albedo, real fuzz, real ir, precise OUT(real3) c) {
   c = real3(0.0);
   if (type == RTVK_MATERIAL_NORMAL) {
     c = p.throughput * (real(0.5) * (rec.normal + real3(1.0, 1.0, 1.0)));
@@ -67,14 +70,20 @@ inline bool path_hit(precise INOUT(path_state) p, hit_record rec, uint type, rea
   }
   // The book's diffuse_light emits on both sides and reflects nothing: its emitted color, seen
   // through the path's attenuations, is all the path gathers (exactly the color, seen directly).
+  // The third book's lamps emit from their front only: seen from behind, black.
   if (type == RTVK_MATERIAL_FLAT || type == RTVK_MATERIAL_DIFFUSE_LIGHT) {
-    c = p.throughput * albedo;
+    bool dark = (flags & RTVK_MATERIAL_ONE_SIDED) != 0u && !rec.front_face;
+    c = dark ? real3(0.0) : p.throughput * albedo;
     return true;
   }
   // The scattered ray goes straight into p.r (scatter takes the incoming ray by value): no copy
   // through a local, which on the CPU stalled on store forwarding once rays carried a time.
   precise real3 attenuation;
-  if (!scatter(type, albedo, fuzz, ir, p.r, rec, at_bounce(p.s, p.depth + 1u), attenuation, p.r))
+  random_stream s = at_bounce(p.s, p.depth + 1u);
+  bool mixed = LIGHT_COUNT > 0u &&
+               (type == RTVK_MATERIAL_LAMBERTIAN || type == RTVK_MATERIAL_ISOTROPIC);
+  if (mixed ? !scatter_mixture(LIGHTS type, albedo, p.r, rec, s, attenuation, p.r)
+            : !scatter(type, albedo, fuzz, ir, p.r, rec, s, attenuation, p.r))
     return true;
   p.throughput *= attenuation;
   ++p.depth;

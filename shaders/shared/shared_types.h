@@ -39,6 +39,7 @@ using uvec2 = glm::uvec2;
 #define RTVK_BINDING_TEXELS 18      // storage buffer: uint[], image textures' RGBA8 texels
 #define RTVK_BINDING_PERLIN 19      // storage buffer: gpu_perlin, the noise textures' tables
 #define RTVK_BINDING_MEDIA 20       // storage buffer: gpu_medium[], in scene order
+#define RTVK_BINDING_LIGHTS 21      // storage buffer: gpu_light[], what lights sampling aims at
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
 
@@ -57,7 +58,8 @@ using uvec2 = glm::uvec2;
                                // texture reads them)
 #define RTVK_SPEC_TEXTURES 11  // bool: some material has a texture (render.comp)
 #define RTVK_SPEC_MEDIA 12     // bool: the scene has media (render.comp)
-#define RTVK_SPEC_COUNT 13     // constant ids in use
+#define RTVK_SPEC_LIGHTS 13    // bool: scattering samples toward the lights (render.comp)
+#define RTVK_SPEC_COUNT 14     // constant ids in use
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 112 camera
 // blocks of 144 bytes are 15.75 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
@@ -80,6 +82,14 @@ using uvec2 = glm::uvec2;
 #define RTVK_MATERIAL_FLAT 4
 #define RTVK_MATERIAL_DIFFUSE_LIGHT 5  // emits its color (any strength); no bounce
 #define RTVK_MATERIAL_ISOTROPIC 6      // scatters every way alike: a medium's phase function
+// gpu_material::flags.
+#define RTVK_MATERIAL_ONE_SIDED 1u  // diffuse_light: emits from its front side only (the third book's)
+
+// What a light is (gpu_light::kind): a shape lights sampling aims directions at.
+#define RTVK_LIGHT_SPHERE 0    // by the cone it fills, seen from the point (the book's)
+#define RTVK_LIGHT_QUAD 1      // by area
+#define RTVK_LIGHT_TRIANGLE 2  // by area
+#define RTVK_MAX_LIGHTS 256    // lights one scene may sample: each scattering evaluates them all
 
 // What a material's color is (gpu_material::texture): its albedo, or one of these.
 #define RTVK_NO_TEXTURE 0xffffffffu
@@ -200,7 +210,7 @@ struct gpu_material {
   float fuzz;    // metal: blur radius
   float ir;      // dielectric: index of refraction
   uint texture;  // its color's texture (gpu_texture index), or RTVK_NO_TEXTURE: albedo
-  uint pad1;     // unused
+  uint flags;    // RTVK_MATERIAL_ONE_SIDED or 0
 };
 
 // std430 array element: one texture, 48 bytes (shaders/shared/texture.h reads it).
@@ -220,6 +230,19 @@ struct gpu_texture {
 struct gpu_perlin {
   vec4 vectors[RTVK_PERLIN_POINTS];   // xyz: random unit vectors at the lattice points
   uint perm[3 * RTVK_PERLIN_POINTS];  // permutations of 0..255 for x, y and z, one after another
+};
+
+// std430 array element: a shape lights sampling aims at, 64 bytes (shaders/shared/pdf.h). The
+// geometry is the scene's object's, copied: a sphere's center moves with its velocity.
+struct gpu_light {
+  vec3 a;        // sphere: center at time 0; quad: the corner Q; triangle: vertex 0 (scene units)
+  uint kind;     // RTVK_LIGHT_*
+  vec3 u;        // sphere: velocity (units per second); quad: edge u; triangle: edge to vertex 1
+  float radius;  // sphere: radius (scene units)
+  vec3 v;        // quad: edge v; triangle: edge to vertex 2
+  float area;    // quad, triangle: area (square scene units)
+  vec3 normal;   // quad, triangle: unit normal, cross(u, v) normalized
+  uint pad0;     // unused
 };
 
 // std430 array element: a constant-density medium (the book's constant_medium), 96 bytes.
@@ -313,6 +336,9 @@ struct render_push {
   uint triangle_count;  // triangles in the storage buffer
   uint instance_count;  // instances in their storage buffer
   uint medium_count;    // media in their storage buffer
+  uint light_count;     // lights in their storage buffer; 0: plain sampling
+  uint strata;          // the pixel is cut into strata x strata cells, sample k < strata^2 lands in
+                        // cell k (stratified sampling); 0 or 1: not stratified
 };
 
 // std430 array element: one pixel's exact running sums, 48 bytes. Each channel is a 96-bit
@@ -343,6 +369,7 @@ struct render_status {
   uint unfinished_pixels;   // invocations that stopped short of sample_target (counted per pass)
   uint starved_budget;      // the largest loop_budget under which some invocation starved
   uint overflowed_samples;  // samples with a channel past sample_limit (the render fails)
+  uint dropped_samples;     // samples with a NaN or infinite channel: they add black
   uint rays_low;            // rays traced for the samples added (when counted), low word
   uint rays_high;           // and high word
 };
@@ -438,6 +465,26 @@ struct kernel_probe_entry {
   uint pad0;           // unused
   uint pad1;           // unused
 };
+// std430 array element for light_probe.comp (light_probe.h): pdf.h's densities toward one light
+// and the cosine density, at a point the host picks, with the host's random numbers.
+struct light_probe_entry {
+  gpu_light light;        // in: the light
+  vec3 origin;            // in: where the directions start, scene units
+  float time;             // in: the ray's instant (a sphere light moves)
+  vec3 direction;         // in: a direction whose densities are asked
+  float r1;               // in: the first random number of the samplers
+  vec3 normal;            // in: the cosine density's unit normal
+  float r2;               // in: the second
+  vec3 sampled;           // out: light_random(light, origin, time, r1, r2)
+  float pdf;              // out: light_pdf(light, origin, direction, time)
+  vec3 cosine_sampled;    // out: cosine_random(normal, r1, r2)
+  float cosine;           // out: cosine_pdf(normal, direction)
+  float sampled_pdf;      // out: light_pdf of `sampled`
+  uint pad0;              // unused
+  uint pad1;              // unused
+  uint pad2;              // unused
+};
+
 // The kernel probe's to_fixed scale and limit: a render's, F = 42 (sample_sum.h).
 #define RTVK_PROBE_SUM_SCALE 4398046511104.0  // 2^42
 #define RTVK_PROBE_SAMPLE_LIMIT 8589934592.0  // 2^33
@@ -471,6 +518,7 @@ static_assert(offsetof(gpu_material, type) == 12);
 static_assert(offsetof(gpu_material, fuzz) == 16);
 static_assert(offsetof(gpu_material, ir) == 20);
 static_assert(offsetof(gpu_material, texture) == 24);
+static_assert(offsetof(gpu_material, flags) == 28);
 static_assert(sizeof(gpu_material) == 32);
 static_assert(offsetof(gpu_texture, type) == 12);
 static_assert(offsetof(gpu_texture, odd) == 16);
@@ -489,6 +537,13 @@ static_assert(offsetof(gpu_medium, neg_inv_density) == 76);
 static_assert(offsetof(gpu_medium, material) == 80);
 static_assert(offsetof(gpu_medium, index) == 84);
 static_assert(sizeof(gpu_medium) == 96);
+static_assert(offsetof(gpu_light, kind) == 12);
+static_assert(offsetof(gpu_light, u) == 16);
+static_assert(offsetof(gpu_light, radius) == 28);
+static_assert(offsetof(gpu_light, v) == 32);
+static_assert(offsetof(gpu_light, area) == 44);
+static_assert(offsetof(gpu_light, normal) == 48);
+static_assert(sizeof(gpu_light) == 64);
 static_assert(offsetof(render_push, sky_horizon) == 0);
 static_assert(offsetof(render_push, sphere_count) == 12);
 static_assert(offsetof(render_push, sky_zenith) == 16);
@@ -508,7 +563,9 @@ static_assert(offsetof(render_push, quad_count) == 76);
 static_assert(offsetof(render_push, triangle_count) == 80);
 static_assert(offsetof(render_push, instance_count) == 84);
 static_assert(offsetof(render_push, medium_count) == 88);
-static_assert(sizeof(render_push) == 92 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, light_count) == 92);
+static_assert(offsetof(render_push, strata) == 96);
+static_assert(sizeof(render_push) == 100 && sizeof(render_push) <= 128);
 static_assert(offsetof(gpu_quad, material) == 12);
 static_assert(offsetof(gpu_quad, u) == 16);
 static_assert(offsetof(gpu_quad, scene_index) == 28);
@@ -557,8 +614,10 @@ static_assert(offsetof(bvh_wide_node, hi_x) == 48);
 static_assert(offsetof(bvh_wide_node, child) == 96);
 static_assert(offsetof(bvh_wide_node, lanes) == 112);
 static_assert(sizeof(bvh_wide_node) == 128);
-static_assert(offsetof(render_status, rays_high) == 20);
-static_assert(sizeof(render_status) == 24);
+static_assert(offsetof(render_status, dropped_samples) == 16);
+static_assert(offsetof(render_status, rays_low) == 20);
+static_assert(offsetof(render_status, rays_high) == 24);
+static_assert(sizeof(render_status) == 28);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
 static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);
 static_assert(sizeof(probe_io) == 48 * RTVK_PROBE_POINTS);
@@ -604,6 +663,18 @@ static_assert(offsetof(kernel_probe_entry, ball) == 144);
 static_assert(offsetof(kernel_probe_entry, fixed_top) == 160);
 static_assert(offsetof(kernel_probe_entry, overflows) == 164);
 static_assert(sizeof(kernel_probe_entry) == 176);
+static_assert(offsetof(light_probe_entry, origin) == 64);
+static_assert(offsetof(light_probe_entry, time) == 76);
+static_assert(offsetof(light_probe_entry, direction) == 80);
+static_assert(offsetof(light_probe_entry, r1) == 92);
+static_assert(offsetof(light_probe_entry, normal) == 96);
+static_assert(offsetof(light_probe_entry, r2) == 108);
+static_assert(offsetof(light_probe_entry, sampled) == 112);
+static_assert(offsetof(light_probe_entry, pdf) == 124);
+static_assert(offsetof(light_probe_entry, cosine_sampled) == 128);
+static_assert(offsetof(light_probe_entry, cosine) == 140);
+static_assert(offsetof(light_probe_entry, sampled_pdf) == 144);
+static_assert(sizeof(light_probe_entry) == 160);
 static_assert(offsetof(pixel_sum, r_top) == 32);
 static_assert(sizeof(pixel_sum) == 48);
 }  // namespace rtvk::gpu

@@ -8,6 +8,7 @@
 #include "camera_rays.h"
 #include "hit_sphere.h"
 #include "kernel_probe.h"
+#include "light_probe.h"
 #include "random.h"
 
 namespace rtvk::f32 {
@@ -47,6 +48,10 @@ glm::vec3 scatter_origin(glm::vec3 center, float radius, ray_f r, float t, glm::
 
 void run_kernel_probe(gpu::kernel_probe_entry& e) {
   k::run_kernel_probe(e);
+}
+
+void run_light_probe(gpu::light_probe_entry& e) {
+  k::run_light_probe(e);
 }
 
 }  // namespace rtvk::f32

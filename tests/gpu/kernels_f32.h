@@ -32,4 +32,7 @@ glm::vec3 scatter_origin(glm::vec3 center, float radius, ray_f r, float t, glm::
 // run_kernel_probe (shaders/shared/kernel_probe.h) in float: what kernel_probe.comp computes.
 void run_kernel_probe(gpu::kernel_probe_entry& e);
 
+// run_light_probe (shaders/shared/light_probe.h) in float: what light_probe.comp computes.
+void run_light_probe(gpu::light_probe_entry& e);
+
 }  // namespace rtvk::f32

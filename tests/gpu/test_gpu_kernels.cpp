@@ -271,8 +271,9 @@ TEST_F(GpuKernels, ScatterSkyAndSamplersAreTheFloatCompilation) {
 // A sample's channel as the device adds it to the exact sums (to_fixed and sum_overflows,
 // fixed_sum.h, the code render.comp runs), on the values a render rarely makes: NaN (either
 // sign), infinities, negatives, -0, subnormals, the limit and past it, and a thousand values from
-// 1e-8 to 1e10 (one to three words). NaN and negatives add 0 and do not overflow; +infinity and
-// anything past the limit overflow (the render fails) and add 0; the rest add floor(c * 2^42)
+// 1e-8 to 1e10 (one to three words). NaN, infinities and negatives add 0 and do not overflow
+// (render.comp drops and counts the NaN and infinite ones); anything finite past the limit
+// overflows (the render fails) and adds 0; the rest add floor(c * 2^42)
 // exactly, as the host's integer arithmetic (sample_sum.h) says. Guards are bit tests, not
 // comparisons a driver may fold when it assumes no NaN.
 TEST_F(GpuKernels, SamplesThatAreNotNumbersOrNotFiniteAddWhatTheRuleSays) {
@@ -317,8 +318,8 @@ TEST_F(GpuKernels, SamplesThatAreNotNumbersOrNotFiniteAddWhatTheRuleSays) {
   int overflowing = 0, three_words = 0;
   for (std::size_t i = 0; i < out.size(); ++i) {
     const float v = values[i];
-    const bool over = !std::isnan(v) && v > limit;
-    const exact_sum want = std::isnan(v) || std::signbit(v) || over
+    const bool over = std::isfinite(v) && v > limit;
+    const exact_sum want = !std::isfinite(v) || std::signbit(v) || over
                                ? 0
                                : exact_sum(std::floor(std::ldexp(double(v), 42)));
     overflowing += over;

@@ -17,6 +17,7 @@
 #include "gpu_flags.h"
 #include "interrupt.h"
 #include "pipeline_cache.h"
+#include "light_sources.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "render_memory.h"
@@ -43,6 +44,8 @@ struct bench_record {
   std::string scene, backend, device;
   int threads = 0, width = 0, height = 0, spp = 0, depth = 0;
   std::uint64_t rays = 0;
+  std::uint64_t dropped = 0;  // samples with a NaN or infinite channel (added black)
+  std::string sampling;       // plain or lights
   double seconds = 0;         // the whole render, BVH build included (CPU; the GPU builds it once)
   double build_seconds = 0;   // of which building the BVH
   double setup_seconds = -1;  // GPU: setting up the engine (limits, BVH, uploads), once a run
@@ -67,10 +70,14 @@ void print(const bench_record& r) {
                   r.gpu_seconds, r.setup_seconds, r.first_sample_seconds);
   else
     std::snprintf(setup, sizeof setup, "BVH build %.3f s", r.build_seconds);
-  std::printf("%-4s %s %dx%d, %d spp, depth %d: %.1f M rays in %.3f s (%s) = %.2f Mrays/s (%s%s)\n",
+  std::printf("%-4s %s %dx%d, %d spp, depth %d%s: %.1f M rays in %.3f s (%s) = %.2f Mrays/s (%s%s)\n",
               r.backend.c_str(), r.scene.c_str(), r.width, r.height, r.spp, r.depth,
+              r.sampling == "lights" ? ", lights sampling" : "",
               double(r.rays) / 1e6, r.seconds, setup, r.mrays_per_s(), r.device.c_str(),
               r.backend == "cpu" ? (", " + std::to_string(r.threads) + " threads").c_str() : "");
+  if (r.dropped > 0)
+    std::printf("     %llu samples were NaN or infinite and added black\n",
+                static_cast<unsigned long long>(r.dropped));
   std::fflush(stdout);
 }
 
@@ -86,6 +93,7 @@ void measure(int repeat, const bench_record& base, Render render, std::vector<be
     bench_record r = base;
     r.seconds = seconds_since(start);
     r.rays = stats.rays;
+    r.dropped = stats.dropped_samples;
     if (base.setup_seconds < 0) r.build_seconds = stats.build_seconds;  // the GPU builds it once
     if (base.gpu_seconds >= 0) r.gpu_seconds = stats.gpu_seconds;
     print(r);
@@ -119,6 +127,7 @@ bench_record record_for(const scene& s, const camera& cam) {
   base.height = cam.image_height();
   base.spp = s.render.spp;
   base.depth = s.render.max_depth;
+  base.sampling = samples_lights(s, s.render) ? "lights" : "plain";
   return base;
 }
 
@@ -183,6 +192,8 @@ void write_json(const std::string& path, const std::vector<bench_record>& record
                    {"spp", r.spp},
                    {"depth", r.depth},
                    {"rays", r.rays},
+                   {"sampling", r.sampling},
+                   {"dropped_samples", r.dropped},
                    {"seconds", r.seconds},
                    {"build_seconds", r.build_seconds},
                    {"setup_seconds", r.setup_seconds >= 0 ? nlohmann::json(r.setup_seconds)

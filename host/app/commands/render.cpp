@@ -23,6 +23,7 @@
 #include "pipeline_cache.h"
 #include "progress.h"
 #include "quantize.h"
+#include "light_sources.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "render_jobs.h"
@@ -112,19 +113,24 @@ void write_job(const run_context& run, const render_job& job, const image_rgb8& 
   ++*run.written;
 }
 
+// The summary line; `dropped`: samples with a NaN or infinite channel, which added black.
 void summarize(const run_context& run, const render_job& job, const std::string& backend,
-               double seconds) {
+               double seconds, std::uint64_t dropped) {
   if (run.o.quiet) return;
-  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp, on %s in %.3f s -> %s\n", label(run, job).c_str(),
-               run.win.width, run.win.height, run.win.samples(), backend.c_str(), seconds,
-               job.output.c_str());
+  const bool lights = samples_lights(run.s, run.s.render);
+  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp%s, on %s in %.3f s -> %s\n",
+               label(run, job).c_str(), run.win.width, run.win.height, run.win.samples(),
+               lights ? " (lights sampling)" : "", backend.c_str(), seconds, job.output.c_str());
+  if (dropped > 0)
+    std::fprintf(stderr, "rtvk: %llu samples were NaN or infinite and added black\n",
+                 static_cast<unsigned long long>(dropped));
 }
 
-framebuffer draw_cpu(const run_context& run, const render_job& job) {
+framebuffer draw_cpu(const run_context& run, const render_job& job, render_stats* stats = nullptr) {
   progress_bar bar("rendering on the CPU", run.win.height, !run.o.quiet);
   return render_cpu_window(
       job.cam, run.s, run.s.render, run.win, [&](int rows) { bar.update(rows); },
-      engine_from(run.o));
+      engine_from(run.o), stats);
 }
 
 // Shared submissions for a group of views (cameras, frames) of the run's one engine: each view's
@@ -135,16 +141,16 @@ struct gpu_group {
 };
 
 gpu_group draw_gpu(const run_context& run, gpu::gpu_context& ctx, gpu::gpu_engine& engine,
-                   std::span<const render_job> jobs, bool encoded) {
+                   std::span<const render_job> jobs, bool encoded, render_stats& stats) {
   progress_bar bar("rendering on the GPU", run.win.samples(), !run.o.quiet);
   std::vector<camera> views;
   for (const render_job& j : jobs) views.push_back(j.cam);
   const auto progress = [&](int samples) { bar.update(samples); };
   gpu_group out;
   if (encoded)
-    out.encoded = engine.render_encoded(views, run.s.render, run.win, progress);
+    out.encoded = engine.render_encoded(views, run.s.render, run.win, progress, &stats);
   else
-    out.means = engine.render_views(views, run.s.render, run.win, progress);
+    out.means = engine.render_views(views, run.s.render, run.win, progress, &stats);
   bar.finish();
   ctx.check_validation("; no image written");
   return out;
@@ -201,7 +207,8 @@ int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
     const std::span<const render_job> part(jobs.data() + first,
                                            std::min(group, jobs.size() - first));
     const auto start = std::chrono::steady_clock::now();
-    const gpu_group drawn = draw_gpu(run, ctx, engine, part, encoded);
+    render_stats stats;
+    const gpu_group drawn = draw_gpu(run, ctx, engine, part, encoded, stats);
     const double seconds = seconds_since(start);
     for (std::size_t k = 0; k < part.size(); ++k) {
       if (encoded) {
@@ -213,7 +220,7 @@ int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
       summarize(run, part[k],
                 part.size() > 1 ? backend + ", " + std::to_string(part.size()) + " views together"
                                 : backend,
-                seconds);
+                seconds, k == 0 ? stats.dropped_samples : 0);
     }
   }
   return all_alike ? 0 : 1;
@@ -235,10 +242,11 @@ int render_all(const run_context& run, const std::vector<render_job>& jobs) {
   }
   for (const render_job& job : jobs) {
     const auto start = std::chrono::steady_clock::now();
-    const framebuffer fb = draw_cpu(run, job);
+    render_stats stats;
+    const framebuffer fb = draw_cpu(run, job, &stats);
     const double seconds = seconds_since(start);
     write_job(run, job, fb);
-    summarize(run, job, "cpu", seconds);
+    summarize(run, job, "cpu", seconds, stats.dropped_samples);
   }
   return 0;
 }

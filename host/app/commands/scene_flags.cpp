@@ -58,6 +58,12 @@ void scene_flags::add_to(CLI::App& cmd) {
                               "Turn the camera about the up axis through its look-at point, one "
                               "turn in this many seconds (the built-in orbit path)")
                    ->group(group);
+  sampling_opt_ = cmd.add_option("--sampling", sampling_,
+                                 "How diffuse surfaces and media pick directions: plain (the first "
+                                 "two books'), lights (the third book's: half toward the lights, "
+                                 "stratified pixels) or auto (default: lights where the scene has "
+                                 "lights)")
+                      ->group(group);
 }
 
 scene_overrides scene_flags::overrides() const {
@@ -75,7 +81,8 @@ scene_overrides scene_flags::overrides() const {
           .projection = if_given(projection_opt_, projection_),
           .fisheye_fov = if_given(fisheye_fov_opt_, fisheye_fov_),
           .shutter = if_given(shutter_opt_, shutter_),
-          .orbit = if_given(orbit_opt_, orbit_)};
+          .orbit = if_given(orbit_opt_, orbit_),
+          .sampling = if_given(sampling_opt_, sampling_)};
 }
 
 }  // namespace rtvk

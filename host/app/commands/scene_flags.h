@@ -28,6 +28,7 @@ class scene_flags {
   double vfov_ = 0, aperture_ = 0, focus_dist_ = 0, orbit_ = 0, fisheye_fov_ = 0;
   std::string projection_;
   std::string shutter_;
+  std::string sampling_;
   CLI::Option* width_opt_ = nullptr;
   CLI::Option* aspect_opt_ = nullptr;
   CLI::Option* spp_opt_ = nullptr;
@@ -43,6 +44,7 @@ class scene_flags {
   CLI::Option* projection_opt_ = nullptr;
   CLI::Option* fisheye_fov_opt_ = nullptr;
   CLI::Option* shutter_opt_ = nullptr;
+  CLI::Option* sampling_opt_ = nullptr;
 };
 
 }  // namespace rtvk

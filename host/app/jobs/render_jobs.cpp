@@ -9,6 +9,7 @@
 #include "errors.h"
 #include "format.h"
 #include "image_io.h"
+#include "light_sources.h"
 #include "partial_image.h"
 #include "render_cpu.h"
 
@@ -88,6 +89,15 @@ std::string scene_identity(const scene& s) {
   }
   for (const instance& i : s.instances)
     append_bytes(out, std::uint8_t(0x49), i.group, i.placement.linear, i.placement.offset);
+  // Lights sampling after a marker of its own, with what it aims at and the strata (pieces of a
+  // stratified render share --spp): plain renders keep their identity.
+  if (samples_lights(s, r)) {
+    append_bytes(out, std::uint8_t(0x4c), pixel_strata(r, true));
+    for (const light_record& l : scene_lights(s))
+      append_bytes(out, l.kind, l.a, l.u, l.v, l.radius);
+  }
+  for (const named_material& m : s.materials)
+    if (m.m.one_sided) append_bytes(out, std::uint8_t(0x31), m.name);
   return out;
 }
 

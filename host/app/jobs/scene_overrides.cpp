@@ -4,6 +4,7 @@
 
 #include "errors.h"
 #include "format.h"
+#include "light_sources.h"
 #include "parse_values.h"
 
 namespace rtvk {
@@ -25,6 +26,13 @@ void apply_render(const scene_overrides& o, render_settings& r) {
   if (o.spp) r.spp = *o.spp;
   if (o.depth) r.max_depth = *o.depth;
   if (o.seed) r.seed = std::uint32_t(*o.seed);
+  if (o.sampling) {
+    if (*o.sampling == "plain") r.sampling = sampling_mode::plain;
+    else if (*o.sampling == "lights") r.sampling = sampling_mode::lights;
+    else if (*o.sampling == "auto") r.sampling = sampling_mode::automatic;
+    else
+      throw usage_error("--sampling " + *o.sampling + ": expected plain, lights or auto");
+  }
 }
 
 void apply_pose(const scene_overrides& o, camera_pose& c) {
@@ -74,6 +82,11 @@ void apply_model(const scene_overrides& o, camera_pose& c) {
 
 void scene_overrides::apply(scene& s) const {
   apply_render(*this, s.render);
+  try {  // lights asked of a scene without (or with too many)
+    check_sampling(s, s.render, sampling ? "--sampling" : s.name + ": /render/sampling");
+  } catch (const std::invalid_argument& e) {
+    throw usage_error(e.what());
+  }
   const bool pose_flags = moves_pose(*this);
   for (named_camera& cam : s.cameras) {
     // A keyframed path has no one pose to override.

@@ -26,6 +26,7 @@ struct scene_overrides {
   std::optional<double> fisheye_fov;      // fisheye field of view, degrees
   std::optional<std::string> shutter;     // OPEN:CLOSE as typed, seconds after the frame's time
   std::optional<double> orbit;            // seconds per turn of the built-in orbit path
+  std::optional<std::string> sampling;    // plain, lights or auto (sampling_mode)
 
   // The scene's settings with the overrides applied, to every camera in s.cameras (narrow them
   // to the chosen ones first). Throws usage_error naming the flag.

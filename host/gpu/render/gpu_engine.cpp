@@ -105,7 +105,7 @@ sample_overflow_error overflow(const render_status& st, float limit) {
   return sample_overflow_error(
       std::to_string(st.overflowed_samples) + " samples had a channel above " +
       format_number(limit) +
-      " (or not finite), more than rtvk's exact sums hold; no image was written");
+      ", more than rtvk's exact sums hold; no image was written");
 }
 
 // The brightest channel value a path can bring back: the sky's (every attenuation is at most 1),
@@ -131,6 +131,13 @@ render_push make_push(const sky& background, const render_settings& rs, const re
   push.region_width = std::uint32_t(win.width);
   push.sum_scale = std::ldexp(1.0f, exponent);
   push.sample_limit = float(sum_sample_limit(exponent));
+  // Lights sampling (the scene's lights were checked against the mode where it was asked for).
+  const bool lights = samples_lights(objects.light_count(), rs.sampling);
+  if (lights && (objects.light_count() == 0 || objects.light_count() > RTVK_MAX_LIGHTS))
+    throw std::invalid_argument("--sampling lights: the scene has " +
+                                std::to_string(objects.light_count()) + " lights to aim at");
+  push.light_count = lights ? objects.light_count() : 0u;
+  push.strata = pixel_strata(rs, lights);
   return push;
 }
 
@@ -512,8 +519,10 @@ void gpu_engine::rebind_all() {
   if (tonemap_) tonemap_->rebind(tonemap_bindings(*targets_));
 }
 
-const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool count_rays) {
-  const std::uint32_t switches = (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u);
+const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool count_rays,
+                                                 bool lights) {
+  const std::uint32_t switches =
+      (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u) | (lights ? 8u : 0u);
   std::unique_ptr<compute_pipeline>& p = pipelines_[switches];
   if (!p) {
     std::uint32_t spec[RTVK_SPEC_COUNT] = {};  // by constant_id
@@ -524,6 +533,7 @@ const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool co
     spec[RTVK_SPEC_USE_BVH] = options_.engine.use_bvh;
     spec[RTVK_SPEC_COUNT_RAYS] = count_rays;
     scene_.specialize(spec);
+    spec[RTVK_SPEC_LIGHTS] = lights;
     p = std::make_unique<compute_pipeline>(ctx_, render_shader(),
                                            render_bindings(scene_, *targets_), sizeof(render_push),
                                            spec, cache_.get());
@@ -618,7 +628,8 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
   const bool lens =
       std::any_of(views.begin(), views.end(), [](const camera& c) { return c.lens_radius() > 0; });
   band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, pacer_},
-                      pipeline_for(rs.jitter, lens, count_rays), tonemap, push, win, kept);
+                      pipeline_for(rs.jitter, lens, count_rays, push.light_count > 0), tonemap,
+                      push, win, kept);
 
   // Bands as large as memory allows (layout) and the pacer's work allows now: a dispatch's work
   // is bounded by its pixels times its loop budget, so the first bands of a render on a device
@@ -645,6 +656,9 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
         throw;
       }
       b.view_rows_before += b.pixels();
+      if (stats)  // the band's status holds its samples' count
+        stats->dropped_samples +=
+            static_cast<const render_status*>(targets.status_readback.read())->dropped_samples;
       if (kept) {
         if (stats && count_rays) {
           const auto& st = *static_cast<const render_status*>(targets.status_readback.read());

@@ -60,6 +60,7 @@ gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   a.textures = to_gpu_textures(s, a.texels);
   a.perlin = {to_gpu_perlin(make_perlin(s.noise_seed))};
   a.media = to_gpu_media(s);
+  a.lights = to_gpu_lights(scene_lights(s));
   a.with_uv = scene_reads_uv(s);
   return a;
 }
@@ -76,6 +77,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       own_triangles_(a.own_triangles),
       instance_count_(std::uint32_t(a.instances.size())),
       medium_count_(std::uint32_t(a.media.size())),
+      light_count_(std::uint32_t(a.lights.size())),
       with_uv_(a.with_uv),
       any_textures_(
           std::any_of(a.materials.begin(), a.materials.end(),
@@ -94,7 +96,8 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
              {bytes_of(a.textures), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
              {bytes_of(a.texels), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
              {bytes_of(a.perlin), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.media), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
+             {bytes_of(a.media), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
+             {bytes_of(a.lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
       staging_(
           host_writes_device_memory(ctx)
               ? std::nullopt
@@ -118,6 +121,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
   write_array(to[10], a.texels);
   write_array(to[11], a.perlin);
   write_array(to[12], a.media);
+  write_array(to[13], a.lights);
 }
 
 std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const host_arrays& a) {
@@ -127,7 +131,7 @@ std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const hos
                      normals = bytes_of(a.normals), instances = bytes_of(a.instances),
                      uvs = bytes_of(a.uvs), textures = bytes_of(a.textures),
                      texels = bytes_of(a.texels), perlin = bytes_of(a.perlin),
-                     media = bytes_of(a.media);
+                     media = bytes_of(a.media), lights = bytes_of(a.lights);
   using u = memory_use;
   if (host_writes_device_memory(ctx))
     return {{"the sphere array", spheres, true, u::device_mapped, array_set},
@@ -142,7 +146,8 @@ std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const hos
             {"the texture array", textures, true, u::device_mapped, array_set},
             {"the image textures' texels", texels, true, u::device_mapped, array_set},
             {"the noise tables", perlin, true, u::device_mapped, array_set},
-            {"the media array", media, true, u::device_mapped, array_set}};
+            {"the media array", media, true, u::device_mapped, array_set},
+            {"the light array", lights, true, u::device_mapped, array_set}};
   return {{"the spheres' upload copy", spheres, false, u::staging, staging_set},
           {"the sphere array", spheres, true, u::device_local, array_set},
           {"the materials' upload copy", materials, false, u::staging, staging_set},
@@ -168,7 +173,9 @@ std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const hos
           {"the noise tables' upload copy", perlin, false, u::staging, staging_set},
           {"the noise tables", perlin, true, u::device_local, array_set},
           {"the media's upload copy", media, false, u::staging, staging_set},
-          {"the media array", media, true, u::device_local, array_set}};
+          {"the media array", media, true, u::device_local, array_set},
+          {"the lights' upload copy", lights, false, u::staging, staging_set},
+          {"the light array", lights, true, u::device_local, array_set}};
 }
 
 std::vector<buffer_binding> gpu_scene::object_bindings() const {
@@ -188,7 +195,8 @@ std::vector<buffer_binding> gpu_scene::appearance_bindings() const {
   return {{RTVK_BINDING_TEXTURES, storage, textures()},
           {RTVK_BINDING_TEXELS, storage, texels()},
           {RTVK_BINDING_PERLIN, storage, perlin()},
-          {RTVK_BINDING_MEDIA, storage, media()}};
+          {RTVK_BINDING_MEDIA, storage, media()},
+          {RTVK_BINDING_LIGHTS, storage, lights()}};
 }
 
 void gpu_scene::specialize(std::span<std::uint32_t> spec) const {

@@ -43,6 +43,7 @@ class gpu_scene {
     std::vector<std::uint32_t> texels;  // the images', one after another
     std::vector<gpu_perlin> perlin;     // one: the noise's tables
     std::vector<gpu_medium> media;      // in scene order
+    std::vector<gpu_light> lights;      // scene_lights, what lights sampling aims at
     bool with_uv = false;               // some texture reads sphere hits' uv (RTVK_SPEC_UV)
   };
   // The scene's arrays, its BVH built (over no spheres when !use_bvh).
@@ -75,6 +76,8 @@ class gpu_scene {
   VkBuffer texels() const { return arrays_[10].get(); }
   VkBuffer perlin() const { return arrays_[11].get(); }
   VkBuffer media() const { return arrays_[12].get(); }
+  VkBuffer lights() const { return arrays_[13].get(); }
+  std::uint32_t light_count() const { return light_count_; }
   // The bindings of the objects and the BVH (shaders/scene_buffers.glsl's), for every shader
   // that traces rays through the scene.
   std::vector<buffer_binding> object_bindings() const;
@@ -84,7 +87,7 @@ class gpu_scene {
   // The switches render.comp and the probes are specialized with (RTVK_SPEC_MOTION, QUADS,
   // TRIANGLES), written into `spec` (indexed by constant id, at least RTVK_SPEC_TRIANGLES + 1).
   void specialize(std::span<std::uint32_t> spec) const;
-  // The object counts of the push constants.
+  // The object counts of the push constants (light_count aside: a render's sampling sets it).
   void set_counts(render_push& push) const;
 
  private:
@@ -94,6 +97,7 @@ class gpu_scene {
   std::uint32_t own_spheres_, own_quads_, own_triangles_;  // of them, the scene's own
   std::uint32_t instance_count_;                           // instances
   std::uint32_t medium_count_;                             // media
+  std::uint32_t light_count_;                              // lights
   bool with_uv_;                                           // RTVK_SPEC_UV
   bool any_textures_;                                      // RTVK_SPEC_TEXTURES
   double build_seconds_;                                   // building the BVH took

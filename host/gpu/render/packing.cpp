@@ -134,7 +134,8 @@ std::vector<gpu_material> to_gpu_materials(const scene& s) {
   out.reserve(s.materials.size());
   for (const auto& [name, m] : s.materials)
     out.push_back({vec3(m.albedo), uint(m.type), float(m.fuzz), float(m.ir),
-                   m.texture < 0 ? RTVK_NO_TEXTURE : uint(m.texture), 0});
+                   m.texture < 0 ? RTVK_NO_TEXTURE : uint(m.texture),
+                   m.one_sided ? RTVK_MATERIAL_ONE_SIDED : 0u});
   return out;
 }
 
@@ -164,6 +165,14 @@ std::vector<gpu_medium> to_gpu_media(const scene& s) {
                    vec4(vec3(g.to_local_z), float(g.to_local_offset.z)), vec3(g.lo), g.shape,
                    vec3(g.hi), float(g.neg_inv_density), g.material, g.index, 0, 0});
   }
+  return out;
+}
+
+std::vector<gpu_light> to_gpu_lights(const std::vector<light_record>& lights) {
+  std::vector<gpu_light> out;
+  for (const light_record& l : lights)
+    out.push_back({vec3(l.a), l.kind, vec3(l.u), float(l.radius), vec3(l.v), float(l.area),
+                   vec3(l.normal), 0});
   return out;
 }
 

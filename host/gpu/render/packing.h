@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "camera.h"
+#include "light_sources.h"
 #include "scene.h"
 #include "scene_tree.h"
 #include "shared_types.h"
@@ -38,5 +39,8 @@ std::vector<gpu_texture> to_gpu_textures(const scene& s, std::vector<std::uint32
 gpu_perlin to_gpu_perlin(const perlin_tables& p);
 // The scene's media (geometry_of), rounded to float.
 std::vector<gpu_medium> to_gpu_media(const scene& s);
+
+// The lights sampling aims at (scene_lights), in the shared layout.
+std::vector<gpu_light> to_gpu_lights(const std::vector<light_record>& lights);
 
 }  // namespace rtvk::gpu

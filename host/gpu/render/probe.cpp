@@ -65,6 +65,14 @@ std::vector<kernel_probe_entry> run_kernel_probe(gpu_context& ctx,
   return entries;
 }
 
+std::vector<light_probe_entry> run_light_probe(gpu_context& ctx,
+                                               std::vector<light_probe_entry> entries) {
+  run_in_place(ctx, light_probe_shader(), entries.data(),
+               entries.size() * sizeof(light_probe_entry),
+               std::uint32_t((entries.size() + 63) / 64), nullptr);
+  return entries;
+}
+
 std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s, bool use_bvh,
                                                std::vector<world_probe_entry> entries) {
   const gpu_scene g(ctx, s, use_bvh);

@@ -27,6 +27,11 @@ std::vector<hit_probe_entry> run_hit_probe(gpu_context& ctx, std::vector<hit_pro
 std::vector<kernel_probe_entry> run_kernel_probe(gpu_context& ctx,
                                                  std::vector<kernel_probe_entry> entries);
 
+// Runs light_probe.comp: fills the outputs of each entry with pdf.h's densities and samplers
+// (run_light_probe in shaders/shared/light_probe.h).
+std::vector<light_probe_entry> run_light_probe(gpu_context& ctx,
+                                               std::vector<light_probe_entry> entries);
+
 // Runs world_probe.comp over the scene's spheres (through the BVH, or every sphere in turn): fills
 // `t`, `hit`, `normal` and `material` of each entry with what hit_world finds along its ray.
 std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s, bool use_bvh,

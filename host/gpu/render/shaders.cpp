@@ -5,6 +5,7 @@
 
 #include "hit_probe_spv.h"
 #include "kernel_probe_spv.h"
+#include "light_probe_spv.h"
 #include "overlay_spv.h"
 #include "probe_spv.h"
 #include "render_spv.h"
@@ -37,6 +38,9 @@ std::span<const std::uint32_t> world_probe_shader() {
 }
 std::span<const std::uint32_t> kernel_probe_shader() {
   return kernel_probe_spv;
+}
+std::span<const std::uint32_t> light_probe_shader() {
+  return light_probe_spv;
 }
 
 }  // namespace rtvk::gpu

@@ -1,0 +1,37 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "pdf.h"
+#include "render_settings.h"
+#include "scene.h"
+
+namespace rtvk {
+
+// What the third book's importance sampling aims scattered rays at: every lamp of the scene (a
+// sphere, quad or triangle whose material is diffuse_light: meshes' emissive faces included), then
+// the spheres and quads marked `sampled` (the book's glass sphere), in scene order. Objects inside
+// groups are not aimed at (they still emit when a path hits them). The shared kernels read these
+// (shaders/shared/pdf.h); the GPU gets them as gpu_light.
+std::vector<light_record> scene_lights(const scene& s);
+
+// Whether a render of a scene with `lights` lights (scene_lights) samples toward them under mode
+// `m`: `lights` always, `plain` never, `automatic` where there are from 1 to RTVK_MAX_LIGHTS.
+bool samples_lights(std::size_t lights, sampling_mode m);
+inline bool samples_lights(const scene& s, const render_settings& rs) {
+  return samples_lights(scene_lights(s).size(), rs.sampling);
+}
+
+// Throws std::invalid_argument, naming `what` (the flag or field that asked), when `lights`
+// sampling is asked of a scene without lights or with more than RTVK_MAX_LIGHTS.
+void check_sampling(const scene& s, const render_settings& rs, const std::string& what);
+
+// The strata a side a pixel's samples are spread over (camera_rays.h's pixel_spot): with lights
+// sampling and jitter, floor(sqrt(spp)) as the book's final chapter; else 1 (the first two
+// books' independent spots).
+std::uint32_t pixel_strata(const render_settings& rs, bool lights);
+
+// The name of a sampling mode, as --sampling and scene files spell it.
+const char* sampling_name(sampling_mode m);
+
+}  // namespace rtvk
