@@ -5,7 +5,7 @@
 # build (build/ci: rtvk, rtvk_tests, the test layer) and .gpu/libs.tar.xz (scripts/gpu-bundle.sh)
 # carried along. Writes check.log, tests.log, bench.json and a few images into OUT.
 # Usage: bash scripts/gpu-check.sh OUT [seconds for the tests, default 200] [gtest filter]
-# RTVK_CHECK_STEPS picks steps (default "bench meshes both tests").
+# RTVK_CHECK_STEPS picks steps (default "bench meshes both tests"; also "sampling").
 set -uo pipefail
 out=${1:?usage: gpu-check.sh OUT [test-seconds] [filter]}
 test_seconds=${2:-200}
@@ -73,6 +73,20 @@ bench forest-all --scene docs/scenes/forest.json --backend all --spp 16 --repeat
 bench cornell-gpu --scene cornell-box --backend gpu --spp 200 --repeat 3
 bench cornell-1000spp-gpu --scene cornell-box --backend gpu --spp 1000 --repeat 3
 bench next-week-final-gpu --scene next-week-final --backend gpu --spp 1000 --repeat 1
+fi
+
+if [[ $steps == *" sampling "* ]]; then
+step "sampling: converged references, noise against time, the third book's scene (docs/benchmarks.md)"
+for s in cornell-box rest-of-life-final; do
+  echo "-- reference $s: rtvk render --scene $s --width 150 --spp 262144 --sampling lights"
+  timeout 150 $rtvk render --scene $s --width 150 --spp 262144 --sampling lights -o "$out/ref-$s-150.exr"
+done
+timeout 150 python3 scripts/plot-sampling-noise.py $rtvk "$out/ref-cornell-box-150.exr" /tmp/noise \
+  --backends gpu --seconds 1 && cp /tmp/noise/sampling-noise.json "$out/noise-gpu.json"
+timeout 120 $rtvk render --scene rest-of-life-final --spp 10000 -o "$out/rest-of-life-final.png"
+bench cornell-plain-gpu --scene cornell-box --backend gpu --spp 200 --sampling plain --repeat 3
+bench cornell-lights-gpu --scene cornell-box --backend gpu --spp 200 --sampling lights --repeat 3
+bench rest-of-life-final-gpu --scene rest-of-life-final --backend gpu --spp 1000 --repeat 3
 fi
 
 if [[ $steps == *" meshes "* ]]; then

@@ -102,12 +102,15 @@ inline precise real cone_gap(real r, real d2) {
 inline precise real sphere_light_pdf(light_record l, real3 origin, real3 direction, real time) {
   precise real3 oc = moved_center(l.a, l.u, time) - origin;
   precise real d2 = dot3(oc, oc);
-  if (d2 <= l.radius * l.radius) return sphere_pdf();
+  precise real r2 = l.radius * l.radius;
+  if (d2 <= r2) return sphere_pdf();
   precise real along = dot3(direction, oc);
   if (along <= real(0.0)) return real(0.0);
   // Inside the cone: cos^2 of the angle to the center at least 1 - r^2 / d2.
   precise real dd = dot3(direction, direction);
-  if (along * along < dd * (d2 - l.radius * l.radius)) return real(0.0);
+  precise real along2 = along * along;
+  precise real cone2 = dd * (d2 - r2);
+  if (along2 < cone2) return real(0.0);
   return real(0.5) * inv_pi / cone_gap(l.radius, d2);
 }
 
@@ -117,7 +120,8 @@ inline precise real3 sphere_light_random(light_record l, real3 origin, real time
                                          real r2) {
   precise real3 oc = moved_center(l.a, l.u, time) - origin;
   precise real d2 = dot3(oc, oc);
-  if (d2 <= l.radius * l.radius) return random_unit_vector(r1, r2);
+  precise real rr = l.radius * l.radius;
+  if (d2 <= rr) return random_unit_vector(r1, r2);
   precise real one_minus_z = r2 * cone_gap(l.radius, d2);
   precise real z = real(1.0) - one_minus_z;
   precise real s = sqrt(max(real(0.0), one_minus_z * (real(2.0) - one_minus_z)));
@@ -129,7 +133,9 @@ inline precise real3 sphere_light_random(light_record l, real3 origin, real time
 // from `origin` along `direction` hits the shape (t > the book's 0.001), else 0.
 inline precise real flat_light_pdf(light_record l, real3 origin, real3 direction) {
   precise real facing = dot3(direction, l.normal);
-  if (abs(facing) < real(1e-8) * length3(direction)) return real(0.0);  // parallel to the plane
+  precise real len = length3(direction);
+  precise real parallel = real(1e-8) * len;
+  if (abs(facing) < parallel) return real(0.0);  // parallel to the plane
   precise real t = dot3(l.a - origin, l.normal) / facing;
   if (!(t > real(0.001))) return real(0.0);
   // Where the hit lies in the edges' coordinates (the book's alpha and beta): w = n / |u x v|.
@@ -137,12 +143,12 @@ inline precise real flat_light_pdf(light_record l, real3 origin, real3 direction
   precise real span = l.kind == uint(RTVK_LIGHT_QUAD) ? l.area : real(2.0) * l.area;
   precise real alpha = dot3(l.normal, cross3(rel, l.v)) / span;
   precise real beta = dot3(l.normal, cross3(l.u, rel)) / span;
+  precise real both = alpha + beta;
   bool inside = l.kind == uint(RTVK_LIGHT_QUAD)
                     ? alpha >= real(0.0) && alpha <= real(1.0) && beta >= real(0.0) &&
                           beta <= real(1.0)
-                    : alpha >= real(0.0) && beta >= real(0.0) && alpha + beta <= real(1.0);
+                    : alpha >= real(0.0) && beta >= real(0.0) && both <= real(1.0);
   if (!inside) return real(0.0);
-  precise real len = length3(direction);
   // t^2 |d|^2 / (|d . n| / |d| area)
   return t * t * len * len * len / (abs(facing) * l.area);
 }
@@ -174,7 +180,8 @@ inline precise real light_list_pdf(LIGHTS_PARAM real3 origin, real3 direction, r
 
 // The book's hittable_list::random: toward a light picked uniformly.
 inline precise real3 light_list_random(LIGHTS_PARAM real3 origin, real time, random_stream s) {
-  uint k = min(uint(real(rnd(s, dim_light_pick)) * real(LIGHT_COUNT)), LIGHT_COUNT - 1u);
+  precise real pick = real(rnd(s, dim_light_pick)) * real(LIGHT_COUNT);
+  uint k = min(uint(pick), LIGHT_COUNT - 1u);
   return light_random(LIGHT_AT(k), origin, time, real(rnd(s, dim_light_a)),
                       real(rnd(s, dim_light_b)));
 }

@@ -65,7 +65,7 @@ TEST(CliBook, DumpedSceneRendersTheIdenticalImage) {
   EXPECT_EQ(
       run_rtvk({"scene", "list"}).out,
       "seed\nmaterials\nbook-final\nbouncing-spheres\nquads\ncheckered-spheres\nperlin-spheres\n"
-      "simple-light\ncornell-box\ncornell-smoke\nnext-week-final\nspheres:N (N from 1 to "
+      "simple-light\ncornell-box\ncornell-smoke\nnext-week-final\nrest-of-life-final\nspheres:N (N from 1 to "
       "4000000)\n");
 }
 

@@ -90,11 +90,11 @@ for pair in render:--scene render:--output render:-o bench:--json compare:--diff
 done
 touch "$work/a.json" "$work/b.png" "$work/c.exr" "$work/d.ppm"
 expect "bench compare devices merge render scene view" rtvk ""
-expect "--samples --scene --seed --shutter --spp" rtvk render --s
+expect "--samples --sampling --scene --seed --shutter --spp" rtvk render --s
 expect "--spp" rtvk render --scene seed --sp
 expect "auto both cpu gpu" rtvk render --backend ""
 expect "seed simple-light spheres:" rtvk render --scene s
-expect "a.json book-final bouncing-spheres checkered-spheres cornell-box cornell-smoke materials next-week-final perlin-spheres quads seed simple-light spheres:" rtvk bench --scene ""
+expect "a.json book-final bouncing-spheres checkered-spheres cornell-box cornell-smoke materials next-week-final perlin-spheres quads rest-of-life-final seed simple-light spheres:" rtvk bench --scene ""
 expect "b.png d.ppm" rtvk compare ""
 expect "c.exr" rtvk merge -q ""
 expect "dump" rtvk scene d

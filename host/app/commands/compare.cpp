@@ -1,11 +1,14 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "commands.h"
 #include "image_compare.h"
 #include "image_io.h"
+#include "partial_image.h"
+#include "quantize.h"
 
 namespace rtvk {
 namespace {
@@ -16,10 +19,47 @@ struct compare_options {
   agreement rule;    // when they count as alike
 };
 
+bool is_exr(const std::string& path) {
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".exr") == 0;
+}
+
+// An rtvk .exr (a render's linear means) as the 8-bit image its PNG would be.
+image_rgb8 encoded(const partial_image& p) {
+  framebuffer fb(p.window.width, p.window.height);
+  for (int y = 0; y < p.window.height; ++y)
+    for (int x = 0; x < p.window.width; ++x) {
+      const float* c = &p.rgb[(std::size_t(y) * std::size_t(p.window.width) + std::size_t(x)) * 3];
+      fb.at(x, y) = color(c[0], c[1], c[2]);
+    }
+  return quantize(fb, p.gamma);
+}
+
+// Two renders' linear colors: the mean squared error over pixels and channels (the noise of a
+// render against a converged reference), and the reference's mean square, for a relative figure.
+void print_linear_error(const partial_image& a, const partial_image& b) {
+  double squared = 0, reference = 0;
+  for (std::size_t k = 0; k < a.rgb.size(); ++k) {
+    const double d = double(a.rgb[k]) - double(b.rgb[k]);
+    squared += d * d;
+    reference += double(b.rgb[k]) * double(b.rgb[k]);
+  }
+  const double n = double(a.rgb.size());
+  std::printf("mse       %.6e (linear, mean over pixels and channels)\n", squared / n);
+  std::printf("rel mse   %.6e (mse / mean square of B)\n",
+              reference > 0 ? squared / reference : 0.0);
+}
+
 int run_compare(const compare_options& o) {
   if (!o.diff.empty()) check_output_path(o.diff, "--diff");
-  const image_rgb8 a = read_image(o.a);
-  const image_rgb8 b = read_image(o.b);
+  // Two .exr renders: their linear colors too (read as rtvk wrote them).
+  const bool linear = is_exr(o.a) && is_exr(o.b);
+  std::optional<partial_image> pa, pb;
+  if (linear) {
+    pa = read_partial_exr(o.a);
+    pb = read_partial_exr(o.b);
+  }
+  const image_rgb8 a = linear ? encoded(*pa) : read_image(o.a);
+  const image_rgb8 b = linear ? encoded(*pb) : read_image(o.b);
   if (!o.diff.empty()) check_output_size(o.diff, a.width, a.height, "--diff");
   if (a.width != b.width || a.height != b.height) {
     std::printf("different sizes: %dx%d vs %dx%d\n", a.width, a.height, b.width, b.height);
@@ -28,6 +68,7 @@ int run_compare(const compare_options& o) {
   const image_difference d = compare_images(a, b, o.rule.tolerance);
   const bool alike = agrees(d, o.rule);
   std::printf("size      %dx%d\n", d.width, d.height);
+  if (linear) print_linear_error(*pa, *pb);
   std::printf("max abs   %d levels (of 255)\n", d.max_abs);
   std::printf("mean abs  %.5f levels\n", d.mean_abs);
   if (std::isinf(d.psnr_db))
@@ -49,7 +90,9 @@ int run_compare(const compare_options& o) {
 command_action add_compare_command(CLI::App& app) {
   auto opts = std::make_shared<compare_options>();
   CLI::App* cmd = app.add_subcommand(
-      "compare", "Compare two images (PNG, PPM P3/P6); exit 0 alike, 1 different, 2 trouble");
+      "compare",
+      "Compare two images (PNG, PPM P3/P6, or two rtvk .exr renders: then also their linear mean "
+      "squared error); exit 0 alike, 1 different, 2 trouble");
   cmd->add_option("A", opts->a, "First image")->required();
   cmd->add_option("B", opts->b, "Second image")->required();
   cmd->add_option("--diff", opts->diff, "Write a heat map of the differences (.png or .ppm)");
