@@ -122,7 +122,11 @@ both simple-light --scene simple-light --width 400 --spp 64
 both cornell --scene cornell-box --width 300 --spp 64
 both cornell-smoke --scene cornell-smoke --width 300 --spp 64
 both next-week-final --scene next-week-final --width 400 --spp 16
-cp /tmp/both-final.png /tmp/both-knot.png /tmp/both-forest.png /tmp/both-next-week-final.png "$out/" 2>/dev/null
+both cornell-plain --scene cornell-box --width 300 --spp 64 --sampling plain
+both rest-of-life-final --scene rest-of-life-final --width 300 --spp 64
+# (the device tool brings back at most 8 files: RTVK_CHECK_NO_IMAGES=1 leaves these out)
+[ -n "${RTVK_CHECK_NO_IMAGES:-}" ] ||
+  cp /tmp/both-final.png /tmp/both-knot.png /tmp/both-forest.png /tmp/both-next-week-final.png "$out/" 2>/dev/null
 fi
 
 if [[ $steps == *" tests "* ]]; then
