@@ -78,12 +78,12 @@ fi
 if [[ $steps == *" sampling "* ]]; then
 step "sampling: converged references, noise against time, the third book's scene (docs/benchmarks.md)"
 for s in cornell-box rest-of-life-final; do
-  echo "-- reference $s: rtvk render --scene $s --width 150 --spp 262144 --sampling lights"
-  timeout 150 $rtvk render --scene $s --width 150 --spp 262144 --sampling lights -o "$out/ref-$s-150.exr"
+  echo "-- reference $s: rtvk render --backend gpu --scene $s --width 600 --spp 32768 --sampling lights"
+  timeout 150 $rtvk render --backend gpu --scene $s --width 600 --spp 32768 --sampling lights -o "$out/ref-$s-600.exr"
 done
-timeout 150 python3 scripts/plot-sampling-noise.py $rtvk "$out/ref-cornell-box-150.exr" /tmp/noise \
+timeout 150 python3 scripts/plot-sampling-noise.py $rtvk "$out/ref-cornell-box-600.exr" /tmp/noise --width 600 \
   --backends gpu --seconds 1 && cp /tmp/noise/sampling-noise.json "$out/noise-gpu.json"
-timeout 120 $rtvk render --scene rest-of-life-final --spp 10000 -o "$out/rest-of-life-final.png"
+timeout 120 $rtvk render --backend gpu --scene rest-of-life-final --spp 10000 -o "$out/rest-of-life-final.png"
 bench cornell-plain-gpu --scene cornell-box --backend gpu --spp 200 --sampling plain --repeat 3
 bench cornell-lights-gpu --scene cornell-box --backend gpu --spp 200 --sampling lights --repeat 3
 bench rest-of-life-final-gpu --scene rest-of-life-final --backend gpu --spp 1000 --repeat 3

@@ -3,7 +3,7 @@
 against a converged reference as the render time grows, drawn as docs/images/sampling-noise.svg.
 
   plot-sampling-noise.py RTVK REFERENCE.exr OUTDIR [--scene cornell-box] [--width 150]
-                         [--backends cpu,gpu] [--seconds 32] [--crop X,Y,W,H]
+                         [--backends cpu,gpu] [--seconds 32] [--crop X,Y,W,H] [--gpu-label NAME]
 
 REFERENCE.exr is the same scene at the same width rendered long enough that its own noise is far
 below the curves' (docs/benchmarks.md says how it was made). For each backend and each sampling
@@ -84,7 +84,7 @@ def spp_for(points, seconds):
     return max([p["spp"] for p in points if p["seconds"] <= seconds] or [1])
 
 
-def svg(curves, title):
+def svg(curves, title, gpu_label):
     w, h, left, right, top, bottom = 640, 420, 70, 170, 30, 50
     xs = [p["seconds"] for c in curves.values() for p in c]
     ys = [p["mse"] for c in curves.values() for p in c]
@@ -126,7 +126,7 @@ def svg(curves, title):
         out.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="%s" stroke-width="2"%s/>' %
                    (w - right + 10, y, w - right + 40, y, colors[mode], dashes[backend]))
         out.append('<text x="%d" y="%d">%s, %s</text>' % (w - right + 46, y + 4,
-                                                         "CPU" if backend == "cpu" else "GPU",
+                                                         "CPU" if backend == "cpu" else gpu_label,
                                                          mode))
     out.append("</svg>")
     return "\n".join(out) + "\n"
@@ -142,6 +142,7 @@ def main():
     ap.add_argument("--backends", default="cpu,gpu")
     ap.add_argument("--seconds", type=float, default=32)
     ap.add_argument("--crop", default="40,40,64,64")
+    ap.add_argument("--gpu-label", default="GPU", help="the GPU's name in the legend")
     args = ap.parse_args()
     os.makedirs(args.outdir, exist_ok=True)
     curves = {}
@@ -167,7 +168,7 @@ def main():
         json.dump(summary, f, indent=1)
     with open(os.path.join(args.outdir, "sampling-noise.svg"), "w") as f:
         f.write(svg(curves, "%s, %d wide: noise against time, plain vs lights sampling" %
-                    (args.scene, args.width)))
+                    (args.scene, args.width), args.gpu_label))
 
 
 if __name__ == "__main__":

@@ -10,8 +10,8 @@
 
 #include "elapsed.h"
 #include "errors.h"
-#include "parallel.h"
 #include "light_sources.h"
+#include "parallel.h"
 #include "random.h"
 #include "shading.h"
 #include "world.h"

@@ -2,8 +2,8 @@
 #include <span>
 
 #include "hittable.h"
-#include "material.h"
 #include "light_sources.h"
+#include "material.h"
 #include "medium.h"
 #include "random.h"
 #include "ray_color.h"

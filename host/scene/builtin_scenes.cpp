@@ -456,8 +456,8 @@ scene spheres_scene(std::uint32_t n) {
 }  // namespace
 
 std::vector<std::string> builtin_scene_names() {
-  return {"seed",        "materials",         "book-final",     "bouncing-spheres",
-          "quads",       "checkered-spheres", "perlin-spheres", "simple-light",
+  return {"seed",        "materials",         "book-final",      "bouncing-spheres",
+          "quads",       "checkered-spheres", "perlin-spheres",  "simple-light",
           "cornell-box", "cornell-smoke",     "next-week-final", "rest-of-life-final"};
 }
 

@@ -80,9 +80,12 @@ std::uint32_t pixel_strata(const render_settings& rs, bool lights) {
 
 const char* sampling_name(sampling_mode m) {
   switch (m) {
-    case sampling_mode::plain: return "plain";
-    case sampling_mode::lights: return "lights";
-    default: return "auto";
+    case sampling_mode::plain:
+      return "plain";
+    case sampling_mode::lights:
+      return "lights";
+    default:
+      return "auto";
   }
 }
 

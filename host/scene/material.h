@@ -25,12 +25,12 @@ enum class material_type : std::uint32_t {
 // ray_color.h), which both backends compile.
 struct material {
   material_type type = material_type::normal;
-  color albedo{1, 1, 1};  // fraction of light kept per channel (lambertian, metal, isotropic,
-                          // flat); diffuse_light: the radiance it emits, any strength
-  double fuzz = 0;        // metal: radius of the reflection's blur sphere, 0 to 1
-  double ir = 1.5;        // dielectric: index of refraction
-  int texture = -1;       // index into the scene's textures: the color at a hit is the texture's
-                          // value there instead of albedo; -1: albedo everywhere
+  color albedo{1, 1, 1};   // fraction of light kept per channel (lambertian, metal, isotropic,
+                           // flat); diffuse_light: the radiance it emits, any strength
+  double fuzz = 0;         // metal: radius of the reflection's blur sphere, 0 to 1
+  double ir = 1.5;         // dielectric: index of refraction
+  int texture = -1;        // index into the scene's textures: the color at a hit is the texture's
+                           // value there instead of albedo; -1: albedo everywhere
   bool one_sided = false;  // diffuse_light: emits from its front side only (the third book's)
 };
 

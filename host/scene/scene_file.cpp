@@ -263,10 +263,14 @@ render_settings read_render(const scene_reader& r, const json& j) {
   if (j.contains("sampling")) {
     const json& m = j["sampling"];
     const std::string name = m.is_string() ? m.get<std::string>() : "";
-    if (name == "plain") s.sampling = sampling_mode::plain;
-    else if (name == "lights") s.sampling = sampling_mode::lights;
-    else if (name == "auto") s.sampling = sampling_mode::automatic;
-    else r.fail(p + "/sampling", "expected \"plain\", \"lights\" or \"auto\", got " + m.dump());
+    if (name == "plain")
+      s.sampling = sampling_mode::plain;
+    else if (name == "lights")
+      s.sampling = sampling_mode::lights;
+    else if (name == "auto")
+      s.sampling = sampling_mode::automatic;
+    else
+      r.fail(p + "/sampling", "expected \"plain\", \"lights\" or \"auto\", got " + m.dump());
   }
   return s;
 }
@@ -964,7 +968,8 @@ std::string dump_scene_json(const scene& s) {
   root["render"] = {{"width", r.width},         {"aspect", r.aspect}, {"spp", r.spp},
                     {"max_depth", r.max_depth}, {"seed", r.seed},     {"gamma", r.gamma},
                     {"jitter", r.jitter}};
-  if (r.sampling != sampling_mode::automatic) root["render"]["sampling"] = sampling_name(r.sampling);
+  if (r.sampling != sampling_mode::automatic)
+    root["render"]["sampling"] = sampling_name(r.sampling);
   if (s.sky.horizon == s.sky.zenith)
     root["background"] = vec_json(s.sky.horizon);
   else

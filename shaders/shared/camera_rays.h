@@ -87,13 +87,18 @@ inline precise real pixel_coordinate(real x, uint n) {
 // and through a random point of the lens when `lens` and the camera has an aperture, at an
 // instant drawn uniformly while the shutter is open. `s` is the sample's stream
 // (pixel_sample_stream). Stratified (the third book's final chapter) when strata > 1: the pixel
-// is cut into strata x strata cells, and sample k < strata^2 jitters inside cell k (row by row),
-// so the first strata^2 samples cover the pixel evenly. A sample's spot depends on its index
-// alone: sample ranges drawn apart still merge into the whole render.
+// is cut into strata x strata cells, and sample k < strata^2 jitters inside one of them, each
+// cell once. The book visits the cells row by row; here sample k = j strata + i takes column i
+// and row (i + j) mod strata, so that every run of strata samples also covers every row and
+// column once (a partial render, the viewer's first frames, is not squeezed into the bottom
+// rows). A sample's spot depends on its index alone: sample ranges drawn apart still merge into
+// the whole render.
 inline precise real2 pixel_spot(random_stream s, uint strata, uint sample_index) {
   precise real2 spot = real2(real(rnd(s, dim_jitter_u)), real(rnd(s, dim_jitter_v)));
   if (strata <= 1u || sample_index >= strata * strata) return spot;
-  precise real2 cell = real2(real(sample_index % strata), real(sample_index / strata));
+  uint column = sample_index % strata;
+  uint row = (column + sample_index / strata) % strata;
+  precise real2 cell = real2(real(column), real(row));
   return (cell + spot) / real(strata);
 }
 

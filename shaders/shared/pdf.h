@@ -106,11 +106,12 @@ inline precise real sphere_light_pdf(light_record l, real3 origin, real3 directi
   if (d2 <= r2) return sphere_pdf();
   precise real along = dot3(direction, oc);
   if (along <= real(0.0)) return real(0.0);
-  // Inside the cone: cos^2 of the angle to the center at least 1 - r^2 / d2.
-  precise real dd = dot3(direction, direction);
-  precise real along2 = along * along;
-  precise real cone2 = dd * (d2 - r2);
-  if (along2 < cone2) return real(0.0);
+  // Inside the cone: the line passes within r of the center, |d x oc|^2 <= r^2 |d|^2 (not
+  // cos^2 >= 1 - r^2 / d2, which cancels in float for a small or far sphere).
+  precise real3 across = cross3(direction, oc);
+  precise real perp2 = dot3(across, across);
+  precise real reach2 = r2 * dot3(direction, direction);
+  if (perp2 > reach2) return real(0.0);
   return real(0.5) * inv_pi / cone_gap(l.radius, d2);
 }
 
@@ -144,10 +145,10 @@ inline precise real flat_light_pdf(light_record l, real3 origin, real3 direction
   precise real alpha = dot3(l.normal, cross3(rel, l.v)) / span;
   precise real beta = dot3(l.normal, cross3(l.u, rel)) / span;
   precise real both = alpha + beta;
-  bool inside = l.kind == uint(RTVK_LIGHT_QUAD)
-                    ? alpha >= real(0.0) && alpha <= real(1.0) && beta >= real(0.0) &&
-                          beta <= real(1.0)
-                    : alpha >= real(0.0) && beta >= real(0.0) && both <= real(1.0);
+  bool inside =
+      l.kind == uint(RTVK_LIGHT_QUAD)
+          ? alpha >= real(0.0) && alpha <= real(1.0) && beta >= real(0.0) && beta <= real(1.0)
+          : alpha >= real(0.0) && beta >= real(0.0) && both <= real(1.0);
   if (!inside) return real(0.0);
   // t^2 |d|^2 / (|d . n| / |d| area)
   return t * t * len * len * len / (abs(facing) * l.area);
@@ -171,19 +172,44 @@ inline precise real3 light_random(light_record l, real3 origin, real time, real 
                                            : flat_light_random(l, origin, r1, r2);
 }
 
-// The book's hittable_list::pdf_value: the mean of the lights' densities.
-inline precise real light_list_pdf(LIGHTS_PARAM real3 origin, real3 direction, real time) {
+// The density of a direction light l's own sampler drew (light_random), from the book's formulas
+// at the sampled point, without testing again whether it hits l: in float a direction drawn at
+// l's edge can test outside it, and its weight would then be thousands of times too large (a
+// lamp 200 radii away drew 100 times too bright on the GPU). Exact math gives light_pdf.
+inline precise real light_sampled_pdf(light_record l, real3 origin, real3 direction, real time) {
+  if (l.kind == uint(RTVK_LIGHT_SPHERE)) {
+    precise real3 oc = moved_center(l.a, l.u, time) - origin;
+    precise real d2 = dot3(oc, oc);
+    precise real r2 = l.radius * l.radius;
+    if (d2 <= r2) return sphere_pdf();
+    return real(0.5) * inv_pi / cone_gap(l.radius, d2);
+  }
+  precise real facing = dot3(direction, l.normal);
+  if (facing == real(0.0)) return real(0.0);  // in the light's plane: it cannot be hit
+  precise real len = length3(direction);      // the distance: the sampler aims at a point
+  return len * len * len / (abs(facing) * l.area);
+}
+
+// The book's hittable_list::pdf_value: the mean of the lights' densities. Light `own` (none when
+// LIGHT_COUNT) drew the direction, and its density is `own_pdf` (light_sampled_pdf).
+inline precise real light_list_pdf(LIGHTS_PARAM real3 origin, real3 direction, real time, uint own,
+                                   real own_pdf) {
   precise real sum = real(0.0);
-  for (uint k = 0u; k < LIGHT_COUNT; ++k) sum += light_pdf(LIGHT_AT(k), origin, direction, time);
+  for (uint k = 0u; k < LIGHT_COUNT; ++k)
+    sum += k == own ? own_pdf : light_pdf(LIGHT_AT(k), origin, direction, time);
   return sum / real(LIGHT_COUNT);
 }
 
-// The book's hittable_list::random: toward a light picked uniformly.
-inline precise real3 light_list_random(LIGHTS_PARAM real3 origin, real time, random_stream s) {
+// The book's hittable_list::random: toward a light picked uniformly; `own` is the light and
+// `own_pdf` its density for the direction.
+inline precise real3 light_list_random(LIGHTS_PARAM real3 origin, real time, random_stream s,
+                                       OUT(uint) own, precise OUT(real) own_pdf) {
   precise real pick = real(rnd(s, dim_light_pick)) * real(LIGHT_COUNT);
-  uint k = min(uint(pick), LIGHT_COUNT - 1u);
-  return light_random(LIGHT_AT(k), origin, time, real(rnd(s, dim_light_a)),
-                      real(rnd(s, dim_light_b)));
+  own = min(uint(pick), LIGHT_COUNT - 1u);
+  precise real3 direction = light_random(LIGHT_AT(own), origin, time, real(rnd(s, dim_light_a)),
+                                         real(rnd(s, dim_light_b)));
+  own_pdf = light_sampled_pdf(LIGHT_AT(own), origin, direction, time);
+  return direction;
 }
 
 // A scattering material's own density (the book's srec.pdf_ptr and scattering_pdf, which are the
@@ -204,8 +230,10 @@ inline bool scatter_mixture(LIGHTS_PARAM uint type, real3 albedo, ray r_in, hit_
   // Leaves from the side of the surface the ray came from (a medium's point has no side).
   precise real3 origin = isotropic ? rec.p : rec.p + rec.offset * rec.normal;
   precise real3 direction;
+  uint own = LIGHT_COUNT;  // the light that drew the direction: none
+  precise real own_pdf = real(0.0);
   if (real(rnd(s, dim_mixture)) < real(0.5))
-    direction = light_list_random(LIGHTS origin, r_in.time, s);
+    direction = light_list_random(LIGHTS origin, r_in.time, s, own, own_pdf);
   else if (isotropic)
     direction = random_unit_vector(real(rnd(s, dim_direction_a)), real(rnd(s, dim_direction_b)));
   else
@@ -215,7 +243,8 @@ inline bool scatter_mixture(LIGHTS_PARAM uint type, real3 albedo, ray r_in, hit_
   attenuation = real3(0.0);
   precise real scattering = material_pdf(type, rec.normal, direction);
   precise real mixture =
-      real(0.5) * scattering + real(0.5) * light_list_pdf(LIGHTS origin, direction, r_in.time);
+      real(0.5) * scattering +
+      real(0.5) * light_list_pdf(LIGHTS origin, direction, r_in.time, own, own_pdf);
   if (!(scattering > real(0.0)) || !(mixture > real(0.0))) return false;
   attenuation = albedo * (scattering / mixture);
   return true;

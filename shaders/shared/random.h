@@ -19,10 +19,10 @@ const uint dim_direction_b = 1u;  //
 const uint dim_fuzz_radius = 2u;  // bounce >= 1: metal fuzz
 const uint dim_choice = 3u;       // bounce >= 1: reflect or refract
 // dim 4, bounce >= 1: a medium's scattering distance (medium.h)
-const uint dim_mixture = 5u;      // bounce >= 1: the lights' density or the material's (pdf.h)
-const uint dim_light_pick = 6u;   // bounce >= 1: which light
-const uint dim_light_a = 7u;      // bounce >= 1: the point or direction on it
-const uint dim_light_b = 8u;      //
+const uint dim_mixture = 5u;     // bounce >= 1: the lights' density or the material's (pdf.h)
+const uint dim_light_pick = 6u;  // bounce >= 1: which light
+const uint dim_light_a = 7u;     // bounce >= 1: the point or direction on it
+const uint dim_light_b = 8u;     //
 
 // A 32-bit integer hash with good avalanche ("lowbias32", Chris Wellons).
 inline uint hash32(uint x) {

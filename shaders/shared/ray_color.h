@@ -80,8 +80,8 @@ inline bool path_hit(LIGHTS_PARAM precise INOUT(path_state) p, hit_record rec, u
   // through a local, which on the CPU stalled on store forwarding once rays carried a time.
   precise real3 attenuation;
   random_stream s = at_bounce(p.s, p.depth + 1u);
-  bool mixed = LIGHT_COUNT > 0u &&
-               (type == RTVK_MATERIAL_LAMBERTIAN || type == RTVK_MATERIAL_ISOTROPIC);
+  bool mixed =
+      LIGHT_COUNT > 0u && (type == RTVK_MATERIAL_LAMBERTIAN || type == RTVK_MATERIAL_ISOTROPIC);
   if (mixed ? !scatter_mixture(LIGHTS type, albedo, p.r, rec, s, attenuation, p.r)
             : !scatter(type, albedo, fuzz, ir, p.r, rec, s, attenuation, p.r))
     return true;

@@ -25,7 +25,7 @@ TEST(CliBook, BadFlagsExit2NamingFlagAndValue) {
       {"--depth", "0"},        {"--seed", "-1"},         {"--vfov", "180"},
       {"--vfov", "0"},         {"--aperture", "-1"},     {"--focus-dist", "0"},
       {"--lookfrom", "1,2"},   {"--lookfrom", "a,b,c"},  {"--vup", "1,2,3,4"},
-      {"--lookat", "nan,0,0"}, {"--scene", "nope.json"},
+      {"--lookat", "nan,0,0"}, {"--scene", "nope.json"}, {"--sampling", "importance"},
   };
   test::temp_dir dir;
   const fs::path out = dir.path() / "out.png";
@@ -47,6 +47,35 @@ TEST(CliBook, BadFlagsExit2NamingFlagAndValue) {
   EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 
+// Lights sampling asked of a scene without lights: refused naming the flag, nothing written. The
+// summary says which sampling ran, and bench's records carry it and the dropped samples.
+TEST(CliBook, SamplingIsNamedRefusedWithoutLightsAndReported) {
+  test::temp_dir dir;
+  const fs::path out = dir.path() / "out.png";
+  const auto refused = run_rtvk({"render", "--sampling", "lights", "-o", out.string()});
+  EXPECT_EQ(refused.status, 2) << refused.err;
+  EXPECT_NE(refused.err.find("--sampling lights: the scene has no lights to aim at"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(fs::exists(out));
+  const auto lit = run_rtvk({"render", "--scene", "cornell-box", "--width", "32", "--spp", "4",
+                             "--backend", "cpu", "-o", out.string()});
+  ASSERT_EQ(lit.status, 0) << lit.err;
+  EXPECT_NE(lit.err.find("4 spp (lights sampling), on cpu"), std::string::npos) << lit.err;
+  const auto plain = run_rtvk({"render", "--scene", "cornell-box", "--width", "32", "--spp", "4",
+                               "--sampling", "plain", "--backend", "cpu", "-o", out.string()});
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_NE(plain.err.find("4 spp, on cpu"), std::string::npos) << plain.err;
+  const std::string json = (dir.path() / "b.json").string();
+  const auto bench = run_rtvk({"bench", "--scene", "cornell-box", "--width", "16", "--spp", "2",
+                               "--backend", "cpu", "--json", json});
+  ASSERT_EQ(bench.status, 0) << bench.err;
+  EXPECT_NE(bench.out.find(", lights sampling:"), std::string::npos) << bench.out;
+  const std::string records = test::slurp(json);
+  EXPECT_NE(records.find("\"sampling\": \"lights\""), std::string::npos) << records;
+  EXPECT_NE(records.find("\"dropped_samples\": 0"), std::string::npos) << records;
+}
+
 TEST(CliBook, DumpedSceneRendersTheIdenticalImage) {
   test::temp_dir dir;
   const auto json = (dir.path() / "materials.json").string();
@@ -65,7 +94,8 @@ TEST(CliBook, DumpedSceneRendersTheIdenticalImage) {
   EXPECT_EQ(
       run_rtvk({"scene", "list"}).out,
       "seed\nmaterials\nbook-final\nbouncing-spheres\nquads\ncheckered-spheres\nperlin-spheres\n"
-      "simple-light\ncornell-box\ncornell-smoke\nnext-week-final\nrest-of-life-final\nspheres:N (N from 1 to "
+      "simple-light\ncornell-box\ncornell-smoke\nnext-week-final\nrest-of-life-final\nspheres:N (N "
+      "from 1 to "
       "4000000)\n");
 }
 

@@ -6,14 +6,15 @@
 
 #include <cmath>
 #include <random>
+#include <set>
 
+#include "gpu/kernels_f32.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
 #include "light_sources.h"
 #include "probe.h"
 #include "render_gpu.h"
 #include "render_helpers.h"
-#include "gpu/kernels_f32.h"
 
 namespace rtvk {
 namespace {
@@ -147,14 +148,25 @@ TEST(Densities, TheMixturesWeightsAverageToTheAlbedo) {
   EXPECT_GT(toward_light, n / 2);  // half by the lights' density, and some by the cosine's
 }
 
-// Stratified spots: the first strata^2 samples fall one in each cell, row by row.
+// Stratified spots: the first strata^2 samples fall one in each cell, and every run of strata
+// samples covers each row and each column of cells once.
 TEST(Stratified, TheFirstSamplesCoverThePixelsCellsOnce) {
   const std::uint32_t strata = 4;
-  for (std::uint32_t k = 0; k < strata * strata; ++k) {
-    const real2 spot = pixel_spot(pixel_sample_stream(0, 5, k), strata, k);
-    EXPECT_EQ(std::uint32_t(spot.x * strata), k % strata) << k;
-    EXPECT_EQ(std::uint32_t(spot.y * strata), k / strata) << k;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> cells;
+  for (std::uint32_t run = 0; run < strata; ++run) {
+    std::set<std::uint32_t> columns, rows;
+    for (std::uint32_t k = run * strata; k < (run + 1) * strata; ++k) {
+      const real2 spot = pixel_spot(pixel_sample_stream(0, 5, k), strata, k);
+      const std::uint32_t column = std::uint32_t(spot.x * strata),
+                          row = std::uint32_t(spot.y * strata);
+      columns.insert(column);
+      rows.insert(row);
+      cells.insert({column, row});
+    }
+    EXPECT_EQ(columns.size(), strata) << "run " << run;
+    EXPECT_EQ(rows.size(), strata) << "run " << run;
   }
+  EXPECT_EQ(cells.size(), strata * strata);
   // Past strata^2, and without strata, the book's independent spot.
   const random_stream s = pixel_sample_stream(0, 5, 16);
   EXPECT_EQ(pixel_spot(s, strata, 16), real2(rnd(s, dim_jitter_u), rnd(s, dim_jitter_v)));
@@ -220,8 +232,8 @@ TEST(Unbiased, LightsSamplingConvergesToThePlainImage) {
   for (int c = 0; c < 3; ++c) {
     const double bound = 4 * std::hypot(plain.error[c], lights.error[c]);
     EXPECT_NEAR(lights.mean[c], plain.mean[c], bound)
-        << "channel " << c << ": plain " << plain.mean[c] << " +- " << plain.error[c]
-        << ", lights " << lights.mean[c] << " +- " << lights.error[c];
+        << "channel " << c << ": plain " << plain.mean[c] << " +- " << plain.error[c] << ", lights "
+        << lights.mean[c] << " +- " << lights.error[c];
     EXPECT_LT(2 * lights.error[c], plain.error[c]) << "channel " << c;
     std::printf("channel %d: plain %.5f +- %.5f, lights %.5f +- %.5f\n", c, plain.mean[c],
                 plain.error[c], lights.mean[c], lights.error[c]);
@@ -290,8 +302,7 @@ TEST_F(GpuSampling, AOneSidedLampIsDarkFromBehind) {
 TEST_F(GpuSampling, InfiniteSamplesAreDroppedAndCounted) {
   const scene s = blinding_lamp();
   render_stats stats;
-  const framebuffer fb =
-      gpu::render_gpu(gpu(), test::scene_camera(s), s, s.render, {}, {}, &stats);
+  const framebuffer fb = gpu::render_gpu(gpu(), test::scene_camera(s), s, s.render, {}, {}, &stats);
   EXPECT_EQ(stats.dropped_samples, 8u * 8u * 3u);
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x) EXPECT_EQ(fb.at(x, y), color(0)) << x << "," << y;
@@ -313,8 +324,8 @@ TEST_F(GpuSampling, TheDevicesDensitiesAreTheHosts) {
   for (const light_record& l : lights)
     for (int k = 0; k < per_light; ++k) {
       gpu::light_probe_entry e{};
-      e.light = {glm::vec3(l.a), l.kind,          glm::vec3(l.u),      float(l.radius),
-                 glm::vec3(l.v), float(l.area),   glm::vec3(l.normal), 0};
+      e.light = {glm::vec3(l.a), l.kind,        glm::vec3(l.u),      float(l.radius),
+                 glm::vec3(l.v), float(l.area), glm::vec3(l.normal), 0};
       e.origin = glm::vec3(origin);
       directions.push_back(uniform_direction(gen));
       e.direction = glm::vec3(directions.back());
@@ -348,13 +359,46 @@ TEST_F(GpuSampling, TheDevicesDensitiesAreTheHosts) {
   }
 }
 
+// A floor lit by a small lamp far away (200 radii): in float, a direction the sampler drew inside
+// the lamp's cone can be judged outside it when the density is evaluated again, and its weight
+// is then thousands of times too large. The GPU's image must be as bright as the CPU's.
+TEST_F(GpuSampling, ASmallFarLampIsAsBrightAsOnTheCpu) {
+  scene s;
+  s.name = "far-lamp";
+  s.render.width = 32;
+  s.render.aspect = 1;
+  s.render.spp = 64;
+  s.render.jitter = true;
+  s.render.sampling = sampling_mode::lights;
+  s.sky.horizon = s.sky.zenith = color(0);
+  s.materials.push_back({"floor", material{material_type::lambertian, color(0.5), 0, 1.5, -1}});
+  s.materials.push_back({"lamp", material{material_type::diffuse_light, color(4e4), 0, 1.5, -1}});
+  s.quads.push_back({point3(-5, 0, -5), vec3(0, 0, 10), vec3(10, 0, 0), 0});
+  s.spheres.push_back(sphere(point3(3, 10, -2), 0.05, 1));
+  main_camera(s).pose.lookfrom = point3(0, 6, 6);
+  main_camera(s).pose.lookat = point3(0, 0, 0);
+  const camera cam = test::scene_camera(s);
+  const framebuffer on_cpu = render_cpu(cam, s, s.render);
+  const framebuffer on_gpu = gpu::render_gpu(gpu(), cam, s, s.render);
+  double cpu_sum = 0, gpu_sum = 0;
+  for (int y = 0; y < on_cpu.height(); ++y)
+    for (int x = 0; x < on_cpu.width(); ++x) {
+      cpu_sum += on_cpu.at(x, y).x;
+      gpu_sum += on_gpu.at(x, y).x;
+    }
+  ASSERT_GT(cpu_sum, 0);
+  EXPECT_NEAR(gpu_sum / cpu_sum, 1, 0.01) << "CPU " << cpu_sum << ", GPU " << gpu_sum;
+}
+
 // Lights sampling draws the same estimator on both backends: the book's lit scenes at measured
 // floors.
 TEST_F(GpuSampling, LightsSamplingMatchesTheCpu) {
   const struct {
     const char* name;
     int width, spp;
-  } cases[] = {{"cornell-box", 64, 16}, {"rest-of-life-final", 64, 16}, {"cornell-smoke", 64, 16},
+  } cases[] = {{"cornell-box", 64, 16},
+               {"rest-of-life-final", 64, 16},
+               {"cornell-smoke", 64, 16},
                {"simple-light", 96, 16}};
   for (const auto& c : cases) {
     scene s = test::small_scene(c.name, c.width, c.spp);

@@ -6,6 +6,7 @@
 
 #include "errors.h"
 #include "image_io.h"
+#include "light_sources.h"
 #include "render_helpers.h"
 #include "scene_file.h"
 #include "temp_dir.h"
@@ -235,6 +236,39 @@ TEST(SceneFile, TexturesLampsAndMediaRoundTrip) {
   EXPECT_NE(dumped.find("\"two.png\""), std::string::npos) << dumped;
 }
 
+// Lights sampling's fields: the render's sampling mode, a one-sided lamp, objects aimed at though
+// they emit nothing. Read as written, dumped the same; the lights gathered are the lamp and the
+// marked sphere and quad, in that order.
+TEST(SceneFile, SamplingFieldsRoundTrip) {
+  const std::string text = R"({"render":{"sampling":"lights","spp":4},
+    "materials":{"lamp":{"type":"diffuse_light","emit":[4,4,4],"one_sided":true},
+                 "glass":{"type":"dielectric","ir":1.5}},
+    "spheres":[{"center":[0,0,0],"radius":1,"material":"glass","sample":true}],
+    "quads":[{"Q":[0,2,0],"u":[1,0,0],"v":[0,0,1],"material":"lamp"},
+             {"Q":[0,3,0],"u":[1,0,0],"v":[0,0,1],"material":"glass","sample":true},
+             {"Q":[0,4,0],"u":[1,0,0],"v":[0,0,1],"material":"glass","sample":false}]})";
+  const scene s = parse_scene_json(text, "s.json");
+  EXPECT_EQ(s.render.sampling, sampling_mode::lights);
+  EXPECT_TRUE(s.materials[0].m.one_sided);
+  EXPECT_TRUE(s.spheres[0].sampled);
+  EXPECT_TRUE(s.quads[1].sampled);
+  EXPECT_FALSE(s.quads[2].sampled);
+  const std::vector<light_record> lights = scene_lights(s);
+  ASSERT_EQ(lights.size(), 3u);
+  EXPECT_EQ(lights[0].kind, uint(RTVK_LIGHT_QUAD));
+  EXPECT_EQ(lights[0].a, point3(0, 2, 0));
+  EXPECT_EQ(lights[1].kind, uint(RTVK_LIGHT_SPHERE));
+  EXPECT_EQ(lights[2].a, point3(0, 3, 0));
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "s.json")), dumped);
+  EXPECT_NE(dumped.find("\"one_sided\":true"), std::string::npos) << dumped;
+  EXPECT_NE(dumped.find("\"sampling\":\"lights\""), std::string::npos) << dumped;
+  // The default writes nothing: files without the fields dump as before.
+  const scene plain = parse_scene_json(R"({"spheres":[]})", "p.json");
+  EXPECT_EQ(plain.render.sampling, sampling_mode::automatic);
+  EXPECT_EQ(dump_scene_json(plain).find("sampling"), std::string::npos);
+}
+
 // The book's byte rule after stb_image's gamma 2.2: mid grey 128 is (128/255)^2.2 = 0.2195,
 // floor(256 * 0.2195) = 56.
 TEST(SceneFile, ImageTexturesAreLinearBytesAsTheBookMakesThem) {
@@ -382,6 +416,21 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
            R"(,"media":[{"shape":"sphere","center":[0,0,0],"radius":1,"density":1,"material":"m"}]})",
        "/media/0/material: a medium scatters by an isotropic material, \"m\" is normal"},
       {R"({"noise_seed":-1,"spheres":[]})", "/noise_seed: expected an integer in [0, 4294967295]"},
+      {R"({"render":{"sampling":"importance"},"spheres":[]})",
+       "/render/sampling: expected \"plain\", \"lights\" or \"auto\", got \"importance\""},
+      {"{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":1,"material":"m","sample":1}]})",
+       "/spheres/0/sample: expected true or false, got a number"},
+      {"{" + m +
+           R"(,"quads":[{"Q":[0,0,0],"u":[1,0,0],"v":[0,1,0],"material":"m","sample":"yes"}]})",
+       "/quads/0/sample: expected true or false, got a string"},
+      {R"({"materials":{"l":{"type":"diffuse_light","emit":[1,1,1],"one_sided":"front"}},"spheres":[]})",
+       "/materials/l/one_sided: expected true or false, got a string"},
+      {R"({"materials":{"l":{"type":"lambertian","albedo":[1,1,1],"one_sided":true}},"spheres":[]})",
+       "/materials/l/one_sided: unknown field"},
+      {"{" + m +
+           R"(,"groups":{"g":{"spheres":[{"center":[0,0,0],"radius":1,"material":"m","sample":true}]}},"spheres":[]})",
+       "/groups/g/spheres/0/sample: lights sampling aims only at the scene's own objects, not a "
+       "group's"},
       // Found by the fuzzer: a box whose sides' normals overflow float read once, then its dump
       // (the sides as quads) did not read back.
       {"{" + m + R"(,"boxes":[{"a":[0,8,0],"b":[1.3e35,2,1],"material":"m"}]})",

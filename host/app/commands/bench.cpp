@@ -16,8 +16,8 @@
 #include "gpu_engine.h"
 #include "gpu_flags.h"
 #include "interrupt.h"
-#include "pipeline_cache.h"
 #include "light_sources.h"
+#include "pipeline_cache.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "render_memory.h"
@@ -70,11 +70,12 @@ void print(const bench_record& r) {
                   r.gpu_seconds, r.setup_seconds, r.first_sample_seconds);
   else
     std::snprintf(setup, sizeof setup, "BVH build %.3f s", r.build_seconds);
-  std::printf("%-4s %s %dx%d, %d spp, depth %d%s: %.1f M rays in %.3f s (%s) = %.2f Mrays/s (%s%s)\n",
-              r.backend.c_str(), r.scene.c_str(), r.width, r.height, r.spp, r.depth,
-              r.sampling == "lights" ? ", lights sampling" : "",
-              double(r.rays) / 1e6, r.seconds, setup, r.mrays_per_s(), r.device.c_str(),
-              r.backend == "cpu" ? (", " + std::to_string(r.threads) + " threads").c_str() : "");
+  std::printf(
+      "%-4s %s %dx%d, %d spp, depth %d%s: %.1f M rays in %.3f s (%s) = %.2f Mrays/s (%s%s)\n",
+      r.backend.c_str(), r.scene.c_str(), r.width, r.height, r.spp, r.depth,
+      r.sampling == "lights" ? ", lights sampling" : "", double(r.rays) / 1e6, r.seconds, setup,
+      r.mrays_per_s(), r.device.c_str(),
+      r.backend == "cpu" ? (", " + std::to_string(r.threads) + " threads").c_str() : "");
   if (r.dropped > 0)
     std::printf("     %llu samples were NaN or infinite and added black\n",
                 static_cast<unsigned long long>(r.dropped));

@@ -19,11 +19,11 @@
 #include "image_compare.h"
 #include "image_io.h"
 #include "interrupt.h"
+#include "light_sources.h"
 #include "partial_image.h"
 #include "pipeline_cache.h"
 #include "progress.h"
 #include "quantize.h"
-#include "light_sources.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "render_jobs.h"
@@ -118,9 +118,9 @@ void summarize(const run_context& run, const render_job& job, const std::string&
                double seconds, std::uint64_t dropped) {
   if (run.o.quiet) return;
   const bool lights = samples_lights(run.s, run.s.render);
-  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp%s, on %s in %.3f s -> %s\n",
-               label(run, job).c_str(), run.win.width, run.win.height, run.win.samples(),
-               lights ? " (lights sampling)" : "", backend.c_str(), seconds, job.output.c_str());
+  std::fprintf(stderr, "rtvk: %s %dx%d, %d spp%s, on %s in %.3f s -> %s\n", label(run, job).c_str(),
+               run.win.width, run.win.height, run.win.samples(), lights ? " (lights sampling)" : "",
+               backend.c_str(), seconds, job.output.c_str());
   if (dropped > 0)
     std::fprintf(stderr, "rtvk: %llu samples were NaN or infinite and added black\n",
                  static_cast<unsigned long long>(dropped));

@@ -52,7 +52,8 @@ void append_bytes(std::string& out, const T&... values) {
 
 // What identifies the image a job draws, whatever machine draws it: every number of the scene that
 // changes a pixel -- render settings but the sample count (pieces of one render may come from
-// runs with different --spp as long as their sample ranges do not overlap), the sky, the
+// runs with different --spp as long as their sample ranges do not overlap; not under lights
+// sampling, whose stratified spots depend on --spp: the strata are part of it), the sky, the
 // materials, the spheres -- as their binary values, then the job's pose. Bytes, not the scene's
 // JSON text: formatting a million spheres as text took longer than rendering them small. The
 // scene part is the same for every job of a run: made once, and only for pieces (.exr).

@@ -27,9 +27,12 @@ void apply_render(const scene_overrides& o, render_settings& r) {
   if (o.depth) r.max_depth = *o.depth;
   if (o.seed) r.seed = std::uint32_t(*o.seed);
   if (o.sampling) {
-    if (*o.sampling == "plain") r.sampling = sampling_mode::plain;
-    else if (*o.sampling == "lights") r.sampling = sampling_mode::lights;
-    else if (*o.sampling == "auto") r.sampling = sampling_mode::automatic;
+    if (*o.sampling == "plain")
+      r.sampling = sampling_mode::plain;
+    else if (*o.sampling == "lights")
+      r.sampling = sampling_mode::lights;
+    else if (*o.sampling == "auto")
+      r.sampling = sampling_mode::automatic;
     else
       throw usage_error("--sampling " + *o.sampling + ": expected plain, lights or auto");
   }

@@ -97,15 +97,14 @@ loop_budget_error overrun(const render_status& st, std::uint32_t budget, const d
       std::to_string(st.starved_pixels) + " pixel samples needed more than " +
       std::to_string(budget) + " loop iterations on " + dev.name +
       " (lavapipe silently stops loops at 65,535, so rtvk stops first, on every device, and "
-      "writes no image): lower --depth or use fewer spheres");
+      "writes no image): lower --depth, use fewer spheres or --sampling plain");
 }
 
 // Samples past the exact sums' limit: the render fails rather than clamp them into bias.
 sample_overflow_error overflow(const render_status& st, float limit) {
-  return sample_overflow_error(
-      std::to_string(st.overflowed_samples) + " samples had a channel above " +
-      format_number(limit) +
-      ", more than rtvk's exact sums hold; no image was written");
+  return sample_overflow_error(std::to_string(st.overflowed_samples) +
+                               " samples had a channel above " + format_number(limit) +
+                               ", more than rtvk's exact sums hold; no image was written");
 }
 
 // The brightest channel value a path can bring back: the sky's (every attenuation is at most 1),
