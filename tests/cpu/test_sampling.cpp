@@ -390,23 +390,30 @@ TEST_F(GpuSampling, ASmallFarLampIsAsBrightAsOnTheCpu) {
   EXPECT_NEAR(gpu_sum / cpu_sum, 1, 0.01) << "CPU " << cpu_sum << ", GPU " << gpu_sum;
 }
 
-// Lights sampling draws the same estimator on both backends: the book's lit scenes at measured
-// floors.
+// Lights sampling draws the same estimator on both backends: the book's lit scenes, at floors
+// measured on lavapipe (Mesa 22.3.6) less measured_agreement's margin (identical images count as
+// 70 dB, the rule's ceiling). next-week-final's fog and glass part paths on rounding more often.
 TEST_F(GpuSampling, LightsSamplingMatchesTheCpu) {
   const struct {
     const char* name;
     int width, spp;
-  } cases[] = {{"cornell-box", 64, 16},
-               {"rest-of-life-final", 64, 16},
-               {"cornell-smoke", 64, 16},
-               {"simple-light", 96, 16}};
+    double psnr_db, share;
+  } cases[] = {{"cornell-box", 64, 16, 73.0, 1e-4},
+               {"rest-of-life-final", 64, 16, 73.0, 1e-4},
+               {"cornell-smoke", 64, 16, 73.0, 1e-4},
+               {"simple-light", 96, 16, 70.1, 1e-4},
+               {"next-week-final", 100, 16, 53.6, 9e-4}};
   for (const auto& c : cases) {
     scene s = test::small_scene(c.name, c.width, c.spp);
     s.render.sampling = sampling_mode::lights;
     const image_difference d = compare_images(test::gpu_image(gpu(), s), test::cpu_image(s),
                                               monte_carlo_agreement.tolerance);
+    const camera cam = test::scene_camera(s);
+    const agreement rule =
+        test::measured_agreement(c.psnr_db, c.share, cam.image_width() * cam.image_height());
     std::printf("%s: %.1f dB, %lld pixels over\n", c.name, d.psnr_db, (long long)d.pixels_over);
-    EXPECT_GE(d.psnr_db, 55) << c.name;
+    EXPECT_GE(d.psnr_db, rule.min_psnr_db) << c.name;
+    EXPECT_LE(d.share_over, rule.max_share) << c.name << ": " << d.pixels_over << " pixels over";
   }
 }
 

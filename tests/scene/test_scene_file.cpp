@@ -262,7 +262,7 @@ TEST(SceneFile, SamplingFieldsRoundTrip) {
   const std::string dumped = dump_scene_json(s);
   EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "s.json")), dumped);
   EXPECT_NE(dumped.find("\"one_sided\":true"), std::string::npos) << dumped;
-  EXPECT_NE(dumped.find("\"sampling\":\"lights\""), std::string::npos) << dumped;
+  EXPECT_NE(dumped.find("\"sampling\": \"lights\""), std::string::npos) << dumped;
   // The default writes nothing: files without the fields dump as before.
   const scene plain = parse_scene_json(R"({"spheres":[]})", "p.json");
   EXPECT_EQ(plain.render.sampling, sampling_mode::automatic);
