@@ -176,6 +176,44 @@ TEST(Stratified, TheFirstSamplesCoverThePixelsCellsOnce) {
   EXPECT_EQ(pixel_strata(render_settings{.spp = 100, .jitter = true}, false), 1u);
 }
 
+// Which renders sample lights: auto where the scene has 1 to 256 of them; asking lights of a
+// scene without lights or with more is refused naming the flag and the count.
+TEST(Sampling, AutoPicksLightsOnlyWhereThereAreSomeAndNotTooMany) {
+  scene s = test::small_scene("cornell-box", 8, 1);
+  EXPECT_TRUE(samples_lights(s, s.render));
+  s.render.sampling = sampling_mode::plain;
+  EXPECT_FALSE(samples_lights(s, s.render));
+  const scene dark = test::small_scene("book-final", 8, 1);
+  EXPECT_FALSE(samples_lights(dark, dark.render));
+  render_settings lights = dark.render;
+  lights.sampling = sampling_mode::lights;
+  try {
+    check_sampling(dark, lights, "--sampling");
+    ADD_FAILURE() << "no lights, not refused";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--sampling lights: the scene has no lights"),
+              std::string::npos)
+        << e.what();
+  }
+  scene many = test::small_scene("cornell-box", 8, 1);
+  const int lamp = many.quads[2].material;
+  for (int k = 0; k < 300; ++k)
+    many.spheres.push_back(sphere(point3(100 + k, 300, 300), 0.5, lamp));
+  EXPECT_EQ(scene_lights(many).size(), 301u);
+  EXPECT_FALSE(samples_lights(many, many.render));  // auto: plain
+  render_settings forced = many.render;
+  forced.sampling = sampling_mode::lights;
+  try {
+    check_sampling(many, forced, "--sampling");
+    ADD_FAILURE() << "301 lights, not refused";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("the scene has 301 lights; lights sampling aims at most 256"),
+        std::string::npos)
+        << e.what();
+  }
+}
+
 scene small_cornell(int width, int spp, sampling_mode m) {
   scene s = test::small_scene("cornell-box", width, spp);
   s.render.spp = spp;
