@@ -256,16 +256,25 @@ scene simple_light_scene() {
   return s;
 }
 
+// The Cornell box's camera, its dark background and its walls' three materials, as both books
+// set them up.
+struct cornell_colors {
+  int red, white, green;  // material indices
+};
+cornell_colors cornell_setup(scene& s, int spp) {
+  next_week_camera(s, point3(278, 278, -800), point3(278, 278, 0), 40);
+  s.render = book_render(600, 1.0, spp);
+  s.sky.horizon = s.sky.zenith = color(0, 0, 0);
+  return {add_material(s, "red", lambertian(color(.65, .05, .05))),
+          add_material(s, "white", lambertian(color(.73, .73, .73))),
+          add_material(s, "green", lambertian(color(.12, .45, .15)))};
+}
+
 // The Cornell box's walls (green right, red left, white floor, ceiling and back), its lamp of
 // `light` at (Q, u, v), and the book's camera. Returns the white material.
 int add_cornell_walls(scene& s, color light, const point3& Q, const vec3& u, const vec3& v,
                       bool smoke) {
-  next_week_camera(s, point3(278, 278, -800), point3(278, 278, 0), 40);
-  s.render = book_render(600, 1.0, 200);
-  s.sky.horizon = s.sky.zenith = color(0, 0, 0);
-  const int red = add_material(s, "red", lambertian(color(.65, .05, .05)));
-  const int white = add_material(s, "white", lambertian(color(.73, .73, .73)));
-  const int green = add_material(s, "green", lambertian(color(.12, .45, .15)));
+  const auto [red, white, green] = cornell_setup(s, 200);
   const int lit = add_material(s, "light", lamp(light));
   s.quads.push_back({point3(555, 0, 0), vec3(0, 555, 0), vec3(0, 0, 555), green});
   s.quads.push_back({point3(0, 0, 0), vec3(0, 555, 0), vec3(0, 0, 555), red});
@@ -302,12 +311,7 @@ scene cornell_box_scene() {
 scene rest_of_life_final_scene() {
   scene s;
   s.name = "rest-of-life-final";
-  next_week_camera(s, point3(278, 278, -800), point3(278, 278, 0), 40);
-  s.render = book_render(600, 1.0, 100);
-  s.sky.horizon = s.sky.zenith = color(0, 0, 0);
-  const int red = add_material(s, "red", lambertian(color(.65, .05, .05)));
-  const int white = add_material(s, "white", lambertian(color(.73, .73, .73)));
-  const int green = add_material(s, "green", lambertian(color(.12, .45, .15)));
+  const auto [red, white, green] = cornell_setup(s, 100);
   material front_lamp = lamp(color(15, 15, 15));
   front_lamp.one_sided = true;
   const int light = add_material(s, "light", front_lamp);
