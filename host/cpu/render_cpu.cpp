@@ -43,8 +43,8 @@ struct pixel_inputs {
   std::uint32_t strata;          // pixel_strata: the cells a side the samples spread over
 };
 
-// Whether a sample's color can be added: a NaN or an infinity (a density of zero where a
-// direction was drawn, an overflow) would spoil the pixel's sum. The GPU tells them apart by
+// Whether a sample's color can be added: a NaN or an infinity (a lamp past float's range, an
+// overflow along a path) would spoil the pixel's sum. The GPU tells them apart by
 // their float bits (fixed_sum.h); here in double, and past float's range counts as infinite.
 bool finite_sample(const color& c) {
   const double most = 3.4028234663852886e38;  // FLT_MAX

@@ -175,7 +175,7 @@ inline precise real3 light_random(light_record l, real3 origin, real time, real 
 // The density of a direction light l's own sampler drew (light_random), from the book's formulas
 // at the sampled point, without testing again whether it hits l: in float a direction drawn at
 // l's edge can test outside it, and its weight would then be thousands of times too large (a
-// lamp 200 radii away drew 100 times too bright on the GPU). Exact math gives light_pdf.
+// lamp 200 radii away drew 114 times too bright on lavapipe). Exact math gives light_pdf.
 inline precise real light_sampled_pdf(light_record l, real3 origin, real3 direction, real time) {
   if (l.kind == uint(RTVK_LIGHT_SPHERE)) {
     precise real3 oc = moved_center(l.a, l.u, time) - origin;

@@ -337,8 +337,8 @@ struct render_push {
   uint instance_count;  // instances in their storage buffer
   uint medium_count;    // media in their storage buffer
   uint light_count;     // lights in their storage buffer; 0: plain sampling
-  uint strata;          // the pixel is cut into strata x strata cells, sample k < strata^2 lands in
-                        // cell k (stratified sampling); 0 or 1: not stratified
+  uint strata;          // the pixel is cut into strata x strata cells, each of samples 0 to
+                        // strata^2 - 1 in its own (camera_rays.h); 0 or 1: not stratified
 };
 
 // std430 array element: one pixel's exact running sums, 48 bytes. Each channel is a 96-bit

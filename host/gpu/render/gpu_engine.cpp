@@ -107,8 +107,9 @@ sample_overflow_error overflow(const render_status& st, float limit) {
                                ", more than rtvk's exact sums hold; no image was written");
 }
 
-// The brightest channel value a path can bring back: the sky's (every attenuation is at most 1),
-// or the normal material's 1.
+// The brightest channel value the sums are scaled for: the sky's or the normal material's 1.
+// Lamps and lights sampling's weights (at most twice the albedo a bounce) can go past it; a
+// sample past the sums' limit (2^33 times this at most) fails the render rather than clamp.
 double brightest(const sky& background) {
   double most = 1;
   for (int k = 0; k < 3; ++k) most = std::max({most, background.horizon[k], background.zenith[k]});
