@@ -90,9 +90,9 @@ inline precise real pixel_coordinate(real x, uint n) {
 // is cut into strata x strata cells, and sample k < strata^2 jitters inside one of them, each
 // cell once. The book visits the cells row by row; here sample k = j strata + i takes column i
 // and row (i + j) mod strata, so that each run of strata samples from a multiple of strata also
-// covers every row and column once (a partial render, the viewer's first frames, is not squeezed into the bottom
-// rows). A sample's spot depends on its index alone: sample ranges drawn apart still merge into
-// the whole render.
+// covers every row and column once (a partial render, the viewer's first frames, is not squeezed
+// into the bottom rows). A sample's spot depends on its index alone: sample ranges drawn apart
+// still merge into the whole render.
 inline precise real2 pixel_spot(random_stream s, uint strata, uint sample_index) {
   precise real2 spot = real2(real(rnd(s, dim_jitter_u)), real(rnd(s, dim_jitter_v)));
   if (strata <= 1u || sample_index >= strata * strata) return spot;

@@ -83,7 +83,8 @@ using uvec2 = glm::uvec2;
 #define RTVK_MATERIAL_DIFFUSE_LIGHT 5  // emits its color (any strength); no bounce
 #define RTVK_MATERIAL_ISOTROPIC 6      // scatters every way alike: a medium's phase function
 // gpu_material::flags.
-#define RTVK_MATERIAL_ONE_SIDED 1u  // diffuse_light: emits from its front side only (the third book's)
+// diffuse_light: emits from its front side only (the third book's)
+#define RTVK_MATERIAL_ONE_SIDED 1u
 
 // What a light is (gpu_light::kind): a shape lights sampling aims directions at.
 #define RTVK_LIGHT_SPHERE 0    // by the cone it fills, seen from the point (the book's)
@@ -468,21 +469,21 @@ struct kernel_probe_entry {
 // std430 array element for light_probe.comp (light_probe.h): pdf.h's densities toward one light
 // and the cosine density, at a point the host picks, with the host's random numbers.
 struct light_probe_entry {
-  gpu_light light;        // in: the light
-  vec3 origin;            // in: where the directions start, scene units
-  float time;             // in: the ray's instant (a sphere light moves)
-  vec3 direction;         // in: a direction whose densities are asked
-  float r1;               // in: the first random number of the samplers
-  vec3 normal;            // in: the cosine density's unit normal
-  float r2;               // in: the second
-  vec3 sampled;           // out: light_random(light, origin, time, r1, r2)
-  float pdf;              // out: light_pdf(light, origin, direction, time)
-  vec3 cosine_sampled;    // out: cosine_random(normal, r1, r2)
-  float cosine;           // out: cosine_pdf(normal, direction)
-  float sampled_pdf;      // out: light_pdf of `sampled`
-  uint pad0;              // unused
-  uint pad1;              // unused
-  uint pad2;              // unused
+  gpu_light light;      // in: the light
+  vec3 origin;          // in: where the directions start, scene units
+  float time;           // in: the ray's instant (a sphere light moves)
+  vec3 direction;       // in: a direction whose densities are asked
+  float r1;             // in: the first random number of the samplers
+  vec3 normal;          // in: the cosine density's unit normal
+  float r2;             // in: the second
+  vec3 sampled;         // out: light_random(light, origin, time, r1, r2)
+  float pdf;            // out: light_pdf(light, origin, direction, time)
+  vec3 cosine_sampled;  // out: cosine_random(normal, r1, r2)
+  float cosine;         // out: cosine_pdf(normal, direction)
+  float sampled_pdf;    // out: light_pdf of `sampled`
+  uint pad0;            // unused
+  uint pad1;            // unused
+  uint pad2;            // unused
 };
 
 // The kernel probe's to_fixed scale and limit: a render's, F = 42 (sample_sum.h).
