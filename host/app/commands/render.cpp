@@ -67,6 +67,7 @@ struct run_context {
   ppm_encoding enc;
   bool several;          // more than one image: each summary line names its camera and frame
   std::size_t* written;  // images finished and written so far
+  bool lights;           // samples toward the scene's lights (samples_lights), for the summaries
 };
 
 std::string label(const run_context& run, const render_job& job) {
@@ -117,10 +118,10 @@ void write_job(const run_context& run, const render_job& job, const image_rgb8& 
 void summarize(const run_context& run, const render_job& job, const std::string& backend,
                double seconds, std::uint64_t dropped) {
   if (run.o.quiet) return;
-  const bool lights = samples_lights(run.s, run.s.render);
   std::fprintf(stderr, "rtvk: %s %dx%d, %d spp%s, on %s in %.3f s -> %s\n", label(run, job).c_str(),
-               run.win.width, run.win.height, run.win.samples(), lights ? " (lights sampling)" : "",
-               backend.c_str(), seconds, job.output.c_str());
+               run.win.width, run.win.height, run.win.samples(),
+               run.lights ? " (lights sampling)" : "", backend.c_str(), seconds,
+               job.output.c_str());
   if (dropped > 0)
     std::fprintf(stderr, "rtvk: %llu samples were NaN or infinite and added black\n",
                  static_cast<unsigned long long>(dropped));
@@ -270,7 +271,8 @@ int run_render(render_options o) {
                         win,
                         o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3,
                         jobs.size() > 1,
-                        &written};
+                        &written,
+                        samples_lights(s, s.render)};
   try {
     return render_all(run, jobs);
   } catch (const render_cancelled& e) {
