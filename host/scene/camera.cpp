@@ -77,6 +77,10 @@ constexpr named_projection projections[] = {
     {projection::equirectangular, "equirectangular"},
     {projection::fisheye_equidistant, "fisheye-equidistant"},
     {projection::fisheye_equisolid, "fisheye-equisolid"},
+    {projection::opencv, "opencv"},
+    {projection::opencv_fisheye, "opencv-fisheye"},
+    {projection::fisheye_polynomial, "fisheye-polynomial"},
+    {projection::cylindrical, "cylindrical"},
 };
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "camera_rays.h"
 #include "image_size.h"
+#include "lens_intrinsics.h"
 #include "vec3.h"
 
 namespace rtvk {
@@ -18,7 +19,17 @@ enum class projection {
   equirectangular,      // the full sphere: longitude across, latitude up (2:1 for square pixels)
   fisheye_equidistant,  // a round image; the angle from the axis grows with the radius
   fisheye_equisolid,    // a round image of equal solid angle per area
+  opencv,               // OpenCV's pinhole with radial-tangential (rational) distortion
+  opencv_fisheye,       // OpenCV's fisheye (Kannala-Brandt): distorted angle k1..k4
+  fisheye_polynomial,   // angle from the axis a polynomial of the image radius (f-theta lenses)
+  cylindrical,          // a central cylindrical panorama: longitude across, tan(latitude) up
 };
+
+// The models a calibration sets up (lens_intrinsics): pixels, not a field of view, fix the rays.
+constexpr bool is_calibrated(projection p) {
+  return p == projection::opencv || p == projection::opencv_fisheye ||
+         p == projection::fisheye_polynomial || p == projection::cylindrical;
+}
 
 // "perspective", "orthographic", "equirectangular", "fisheye-equidistant", "fisheye-equisolid".
 std::string_view projection_name(projection p);
@@ -45,6 +56,7 @@ struct camera_pose {
   double shutter_open = 0;   // when the shutter opens, seconds after the frame's time
   double shutter_close = 0;  // when it closes, seconds after the frame's time, >= shutter_open;
                              // equal: an instant, no motion blur
+  lens_intrinsics intrinsics;  // the calibrated models' focal lengths, principal point, distortion
 
   bool operator==(const camera_pose&) const = default;
 };

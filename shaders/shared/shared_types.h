@@ -117,6 +117,10 @@ using uvec2 = glm::uvec2;
 #define RTVK_PROJECTION_EQUIRECTANGULAR 2
 #define RTVK_PROJECTION_FISHEYE_EQUIDISTANT 3
 #define RTVK_PROJECTION_FISHEYE_EQUISOLID 4
+#define RTVK_PROJECTION_OPENCV 5              // fx fy cx cy, k1 k2 p1 p2 k3 k4 k5 k6
+#define RTVK_PROJECTION_OPENCV_FISHEYE 6      // fx fy cx cy, k1 k2 k3 k4
+#define RTVK_PROJECTION_FISHEYE_POLYNOMIAL 7  // cx cy, angle = k0 + k1 r + ... + k4 r^4
+#define RTVK_PROJECTION_CYLINDRICAL 8         // fx: pixels per radian across, fy: per unit up
 
 // std140. Each vec3 takes a 16-byte slot; the scalar after it packs into the slot's last 4 bytes.
 struct camera_ubo {
