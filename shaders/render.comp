@@ -110,6 +110,9 @@ void main() {
   uint overflowed = 0u;  // samples past the limit
   uint dropped = 0u;     // samples not finite
   uint rays_added = 0u;  // by the samples added (when counted)
+  // A calibrated lens's inverse loops too: each first ray counts its most Newton steps.
+  uint lens_work = calibrated_model(cam.projection) ? RTVK_LENS_ITERATIONS + 1u : 0u;
+  iterations += lens_work;
   path_state p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   while (true) {
     precise vec3 c;
@@ -120,6 +123,7 @@ void main() {
     rays_added += rays;
     rays = 0u;
     if (acc.samples >= pc.sample_target) break;
+    iterations += lens_work;
     p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   }
   if (iterations > pc.loop_budget) {

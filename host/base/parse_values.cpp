@@ -42,6 +42,25 @@ vec3 parse_vec3(const std::string& text, const std::string& flag) {
   return v;
 }
 
+std::vector<double> parse_numbers(const std::string& text, const std::string& flag,
+                                  std::size_t least, std::size_t most, const std::string& what) {
+  std::vector<double> out;
+  std::string_view rest(text);
+  bool more = true;
+  while (more) {
+    const auto comma = rest.find(',');
+    const auto part = finite_number(rest.substr(0, comma));
+    if (!part || out.size() == most)
+      throw usage_error(flag + ": invalid list '" + text + "' (expected " + what + ")");
+    out.push_back(*part);
+    more = comma != std::string_view::npos;
+    if (more) rest = rest.substr(comma + 1);
+  }
+  if (out.size() < least)
+    throw usage_error(flag + ": invalid list '" + text + "' (expected " + what + ")");
+  return out;
+}
+
 double parse_aspect(const std::string& text, const std::string& flag) {
   const auto colon = text.find(':');
   std::optional<double> ratio;

@@ -1,5 +1,7 @@
 #pragma once
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include "vec3.h"
 
@@ -12,5 +14,10 @@ double parse_aspect(const std::string& text, const std::string& flag = "--aspect
 // Parses three finite numbers separated by commas ("13,2,3"). Throws usage_error naming the flag
 // and the text.
 vec3 parse_vec3(const std::string& text, const std::string& flag);
+
+// Parses from `least` to `most` finite numbers separated by commas ("500,500,319.5,239.5").
+// Throws usage_error naming the flag, the text and what was expected (`what`).
+std::vector<double> parse_numbers(const std::string& text, const std::string& flag,
+                                  std::size_t least, std::size_t most, const std::string& what);
 
 }  // namespace rtvk

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "camera_lens.h"
 #include "format.h"
 
 namespace rtvk {
@@ -54,6 +55,9 @@ void check_pose(const camera_pose& p) {
     throw std::invalid_argument("the shutter must open (" + format_number(p.shutter_open) +
                                 " s) no later than it closes (" + format_number(p.shutter_close) +
                                 " s), both finite");
+  if (!std::isfinite(p.readout))
+    throw std::invalid_argument("the rolling shutter's readout must be finite, got " +
+                                format_number(p.readout));
   if (glm::length(p.lookfrom - p.lookat) == 0)
     throw std::invalid_argument("lookfrom and lookat are the same point");
   if (glm::length(glm::cross(p.vup, p.lookfrom - p.lookat)) == 0)
@@ -141,6 +145,17 @@ camera::camera(const camera_pose& pose, double aspect_ratio, int image_width, do
   f.projection = uint(pose.projection);
   f.time_open = frame_time + pose.shutter_open;
   f.shutter = (frame_time + pose.shutter_close) - f.time_open;
+  f.readout = pose.readout;
+  f.image_width = uint(image_width_);
+  f.image_height = uint(image_height_);
+  if (is_calibrated(pose.projection)) setup_lens(pose, image_width_, image_height_, f);
+}
+
+std::optional<glm::dvec2> camera::project(const point3& p) const {
+  const vec3 d = p - frame_.origin;
+  const glm::dvec3 c(glm::dot(d, frame_.lens_u), -glm::dot(d, frame_.lens_v),
+                     -glm::dot(d, frame_.axis_w));
+  return project_calibrated(frame_, c);
 }
 
 }  // namespace rtvk

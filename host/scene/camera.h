@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -56,7 +57,9 @@ struct camera_pose {
   double shutter_open = 0;   // when the shutter opens, seconds after the frame's time
   double shutter_close = 0;  // when it closes, seconds after the frame's time, >= shutter_open;
                              // equal: an instant, no motion blur
-  lens_intrinsics intrinsics;  // the calibrated models' focal lengths, principal point, distortion
+  double readout = 0;        // rolling shutter: seconds from the first row's opening to the
+                             // last's; > 0 top row first, < 0 bottom row first, 0: global
+  lens_intrinsics intrinsics{};  // the calibrated models' focal lengths, principal point, distortion
 
   bool operator==(const camera_pose&) const = default;
 };
@@ -86,6 +89,15 @@ class camera {
     return rtvk::get_ray(frame_, s, t, lens);
   }
 
+  // A calibrated model's ray through image point (x, y): pixels, x to the right, y down, pixel
+  // (0, 0)'s center at (0, 0), as OpenCV counts them. Zero direction where it sees nothing.
+  ray pixel_ray(double x, double y) const { return rtvk::calibrated_ray(frame_, x, y); }
+
+  // Where a calibrated model images world point p, in pixel_ray's pixels (the lens's forward
+  // projection, as cv::projectPoints computes it for the OpenCV models); nothing where p is
+  // outside the model's field. Only for the calibrated models.
+  std::optional<glm::dvec2> project(const point3& p) const;
+
   // The direction get_ray gives at (s, t) for the equirectangular and fisheye models (no lens).
   vec3 panoramic_direction(double s, double t) const {
     return rtvk::panoramic_direction(frame_, s, t);
@@ -107,7 +119,10 @@ class camera {
   double focus_dist() const { return frame_.focus_dist; }
   double fisheye_fov() const { return frame_.fisheye_fov; }                // radians
   double time_open() const { return frame_.time_open; }                    // seconds
-  double time_close() const { return frame_.time_open + frame_.shutter; }  // seconds
+  // The last instant a sample sees: the last row's closing, under a rolling shutter. Seconds.
+  double time_close() const {
+    return frame_.time_open + std::abs(frame_.readout) + frame_.shutter;
+  }
 
  private:
   int image_width_;     // pixels

@@ -98,6 +98,12 @@ camera_pose next_projection(const camera_pose& p) {
       out.projection = projection::fisheye_equisolid;
       break;
     case projection::fisheye_equisolid:
+      out.projection = projection::cylindrical;
+      break;
+    case projection::cylindrical:  // (uncalibrated: fields of view make its intrinsics)
+    case projection::opencv:       // the calibrated lenses leave the cycle for the pinhole
+    case projection::opencv_fisheye:
+    case projection::fisheye_polynomial:
       out.projection = projection::perspective;
       break;
   }

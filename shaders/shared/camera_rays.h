@@ -28,7 +28,16 @@ struct camera_frame {
   real focus_dist;      // distance to the plane in perfect focus, scene units
   uint projection;      // RTVK_PROJECTION_*
   real time_open;       // the instant the shutter opens, seconds (frame time + shutter open)
-  real shutter;         // how long it stays open, seconds; 0: an instant
+  real shutter;         // how long each row's shutter stays open, seconds; 0: an instant
+  real readout;         // rolling shutter: first row's opening to the last's, seconds; > 0 top
+                        // row first, < 0 bottom row first, 0: global shutter
+  real lens_limit;      // calibrated models' valid field (see calibrated_direction)
+  real lens_angle;      // opencv-fisheye: the largest angle from the axis, radians
+  real4 intrinsics;     // calibrated models: fx, fy, cx, cy in this image's pixels
+  real4 distortion_a;   // lens_intrinsics::k[0..3] (opencv: k1 k2 p1 p2)
+  real4 distortion_b;   // lens_intrinsics::k[4..7] (opencv: k3 k4 k5 k6)
+  uint image_width;     // pixels
+  uint image_height;    // pixels
 };
 #else
 #define camera_frame camera_ubo
@@ -53,6 +62,145 @@ inline precise real3 panoramic_direction(camera_frame cam, real s, real t) {
   return cos(theta) * -cam.axis_w + sin(theta) * (x / r * cam.lens_u + y / r * cam.lens_v);
 }
 
+// Newton steps the calibrated models' inverses take at most (each counts against lavapipe's loop
+// budget in render.comp); they converge in 3 to 6 where the host's check let the lens through.
+#define RTVK_LENS_ITERATIONS 20u
+
+// Whether `projection` is one of the calibrated models, whose rays come from pixels and intrinsics.
+inline bool calibrated_model(uint projection) {
+  return projection >= RTVK_PROJECTION_OPENCV;
+}
+
+// Where an inverse stops: within a few of the compilation's epsilon of the target (relative to
+// its size), and where it gives up: 64 times that, the float rounding of a residual near 1.
+inline precise real lens_tolerance(real target) {
+  return real(16.0) * real_epsilon * (real(1.0) + target);
+}
+
+// OpenCV's rational radial-tangential distortion (cv::projectPoints) of the normalized point p
+// (x / z, y / z), and its partial derivatives: d_dx = d(distorted) / dx, d_dy = ... / dy.
+// ka = (k1, k2, p1, p2), kb = (k3, k4, k5, k6).
+inline precise real2 opencv_distort(real4 ka, real4 kb, real2 p, OUT(real2) d_dx,
+                                    OUT(real2) d_dy) {
+  precise real r2 = p.x * p.x + p.y * p.y;
+  precise real a = real(1.0) + r2 * (ka.x + r2 * (ka.y + r2 * kb.x));
+  precise real b = real(1.0) + r2 * (kb.y + r2 * (kb.z + r2 * kb.w));
+  precise real da = ka.x + r2 * (real(2.0) * ka.y + r2 * real(3.0) * kb.x);  // d a / d r2
+  precise real db = kb.y + r2 * (real(2.0) * kb.z + r2 * real(3.0) * kb.w);  // d b / d r2
+  precise real radial = a / b;
+  precise real dradial = (da * b - a * db) / (b * b);
+  precise real xy = p.x * p.y;
+  precise real cross_term = real(2.0) * xy * dradial + real(2.0) * ka.z * p.x +
+                            real(2.0) * ka.w * p.y;  // d xd / dy = d yd / dx
+  precise real dx_dx = radial + real(2.0) * p.x * p.x * dradial + real(2.0) * ka.z * p.y +
+                       real(6.0) * ka.w * p.x;
+  precise real dy_dy = radial + real(2.0) * p.y * p.y * dradial + real(6.0) * ka.z * p.y +
+                       real(2.0) * ka.w * p.x;
+  d_dx = real2(dx_dx, cross_term);
+  d_dy = real2(cross_term, dy_dy);
+  precise real xd = p.x * radial + real(2.0) * ka.z * xy + ka.w * (r2 + real(2.0) * p.x * p.x);
+  precise real yd = p.y * radial + ka.z * (r2 + real(2.0) * p.y * p.y) + real(2.0) * ka.w * xy;
+  return real2(xd, yd);
+}
+
+// The normalized point p that opencv_distort takes to `target`, by Newton's method from target
+// itself; false where it does not converge, the Jacobian folds, or p leaves the radius where the
+// lens is invertible (r^2 <= limit2, found by the host).
+inline bool opencv_undistort(real4 ka, real4 kb, real2 target, real limit2, OUT(real2) p) {
+  precise real tol = lens_tolerance(max(abs(target.x), abs(target.y)));
+  precise real loose = real(64.0) * tol;
+  precise real2 at = target;
+  bool converged = false;
+  for (uint n = 0u; n <= RTVK_LENS_ITERATIONS; ++n) {
+    real2 d_dx, d_dy;
+    precise real2 e = opencv_distort(ka, kb, at, d_dx, d_dy) - target;
+    precise real err = max(abs(e.x), abs(e.y));
+    converged = err <= tol || (n == RTVK_LENS_ITERATIONS && err <= loose);
+    if (converged || n == RTVK_LENS_ITERATIONS) break;
+    precise real det = d_dx.x * d_dy.y - d_dy.x * d_dx.y;
+    if (!(det > real(0.0))) break;  // folded
+    precise real2 step = real2(d_dy.y * e.x - d_dy.x * e.y, d_dx.x * e.y - d_dx.y * e.x);
+    at = at - step / det;
+  }
+  p = at;
+  precise real r2 = at.x * at.x + at.y * at.y;
+  return converged && r2 <= limit2;
+}
+
+// OpenCV's fisheye (Kannala-Brandt): the distorted angle theta_d of a ray at angle theta from the
+// axis, theta (1 + k1 theta^2 + k2 theta^4 + k3 theta^6 + k4 theta^8), and its derivative.
+inline precise real fisheye_distort(real4 k, real theta, OUT(real) slope) {
+  precise real t2 = theta * theta;
+  precise real d_dtheta =
+      real(1.0) + t2 * (real(3.0) * k.x +
+                        t2 * (real(5.0) * k.y + t2 * (real(7.0) * k.z + t2 * real(9.0) * k.w)));
+  slope = d_dtheta;
+  precise real d = theta * (real(1.0) + t2 * (k.x + t2 * (k.y + t2 * (k.z + t2 * k.w))));
+  return d;
+}
+
+// The angle theta in [0, theta_max] that fisheye_distort takes to theta_d, by Newton's method
+// (from theta_d, as cv::fisheye::undistortPoints starts); false where it does not converge.
+inline bool fisheye_undistort(real4 k, real theta_d, real theta_max, OUT(real) theta) {
+  precise real tol = lens_tolerance(theta_d);
+  precise real loose = real(64.0) * tol;
+  precise real at = min(theta_d, theta_max);
+  bool converged = false;
+  for (uint n = 0u; n <= RTVK_LENS_ITERATIONS; ++n) {
+    real slope;
+    precise real e = fisheye_distort(k, at, slope) - theta_d;
+    converged = abs(e) <= tol || (n == RTVK_LENS_ITERATIONS && abs(e) <= loose);
+    if (converged || n == RTVK_LENS_ITERATIONS || !(slope > real(0.0))) break;
+    precise real next = at - e / slope;
+    at = min(max(next, real(0.0)), theta_max);
+  }
+  theta = at;
+  return converged;
+}
+
+// The direction a calibrated model sees at image point (x, y), in pixels with pixel (0, 0)'s
+// center at (0, 0), x to the right and y down (OpenCV's), in the camera's frame: x right, y
+// down, z forward (OpenCV's). Zero where the model sees nothing: outside the fisheyes' fields,
+// past a cylinder's half turn, where an inverse does not converge.
+inline precise real3 calibrated_direction(camera_frame cam, real x, real y) {
+  precise real2 q = real2((x - cam.intrinsics.z) / cam.intrinsics.x,
+                          (y - cam.intrinsics.w) / cam.intrinsics.y);
+  if (cam.projection == RTVK_PROJECTION_OPENCV) {
+    real2 p;
+    if (!opencv_undistort(cam.distortion_a, cam.distortion_b, q, cam.lens_limit, p))
+      return real3(0.0);
+    return real3(p.x, p.y, real(1.0));
+  }
+  if (cam.projection == RTVK_PROJECTION_CYLINDRICAL) {
+    if (abs(q.x) > pi) return real3(0.0);  // q.x: longitude, radians
+    return real3(sin(q.x), q.y, cos(q.x));
+  }
+  // The fisheyes: an angle from the axis, about the direction of q.
+  precise real r = sqrt(q.x * q.x + q.y * q.y);
+  precise real theta;
+  if (cam.projection == RTVK_PROJECTION_OPENCV_FISHEYE) {
+    if (r > cam.lens_limit) return real3(0.0);  // r: the distorted angle
+    if (!fisheye_undistort(cam.distortion_a, r, cam.lens_angle, theta)) return real3(0.0);
+  } else {  // fisheye-polynomial: r in the calibration's pixels (intrinsics.xy: the scale)
+    if (cam.lens_limit > real(0.0) && r > cam.lens_limit) return real3(0.0);
+    real4 k = cam.distortion_a;
+    theta = k.x + r * (k.y + r * (k.z + r * (k.w + r * cam.distortion_b.x)));
+    if (theta < real(0.0) || theta > pi) return real3(0.0);
+  }
+  if (r == real(0.0)) return real3(sin(theta), real(0.0), cos(theta));
+  precise real sin_theta = sin(theta);
+  precise real3 d = real3(sin_theta * q.x / r, sin_theta * q.y / r, cos(theta));
+  return d;
+}
+
+// The world ray of a calibrated model through image point (x, y) (calibrated_direction's
+// pixels); the camera frame's x is lens_u, y is -lens_v, z is -axis_w.
+inline ray calibrated_ray(camera_frame cam, real x, real y) {
+  precise real3 c = calibrated_direction(cam, x, y);
+  precise real3 direction = c.x * cam.lens_u - c.y * cam.lens_v - c.z * cam.axis_w;
+  return ray(cam.origin, direction, real(0.0));
+}
+
 // The ray through normalized image coordinates (s, t) -- (0, 0) is the lower-left corner of the
 // viewport, (1, 1) the upper-right -- leaving the lens at `lens`, a point of the unit disk. Where
 // the model sees nothing (outside a fisheye's circle) the direction is zero: no ray, and the
@@ -72,6 +220,11 @@ inline ray get_ray(camera_frame cam, real s, real t, real2 lens) {
     precise real3 from = on_focus_plane + cam.focus_dist * cam.axis_w + offset;
     precise real3 direction = on_focus_plane - from;
     return ray(from, direction, real(0.0));
+  }
+  if (calibrated_model(cam.projection)) {  // (s, t) = (0, 0): the image's lower-left corner
+    precise real x = s * real(cam.image_width) - real(0.5);
+    precise real y = (real(1.0) - t) * real(cam.image_height) - real(0.5);
+    return calibrated_ray(cam, x, y);
   }
   return ray(cam.origin, panoramic_direction(cam, s, t), real(0.0));
 }
@@ -102,8 +255,30 @@ inline precise real2 pixel_spot(random_stream s, uint strata, uint sample_index)
   return (cell + spot) / real(strata);
 }
 
+// A rolling shutter opens row y (from the top) |readout| * y / (height - 1) seconds after the
+// first row, top row first for readout > 0, bottom row first for < 0.
+inline precise real row_delay(camera_frame cam, uint height, uint j) {
+  if (cam.readout == real(0.0) || height < 2u) return real(0.0);
+  uint rows_before = cam.readout > real(0.0) ? height - 1u - j : j;
+  return abs(cam.readout) * real(rows_before) / real(height - 1u);
+}
+
+// The instant a sample sees: its row's opening plus a uniform share of the time it stays open.
+inline precise real sample_time(camera_frame cam, uint height, uint j, random_stream s) {
+  precise real open = cam.time_open + row_delay(cam, height, j);
+  return cam.shutter > real(0.0) ? open + cam.shutter * real(rnd(s, dim_time)) : open;
+}
+
 inline ray sample_ray(camera_frame cam, uint width, uint height, uint i, uint j, random_stream s,
                       bool jitter, bool lens, uint strata, uint sample_index) {
+  if (calibrated_model(cam.projection)) {  // pixel (i, row from the top)'s center is (i, row)
+    precise real2 spot = jitter ? pixel_spot(s, strata, sample_index) : real2(0.5);
+    precise real x = real(i) + spot.x - real(0.5);
+    precise real y = real(height - 1u - j) + real(0.5) - spot.y;
+    ray r = calibrated_ray(cam, x, y);
+    r.time = sample_time(cam, height, j, s);
+    return r;
+  }
   precise real2 spot = jitter ? pixel_spot(s, strata, sample_index) : real2(0.0);
   precise real x = real(i) + spot.x;
   precise real y = real(j) + spot.y;
@@ -114,8 +289,7 @@ inline ray sample_ray(camera_frame cam, uint width, uint height, uint i, uint j,
           ? random_in_unit_disk(real(rnd(s, dim_lens_a)), real(rnd(s, dim_lens_b)))
           : real2(0.0);
   ray r = get_ray(cam, u, v, on_lens);
-  r.time = cam.shutter > real(0.0) ? cam.time_open + cam.shutter * real(rnd(s, dim_time))
-                                   : cam.time_open;
+  r.time = sample_time(cam, height, j, s);
   return r;
 }
 

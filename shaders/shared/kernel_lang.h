@@ -4,7 +4,7 @@
 // C++ backends, so that "the GPU mirrors get_ray" is "the GPU compiles get_ray".
 //
 // Kernels write
-//   real, real2, real3  the compilation's scalar and vectors: GLSL float; C++ RTVK_REAL (double
+//   real, real2..4      the compilation's scalar and vectors: GLSL float; C++ RTVK_REAL (double
 //                       for the CPU reference; float for the tests that hold the C++ against
 //                       the GPU operation for operation). One typedef per compilation.
 //   float, uint, bool   the same in both languages, whatever `real` is.
@@ -27,6 +27,8 @@
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <limits>
 
 // A translation unit picks its scalar before the first kernel header, e.g. the float one of the
 // tests: #define RTVK_REAL float, #define RTVK_KERNEL_NAMESPACE rtvk::f32.
@@ -46,6 +48,9 @@ namespace RTVK_KERNEL_NAMESPACE {
 using real = RTVK_REAL;
 using real2 = glm::vec<2, real>;
 using real3 = glm::vec<3, real>;
+using real4 = glm::vec<4, real>;
+// The compilation's machine epsilon: iterations that converge stop within a few of it.
+inline constexpr real real_epsilon = std::numeric_limits<real>::epsilon();
 using uint = std::uint32_t;
 using uvec2 = glm::uvec2;
 using uvec3 = glm::uvec3;
@@ -90,6 +95,8 @@ inline uint floatBitsToUint(float x) {  // GLSL's built-in
 #define real float
 #define real2 vec2
 #define real3 vec3
+#define real4 vec4
+#define real_epsilon 1.1920929e-7
 precise float cube_root(float x) {
   return pow(x, 1.0 / 3.0);
 }

@@ -61,9 +61,9 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_LIGHTS 13    // bool: scattering samples toward the lights (render.comp)
 #define RTVK_SPEC_COUNT 14     // constant ids in use
 
-// Views (cameras, animation frames) one dispatch draws, its z index picking the view: 112 camera
-// blocks of 144 bytes are 15.75 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
-#define RTVK_MAX_VIEWS 112
+// Views (cameras, animation frames) one dispatch draws, its z index picking the view: 85 camera
+// blocks of 192 bytes are 15.94 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
+#define RTVK_MAX_VIEWS 85
 
 // Traversal stack entries. The BVH builder keeps every tree at most this many interior levels
 // deep (bvh::max_depth), and a traversal remembers at most one child per level on its path; that
@@ -140,10 +140,16 @@ struct camera_ubo {
   float focus_dist;    // distance to the plane in perfect focus, scene units
   vec3 to_lower_left;  // lower_left - origin, formed in double on the host, scene units
   float time_open;     // the instant the shutter opens, seconds (frame time + shutter open)
-  float shutter;       // how long it stays open, seconds; 0: an instant
-  uint pad0;           // unused
-  uint pad1;           // unused
-  uint pad2;           // unused
+  float shutter;       // how long each row's shutter stays open, seconds; 0: an instant
+  float readout;       // rolling shutter: seconds from the first row's opening to the last
+                       // row's; > 0 top row first, < 0 bottom row first, 0: global shutter
+  float lens_limit;    // calibrated models' valid field (camera_rays.h): opencv, the largest
+                       // undistorted radius^2; opencv-fisheye, the largest distorted angle,
+                       // radians; fisheye-polynomial, the image circle's radius, pixels (0: none)
+  float lens_angle;    // opencv-fisheye: the largest angle from the axis, radians
+  vec4 intrinsics;     // calibrated models: fx, fy, cx, cy in this image's pixels
+  vec4 distortion_a;   // k[0..3] of lens_intrinsics (opencv: k1 k2 p1 p2)
+  vec4 distortion_b;   // k[4..7] of lens_intrinsics (opencv: k3 k4 k5 k6)
 };
 
 // std430 array element: 32 bytes. With the BVH the buffer holds the spheres in its leaf order,
@@ -512,7 +518,13 @@ static_assert(offsetof(camera_ubo, focus_dist) == 108);
 static_assert(offsetof(camera_ubo, to_lower_left) == 112);
 static_assert(offsetof(camera_ubo, time_open) == 124);
 static_assert(offsetof(camera_ubo, shutter) == 128);
-static_assert(sizeof(camera_ubo) == 144);
+static_assert(offsetof(camera_ubo, readout) == 132);
+static_assert(offsetof(camera_ubo, lens_limit) == 136);
+static_assert(offsetof(camera_ubo, lens_angle) == 140);
+static_assert(offsetof(camera_ubo, intrinsics) == 144);
+static_assert(offsetof(camera_ubo, distortion_a) == 160);
+static_assert(offsetof(camera_ubo, distortion_b) == 176);
+static_assert(sizeof(camera_ubo) == 192);
 static_assert(offsetof(gpu_sphere, center) == 0);
 static_assert(offsetof(gpu_sphere, radius) == 12);
 static_assert(offsetof(gpu_sphere, material) == 16);

@@ -64,6 +64,30 @@ void scene_flags::add_to(CLI::App& cmd) {
                                  "stratified pixels) or auto (default: lights where the scene has "
                                  "lights)")
                       ->group(group);
+  const std::string lens = "Calibrated cameras (docs/camera.md)";
+  calibration_opt_ = cmd.add_option("--calibration", calibration_,
+                                    "OpenCV calibration file (cv::FileStorage YAML or JSON: "
+                                    "camera_matrix, distortion_coefficients, image size): the "
+                                    "opencv or opencv-fisheye model, its intrinsics and image size")
+                         ->group(lens);
+  colmap_opt_ = cmd.add_option("--colmap", colmap_,
+                               "COLMAP text model folder (cameras.txt, images.txt): one camera "
+                               "per image, named after it, all rendered unless --camera picks")
+                    ->group(lens);
+  intrinsics_opt_ = cmd.add_option("--intrinsics", intrinsics_,
+                                   "fx,fy,cx,cy in pixels (OpenCV's: pixel (0,0)'s center at "
+                                   "0,0); cylindrical: fx in pixels per radian")
+                        ->group(lens);
+  distortion_opt_ = cmd.add_option("--distortion", distortion_,
+                                   "Distortion coefficients: opencv k1,k2,p1,p2[,k3[,k4,k5,k6]], "
+                                   "opencv-fisheye k1,k2,k3,k4, fisheye-polynomial k0,..,k4 "
+                                   "(radians per pixel^n)")
+                        ->group(lens);
+  rolling_shutter_opt_ =
+      cmd.add_option("--rolling-shutter", rolling_shutter_,
+                     "Rolling shutter [top-down:|bottom-up:]SECONDS: each row opens later by its "
+                     "share of the readout time, and stays open for --shutter")
+          ->group(lens);
 }
 
 scene_overrides scene_flags::overrides() const {
@@ -82,7 +106,12 @@ scene_overrides scene_flags::overrides() const {
           .fisheye_fov = if_given(fisheye_fov_opt_, fisheye_fov_),
           .shutter = if_given(shutter_opt_, shutter_),
           .orbit = if_given(orbit_opt_, orbit_),
-          .sampling = if_given(sampling_opt_, sampling_)};
+          .sampling = if_given(sampling_opt_, sampling_),
+          .calibration = if_given(calibration_opt_, calibration_),
+          .intrinsics = if_given(intrinsics_opt_, intrinsics_),
+          .distortion = if_given(distortion_opt_, distortion_),
+          .rolling_shutter = if_given(rolling_shutter_opt_, rolling_shutter_),
+          .colmap = if_given(colmap_opt_, colmap_)};
 }
 
 }  // namespace rtvk

@@ -29,6 +29,7 @@ class scene_flags {
   std::string projection_;
   std::string shutter_;
   std::string sampling_;
+  std::string calibration_, intrinsics_, distortion_, rolling_shutter_, colmap_;
   CLI::Option* width_opt_ = nullptr;
   CLI::Option* aspect_opt_ = nullptr;
   CLI::Option* spp_opt_ = nullptr;
@@ -45,6 +46,11 @@ class scene_flags {
   CLI::Option* fisheye_fov_opt_ = nullptr;
   CLI::Option* shutter_opt_ = nullptr;
   CLI::Option* sampling_opt_ = nullptr;
+  CLI::Option* calibration_opt_ = nullptr;
+  CLI::Option* intrinsics_opt_ = nullptr;
+  CLI::Option* distortion_opt_ = nullptr;
+  CLI::Option* rolling_shutter_opt_ = nullptr;
+  CLI::Option* colmap_opt_ = nullptr;
 };
 
 }  // namespace rtvk

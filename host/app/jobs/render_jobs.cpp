@@ -118,6 +118,14 @@ std::string job_fingerprint(const std::string& scene_text, const camera_pose& p,
     std::snprintf(fov, sizeof fov, " %.17g", p.fisheye_fov);
     model = "|" + std::string(projection_name(p.projection)) + fov;
   }
+  if (is_calibrated(p.projection) || p.readout != 0) {  // the lens and the rolling shutter
+    const lens_intrinsics& l = p.intrinsics;
+    char lens[512];
+    std::snprintf(lens, sizeof lens, "|lens %d %d %.17g %.17g %.17g %.17g %.17g|ro %.17g", l.width,
+                  l.height, l.fx, l.fy, l.cx, l.cy, l.radius, p.readout);
+    model += lens;
+    for (double k : l.k) model += " " + format_number(k);
+  }
   std::string time;
   if (instants) {
     char t[96];
@@ -237,7 +245,10 @@ render_window plan_window(const scene& s, const job_request& req, const camera& 
 
 std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output_pattern& output,
                                   const scene_overrides& overrides, render_window& window) {
-  select_cameras(s, req.cameras);
+  overrides.apply_cameras(s);
+  // A COLMAP model's views are all rendered unless --camera picks some.
+  select_cameras(s, req.cameras.empty() && overrides.colmap ? std::vector<std::string>{"all"}
+                                                            : req.cameras);
   overrides.apply(s);
   const int_range frames = plan_frames(s, req, output);
   std::vector<render_job> jobs = make_jobs(s, req, output, overrides, frames);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "calibration_file.h"
+#include "colmap_model.h"
 #include "errors.h"
 #include "format.h"
 #include "light_sources.h"
@@ -14,6 +16,37 @@ double checked(double v, bool ok, const std::string& flag, const std::string& ex
   if (!ok || !std::isfinite(v))
     throw usage_error(flag + ": " + format_number(v) + " is not " + expected);
   return v;
+}
+
+// An aspect ratio that gives exactly `height` rows at `width` (camera's max(1, int(w / a))):
+// width / height itself can round to one row fewer.
+double exact_aspect(int width, int height) {
+  double a = double(width) / height;
+  while (int(width / a) < height) a = std::nextafter(a, 0.0);
+  while (int(width / a) > height) a = std::nextafter(a, 1e300);
+  return a;
+}
+
+// The image size a calibration was made at, unless --width or --aspect says otherwise: with
+// --width alone the intrinsics scale to it (camera_lens.cpp).
+void calibrated_size(const scene_overrides& o, scene& s, int width, int height) {
+  if (!o.aspect) s.render.aspect = exact_aspect(width, height);
+  if (!o.width) s.render.width = width;
+}
+
+// DIRECTION:SECONDS (top-down or bottom-up) or SECONDS (top-down): the signed readout.
+double parse_rolling_shutter(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  const std::string direction = colon == std::string::npos ? "top-down" : text.substr(0, colon);
+  const std::string seconds = colon == std::string::npos ? text : text.substr(colon + 1);
+  if (direction != "top-down" && direction != "bottom-up")
+    throw usage_error("--rolling-shutter " + text +
+                      ": expected [top-down:|bottom-up:]SECONDS, e.g. top-down:0.03");
+  const double readout = parse_numbers(seconds, "--rolling-shutter", 1, 1,
+                                       "the readout time in seconds, >= 0")[0];
+  if (!(readout >= 0))
+    throw usage_error("--rolling-shutter " + text + ": the readout time must be >= 0 seconds");
+  return direction == "top-down" ? readout : -readout;
 }
 
 bool moves_pose(const scene_overrides& o) {
@@ -48,13 +81,44 @@ void apply_pose(const scene_overrides& o, camera_pose& c) {
   if (o.focus_dist) c.focus_dist = checked(*o.focus_dist, *o.focus_dist > 0, "--focus-dist", "> 0");
 }
 
+// The calibrated models' intrinsics from --calibration, --intrinsics and --distortion (in that
+// order: the flags adjust a file's values).
+void apply_lens(const scene_overrides& o, const std::optional<calibration>& cal, camera_pose& c) {
+  if (cal) {
+    c.projection = cal->model;
+    c.intrinsics = cal->lens;
+  }
+  if (o.intrinsics) {
+    const std::vector<double> v =
+        parse_numbers(*o.intrinsics, "--intrinsics", 4, 4, "fx,fy,cx,cy in pixels");
+    c.intrinsics.fx = v[0];
+    c.intrinsics.fy = v[1];
+    c.intrinsics.cx = v[2];
+    c.intrinsics.cy = v[3];
+  }
+  if (o.distortion) {
+    const std::vector<double> v = parse_numbers(
+        *o.distortion, "--distortion", 1, 8,
+        "1 to 8 coefficients: opencv k1,k2,p1,p2[,k3[,k4,k5,k6]], opencv-fisheye k1..k4, "
+        "fisheye-polynomial k0..k4");
+    c.intrinsics.k = {};
+    std::copy(v.begin(), v.end(), c.intrinsics.k.begin());
+  }
+  if (o.rolling_shutter) c.readout = parse_rolling_shutter(*o.rolling_shutter);
+}
+
 // The camera model: not a move, so it applies to every pose of a path, keyframes included.
-void apply_model(const scene_overrides& o, camera_pose& c) {
+void apply_model(const scene_overrides& o, const std::optional<calibration>& cal,
+                 camera_pose& c) {
+  apply_lens(o, cal, c);
   if (o.projection) {
     const std::optional<projection> p = projection_from_name(*o.projection);
     if (!p)
       throw usage_error("--projection " + *o.projection + ": not a projection; expected one of " +
                         projection_names());
+    if (cal && *p != cal->model)
+      throw usage_error("--projection " + *o.projection + ": --calibration " + *o.calibration +
+                        " is for the " + std::string(projection_name(cal->model)) + " model");
     c.projection = *p;
   }
   if (o.fisheye_fov)
@@ -83,7 +147,37 @@ void apply_model(const scene_overrides& o, camera_pose& c) {
 
 }  // namespace
 
+void scene_overrides::apply_cameras(scene& s) const {
+  if (colmap) {
+    const std::vector<colmap_view> views = read_colmap_model(*colmap);
+    s.cameras.clear();
+    for (const colmap_view& v : views) {
+      const lens_intrinsics& a = views.front().pose.intrinsics;
+      const lens_intrinsics& b = v.pose.intrinsics;
+      if (a.width != b.width || a.height != b.height)
+        throw usage_error("--colmap " + *colmap + ": image " + v.image_name + " is " +
+                          std::to_string(b.width) + "x" + std::to_string(b.height) + ", " +
+                          views.front().image_name + " " + std::to_string(a.width) + "x" +
+                          std::to_string(a.height) + ": rtvk renders one size per run");
+      camera_path path;
+      path.pose = v.pose;
+      s.cameras.push_back({v.name, path});
+    }
+    const lens_intrinsics& l = views.front().pose.intrinsics;
+    calibrated_size(*this, s, l.width, l.height);
+  }
+  if (calibration) {
+    const rtvk::calibration cal = read_opencv_calibration(*calibration);
+    calibrated_size(*this, s, cal.lens.width, cal.lens.height);
+  }
+}
+
 void scene_overrides::apply(scene& s) const {
+  if (colmap && calibration)
+    throw usage_error("--calibration " + *calibration + ": --colmap " + *colmap +
+                      " has its own cameras' intrinsics");
+  std::optional<rtvk::calibration> cal;
+  if (calibration) cal = read_opencv_calibration(*calibration);
   apply_render(*this, s.render);
   try {  // lights asked of a scene without (or with too many)
     check_sampling(s, s.render, sampling ? "--sampling" : s.name + ": /render/sampling");
@@ -98,8 +192,8 @@ void scene_overrides::apply(scene& s) const {
                         cam.name + " of " + s.name +
                         " moves by keyframes; pick another with --camera or edit its keyframes");
     apply_pose(*this, cam.path.pose);
-    apply_model(*this, cam.path.pose);
-    for (camera_keyframe& k : cam.path.keyframes) apply_model(*this, k.pose);
+    apply_model(*this, cal, cam.path.pose);
+    for (camera_keyframe& k : cam.path.keyframes) apply_model(*this, cal, k.pose);
     if (orbit) {
       cam.path.motion = camera_motion::orbit;
       cam.path.orbit_period = checked(*orbit, *orbit > 0, "--orbit", "> 0 seconds");

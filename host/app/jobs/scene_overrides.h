@@ -27,6 +27,15 @@ struct scene_overrides {
   std::optional<std::string> shutter;     // OPEN:CLOSE as typed, seconds after the frame's time
   std::optional<double> orbit;            // seconds per turn of the built-in orbit path
   std::optional<std::string> sampling;    // plain, lights or auto (sampling_mode)
+  std::optional<std::string> calibration;  // OpenCV calibration file (calibration_file.h)
+  std::optional<std::string> intrinsics;   // fx,fy,cx,cy as typed, pixels
+  std::optional<std::string> distortion;   // the model's coefficients as typed, comma-separated
+  std::optional<std::string> rolling_shutter;  // DIRECTION:SECONDS as typed
+  std::optional<std::string> colmap;       // a COLMAP text model's folder: one camera per view
+
+  // Replaces the scene's cameras with a COLMAP model's views (--colmap), and sets the image size
+  // from the calibration or the views when no --width is given. Before the cameras are chosen.
+  void apply_cameras(scene& s) const;
 
   // The scene's settings with the overrides applied, to every camera in s.cameras (narrow them
   // to the chosen ones first). Throws usage_error naming the flag.

@@ -22,6 +22,12 @@ camera_ubo to_ubo(const camera& cam) {
   u.image_height = uint(cam.image_height());
   u.time_open = float(f.time_open);
   u.shutter = float(f.shutter);
+  u.readout = float(f.readout);
+  u.lens_limit = float(f.lens_limit);
+  u.lens_angle = float(f.lens_angle);
+  u.intrinsics = vec4(f.intrinsics);
+  u.distortion_a = vec4(f.distortion_a);
+  u.distortion_b = vec4(f.distortion_b);
   return u;
 }
 
