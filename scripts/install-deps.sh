@@ -6,7 +6,8 @@
 #   install-deps.sh --test   also what only the tests use: Slurm, for the farm job files' test,
 #                            man-db, to read the installed man page, Xvfb, an X server
 #                            without a screen for rtvk view's window, xdotool, to drive it, and
-#                            twm, a window manager to minimize it
+#                            twm, a window manager to minimize it, and python3-opencv, the
+#                            calibrated cameras' oracle (cv2.projectPoints)
 set -euo pipefail
 
 packages=(
@@ -20,7 +21,7 @@ packages=(
   help2man dpkg-dev file
 )
 if [ "${1:-}" = "--test" ]; then
-  packages+=(slurm-wlm man-db xvfb xdotool twm)
+  packages+=(slurm-wlm man-db xvfb xdotool twm python3-opencv)
 fi
 
 missing=()
