@@ -41,6 +41,11 @@ quad_geometry quad_at(uint k) {
   return g;
 }
 
+// Which object the last hit found was (its scan-order key) and the instance + 1 it was reached
+// through (0: the scene's own): aov.comp reads them; elsewhere the stores are dead and dropped.
+uint hit_object;
+uint hit_instance;
+
 // Instance k's placement as the shared kernels read it (instance_space.h: to_group, carry_back).
 instance_frame frame_of(uint k) {
   instance_frame f;
@@ -265,6 +270,8 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
   }
   if (best < 0) return false;
   record_winner(best_ref, best_inst, r, world_sr, closest, rec);
+  hit_object = uint(best);
+  hit_instance = best_inst;
   return true;
 }
 
@@ -328,6 +335,8 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
     }
   if (best < 0) return false;
   record_winner(best_ref, best_inst, r, sr, closest, rec);
+  hit_object = uint(best);
+  hit_instance = best_inst;
   return true;
 }
 

@@ -342,12 +342,20 @@ void bvh_world::walk(std::uint32_t root, const ray& r, const sheared_ray& sheare
 }
 
 bool bvh_world::hit(const ray& r, double t_min, double t_max, hit_record& rec) const {
+  std::uint32_t object, instance;
+  return hit_which(r, t_min, t_max, rec, object, instance);
+}
+
+bool bvh_world::hit_which(const ray& r, double t_min, double t_max, hit_record& rec,
+                          std::uint32_t& object, std::uint32_t& instance) const {
   if (nodes_.empty()) return false;
   const sheared_ray sheared = triangles_.empty() ? sheared_ray{} : shear_ray(r);
   nearest best{t_max};
   walk(0, r, sheared, t_min, best, -1);
   if (best.key < 0) return false;
   record(best, r, sheared, rec);
+  object = std::uint32_t(best.key & 0xffffffff);
+  instance = std::uint32_t(best.instance + 1);
   return true;
 }
 

@@ -28,6 +28,11 @@ class bvh_world final : public hittable {
   explicit bvh_world(const scene& s, int threads = 0);
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override;
+  // As hit, and which object won: `object`, its place in the scan order (the scene index of the
+  // world's own, spheres then quads then triangles; an instance's object its place in its
+  // group), and `instance`, the instance + 1 it was reached through (0: the world's own).
+  bool hit_which(const ray& r, double t_min, double t_max, hit_record& rec, std::uint32_t& object,
+                 std::uint32_t& instance) const;
 
  private:
   struct nearest;

@@ -88,6 +88,37 @@ Imf::FrameBuffer slices(float* rgb, const Imath::Box2i& data_window) {
   return fb;
 }
 
+// The channels of the AOVs `which` of `a` (aov_image.h's names), declared and sliced.
+void add_aov_channels(const aov_image& a, unsigned which, const Imath::Box2i& data, Imf::Header& h,
+                      Imf::FrameBuffer& fb) {
+  const std::size_t row = std::size_t(data.size().x + 1);
+  const auto add = [&](const char* name, Imf::PixelType type, const void* base, int stride) {
+    h.channels().insert(name, Imf::Channel(type));
+    // Slices take non-const pointers for both directions; an OutputFile only reads them.
+    char* p = static_cast<char*>(const_cast<void*>(base));
+    fb.insert(name, Imf::Slice::Make(type, p, data, std::size_t(stride), row * stride));
+  };
+  if (which & aov_depth) {
+    add("distance", Imf::FLOAT, a.distance.data(), sizeof(float));
+    add("Z", Imf::FLOAT, a.depth.data(), sizeof(float));
+  }
+  if (which & aov_normal)
+    for (int c = 0; c < 3; ++c)
+      add(c == 0   ? "N.X"
+          : c == 1 ? "N.Y"
+                   : "N.Z",
+          Imf::FLOAT, a.normal.data() + c, 3 * sizeof(float));
+  if (which & aov_albedo)
+    for (int c = 0; c < 3; ++c)
+      add(c == 0   ? "albedo.R"
+          : c == 1 ? "albedo.G"
+                   : "albedo.B",
+          Imf::FLOAT, a.albedo.data() + c, 3 * sizeof(float));
+  if (which & aov_object_id) add("object_id", Imf::UINT, a.object_id.data(), sizeof(std::uint32_t));
+  if (which & aov_material_id)
+    add("material_id", Imf::UINT, a.material_id.data(), sizeof(std::uint32_t));
+}
+
 // The value of an attribute rtvk 0.1.0 pieces may lack, or empty.
 std::string optional_string(const Imf::Header& h, const char* name) {
   const Imf::StringAttribute* a = h.findTypedAttribute<Imf::StringAttribute>(name);
@@ -141,7 +172,8 @@ partial_image make_partial(const framebuffer& fb, partial_image header) {
   return p;
 }
 
-void write_partial_exr(const partial_image& p, const std::filesystem::path& path) {
+void write_partial_exr(const partial_image& p, const std::filesystem::path& path,
+                       const aov_image* aovs) {
   const Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(p.image_width - 1, p.image_height - 1));
   const Imath::Box2i data(
       Imath::V2i(p.window.x, p.window.y),
@@ -157,12 +189,33 @@ void write_partial_exr(const partial_image& p, const std::filesystem::path& path
   h.insert("rtvk.frame", Imf::IntAttribute(p.frame));
   h.insert("rtvk.version", Imf::StringAttribute(p.version));
   h.insert("rtvk.shader", Imf::StringAttribute(p.shader));
+  // Slices take non-const pointers for both directions; an OutputFile only reads them.
+  Imf::FrameBuffer fb = slices(const_cast<float*>(p.rgb.data()), data);
+  if (aovs) add_aov_channels(*aovs, aovs->which, data, h, fb);
   memory_stream out;
   try {
     Imf::OutputFile file(out, h, 1);
-    // Slices take non-const pointers for both directions; an OutputFile only reads them.
-    file.setFrameBuffer(slices(const_cast<float*>(p.rgb.data()), data));
+    file.setFrameBuffer(fb);
     file.writePixels(p.window.height);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("OpenEXR: encoding " + path.string() + ": " + e.what());
+  }
+  write_file_atomically(path, out.bytes());
+}
+
+void write_aov_exr(const aov_image& a, aov_bit which, int image_width, int image_height,
+                   const render_window& window, const std::filesystem::path& path) {
+  const Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(image_width - 1, image_height - 1));
+  const Imath::Box2i data(Imath::V2i(window.x, window.y),
+                          Imath::V2i(window.x + window.width - 1, window.y + window.height - 1));
+  Imf::Header h(display, data, 1, Imath::V2f(0, 0), 1, Imf::INCREASING_Y, Imf::ZIP_COMPRESSION);
+  Imf::FrameBuffer fb;
+  add_aov_channels(a, unsigned(which), data, h, fb);
+  memory_stream out;
+  try {
+    Imf::OutputFile file(out, h, 1);
+    file.setFrameBuffer(fb);
+    file.writePixels(window.height);
   } catch (const std::exception& e) {
     throw std::runtime_error("OpenEXR: encoding " + path.string() + ": " + e.what());
   }

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "aov_image.h"
 #include "framebuffer.h"
 #include "render_settings.h"
 
@@ -33,7 +34,14 @@ struct partial_image {
 partial_image make_partial(const framebuffer& fb, partial_image header);
 
 // Writes atomically (never a partial file at `path`). Throws std::runtime_error on failure.
-void write_partial_exr(const partial_image& p, const std::filesystem::path& path);
+// `aovs` (the window's, when given): their channels beside R, G and B.
+void write_partial_exr(const partial_image& p, const std::filesystem::path& path,
+                       const aov_image* aovs = nullptr);
+
+// One AOV of `a` alone, in an OpenEXR file of the image's size holding the window (the AOVs of a
+// PNG or PPM render: out.png -> out.depth.exr, ...). Atomic, like write_partial_exr.
+void write_aov_exr(const aov_image& a, aov_bit which, int image_width, int image_height,
+                   const render_window& window, const std::filesystem::path& path);
 
 // Throws image_read_error naming the file when it is not a regular file, cannot be read, is not
 // OpenEXR, lacks rtvk's header attributes, or claims a data window whose pixels would not fit in

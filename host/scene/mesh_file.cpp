@@ -46,6 +46,7 @@ void load_mesh(scene& s, const std::filesystem::path& file, const mesh_placement
                   file.parent_path().empty() ? "." : file.parent_path(), how);
   if (s.triangles.size() == before)
     throw usage_error(file.string() + ": the file has no triangles");
+  s.compounds.push_back({true, std::uint32_t(before), std::uint32_t(s.triangles.size() - before)});
 }
 
 scene mesh_scene(const std::filesystem::path& file) {

@@ -211,6 +211,7 @@ void add_box(scene& s, const point3& a, const point3& b, int material, const tra
   const point3 lo = glm::min(a, b), hi = glm::max(a, b);
   const vec3 dx(hi.x - lo.x, 0, 0), dy(0, hi.y - lo.y, 0), dz(0, 0, hi.z - lo.z);
   const bool mirrored = t.determinant() < 0;  // then u and v trade places: the front stays out
+  s.compounds.push_back({false, std::uint32_t(s.quads.size()), 6});
   const auto side = [&](const point3& Q, const vec3& u, const vec3& v) {
     const vec3 tu = t.apply_vector(u), tv = t.apply_vector(v);
     s.quads.push_back({t.apply_point(Q), mirrored ? tv : tu, mirrored ? tu : tv, material});

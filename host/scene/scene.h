@@ -37,6 +37,13 @@ struct named_material {
 
 // What to render, independent of the backend: the CPU builds its hittables from it (cpu/world.h),
 // the GPU packs the same spheres and materials into storage buffers (gpu/render/packing.h).
+// A run of consecutive quads or triangles of a scene that make one object.
+struct primitive_run {
+  bool triangles;       // of s.triangles; else of s.quads
+  std::uint32_t first;  // index of the first
+  std::uint32_t count;  // how many
+};
+
 struct scene {
   std::string name;                                    // built-in name or the file it came from
   std::vector<named_camera> cameras{{"default", {}}};  // at least one; the first is the
@@ -58,6 +65,9 @@ struct scene {
   std::vector<texture> textures;  // checker, image and noise textures
   std::uint32_t noise_seed = 0;   // makes the noise textures' tables (make_perlin)
   std::vector<medium> media;      // constant-density media, tested after every object
+  // Objects of several primitives, one object each to --aov object-id (object_ids.h): a box's
+  // six quads, a mesh file's triangles.
+  std::vector<primitive_run> compounds;
   time_span motion;  // the instants rays may sample, seconds: BVHs bound moving spheres over it
                      // (render plans widen it to every frame's shutter; default [0, 1])
 };

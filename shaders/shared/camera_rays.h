@@ -80,8 +80,7 @@ inline precise real lens_tolerance(real target) {
 // OpenCV's rational radial-tangential distortion (cv::projectPoints) of the normalized point p
 // (x / z, y / z), and its partial derivatives: d_dx = d(distorted) / dx, d_dy = ... / dy.
 // ka = (k1, k2, p1, p2), kb = (k3, k4, k5, k6).
-inline precise real2 opencv_distort(real4 ka, real4 kb, real2 p, OUT(real2) d_dx,
-                                    OUT(real2) d_dy) {
+inline precise real2 opencv_distort(real4 ka, real4 kb, real2 p, OUT(real2) d_dx, OUT(real2) d_dy) {
   precise real r2 = p.x * p.x + p.y * p.y;
   precise real a = real(1.0) + r2 * (ka.x + r2 * (ka.y + r2 * kb.x));
   precise real b = real(1.0) + r2 * (kb.y + r2 * (kb.z + r2 * kb.w));
@@ -92,10 +91,10 @@ inline precise real2 opencv_distort(real4 ka, real4 kb, real2 p, OUT(real2) d_dx
   precise real xy = p.x * p.y;
   precise real cross_term = real(2.0) * xy * dradial + real(2.0) * ka.z * p.x +
                             real(2.0) * ka.w * p.y;  // d xd / dy = d yd / dx
-  precise real dx_dx = radial + real(2.0) * p.x * p.x * dradial + real(2.0) * ka.z * p.y +
-                       real(6.0) * ka.w * p.x;
-  precise real dy_dy = radial + real(2.0) * p.y * p.y * dradial + real(6.0) * ka.z * p.y +
-                       real(2.0) * ka.w * p.x;
+  precise real dx_dx =
+      radial + real(2.0) * p.x * p.x * dradial + real(2.0) * ka.z * p.y + real(6.0) * ka.w * p.x;
+  precise real dy_dy =
+      radial + real(2.0) * p.y * p.y * dradial + real(6.0) * ka.z * p.y + real(2.0) * ka.w * p.x;
   d_dx = real2(dx_dx, cross_term);
   d_dy = real2(cross_term, dy_dy);
   precise real xd = p.x * radial + real(2.0) * ka.z * xy + ka.w * (r2 + real(2.0) * p.x * p.x);
@@ -163,8 +162,8 @@ inline bool fisheye_undistort(real4 k, real theta_d, real theta_max, OUT(real) t
 // down, z forward (OpenCV's). Zero where the model sees nothing: outside the fisheyes' fields,
 // past a cylinder's half turn, where an inverse does not converge.
 inline precise real3 calibrated_direction(camera_frame cam, real x, real y) {
-  precise real2 q = real2((x - cam.intrinsics.z) / cam.intrinsics.x,
-                          (y - cam.intrinsics.w) / cam.intrinsics.y);
+  precise real2 q =
+      real2((x - cam.intrinsics.z) / cam.intrinsics.x, (y - cam.intrinsics.w) / cam.intrinsics.y);
   if (cam.projection == RTVK_PROJECTION_OPENCV) {
     real2 p;
     if (!opencv_undistort(cam.distortion_a, cam.distortion_b, q, cam.lens_limit, p))
@@ -290,6 +289,24 @@ inline ray sample_ray(camera_frame cam, uint width, uint height, uint i, uint j,
           : real2(0.0);
   ray r = get_ray(cam, u, v, on_lens);
   r.time = sample_time(cam, height, j, s);
+  return r;
+}
+
+// The ray the ground truth of pixel (i, j) (aov.h) is measured along, j from the bottom: through
+// the pixel's center for the calibrated models (where OpenCV puts pixel (i, row)), through the
+// lesson's unjittered spot for the ideal ones, through the lens's center, in the middle of the
+// row's exposure.
+inline ray center_ray(camera_frame cam, uint width, uint height, uint i, uint j) {
+  ray r;
+  if (calibrated_model(cam.projection)) {
+    r = calibrated_ray(cam, real(i), real(height - 1u - j));
+  } else {
+    precise real u = pixel_coordinate(real(i), width);
+    precise real v = pixel_coordinate(real(j), height);
+    r = get_ray(cam, u, v, real2(0.0));
+  }
+  precise real middle = cam.time_open + row_delay(cam, height, j) + cam.shutter * real(0.5);
+  r.time = middle;
   return r;
 }
 

@@ -26,6 +26,7 @@ using uvec2 = glm::uvec2;
 #define RTVK_BINDING_MATERIALS 3  // storage buffer: gpu_material[]
 #define RTVK_BINDING_STATUS 4     // storage buffer: render_status
 #define RTVK_BINDING_PROBE 5      // storage buffer: a probe's entries (probes only)
+#define RTVK_BINDING_AOV 5        // storage buffer: gpu_aov[] of a window (aov.comp only)
 #define RTVK_BINDING_BVH_NODES 6  // storage buffer: bvh_wide_node[]
 #define RTVK_BINDING_VELOCITIES \
   7                                 // storage buffer: vec4[], xyz each moving sphere's velocity,
@@ -446,6 +447,19 @@ struct world_probe_entry {
   uint pad2;        // unused
 };
 
+// std430 array element for aov.comp: what the ray through one pixel's center hits first
+// (aov.h), row-major over the render window from its top row.
+struct gpu_aov {
+  vec3 normal;     // world-space shading normal, facing against the ray; 0 where nothing is hit
+  float distance;  // along the camera ray to the hit, scene units; +inf where nothing is hit
+  vec3 albedo;     // the material's color there (aov_albedo); 0 where nothing is hit
+  float depth;     // z depth: along the camera's axis from its eye, scene units; +inf likewise
+  uint object;     // the hit object's place in the scan order (bvh_world's key), if hit
+  uint instance;   // the instance + 1 it was reached through; 0: the scene's own objects
+  uint material;   // the hit's material index, if hit
+  uint hit;        // 1 where something was hit
+};
+
 // std430 array element for kernel_probe.comp (kernel_probe.h): the host fills a hit, the ray
 // arriving at it, a material and a random stream; the shader runs the shared kernels on them.
 struct kernel_probe_entry {
@@ -501,6 +515,15 @@ struct light_probe_entry {
 #define RTVK_PROBE_SAMPLE_LIMIT 8589934592.0  // 2^33
 
 #ifdef __cplusplus
+static_assert(offsetof(gpu_aov, normal) == 0);
+static_assert(offsetof(gpu_aov, distance) == 12);
+static_assert(offsetof(gpu_aov, albedo) == 16);
+static_assert(offsetof(gpu_aov, depth) == 28);
+static_assert(offsetof(gpu_aov, object) == 32);
+static_assert(offsetof(gpu_aov, instance) == 36);
+static_assert(offsetof(gpu_aov, material) == 40);
+static_assert(offsetof(gpu_aov, hit) == 44);
+static_assert(sizeof(gpu_aov) == 48);
 static_assert(offsetof(camera_ubo, origin) == 0);
 static_assert(offsetof(camera_ubo, image_width) == 12);
 static_assert(offsetof(camera_ubo, horizontal) == 16);

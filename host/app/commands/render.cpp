@@ -2,12 +2,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "aov_output.h"
+#include "aov_pass.h"
 #include "camera.h"
 #include "commands.h"
 #include "context.h"
@@ -24,6 +27,7 @@
 #include "pipeline_cache.h"
 #include "progress.h"
 #include "quantize.h"
+#include "render_aov.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "render_jobs.h"
@@ -49,6 +53,7 @@ struct render_options {
   int threads = 0;                // CPU threads; 0: one per core
   gpu_flags gpu;                  // --device, --validate, --gpu-timeout
   scene_flags flags;              // --width, --spp, --lookfrom, ...
+  std::string aov;                // --aov: comma-separated aov_names()
 };
 
 engine_options engine_from(const render_options& o) {
@@ -68,6 +73,11 @@ struct run_context {
   bool several;          // more than one image: each summary line names its camera and frame
   std::size_t* written;  // images finished and written so far
   bool lights;           // samples toward the scene's lights (samples_lights), for the summaries
+  unsigned aovs = 0;     // --aov's aov_bit mask; 0: none
+  // What the AOV pass of the backend that drew the image found (set where aovs != 0), and
+  // whether the CPU agreed with the device's (--backend both).
+  std::function<std::vector<gpu::gpu_aov>(const render_job&)> aov_pass = {};
+  bool* aovs_alike = nullptr;
 };
 
 std::string label(const run_context& run, const render_job& job) {
@@ -86,8 +96,23 @@ const std::string& render_shader_identity() {
 
 // Writes the image, unless a signal arrived while rendering finished: Ctrl-C means no file.
 // .exr keeps the linear floats and the sample range for `rtvk merge`; .png and .ppm quantize.
+// The job's AOVs, when asked for: drawn before its image is written, so a failure leaves no file.
+std::optional<aov_image> job_aovs(const run_context& run, const render_job& job) {
+  if (run.aovs == 0) return std::nullopt;
+  return aov_from(run.aov_pass(job), object_ids(run.s), run.aovs, run.win);
+}
+
+// A PNG or PPM render's AOVs, each in its own OpenEXR file beside the image.
+void write_aov_files(const run_context& run, const render_job& job, const aov_image& a) {
+  for (aov_bit b : {aov_depth, aov_normal, aov_albedo, aov_object_id, aov_material_id})
+    if (a.which & b)
+      write_aov_exr(a, b, job.cam.image_width(), job.cam.image_height(), run.win,
+                    aov_path(job.output, b));
+}
+
 void write_job(const run_context& run, const render_job& job, const framebuffer& fb) {
   if (pending_signal() != 0) throw render_cancelled("the render had finished");
+  const std::optional<aov_image> aovs = job_aovs(run, job);
   if (format_for_path(job.output, "--output") == file_format::exr) {
     write_partial_exr(make_partial(fb, {job.cam.image_width(),
                                         job.cam.image_height(),
@@ -100,9 +125,10 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
                                         job.frame,
                                         version_string,
                                         render_shader_identity()}),
-                      job.output);
+                      job.output, aovs ? &*aovs : nullptr);
   } else {
     write_image(quantize(fb, run.s.render.gamma), job.output, run.enc);
+    if (aovs) write_aov_files(run, job, *aovs);
   }
   ++*run.written;
 }
@@ -110,7 +136,9 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
 // Writes an image the GPU encoded to 8 bits itself, with the same Ctrl-C rule.
 void write_job(const run_context& run, const render_job& job, const image_rgb8& img) {
   if (pending_signal() != 0) throw render_cancelled("the render had finished");
+  const std::optional<aov_image> aovs = job_aovs(run, job);
   write_image(img, job.output, run.enc);
+  if (aovs) write_aov_files(run, job, *aovs);
   ++*run.written;
 }
 
@@ -191,9 +219,21 @@ std::size_t gpu_group_size(const render_window& win) {
   return std::size_t(std::clamp<std::uint64_t>((256ull << 20) / per_view, 1, RTVK_MAX_VIEWS));
 }
 
-int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
+int render_on_gpu(const run_context& cpu_run, gpu::gpu_context& ctx,
                   const std::vector<render_job>& jobs) {
   const std::string backend = "gpu (" + ctx.device().name + ")";
+  // The AOVs on the device too; with --backend both, checked against the CPU's.
+  bool aovs_alike = true;
+  run_context run = cpu_run;
+  run.aovs_alike = &aovs_alike;
+  run.aov_pass = [&](const render_job& job) {
+    std::vector<gpu::gpu_aov> found =
+        gpu::run_aov_pass(ctx, run.s, run.o.accel == "bvh", job.cam, run.win);
+    if (run.o.backend == "both")
+      aovs_alike &= aovs_agree(found, render_aov_cpu(job.cam, run.s, run.win, run.o.threads),
+                               object_ids(run.s), run.several ? label(run, job) + ": " : "");
+    return found;
+  };
   const std::size_t group = gpu_group_size(run.win);
   // Set up once (scene buffers, BVH, pipelines) for every group of the run.
   gpu::gpu_engine engine(
@@ -224,7 +264,7 @@ int render_on_gpu(const run_context& run, gpu::gpu_context& ctx,
                 seconds, k == 0 ? stats.dropped_samples : 0);
     }
   }
-  return all_alike ? 0 : 1;
+  return all_alike && aovs_alike ? 0 : 1;
 }
 
 // Every job on the backend asked for: GPU groups, or the CPU one job at a time.
@@ -257,6 +297,13 @@ int run_render(render_options o) {
   if (!o.gpu.device.empty() && o.backend == "cpu")
     throw usage_error("--device " + o.gpu.device + ": needs --backend gpu, auto or both");
   const output_pattern output(o.jobs.output, "--output");  // refused before the scene loads
+  unsigned aovs = 0;
+  if (!o.aov.empty()) {
+    const std::optional<unsigned> parsed = parse_aov_list(o.aov);
+    if (!parsed)
+      throw usage_error("--aov " + o.aov + ": expected a comma-separated list of " + aov_names());
+    aovs = *parsed;
+  }
   scene s = load_scene(o.scene);
   check_scene(s);
   render_window win;
@@ -266,13 +313,15 @@ int run_render(render_options o) {
   check_render_memory(win.width, win.height,
                       int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));
   std::size_t written = 0;
-  const run_context run{o,
-                        s,
-                        win,
-                        o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3,
-                        jobs.size() > 1,
-                        &written,
-                        samples_lights(s, s.render)};
+  run_context run{o,
+                  s,
+                  win,
+                  o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3,
+                  jobs.size() > 1,
+                  &written,
+                  samples_lights(s, s.render),
+                  aovs};
+  run.aov_pass = [&](const render_job& job) { return render_aov_cpu(job.cam, s, win, o.threads); };
   try {
     return render_all(run, jobs);
   } catch (const render_cancelled& e) {
@@ -335,6 +384,11 @@ command_action add_render_command(CLI::App& app) {
       ->capture_default_str();
   add_job_options(*cmd, o->jobs);
   add_engine_options(*cmd, *o);
+  cmd->add_option("--aov", o->aov,
+                  "Ground truth beside the image, any of " + aov_names() +
+                      ": what the ray through each pixel's center hits first, as extra "
+                      "channels of an .exr output, else as OUT.NAME.exr files (docs/aov.md)")
+      ->type_name("LIST");
   o->flags.add_to(*cmd);
   return [o] { return run_render(*o); };
 }

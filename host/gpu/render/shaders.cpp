@@ -3,6 +3,7 @@
 // The generated headers declare uint32_t arrays without including <cstdint> themselves.
 #include <cstdint>
 
+#include "aov_spv.h"
 #include "hit_probe_spv.h"
 #include "kernel_probe_spv.h"
 #include "light_probe_spv.h"
@@ -32,6 +33,9 @@ std::span<const std::uint32_t> rng_probe_shader() {
 }
 std::span<const std::uint32_t> hit_probe_shader() {
   return hit_probe_spv;
+}
+std::span<const std::uint32_t> aov_shader() {
+  return aov_spv;
 }
 std::span<const std::uint32_t> world_probe_shader() {
   return world_probe_spv;
