@@ -19,9 +19,10 @@ aov_image aov_from(const std::vector<gpu::gpu_aov>& found, const object_ids& ids
 std::string aov_path(const std::string& output, aov_bit which);
 
 // --backend both: whether the device's AOVs are the CPU's -- the same object and material at
-// every pixel but where the two disagree on which surface a ray grazes (at most 0.1% of the
-// pixels), the same distance to 1e-4 relative where both hit it. Prints a line saying so.
+// every pixel but on an edge of the CPU's id image (a pixel whose neighbor shows another object
+// or material: where a ray grazes two surfaces, float and double may pick either), the same
+// distance to 1e-4 relative where both hit the same object. Prints a line saying so.
 bool aovs_agree(const std::vector<gpu::gpu_aov>& gpu, const std::vector<gpu::gpu_aov>& cpu,
-                const object_ids& ids, const std::string& label);
+                const object_ids& ids, int width, const std::string& label);
 
 }  // namespace rtvk

@@ -231,7 +231,8 @@ int render_on_gpu(const run_context& cpu_run, gpu::gpu_context& ctx,
         gpu::run_aov_pass(ctx, run.s, run.o.accel == "bvh", job.cam, run.win);
     if (run.o.backend == "both")
       aovs_alike &= aovs_agree(found, render_aov_cpu(job.cam, run.s, run.win, run.o.threads),
-                               object_ids(run.s), run.several ? label(run, job) + ": " : "");
+                               object_ids(run.s), run.win.width,
+                               run.several ? label(run, job) + ": " : "");
     return found;
   };
   const std::size_t group = gpu_group_size(run.win);
