@@ -50,8 +50,22 @@ std::string render_flags(const std::string& scene_name, const view::viewer_resul
       exact(p.vfov) + " --aperture " + exact(p.aperture) + " --focus-dist " + exact(p.focus_dist) +
       " --projection " + std::string(projection_name(p.projection));
   if (p.projection == projection::fisheye_equidistant ||
-      p.projection == projection::fisheye_equisolid)
+      p.projection == projection::fisheye_equisolid || p.projection == projection::cylindrical ||
+      p.projection == projection::fisheye_polynomial)
     f += " --fisheye-fov " + exact(p.fisheye_fov);
+  // A calibration's own intrinsics (for its image size) come back with --calibration or --colmap;
+  // ones given in the render's pixels are written out.
+  const lens_intrinsics& l = p.intrinsics;
+  if (is_calibrated(p.projection) && l.width == 0 && (l.fx != 0 || l.fy != 0))
+    f += " --intrinsics " + exact(l.fx) + "," + exact(l.fy) + "," + exact(l.cx) + "," +
+         exact(l.cy);
+  if (is_calibrated(p.projection) && l.k != decltype(l.k){}) {
+    f += " --distortion ";
+    for (std::size_t k = 0; k < l.k.size(); ++k) f += (k ? "," : "") + exact(l.k[k]);
+  }
+  if (p.readout != 0)
+    f += std::string(" --rolling-shutter ") + (p.readout > 0 ? "top-down:" : "bottom-up:") +
+         exact(std::abs(p.readout));
   if (p.shutter_open != 0 || p.shutter_close != 0)
     f += " --shutter " + exact(p.shutter_open) + ":" + exact(p.shutter_close);
   return f;
