@@ -84,9 +84,10 @@ void apply_pose(const scene_overrides& o, camera_pose& c) {
 // The calibrated models' intrinsics from --calibration, --intrinsics and --distortion (in that
 // order: the flags adjust a file's values).
 void apply_lens(const scene_overrides& o, const std::optional<calibration>& cal, camera_pose& c) {
-  if (cal) {
+  if (cal) {  // a calibrated camera is a pinhole with a lens model: no aperture
     c.projection = cal->model;
     c.intrinsics = cal->lens;
+    if (!o.aperture) c.aperture = 0;  // (one asked for is refused by the camera)
   }
   if (o.intrinsics) {
     const std::vector<double> v =
