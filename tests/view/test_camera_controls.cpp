@@ -78,13 +78,13 @@ TEST(CameraControls, DollyFlyZoomStopAndProjectionSteps) {
   EXPECT_EQ(view::stop(view::stop(pinhole, 1), -1).aperture, 0);
   EXPECT_NEAR(view::stop(p, 2).aperture, 0.1 * 1.25 * 1.25, 1e-15);
   camera_pose cycled = p;
-  for (int i = 0; i < 5; ++i) {
+  for (int i = 0; i < 6; ++i) {
     cycled = view::next_projection(cycled);
     const bool lensless = cycled.projection != projection::perspective &&
                           cycled.projection != projection::orthographic;
     EXPECT_TRUE(!lensless || cycled.aperture == 0) << "a lens-less model gets no aperture";
   }
-  EXPECT_EQ(cycled.projection, projection::perspective);  // five models, then round again
+  EXPECT_EQ(cycled.projection, projection::perspective);  // six models, then round again
   EXPECT_EQ(view::next_projection(p).projection, projection::orthographic);
 }
 
