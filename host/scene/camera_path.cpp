@@ -52,6 +52,8 @@ camera_pose between(const camera_pose& a, const camera_pose& b, double f) {
   p.fisheye_fov = glm::mix(a.fisheye_fov, b.fisheye_fov, f);
   p.shutter_open = a.shutter_open;  // a shutter is not interpolated either: the earlier one's
   p.shutter_close = a.shutter_close;
+  p.readout = a.readout;        // nor a rolling shutter's readout,
+  p.intrinsics = a.intrinsics;  // nor a calibration: they belong to the earlier keyframe's model
   return p;
 }
 
@@ -78,8 +80,16 @@ camera_pose camera_path::at(double seconds) const {
 }
 
 void check_camera_path(const camera_path& path) {
-  // Any aspect and width will do: only the pose is being checked.
-  auto check_pose = [](const camera_pose& p) { camera(p, 1, 1); };
+  // Any aspect and width will do: only the pose is being checked. A calibration is checked at
+  // the size it was made for (at 1x1 an image taller than twice its width was refused as
+  // "another aspect ratio").
+  auto check_pose = [](const camera_pose& p) {
+    const lens_intrinsics& l = p.intrinsics;
+    if (is_calibrated(p.projection) && l.width > 0 && l.height > 0)
+      camera(p, double(l.width) / l.height, l.width);
+    else
+      camera(p, 1, 1);
+  };
   switch (path.motion) {
     case camera_motion::fixed:
       check_pose(path.pose);

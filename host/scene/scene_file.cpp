@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "camera_lens.h"
 #include "errors.h"
 #include "format.h"
 #include "input_file.h"
@@ -116,9 +117,95 @@ std::string escape_pointer(const std::string& key) {
   return out;
 }
 
-const std::set<std::string> pose_fields = {"lookfrom",   "lookat",      "vup",
-                                           "vfov",       "aperture",    "focus_dist",
-                                           "projection", "fisheye_fov", "shutter"};
+const std::set<std::string> pose_fields = {
+    "lookfrom",   "lookat",           "vup",          "vfov",           "aperture",
+    "focus_dist", "projection",       "fisheye_fov",  "shutter",        "intrinsics",
+    "distortion", "calibration_size", "image_circle", "rolling_shutter"};
+
+// The calibrated models' fields (docs/scene-format.md): intrinsics, distortion, the size they
+// were calibrated at, the polynomial fisheye's image circle, and the rolling shutter. What the
+// camera would refuse of them is refused here, at the field.
+void read_lens(const scene_reader& r, const json& j, const std::string& p, camera_pose& c) {
+  lens_intrinsics& l = c.intrinsics;
+  const std::string model(projection_name(c.projection));
+  if (j.contains("intrinsics")) {
+    const json& k = j["intrinsics"];
+    if (!k.is_array() || k.size() != 4)
+      r.fail(p + "/intrinsics",
+             "expected [fx, fy, cx, cy] in pixels, got " +
+                 (k.is_array() ? "an array of " + std::to_string(k.size()) : r.type_of(k)));
+    l.fx = r.number(k[0], p + "/intrinsics/0");
+    l.fy = r.number(k[1], p + "/intrinsics/1");
+    l.cx = r.number(k[2], p + "/intrinsics/2");
+    l.cy = r.number(k[3], p + "/intrinsics/3");
+    // The polynomial fisheye reads only cx, cy; an uncalibrated cylinder has fx = fy = 0 (its
+    // fields of view decide); the others need focal lengths.
+    const bool needs_focal = c.projection == projection::opencv ||
+                             c.projection == projection::opencv_fisheye ||
+                             (c.projection == projection::cylindrical && (l.fx != 0 || l.fy != 0));
+    if (needs_focal)
+      for (int i = 0; i < 2; ++i) {
+        const double f = i == 0 ? l.fx : l.fy;
+        if (!(f > 0))
+          r.fail(p + "/intrinsics/" + std::to_string(i),
+                 std::string("expected a focal length ") + (i == 0 ? "fx" : "fy") +
+                     " > 0 pixels for the " + model + " model, got " + format_number(f));
+      }
+  } else if (c.projection == projection::opencv || c.projection == projection::opencv_fisheye) {
+    r.fail(p, "the " + model + " model needs \"intrinsics\": [fx, fy, cx, cy] in pixels");
+  }
+  if (j.contains("distortion")) {
+    const json& k = j["distortion"];
+    if (!k.is_array() || k.empty() || k.size() > l.k.size())
+      r.fail(p + "/distortion",
+             "expected 1 to 8 coefficients, got " +
+                 (k.is_array() ? "an array of " + std::to_string(k.size()) : r.type_of(k)));
+    l.k = {};
+    for (std::size_t i = 0; i < k.size(); ++i)
+      l.k[i] = r.number(k[i], p + "/distortion/" + std::to_string(i));
+  }
+  if (j.contains("calibration_size")) {
+    const json& s = j["calibration_size"];
+    if (!s.is_array() || s.size() != 2)
+      r.fail(p + "/calibration_size", "expected [width, height] in pixels, got " + r.type_of(s));
+    l.width = int(r.integer(s[0], p + "/calibration_size/0", 1, max_image_side));
+    l.height = int(r.integer(s[1], p + "/calibration_size/1", 1, max_image_side));
+  }
+  if (j.contains("image_circle")) {
+    l.radius = r.number(j["image_circle"], p + "/image_circle");
+    if (l.radius < 0)
+      r.fail(p + "/image_circle",
+             "expected a radius >= 0 pixels (0: none), got " + format_number(l.radius));
+  }
+  if (j.contains("rolling_shutter")) {
+    const json& s = j["rolling_shutter"];
+    const std::string sp = p + "/rolling_shutter";
+    r.only_fields(s, sp, {"direction", "readout"});
+    const double readout = r.number(r.required(s, sp, "readout"), sp + "/readout");
+    if (readout < 0)
+      r.fail(sp + "/readout",
+             "expected the readout time >= 0 seconds, got " + format_number(readout));
+    bool top_down = true;
+    if (s.contains("direction")) {
+      const json& d = s["direction"];
+      if (!d.is_string() || (d != "top-down" && d != "bottom-up"))
+        r.fail(sp + "/direction", "expected \"top-down\" or \"bottom-up\", got " +
+                                      (d.is_string() ? d.dump() : r.type_of(d)));
+      top_down = d == "top-down";
+    }
+    c.readout = top_down ? readout : -readout;
+  }
+  // An opencv distortion that folds inside the image it was calibrated for: refused at the
+  // distortion (without a size, the render's image is checked when it is made).
+  if (c.projection == projection::opencv && l.width > 0 && l.fx > 0 && l.fy > 0) {
+    camera_frame f{};
+    try {
+      setup_lens(c, l.width, l.height, f);
+    } catch (const std::invalid_argument& e) {
+      r.fail(p + (j.contains("distortion") ? "/distortion" : ""), e.what());
+    }
+  }
+}
 
 // The pose fields of `j` over the defaults; the caller has checked which fields may appear.
 camera_pose read_pose(const scene_reader& r, const json& j, const std::string& p) {
@@ -150,6 +237,7 @@ camera_pose read_pose(const scene_reader& r, const json& j, const std::string& p
       r.fail(p + "/shutter", "expected open <= close, got [" + format_number(c.shutter_open) +
                                  ", " + format_number(c.shutter_close) + "]");
   }
+  read_lens(r, j, p, c);
   return c;
 }
 
@@ -834,6 +922,17 @@ json pose_json(const camera_pose& c) {
   if (c.fisheye_fov != camera_pose{}.fisheye_fov) j["fisheye_fov"] = c.fisheye_fov;
   if (c.shutter_open != 0 || c.shutter_close != 0)
     j["shutter"] = json::array({c.shutter_open, c.shutter_close});
+  const lens_intrinsics& l = c.intrinsics;
+  if (l.fx != 0 || l.fy != 0 || l.cx != 0 || l.cy != 0)
+    j["intrinsics"] = json::array({l.fx, l.fy, l.cx, l.cy});
+  std::size_t used = l.k.size();  // the coefficients up to the last nonzero one
+  while (used > 0 && l.k[used - 1] == 0) --used;
+  if (used > 0) j["distortion"] = json(std::vector<double>(l.k.begin(), l.k.begin() + used));
+  if (l.width != 0 || l.height != 0) j["calibration_size"] = json::array({l.width, l.height});
+  if (l.radius != 0) j["image_circle"] = l.radius;
+  if (c.readout != 0)
+    j["rolling_shutter"] = {{"direction", c.readout > 0 ? "top-down" : "bottom-up"},
+                            {"readout", std::abs(c.readout)}};
   return j;
 }
 

@@ -36,6 +36,15 @@ ray_f get_ray(const gpu::camera_ubo& cam, float s, float t, glm::vec2 lens) {
   return {r.origin, r.direction};
 }
 
+glm::vec2 opencv_distort(glm::vec4 ka, glm::vec4 kb, glm::vec2 p) {
+  glm::vec2 d_dx, d_dy;
+  return k::opencv_distort(ka, kb, p, d_dx, d_dy);
+}
+
+bool opencv_undistort(glm::vec4 ka, glm::vec4 kb, glm::vec2 target, float limit2, glm::vec2& p) {
+  return k::opencv_undistort(ka, kb, target, limit2, p);
+}
+
 bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_max, float& t) {
   return k::hit_sphere(center, radius, k::ray(r.origin, r.direction), t_min, t_max, t);
 }

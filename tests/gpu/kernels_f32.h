@@ -8,6 +8,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "shared_types.h"
 
@@ -21,6 +22,11 @@ struct ray_f {
 };
 // get_ray on the camera_ubo's vectors (what the GPU reads), in float.
 ray_f get_ray(const gpu::camera_ubo& cam, float s, float t, glm::vec2 lens);
+
+// The opencv lens's distortion and its Newton inverse (camera_rays.h) in float, as the GPU
+// computes them: ka = (k1, k2, p1, p2), kb = (k3, k4, k5, k6); normalized image coordinates.
+glm::vec2 opencv_distort(glm::vec4 ka, glm::vec4 kb, glm::vec2 p);
+bool opencv_undistort(glm::vec4 ka, glm::vec4 kb, glm::vec2 target, float limit2, glm::vec2& p);
 
 // hit_sphere in float: true and the root in t, or false.
 bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_max, float& t);
