@@ -51,8 +51,8 @@ lens_intrinsics default_intrinsics(const camera_pose& pose, int width, int heigh
       l.cx = (width - 1) / 2.0;
       l.cy = (height - 1) / 2.0;
     }
-    if (no_polynomial) {
-      l.radius = std::min(width, height) / 2.0;
+    if (no_polynomial) {  // r is in the calibration's pixels, where there is a calibration
+      l.radius = (l.width > 0 ? std::min(l.width, l.height) : std::min(width, height)) / 2.0;
       l.k[1] = across / 2 / l.radius;
     }
   }
@@ -78,17 +78,16 @@ double opencv_fold_radius2(const real4& ka, const real4& kb) {
 
 // Every pixel center of the border, and of a grid inside, must invert: the distortion is then
 // invertible over the image (a fold inside the image would leave a pixel with no ray, or two).
-void check_opencv_inverts(const camera_frame& f, const camera_pose& pose, int width,
-                          int height) {
+void check_opencv_inverts(const camera_frame& f, const camera_pose& pose, int width, int height) {
   const auto check = [&](int x, int y) {
     const real2 q((x - f.intrinsics.z) / f.intrinsics.x, (y - f.intrinsics.w) / f.intrinsics.y);
     real2 p;
     if (opencv_undistort(f.distortion_a, f.distortion_b, q, f.lens_limit, p)) return;
-    throw std::invalid_argument(
-        "the opencv distortion " + coefficients(pose.intrinsics, 8) +
-        " is not invertible over the image: pixel (" + std::to_string(x) + ", " +
-        std::to_string(y) + ") has no undistorted point before the lens folds (radius " +
-        format_number(std::sqrt(f.lens_limit)) + " in normalized units)");
+    throw std::invalid_argument("the opencv distortion " + coefficients(pose.intrinsics, 8) +
+                                " is not invertible over the image: pixel (" + std::to_string(x) +
+                                ", " + std::to_string(y) +
+                                ") has no undistorted point before the lens folds (radius " +
+                                format_number(std::sqrt(f.lens_limit)) + " in normalized units)");
   };
   for (int x = 0; x < width; ++x) {
     check(x, 0);
@@ -114,8 +113,8 @@ void setup_lens(const camera_pose& pose, int width, int height, camera_frame& f)
     sy = double(height) / l.height;
     if (std::abs(height - l.height * sx) > 1)
       throw std::invalid_argument("the calibration is for " + std::to_string(l.width) + "x" +
-                                  std::to_string(l.height) + " pixels; a " +
-                                  std::to_string(width) + "x" + std::to_string(height) +
+                                  std::to_string(l.height) + " pixels; a " + std::to_string(width) +
+                                  "x" + std::to_string(height) +
                                   " render has another aspect ratio");
   }
   const bool polynomial = pose.projection == projection::fisheye_polynomial;

@@ -318,6 +318,21 @@ TEST(CalibratedCameras, IntrinsicsScaleWithTheImageAboutItsCorner) {
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(unit(a)[k], unit(b)[k], 1e-12) << x << ", " << y;
       }
   }
+  // The polynomial fisheye's default (no coefficients: fisheye_fov over the circle touching the
+  // shorter side) is the same field whatever the size it is rendered at: its r is in the
+  // calibration's pixels, and so is its circle.
+  camera_pose plain;
+  plain.projection = projection::fisheye_polynomial;
+  const camera uncalibrated = make_camera(plain, 320, 240);
+  plain.intrinsics = {640, 480, 0, 0, 319.5, 239.5, {}};
+  const camera calibrated_plain = make_camera(plain, 320, 240);
+  for (double y : {-0.5, 0.0, 30.0, 119.5, 239.5})
+    for (double x : {-0.5, 40.0, 80.75, 159.5, 319.5}) {
+      const vec3 a = uncalibrated.pixel_ray(x, y).direction;
+      const vec3 b = calibrated_plain.pixel_ray(x, y).direction;
+      ASSERT_EQ(a == vec3(0), b == vec3(0)) << x << ", " << y;
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[k], b[k], 1e-12) << x << ", " << y;
+    }
   // Another aspect ratio than the calibration's is refused.
   camera_pose calibrated = lens_pose(projection::opencv);
   calibrated.intrinsics.width = 640;
