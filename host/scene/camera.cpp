@@ -94,6 +94,10 @@ static_assert(int(projection::orthographic) == RTVK_PROJECTION_ORTHOGRAPHIC);
 static_assert(int(projection::equirectangular) == RTVK_PROJECTION_EQUIRECTANGULAR);
 static_assert(int(projection::fisheye_equidistant) == RTVK_PROJECTION_FISHEYE_EQUIDISTANT);
 static_assert(int(projection::fisheye_equisolid) == RTVK_PROJECTION_FISHEYE_EQUISOLID);
+static_assert(int(projection::opencv) == RTVK_PROJECTION_OPENCV);
+static_assert(int(projection::opencv_fisheye) == RTVK_PROJECTION_OPENCV_FISHEYE);
+static_assert(int(projection::fisheye_polynomial) == RTVK_PROJECTION_FISHEYE_POLYNOMIAL);
+static_assert(int(projection::cylindrical) == RTVK_PROJECTION_CYLINDRICAL);
 
 std::string_view projection_name(projection p) {
   for (const named_projection& n : projections)

@@ -41,8 +41,10 @@ lens_intrinsics default_intrinsics(const camera_pose& pose, int width, int heigh
   if (pose.projection == projection::cylindrical && l.fx == 0 && l.fy == 0) {
     l.fx = width / across;
     l.fy = (height / 2.0) / std::tan(pose.vfov * pi / 360);
-    l.cx = (width - 1) / 2.0;
-    l.cy = (height - 1) / 2.0;
+    if (l.cx == 0 && l.cy == 0) {  // a center given stays
+      l.cx = (width - 1) / 2.0;
+      l.cy = (height - 1) / 2.0;
+    }
     l.width = l.height = 0;
   }
   if (pose.projection == projection::fisheye_polynomial) {
@@ -52,7 +54,8 @@ lens_intrinsics default_intrinsics(const camera_pose& pose, int width, int heigh
       l.cy = (height - 1) / 2.0;
     }
     if (no_polynomial) {  // r is in the calibration's pixels, where there is a calibration
-      l.radius = (l.width > 0 ? std::min(l.width, l.height) : std::min(width, height)) / 2.0;
+      if (l.radius == 0)  // an image circle given stays
+        l.radius = (l.width > 0 ? std::min(l.width, l.height) : std::min(width, height)) / 2.0;
       l.k[1] = across / 2 / l.radius;
     }
   }

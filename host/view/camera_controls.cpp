@@ -99,6 +99,7 @@ camera_pose next_projection(const camera_pose& p) {
       break;
     case projection::fisheye_equisolid:
       out.projection = projection::cylindrical;
+      out.intrinsics = {};  // uncalibrated: its fields of view make the intrinsics
       break;
     case projection::cylindrical:  // (uncalibrated: fields of view make its intrinsics)
     case projection::opencv:       // the calibrated lenses leave the cycle for the pinhole

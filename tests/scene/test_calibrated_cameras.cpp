@@ -357,5 +357,28 @@ TEST(CalibratedCameras, KeyframesKeepTheEarlierKeyframesLens) {
   EXPECT_NO_THROW(make_camera(mid, 640, 480));
 }
 
+// What a user gives stays when the rest is made up: a polynomial fisheye's image circle, a
+// cylinder's center (both were overwritten by the defaults once).
+TEST(CalibratedCameras, AGivenImageCircleAndCylinderCenterStay) {
+  camera_pose poly;
+  poly.projection = projection::fisheye_polynomial;
+  poly.intrinsics.radius = 50;  // no coefficients: equidistant over this circle
+  const camera p = make_camera(poly, 320, 240);
+  const double cx = 159.5, cy = 119.5;
+  EXPECT_NE(p.pixel_ray(cx + 49, cy).direction, vec3(0));
+  EXPECT_EQ(p.pixel_ray(cx + 51, cy).direction, vec3(0));  // past the circle: nothing
+  // At the circle's edge, half the field of view (180 degrees by default) from the axis.
+  const vec3 edge = glm::normalize(p.pixel_ray(cx + 50, cy).direction);
+  EXPECT_NEAR(std::acos(glm::dot(edge, -p.axis_w())), pi / 2, 1e-12);
+
+  camera_pose cyl;
+  cyl.projection = projection::cylindrical;
+  cyl.intrinsics.cx = 40;
+  cyl.intrinsics.cy = 30;  // fx, fy from the fields of view; this center
+  const camera c = make_camera(cyl, 320, 240);
+  const vec3 ahead = glm::normalize(c.pixel_ray(40, 30).direction);
+  EXPECT_NEAR(glm::length(ahead + c.axis_w()), 0, 1e-12);
+}
+
 }  // namespace
 }  // namespace rtvk

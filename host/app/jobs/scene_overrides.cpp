@@ -42,8 +42,8 @@ double parse_rolling_shutter(const std::string& text) {
   if (direction != "top-down" && direction != "bottom-up")
     throw usage_error("--rolling-shutter " + text +
                       ": expected [top-down:|bottom-up:]SECONDS, e.g. top-down:0.03");
-  const double readout = parse_numbers(seconds, "--rolling-shutter", 1, 1,
-                                       "the readout time in seconds, >= 0")[0];
+  const double readout =
+      parse_numbers(seconds, "--rolling-shutter", 1, 1, "the readout time in seconds, >= 0")[0];
   if (!(readout >= 0))
     throw usage_error("--rolling-shutter " + text + ": the readout time must be >= 0 seconds");
   return direction == "top-down" ? readout : -readout;
@@ -109,8 +109,7 @@ void apply_lens(const scene_overrides& o, const std::optional<calibration>& cal,
 }
 
 // The camera model: not a move, so it applies to every pose of a path, keyframes included.
-void apply_model(const scene_overrides& o, const std::optional<calibration>& cal,
-                 camera_pose& c) {
+void apply_model(const scene_overrides& o, const std::optional<calibration>& cal, camera_pose& c) {
   apply_lens(o, cal, c);
   if (o.projection) {
     const std::optional<projection> p = projection_from_name(*o.projection);
@@ -149,6 +148,9 @@ void apply_model(const scene_overrides& o, const std::optional<calibration>& cal
 }  // namespace
 
 void scene_overrides::apply_cameras(scene& s) const {
+  if (colmap && calibration)
+    throw usage_error("--calibration " + *calibration + ": --colmap " + *colmap +
+                      " has its own cameras' intrinsics");
   if (colmap) {
     const std::vector<colmap_view> views = read_colmap_model(*colmap);
     s.cameras.clear();
