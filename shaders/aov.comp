@@ -22,6 +22,7 @@ layout(push_constant) uniform push_block {
 #include "appearance_buffers.glsl"
 
 #include "aov.h"
+const bool calibrated_cameras = true;  // camera_rays.h: every camera model
 #include "camera_rays.h"
 #include "texture.h"
 #include "world.glsl"

@@ -9,6 +9,7 @@ layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;
 layout(std140, set = 0, binding = RTVK_BINDING_CAMERA) uniform camera_block { camera_ubo cam; };
 layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block { probe_io probe; };
 
+const bool calibrated_cameras = true;  // camera_rays.h: every camera model
 #include "camera_rays.h"
 
 void main() {

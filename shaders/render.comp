@@ -21,6 +21,8 @@ layout(constant_id = RTVK_SPEC_LENS) const bool any_lens = false;   // a view ha
 layout(constant_id = RTVK_SPEC_USE_BVH) const bool use_bvh = true;  // else every sphere in turn
 layout(constant_id = RTVK_SPEC_COUNT_RAYS) const bool count_rays = false;  // per-pixel counts
 layout(constant_id = RTVK_SPEC_LIGHTS) const bool sample_lights = false;  // the third book's
+// a view has a calibrated lens or a rolling shutter (camera_rays.h)
+layout(constant_id = RTVK_SPEC_CALIBRATED) const bool calibrated_cameras = false;
 
 layout(std140, set = 0, binding = RTVK_BINDING_CAMERA) uniform camera_block {
   camera_ubo cams[RTVK_MAX_VIEWS];

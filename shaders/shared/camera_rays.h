@@ -66,9 +66,17 @@ inline precise real3 panoramic_direction(camera_frame cam, real s, real t) {
 // budget in render.comp); they converge in 3 to 6 where the host's check let the lens through.
 #define RTVK_LENS_ITERATIONS 20u
 
+// Whether the compilation meets calibrated cameras (lens models, rolling shutters): C++ always;
+// each shader says. render.comp makes it a specialization constant, so that its pipelines for
+// ideal cameras compile the lens models out (present but unused, they cost lavapipe 5% on
+// book-final).
+#ifdef __cplusplus
+inline constexpr bool calibrated_cameras = true;
+#endif
+
 // Whether `projection` is one of the calibrated models, whose rays come from pixels and intrinsics.
 inline bool calibrated_model(uint projection) {
-  return projection >= RTVK_PROJECTION_OPENCV;
+  return calibrated_cameras && projection >= RTVK_PROJECTION_OPENCV;
 }
 
 // Where an inverse stops: within a few of the compilation's epsilon of the target (relative to
@@ -257,7 +265,7 @@ inline precise real2 pixel_spot(random_stream s, uint strata, uint sample_index)
 // A rolling shutter opens row y (from the top) |readout| * y / (height - 1) seconds after the
 // first row, top row first for readout > 0, bottom row first for < 0.
 inline precise real row_delay(camera_frame cam, uint height, uint j) {
-  if (cam.readout == real(0.0) || height < 2u) return real(0.0);
+  if (!calibrated_cameras || cam.readout == real(0.0) || height < 2u) return real(0.0);
   uint rows_before = cam.readout > real(0.0) ? height - 1u - j : j;
   return abs(cam.readout) * real(rows_before) / real(height - 1u);
 }

@@ -60,7 +60,9 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_TEXTURES 11  // bool: some material has a texture (render.comp)
 #define RTVK_SPEC_MEDIA 12     // bool: the scene has media (render.comp)
 #define RTVK_SPEC_LIGHTS 13    // bool: scattering samples toward the lights (render.comp)
-#define RTVK_SPEC_COUNT 14     // constant ids in use
+#define RTVK_SPEC_CALIBRATED \
+  14  // bool: a view has a calibrated lens or a rolling shutter (render.comp; camera_rays.h)
+#define RTVK_SPEC_COUNT 15  // constant ids in use
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 85 camera
 // blocks of 192 bytes are 15.94 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.

@@ -520,9 +520,9 @@ void gpu_engine::rebind_all() {
 }
 
 const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool count_rays,
-                                                 bool lights) {
-  const std::uint32_t switches =
-      (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u) | (lights ? 8u : 0u);
+                                                 bool lights, bool calibrated) {
+  const std::uint32_t switches = (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u) |
+                                 (lights ? 8u : 0u) | (calibrated ? 16u : 0u);
   std::unique_ptr<compute_pipeline>& p = pipelines_[switches];
   if (!p) {
     std::uint32_t spec[RTVK_SPEC_COUNT] = {};  // by constant_id
@@ -534,6 +534,7 @@ const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool co
     spec[RTVK_SPEC_COUNT_RAYS] = count_rays;
     scene_.specialize(spec);
     spec[RTVK_SPEC_LIGHTS] = lights;
+    spec[RTVK_SPEC_CALIBRATED] = calibrated;
     p = std::make_unique<compute_pipeline>(ctx_, render_shader(),
                                            render_bindings(scene_, *targets_), sizeof(render_push),
                                            spec, cache_.get());
@@ -627,9 +628,12 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
   if (stats) *stats = render_stats{.build_seconds = drawn_ ? 0.0 : build_seconds()};
   const bool lens =
       std::any_of(views.begin(), views.end(), [](const camera& c) { return c.lens_radius() > 0; });
+  const bool calibrated = std::any_of(views.begin(), views.end(), [](const camera& c) {
+    return is_calibrated(c.projection()) || c.frame().readout != 0;
+  });
   band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, pacer_},
-                      pipeline_for(rs.jitter, lens, count_rays, push.light_count > 0), tonemap,
-                      push, win, kept);
+                      pipeline_for(rs.jitter, lens, count_rays, push.light_count > 0, calibrated),
+                      tonemap, push, win, kept);
 
   // Bands as large as memory allows (layout) and the pacer's work allows now: a dispatch's work
   // is bounded by its pixels times its loop budget, so the first bands of a render on a device

@@ -128,7 +128,8 @@ class gpu_engine {
   // The targets, reallocated (after checking the device's limits) when too small.
   render_targets& targets_for(VkDeviceSize pixels);
   // The pipeline with these switches, built (through the cache) the first time it is asked for.
-  const compute_pipeline& pipeline_for(bool jitter, bool lens, bool count_rays, bool lights);
+  const compute_pipeline& pipeline_for(bool jitter, bool lens, bool count_rays, bool lights,
+                                       bool calibrated);
   const compute_pipeline& tonemap_pipeline();
   void rebind_all();
   void write_thresholds(double gamma);
