@@ -187,6 +187,23 @@ TEST_F(GpuCalibrated, ARollingShutterShearsAMovingSphereByTheReadout) {
                      std::to_string(shift));
     }
   }
+  // An ideal camera's rows roll too, on both backends (the device's pipelines for ideal cameras
+  // compile the rolling shutter in only where a view has one: RTVK_SPEC_CALIBRATED).
+  {
+    scene p = rolling_scene();
+    camera_pose& pose = main_camera(p).pose;
+    pose.projection = projection::perspective;
+    pose.intrinsics = {};
+    pose.vfov = 2 * std::atan(60.5 / 400) * 180 / pi;  // about 400 pixels per unit at depth 1
+    pose.readout = 1;
+    const camera cam = test::scene_camera(p);
+    p.motion = {cam.time_open(), cam.time_close()};
+    const framebuffer on_cpu = render_cpu(cam, p, p.render);
+    const framebuffer on_gpu = gpu::render_gpu(gpu(), cam, p, p.render);
+    const double cpu_shift = row_center(on_cpu, 72) - row_center(on_cpu, 48);
+    EXPECT_GT(cpu_shift, 6);
+    EXPECT_NEAR(row_center(on_gpu, 72) - row_center(on_gpu, 48), cpu_shift, 0.3);
+  }
   // A global shutter at time 0.5: every row sees the sphere in the middle.
   scene s = rolling_scene();
   main_camera(s).pose.shutter_open = main_camera(s).pose.shutter_close = 0.5;
