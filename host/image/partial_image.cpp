@@ -102,21 +102,28 @@ void add_aov_channels(const aov_image& a, unsigned which, const Imath::Box2i& da
     add("distance", Imf::FLOAT, a.distance.data(), sizeof(float));
     add("Z", Imf::FLOAT, a.depth.data(), sizeof(float));
   }
-  if (which & aov_normal)
-    for (int c = 0; c < 3; ++c)
-      add(c == 0   ? "N.X"
-          : c == 1 ? "N.Y"
-                   : "N.Z",
-          Imf::FLOAT, a.normal.data() + c, 3 * sizeof(float));
-  if (which & aov_albedo)
-    for (int c = 0; c < 3; ++c)
-      add(c == 0   ? "albedo.R"
-          : c == 1 ? "albedo.G"
-                   : "albedo.B",
-          Imf::FLOAT, a.albedo.data() + c, 3 * sizeof(float));
+  const auto add3 = [&](const char* const(&names)[3], const float* base) {
+    for (int c = 0; c < 3; ++c) add(names[c], Imf::FLOAT, base + c, 3 * sizeof(float));
+  };
+  if (which & aov_normal) add3({"N.X", "N.Y", "N.Z"}, a.normal.data());
+  if (which & aov_albedo) add3({"albedo.R", "albedo.G", "albedo.B"}, a.albedo.data());
   if (which & aov_object_id) add("object_id", Imf::UINT, a.object_id.data(), sizeof(std::uint32_t));
   if (which & aov_material_id)
     add("material_id", Imf::UINT, a.material_id.data(), sizeof(std::uint32_t));
+}
+
+// Encodes `rows` rows of `fb` under header `h` in memory, then writes the file atomically.
+void encode_and_write(const Imf::Header& h, const Imf::FrameBuffer& fb, int rows,
+                      const std::filesystem::path& path) {
+  memory_stream out;
+  try {
+    Imf::OutputFile file(out, h, 1);
+    file.setFrameBuffer(fb);
+    file.writePixels(rows);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("OpenEXR: encoding " + path.string() + ": " + e.what());
+  }
+  write_file_atomically(path, out.bytes());
 }
 
 // The value of an attribute rtvk 0.1.0 pieces may lack, or empty.
@@ -192,15 +199,7 @@ void write_partial_exr(const partial_image& p, const std::filesystem::path& path
   // Slices take non-const pointers for both directions; an OutputFile only reads them.
   Imf::FrameBuffer fb = slices(const_cast<float*>(p.rgb.data()), data);
   if (aovs) add_aov_channels(*aovs, aovs->which, data, h, fb);
-  memory_stream out;
-  try {
-    Imf::OutputFile file(out, h, 1);
-    file.setFrameBuffer(fb);
-    file.writePixels(p.window.height);
-  } catch (const std::exception& e) {
-    throw std::runtime_error("OpenEXR: encoding " + path.string() + ": " + e.what());
-  }
-  write_file_atomically(path, out.bytes());
+  encode_and_write(h, fb, p.window.height, path);
 }
 
 void write_aov_exr(const aov_image& a, aov_bit which, int image_width, int image_height,
@@ -211,15 +210,7 @@ void write_aov_exr(const aov_image& a, aov_bit which, int image_width, int image
   Imf::Header h(display, data, 1, Imath::V2f(0, 0), 1, Imf::INCREASING_Y, Imf::ZIP_COMPRESSION);
   Imf::FrameBuffer fb;
   add_aov_channels(a, unsigned(which), data, h, fb);
-  memory_stream out;
-  try {
-    Imf::OutputFile file(out, h, 1);
-    file.setFrameBuffer(fb);
-    file.writePixels(window.height);
-  } catch (const std::exception& e) {
-    throw std::runtime_error("OpenEXR: encoding " + path.string() + ": " + e.what());
-  }
-  write_file_atomically(path, out.bytes());
+  encode_and_write(h, fb, window.height, path);
 }
 
 partial_image read_partial_exr(const std::filesystem::path& path) {
