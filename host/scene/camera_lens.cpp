@@ -49,9 +49,9 @@ lens_intrinsics default_intrinsics(const camera_pose& pose, int width, int heigh
   }
   if (pose.projection == projection::fisheye_polynomial) {
     const bool no_polynomial = std::all_of(l.k.begin(), l.k.end(), [](double k) { return k == 0; });
-    if (l.width == 0 && l.cx == 0 && l.cy == 0) {
-      l.cx = (width - 1) / 2.0;
-      l.cy = (height - 1) / 2.0;
+    if (l.cx == 0 && l.cy == 0) {  // the center of the image the intrinsics are for
+      l.cx = ((l.width > 0 ? l.width : width) - 1) / 2.0;
+      l.cy = ((l.height > 0 ? l.height : height) - 1) / 2.0;
     }
     if (no_polynomial) {  // r is in the calibration's pixels, where there is a calibration
       if (l.radius == 0)  // an image circle given stays
@@ -79,26 +79,28 @@ double opencv_fold_radius2(const real4& ka, const real4& kb) {
   return largest * largest;
 }
 
-// Every pixel center of the border, and of a grid inside, must invert: the distortion is then
-// invertible over the image (a fold inside the image would leave a pixel with no ray, or two).
+// The image's outer edge (where the border pixels' samples reach, half a pixel past their
+// centers) and every pixel center of a grid inside must invert: the distortion is then
+// invertible over the image (a fold inside the image would leave a point with no ray, or two).
 void check_opencv_inverts(const camera_frame& f, const camera_pose& pose, int width, int height) {
-  const auto check = [&](int x, int y) {
+  const auto check = [&](double x, double y) {
     const real2 q((x - f.intrinsics.z) / f.intrinsics.x, (y - f.intrinsics.w) / f.intrinsics.y);
     real2 p;
     if (opencv_undistort(f.distortion_a, f.distortion_b, q, f.lens_limit, p)) return;
     throw std::invalid_argument("the opencv distortion " + coefficients(pose.intrinsics, 8) +
-                                " is not invertible over the image: pixel (" + std::to_string(x) +
-                                ", " + std::to_string(y) +
+                                " is not invertible over the image: its point (" +
+                                format_number(x) + ", " + format_number(y) +
                                 ") has no undistorted point before the lens folds (radius " +
                                 format_number(std::sqrt(f.lens_limit)) + " in normalized units)");
   };
-  for (int x = 0; x < width; ++x) {
-    check(x, 0);
-    check(x, height - 1);
+  const double left = -0.5, top = -0.5, right = width - 0.5, bottom = height - 0.5;
+  for (int x = 0; x <= width; ++x) {
+    check(x - 0.5, top);
+    check(x - 0.5, bottom);
   }
-  for (int y = 0; y < height; ++y) {
-    check(0, y);
-    check(width - 1, y);
+  for (int y = 0; y <= height; ++y) {
+    check(left, y - 0.5);
+    check(right, y - 0.5);
   }
   for (int y = 0; y < height; y += 16)
     for (int x = 0; x < width; x += 16) check(x, y);

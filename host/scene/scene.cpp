@@ -236,12 +236,12 @@ bool scene_moves(const scene& s) {
 }
 
 time_span shutter_span(const scene& s, double time) {
-  time_span span{time + main_camera(s).at(time).shutter_open,
-                 time + main_camera(s).at(time).shutter_close};
+  const camera_pose first = main_camera(s).at(time);
+  time_span span{time + first.shutter_open, time + first.shutter_close + std::abs(first.readout)};
   for (const named_camera& c : s.cameras) {
     const camera_pose p = c.path.at(time);
     span.lo = std::min(span.lo, time + p.shutter_open);
-    span.hi = std::max(span.hi, time + p.shutter_close);
+    span.hi = std::max(span.hi, time + p.shutter_close + std::abs(p.readout));  // the last row's
   }
   return span;
 }

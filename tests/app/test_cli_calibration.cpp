@@ -66,7 +66,7 @@ TEST(CliCalibration, BadLensInputExits2NamingTheFlagOrFieldAndValue) {
        {"--distortion", "nan,0,0,0"}},
       {{opencv, "--intrinsics=500,500,320,240", "--distortion=0,inf"}, {"--distortion", "0,inf"}},
       {{opencv, size, aspect, "--intrinsics=500,500,319.5,239.5", "--distortion=-1,0,0,0"},
-       {"the opencv distortion -1,0,0,0,0,0,0,0 is not invertible over the image", "pixel (0, 0)"}},
+       {"the opencv distortion -1,0,0,0,0,0,0,0 is not invertible over the image", "its point (-0.5, -0.5)"}},
       {{"--calibration=" + bad_cal}, {"fx0.yaml:5: camera_matrix", "fx 0"}},
       {{"--colmap=" + fov.string()}, {"cameras.txt:2", "camera model FOV is not supported"}},
       {{"--colmap=" + short_row.string()},
@@ -143,6 +143,57 @@ TEST(CliCalibration, FlagsFilesAndSceneFieldsDrawTheSameLens) {
   const std::string dumped = (dir.path() / "dumped.json").string();
   write(dumped, dump.out);
   EXPECT_EQ(image("dumped", {"--scene", dumped}), from_scene);
+}
+
+// Review findings, each seen failing before its fix: lens flags the model would ignore, a fold
+// half a pixel past the border pixels' centers, pieces whose distortion differs in the 7th digit,
+// a rolling shutter's last rows outside the viewer's motion span, --colmap in bench.
+TEST(CliCalibration, WhatTheLensWouldIgnoreOrMixIsRefused) {
+  test::temp_dir dir;
+  const fs::path out = dir.path() / "x.png";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> refused = {
+      {{"--intrinsics", "1,1,1,1"}, "--intrinsics 1,1,1,1: the perspective model takes none"},
+      {{"--projection", "opencv-fisheye", "--intrinsics", "100,100,200,100", "--distortion",
+        "0.1,0,0,0,0.5"},
+       "--distortion 0.1,0,0,0,0.5: the opencv-fisheye model takes at most 4 coefficients, got 5"},
+      {{"--projection", "cylindrical", "--distortion", "0.1"},
+       "the cylindrical model takes no coefficients"},
+      // The corner pixel's center inverts (radius 0.38468 < the fold's 0.3849), its outer corner
+      // does not: part of the pixel would be black.
+      {{"--width", "640", "--aspect", "4:3", "--projection", "opencv", "--intrinsics",
+        "1038,1038,319.5,239.5", "--distortion=-1,0,0,0"},
+       "its point (-0.5, -0.5) has no undistorted point"}};
+  for (const auto& [flags, message] : refused) {
+    std::vector<std::string> args{"render"};
+    args.insert(args.end(), flags.begin(), flags.end());
+    args.insert(args.end(), {"-o", out.string()});
+    const auto r = run_rtvk(args);
+    EXPECT_EQ(r.status, 2) << message << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  // Pieces of lenses 3e-7 apart are not one render: merge refuses them.
+  const std::string a = (dir.path() / "a.exr").string(), b = (dir.path() / "b.exr").string();
+  const std::vector<std::string> lens = {
+      "render",       "--width", "32",           "--spp",         "2",
+      "--projection", "opencv",  "--intrinsics", "30,30,15.5,8.5"};
+  auto piece = [&](const std::string& k1, const std::string& samples, const std::string& file) {
+    std::vector<std::string> args = lens;
+    args.insert(args.end(), {"--distortion=" + k1 + ",0,0,0", "--samples", samples, "-o", file});
+    const auto r = run_rtvk(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+  };
+  piece("-0.1234561", "0:1", a);
+  piece("-0.1234564", "1:2", b);
+  const auto merged = run_rtvk({"merge", a, b, "-o", (dir.path() / "m.png").string()});
+  EXPECT_EQ(merged.status, 2) << merged.err;
+  // bench reads a COLMAP model's first view (it ignored --colmap before).
+  write(dir.path() / "model/cameras.txt", "1 PINHOLE 64 32 40 40 32 16\n");
+  write(dir.path() / "model/images.txt", "1 1 0 0 0 0 0 5 1 a.png\n\n");
+  const auto bench = run_rtvk({"bench", "--colmap", (dir.path() / "model").string(), "--repeat",
+                               "1", "--spp", "1", "--backend", "cpu"});
+  EXPECT_EQ(bench.status, 0) << bench.err;
+  EXPECT_NE((bench.out + bench.err).find("64x32"), std::string::npos) << bench.out << bench.err;
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "camera.h"
+#include "scene.h"
 #include "camera_lens.h"
 #include "camera_path.h"
 #include "gpu/kernels_f32.h"
@@ -377,6 +378,24 @@ TEST(CalibratedCameras, AGivenImageCircleAndCylinderCenterStay) {
   cyl.intrinsics.cy = 30;  // fx, fy from the fields of view; this center
   const camera c = make_camera(cyl, 320, 240);
   const vec3 ahead = glm::normalize(c.pixel_ray(40, 30).direction);
+  EXPECT_NEAR(glm::length(ahead + c.axis_w()), 0, 1e-12);
+}
+
+// Review findings, each seen failing before its fix: the viewer's motion span reaches a rolling
+// shutter's last row; a polynomial fisheye with only a calibration size is centered on it.
+TEST(CalibratedCameras, TheMotionSpanAndTheDefaultCenterFollowTheLens) {
+  scene s;
+  camera_pose& p = s.cameras[0].path.pose;
+  p.shutter_close = 1;
+  p.readout = -0.02;  // bottom row first: the top row opens 0.02 s later
+  EXPECT_DOUBLE_EQ(shutter_span(s, 0).hi, 1.02);
+
+  camera_pose poly;
+  poly.projection = projection::fisheye_polynomial;
+  poly.intrinsics.width = 640;
+  poly.intrinsics.height = 480;  // no center, no coefficients: the calibration's image center
+  const camera c = make_camera(poly, 320, 240);
+  const vec3 ahead = glm::normalize(c.pixel_ray(159.5, 119.5).direction);
   EXPECT_NEAR(glm::length(ahead + c.axis_w()), 0, 1e-12);
 }
 

@@ -213,8 +213,9 @@ int run_bench(bench_options& o) {
   if (!o.json.empty()) check_json_folder(o.json);
   scene s = load_scene(o.scene);
   check_scene(s);
-  s.cameras.resize(1);  // bench draws the scene's first camera at time 0
   const scene_overrides overrides = o.flags.overrides();
+  overrides.apply_cameras(s);  // --colmap's views, a calibration's size
+  s.cameras.resize(1);         // bench draws the scene's (or the model's) first camera at time 0
   overrides.apply(s);
   const camera cam = overrides.make_camera(s, main_camera(s).at(0),
                                            "camera " + s.cameras[0].name + " of " + o.scene);

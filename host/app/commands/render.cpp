@@ -127,8 +127,8 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
                                         render_shader_identity()}),
                       job.output, aovs ? &*aovs : nullptr);
   } else {
+    if (aovs) write_aov_files(run, job, *aovs);  // first: an image is never without its AOVs
     write_image(quantize(fb, run.s.render.gamma), job.output, run.enc);
-    if (aovs) write_aov_files(run, job, *aovs);
   }
   ++*run.written;
 }
@@ -137,8 +137,8 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
 void write_job(const run_context& run, const render_job& job, const image_rgb8& img) {
   if (pending_signal() != 0) throw render_cancelled("the render had finished");
   const std::optional<aov_image> aovs = job_aovs(run, job);
+  if (aovs) write_aov_files(run, job, *aovs);  // first: an image is never without its AOVs
   write_image(img, job.output, run.enc);
-  if (aovs) write_aov_files(run, job, *aovs);
   ++*run.written;
 }
 
@@ -230,9 +230,9 @@ int render_on_gpu(const run_context& cpu_run, gpu::gpu_context& ctx,
     std::vector<gpu::gpu_aov> found =
         gpu::run_aov_pass(ctx, run.s, run.o.accel == "bvh", job.cam, run.win);
     if (run.o.backend == "both")
-      aovs_alike &= aovs_agree(found, render_aov_cpu(job.cam, run.s, run.win, run.o.threads),
-                               object_ids(run.s), run.win.width,
-                               run.several ? label(run, job) + ": " : "");
+      aovs_alike &=
+          aovs_agree(found, render_aov_cpu(job.cam, run.s, run.win, run.o.threads),
+                     object_ids(run.s), run.win.width, run.several ? label(run, job) + ": " : "");
     return found;
   };
   const std::size_t group = gpu_group_size(run.win);

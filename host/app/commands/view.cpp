@@ -57,8 +57,7 @@ std::string render_flags(const std::string& scene_name, const view::viewer_resul
   // ones given in the render's pixels are written out.
   const lens_intrinsics& l = p.intrinsics;
   if (is_calibrated(p.projection) && l.width == 0 && (l.fx != 0 || l.fy != 0))
-    f += " --intrinsics " + exact(l.fx) + "," + exact(l.fy) + "," + exact(l.cx) + "," +
-         exact(l.cy);
+    f += " --intrinsics " + exact(l.fx) + "," + exact(l.fy) + "," + exact(l.cx) + "," + exact(l.cy);
   if (is_calibrated(p.projection) && l.k != decltype(l.k){}) {
     f += " --distortion ";
     for (std::size_t k = 0; k < l.k.size(); ++k) f += (k ? "," : "") + exact(l.k[k]);
@@ -76,6 +75,7 @@ int run_view(view_options o) {
   if (!o.screenshot.empty()) output_pattern(o.screenshot, "--screenshot");  // checked up front
   scene s = load_scene(o.scene);
   const scene_overrides overrides = o.flags.overrides();
+  overrides.apply_cameras(s);  // --colmap's views (--camera picks one), a calibration's size
   overrides.apply(s);
   check_scene(s);
   s.motion = shutter_span(s, 0);  // the viewer shows time 0, from any of the scene's cameras
@@ -96,7 +96,10 @@ int run_view(view_options o) {
   v.gpu = o.gpu.options();
   v.render.engine.use_bvh = o.accel == "bvh";
   // A screenshot is the image rtvk render makes with the same flags: the scene's size.
-  v.size_follows_window = !overrides.width && !overrides.aspect && o.screenshot.empty();
+  // A calibrated lens is for its calibration's aspect ratio: the window does not reshape it.
+  const bool calibrated = is_calibrated(pose.projection) && pose.intrinsics.width > 0;
+  v.size_follows_window =
+      !overrides.width && !overrides.aspect && o.screenshot.empty() && !calibrated;
   v.exit_at_target = !o.screenshot.empty();
   v.target_spp = o.screenshot.empty() && !overrides.spp ? 0 : s.render.spp;
   v.cancelled = interrupt_requested();

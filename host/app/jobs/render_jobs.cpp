@@ -124,7 +124,11 @@ std::string job_fingerprint(const std::string& scene_text, const camera_pose& p,
     std::snprintf(lens, sizeof lens, "|lens %d %d %.17g %.17g %.17g %.17g %.17g|ro %.17g", l.width,
                   l.height, l.fx, l.fy, l.cx, l.cy, l.radius, p.readout);
     model += lens;
-    for (double k : l.k) model += " " + format_number(k);
+    for (double k : l.k) {
+      char digits[32];
+      std::snprintf(digits, sizeof digits, " %.17g", k);
+      model += digits;
+    }
   }
   std::string time;
   if (instants) {
@@ -247,8 +251,8 @@ std::vector<render_job> plan_jobs(scene& s, const job_request& req, const output
                                   const scene_overrides& overrides, render_window& window) {
   overrides.apply_cameras(s);
   // A COLMAP model's views are all rendered unless --camera picks some.
-  select_cameras(s, req.cameras.empty() && overrides.colmap ? std::vector<std::string>{"all"}
-                                                            : req.cameras);
+  select_cameras(
+      s, req.cameras.empty() && overrides.colmap ? std::vector<std::string>{"all"} : req.cameras);
   overrides.apply(s);
   const int_range frames = plan_frames(s, req, output);
   std::vector<render_job> jobs = make_jobs(s, req, output, overrides, frames);

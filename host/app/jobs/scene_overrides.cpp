@@ -108,6 +108,27 @@ void apply_lens(const scene_overrides& o, const std::optional<calibration>& cal,
   if (o.rolling_shutter) c.readout = parse_rolling_shutter(*o.rolling_shutter);
 }
 
+// --intrinsics and --distortion only where the model reads them, and no more coefficients than
+// it has: ignoring them would draw another lens than the one asked for.
+void check_lens_flags(const scene_overrides& o, projection p) {
+  const std::string model(projection_name(p));
+  if (o.intrinsics && !is_calibrated(p))
+    throw usage_error("--intrinsics " + *o.intrinsics + ": the " + model +
+                      " model takes none (calibrated models: opencv, opencv-fisheye, "
+                      "fisheye-polynomial, cylindrical)");
+  if (!o.distortion) return;
+  const std::size_t most = p == projection::opencv               ? 8
+                           : p == projection::opencv_fisheye     ? 4
+                           : p == projection::fisheye_polynomial ? 5
+                                                                 : 0;
+  const std::size_t given = parse_numbers(*o.distortion, "--distortion", 1, 8, "numbers").size();
+  if (given > most)
+    throw usage_error("--distortion " + *o.distortion + ": the " + model + " model takes " +
+                      (most == 0 ? std::string("no coefficients")
+                                 : "at most " + std::to_string(most) + " coefficients") +
+                      ", got " + std::to_string(given));
+}
+
 // The camera model: not a move, so it applies to every pose of a path, keyframes included.
 void apply_model(const scene_overrides& o, const std::optional<calibration>& cal, camera_pose& c) {
   apply_lens(o, cal, c);
@@ -124,6 +145,7 @@ void apply_model(const scene_overrides& o, const std::optional<calibration>& cal
   if (o.fisheye_fov)
     c.fisheye_fov = checked(*o.fisheye_fov, *o.fisheye_fov > 0 && *o.fisheye_fov <= 360,
                             "--fisheye-fov", "in (0, 360] degrees");
+  check_lens_flags(o, c.projection);
   if (o.shutter) {
     const std::size_t colon = o.shutter->find(':');
     double open = 0, close = 0;

@@ -19,7 +19,7 @@ std::vector<gpu_aov> run_aov_pass(gpu_context& ctx, const scene& s, bool use_bvh
   const int band = int(std::max<std::size_t>(
       1, std::min<std::size_t>(std::size_t(win.height), (std::size_t(64) << 20) / row_bytes)));
   gpu_buffer out(ctx, row_bytes * std::size_t(band), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                 memory_use::upload);
+                 memory_use::readback);  // host-cached where it can be: the host reads it all
   const camera_ubo ubo = to_ubo(cam);
   gpu_buffer camera_buffer(ctx, sizeof ubo, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, memory_use::upload);
   camera_buffer.write(&ubo, sizeof ubo);
