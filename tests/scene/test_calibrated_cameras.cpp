@@ -10,10 +10,10 @@
 #include <string>
 
 #include "camera.h"
-#include "scene.h"
 #include "camera_lens.h"
 #include "camera_path.h"
 #include "gpu/kernels_f32.h"
+#include "scene.h"
 
 namespace rtvk {
 namespace {
