@@ -275,11 +275,18 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
   return true;
 }
 
+#include "world_rt.glsl"
+
+#ifndef RTVK_RT_OBJECT_STAGE
 // The closest hit over every object, as hittable_list::hit (or, with use_bvh, as
-// bvh_world::hit). Each iteration counts against the loop budget; over budget, the search stops
-// and `iterations` tells the caller.
+// bvh_world::hit; on the hardware paths, through the driver's acceleration structure). Each
+// iteration counts against the loop budget; over budget, the search stops and `iterations` tells
+// the caller.
 bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
                inout uint iterations) {
+#if defined(RTVK_RAY_QUERY) || defined(RTVK_RAY_PIPELINE)
+  return hit_hardware(r, t_min, t_max, rec, iterations);
+#endif
   if (use_bvh) return hit_bvh(r, t_min, t_max, rec, iterations);
   sheared_ray sr;
   if (any_triangles) sr = shear_ray(r);
@@ -339,5 +346,6 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
   hit_instance = best_inst;
   return true;
 }
+#endif
 
 #endif

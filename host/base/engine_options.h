@@ -4,10 +4,16 @@
 
 namespace rtvk {
 
+// How the GPU finds each ray's nearest hit (--accel): its own four-wide BVH in the compute
+// shader (bvh; none when use_bvh is false), or the driver's acceleration structures through
+// ray queries from that compute shader (rt-query) or a ray-tracing pipeline (rt-pipeline).
+enum class gpu_traversal { compute, ray_query, ray_pipeline };
+
 // How a backend does the work, as opposed to what it draws: none of this changes the image.
 struct engine_options {
-  bool use_bvh = true;      // false: test every sphere for every ray (--accel none)
-  int threads = 0;          // CPU worker threads; 0: one per core
+  bool use_bvh = true;  // false: test every sphere for every ray (--accel none)
+  gpu_traversal traversal = gpu_traversal::compute;  // the GPU's; the CPU always walks its BVH
+  int threads = 0;                                   // CPU worker threads; 0: one per core
   bool count_rays = false;  // fill render_stats::rays (costs a little on the GPU)
   // Polled between passes (a CPU row, a GPU submission); when it returns true the render stops
   // and throws render_cancelled. Empty: never cancelled.

@@ -41,6 +41,8 @@ using uvec2 = glm::uvec2;
 #define RTVK_BINDING_PERLIN 19      // storage buffer: gpu_perlin, the noise textures' tables
 #define RTVK_BINDING_MEDIA 20       // storage buffer: gpu_medium[], in scene order
 #define RTVK_BINDING_LIGHTS 21      // storage buffer: gpu_light[], what lights sampling aims at
+#define RTVK_BINDING_TLAS 22        // acceleration structure: the scene's top level (--accel rt-*)
+#define RTVK_BINDING_RAY_TIMES 23   // storage buffer: float[], each launch's ray time (rt-pipeline)
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
 
@@ -353,6 +355,10 @@ struct render_push {
   uint light_count;     // lights in their storage buffer; 0: plain sampling
   uint strata;          // the pixel is cut into strata x strata cells, each of samples 0 to
                         // strata^2 - 1 in its own (camera_rays.h); 0 or 1: not stratified
+  uint trace_cost;      // hardware paths: loop iterations each traced ray counts besides its
+                        // candidates, for the driver's own traversal loop (world_rt.glsl)
+  uint probe_trips;     // 2: the trips of the loop that tells whether lavapipe's loop limit
+                        // cut a traversal short (limit_was_hit); a push constant, so not unrolled
 };
 
 // std430 array element: one pixel's exact running sums, 48 bytes. Each channel is a 96-bit
@@ -386,6 +392,8 @@ struct render_status {
   uint dropped_samples;     // samples with a NaN or infinite channel: they add black
   uint rays_low;            // rays traced for the samples added (when counted), low word
   uint rays_high;           // and high word
+  uint cut_traversals;      // hardware paths: invocations whose traversal the driver's loop limit
+                            // cut short (lavapipe): nothing of them is added; the render fails
 };
 
 // Push constants of overlay.comp (std430): the viewer's overlay, a band at the top left of the
@@ -607,7 +615,9 @@ static_assert(offsetof(render_push, instance_count) == 84);
 static_assert(offsetof(render_push, medium_count) == 88);
 static_assert(offsetof(render_push, light_count) == 92);
 static_assert(offsetof(render_push, strata) == 96);
-static_assert(sizeof(render_push) == 100 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, trace_cost) == 100);
+static_assert(offsetof(render_push, probe_trips) == 104);
+static_assert(sizeof(render_push) == 108 && sizeof(render_push) <= 128);
 static_assert(offsetof(gpu_quad, material) == 12);
 static_assert(offsetof(gpu_quad, u) == 16);
 static_assert(offsetof(gpu_quad, scene_index) == 28);
@@ -659,7 +669,8 @@ static_assert(sizeof(bvh_wide_node) == 128);
 static_assert(offsetof(render_status, dropped_samples) == 16);
 static_assert(offsetof(render_status, rays_low) == 20);
 static_assert(offsetof(render_status, rays_high) == 24);
-static_assert(sizeof(render_status) == 28);
+static_assert(offsetof(render_status, cut_traversals) == 28);
+static_assert(sizeof(render_status) == 32);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
 static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);
 static_assert(sizeof(probe_io) == 48 * RTVK_PROBE_POINTS);

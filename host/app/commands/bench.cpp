@@ -32,7 +32,7 @@ struct bench_options {
   std::string scene = "book-final";  // what to render
   std::string backend = "all";       // cpu, gpu or all
   int threads = 0;                   // CPU threads; 0: one per core
-  std::string accel = "bvh";         // bvh or none
+  std::string accel = "bvh";         // bvh, none, rt-query, rt-pipeline or auto
   gpu_flags gpu;                     // --device, --validate, --gpu-timeout
   int repeat = 1;                    // timed runs per backend, after one warm-up
   std::string json;                  // write the records here too
@@ -46,6 +46,7 @@ struct bench_record {
   std::uint64_t rays = 0;
   std::uint64_t dropped = 0;  // samples with a NaN or infinite channel (added black)
   std::string sampling;       // plain or lights
+  std::string accel;          // what found the hits: bvh, none, rt-query, rt-pipeline
   double seconds = 0;         // the whole render, BVH build included (CPU; the GPU builds it once)
   double build_seconds = 0;   // of which building the BVH
   double setup_seconds = -1;  // GPU: setting up the engine (limits, BVH, uploads), once a run
@@ -74,7 +75,7 @@ void print(const bench_record& r) {
       "%-4s %s %dx%d, %d spp, depth %d%s: %.1f M rays in %.3f s (%s) = %.2f Mrays/s (%s%s)\n",
       r.backend.c_str(), r.scene.c_str(), r.width, r.height, r.spp, r.depth,
       r.sampling == "lights" ? ", lights sampling" : "", double(r.rays) / 1e6, r.seconds, setup,
-      r.mrays_per_s(), r.device.c_str(),
+      r.mrays_per_s(), (r.device + ", accel " + r.accel).c_str(),
       r.backend == "cpu" ? (", " + std::to_string(r.threads) + " threads").c_str() : "");
   if (r.dropped > 0)
     std::printf("     %llu samples were NaN or infinite and added black\n",
@@ -113,7 +114,7 @@ void check_json_folder(const std::string& path) {
 
 engine_options engine_from(const bench_options& o) {
   engine_options engine;
-  engine.use_bvh = o.accel == "bvh";
+  engine.use_bvh = o.accel != "none";
   engine.threads = o.threads;
   engine.count_rays = true;
   engine.cancelled = interrupt_requested();
@@ -136,6 +137,7 @@ bench_record record_for(const scene& s, const camera& cam) {
 void bench_cpu(const bench_options& o, bench_record b, const camera& cam, const scene& s,
                const engine_options& engine, std::vector<bench_record>& records) {
   b.backend = "cpu";
+  b.accel = engine.use_bvh ? "bvh" : "none";
   b.device = cpu_model();
   b.threads = worker_threads(o.threads);
   measure(
@@ -147,7 +149,7 @@ void bench_cpu(const bench_options& o, bench_record b, const camera& cam, const 
 // and --backend gpu fails.
 void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const scene& s,
                const engine_options& engine, std::vector<bench_record>& records) {
-  const gpu::gpu_options g = o.gpu.options();
+  const gpu::gpu_options g = o.gpu.options(wants_ray_tracing(o.accel));
   std::unique_ptr<gpu::gpu_context> ctx;
   try {
     ctx = std::make_unique<gpu::gpu_context>(g);
@@ -161,9 +163,12 @@ void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const 
   b.device = d.name + ", driver " + gpu::driver_string(d) +
              (g.validate ? ", validation layer on" : "");  // slower: the record says so
   // The engine is set up once, as a run of `rtvk render` does; the timed renders reuse it.
+  engine_options on_device = engine;
+  on_device.traversal = traversal_for(o.accel, *ctx);
   const auto start = std::chrono::steady_clock::now();
   gpu::gpu_engine gpu_scene(
-      *ctx, s, {.engine = engine, .pipeline_cache_folder = gpu::default_cache_folder()});
+      *ctx, s, {.engine = on_device, .pipeline_cache_folder = gpu::default_cache_folder()});
+  b.accel = gpu_scene.traversal_name();
   b.setup_seconds = gpu_scene.setup_seconds();
   b.gpu_seconds = 0;
   b.build_seconds = gpu_scene.build_seconds();
@@ -194,6 +199,7 @@ void write_json(const std::string& path, const std::vector<bench_record>& record
                    {"depth", r.depth},
                    {"rays", r.rays},
                    {"sampling", r.sampling},
+                   {"accel", r.accel},
                    {"dropped_samples", r.dropped},
                    {"seconds", r.seconds},
                    {"build_seconds", r.build_seconds},
@@ -246,8 +252,8 @@ command_action add_bench_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "CPU threads (0: one per core)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  cmd->add_option("--accel", o->accel, "bvh or none")
-      ->check(CLI::IsMember({"bvh", "none"}))
+  cmd->add_option("--accel", o->accel, accel_flag_help)
+      ->check(CLI::IsMember(accel_words()))
       ->capture_default_str();
   o->gpu.add_to(*cmd);
   cmd->add_option("--repeat", o->repeat, "Timed runs per backend")

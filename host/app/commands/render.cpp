@@ -49,7 +49,7 @@ struct render_options {
   job_request jobs;               // cameras, frames, region, samples and the -o pattern
   std::string ppm_format = "P3";  // P3 (ASCII, as the lesson) or P6 (binary)
   bool quiet = false;             // no summary line, no progress bar
-  std::string accel = "bvh";      // bvh or none
+  std::string accel = "bvh";      // bvh, none, rt-query, rt-pipeline or auto (accel_words)
   int threads = 0;                // CPU threads; 0: one per core
   gpu_flags gpu;                  // --device, --validate, --gpu-timeout
   scene_flags flags;              // --width, --spp, --lookfrom, ...
@@ -58,7 +58,7 @@ struct render_options {
 
 engine_options engine_from(const render_options& o) {
   engine_options e;
-  e.use_bvh = o.accel == "bvh";
+  e.use_bvh = o.accel != "none";  // the CPU walks its BVH on every other path
   e.threads = o.threads;
   e.cancelled = interrupt_requested();
   return e;
@@ -221,14 +221,15 @@ std::size_t gpu_group_size(const render_window& win) {
 
 int render_on_gpu(const run_context& cpu_run, gpu::gpu_context& ctx,
                   const std::vector<render_job>& jobs) {
-  const std::string backend = "gpu (" + ctx.device().name + ")";
+  engine_options e = engine_from(cpu_run.o);
+  e.traversal = traversal_for(cpu_run.o.accel, ctx);
   // The AOVs on the device too; with --backend both, checked against the CPU's.
   bool aovs_alike = true;
   run_context run = cpu_run;
   run.aovs_alike = &aovs_alike;
   run.aov_pass = [&](const render_job& job) {
     std::vector<gpu::gpu_aov> found =
-        gpu::run_aov_pass(ctx, run.s, run.o.accel == "bvh", job.cam, run.win);
+        gpu::run_aov_pass(ctx, run.s, run.o.accel != "none", job.cam, run.win);
     if (run.o.backend == "both")
       aovs_alike &=
           aovs_agree(found, render_aov_cpu(job.cam, run.s, run.win, run.o.threads),
@@ -237,9 +238,10 @@ int render_on_gpu(const run_context& cpu_run, gpu::gpu_context& ctx,
   };
   const std::size_t group = gpu_group_size(run.win);
   // Set up once (scene buffers, BVH, pipelines) for every group of the run.
-  gpu::gpu_engine engine(
-      ctx, run.s,
-      {.engine = engine_from(run.o), .pipeline_cache_folder = gpu::default_cache_folder()});
+  gpu::gpu_engine engine(ctx, run.s,
+                         {.engine = e, .pipeline_cache_folder = gpu::default_cache_folder()});
+  // The summary says which device and which traversal drew the image.
+  const std::string backend = "gpu (" + ctx.device().name + ", " + engine.traversal_name() + ")";
   // PNG and PPM are encoded on the device (4 bytes a pixel read back), unless the CPU's check
   // needs the means.
   const bool encoded = run.o.backend != "both" &&
@@ -275,7 +277,7 @@ int render_all(const run_context& run, const std::vector<render_job>& jobs) {
   if (o.backend != "cpu") {
     std::unique_ptr<gpu::gpu_context> ctx;
     try {
-      ctx = std::make_unique<gpu::gpu_context>(o.gpu.options());
+      ctx = std::make_unique<gpu::gpu_context>(o.gpu.options(wants_ray_tracing(o.accel)));
     } catch (const gpu::no_device_error& e) {
       if (o.backend != "auto") throw;
       std::fprintf(stderr, "rtvk: note: no Vulkan device (%s); rendering on the CPU\n", e.what());
@@ -297,6 +299,9 @@ int run_render(render_options o) {
   const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
   if (!o.gpu.device.empty() && o.backend == "cpu")
     throw usage_error("--device " + o.gpu.device + ": needs --backend gpu, auto or both");
+  if ((o.accel == "rt-query" || o.accel == "rt-pipeline") && o.backend == "cpu")
+    throw usage_error("--accel " + o.accel +
+                      ": the device's hardware ray tracing; needs --backend gpu, auto or both");
   const output_pattern output(o.jobs.output, "--output");  // refused before the scene loads
   unsigned aovs = 0;
   if (!o.aov.empty()) {
@@ -361,8 +366,8 @@ void add_engine_options(CLI::App& cmd, render_options& o) {
       ->capture_default_str();
   o.gpu.add_to(cmd);
   cmd.add_flag("-q,--quiet", o.quiet, "No summary line and no progress bar");
-  cmd.add_option("--accel", o.accel, "bvh, or none to test every sphere (same image, slower)")
-      ->check(CLI::IsMember({"bvh", "none"}))
+  cmd.add_option("--accel", o.accel, accel_flag_help)
+      ->check(CLI::IsMember(accel_words()))
       ->capture_default_str();
   cmd.add_option("--threads", o.threads, "CPU threads (0: one per core)")
       ->check(CLI::Range(0, 1024))

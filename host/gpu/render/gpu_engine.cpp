@@ -17,8 +17,10 @@
 #include "gpu_scene.h"
 #include "packing.h"
 #include "parallel.h"
+#include "ray_pipeline.h"
 #include "render_targets.h"
 #include "sample_sum.h"
+#include "scene_accel.h"
 #include "shaders.h"
 
 namespace rtvk::gpu {
@@ -48,6 +50,15 @@ void barrier(VkCommandBuffer cb, VkPipelineStageFlags src_stage, VkAccessFlags s
 constexpr VkPipelineStageFlags compute_stage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 constexpr VkPipelineStageFlags transfer_stage = VK_PIPELINE_STAGE_TRANSFER_BIT;
 constexpr VkAccessFlags shader_rw = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+
+// The iterations each traced ray counts on the hardware paths, besides its candidates, for the
+// driver's traversal loop rtvk cannot see (render_push::trace_cost): on a CPU device (lavapipe,
+// whose loop limit counts that loop too) a guess that halves the iterations a budget allows,
+// doubled whenever a traversal was cut anyway; elsewhere one, only for the pacer's sake.
+constexpr std::uint32_t max_trace_cost = 1u << 14;
+std::uint32_t first_trace_cost(const device_info& d) {
+  return d.type == VK_PHYSICAL_DEVICE_TYPE_CPU ? 32u : 1u;
+}
 
 }  // namespace
 
@@ -138,11 +149,15 @@ render_push make_push(const sky& background, const render_settings& rs, const re
                                 std::to_string(objects.light_count()) + " lights to aim at");
   push.light_count = lights ? objects.light_count() : 0u;
   push.strata = pixel_strata(rs, lights);
+  push.probe_trips = 2;  // limit_was_hit's loop (world_rt.glsl)
   return push;
 }
 
-// Every buffer the render shader reads or writes, by binding.
-std::vector<buffer_binding> render_bindings(const gpu_scene& g, const render_targets& t) {
+// Every buffer the render shader reads or writes, by binding; on the hardware paths, the top
+// level (`accel`) and, for a pipeline, the rays' times (`ray_times`) too.
+std::vector<buffer_binding> render_bindings(const gpu_scene& g, const render_targets& t,
+                                            const scene_accel* accel = nullptr,
+                                            const gpu_buffer* ray_times = nullptr) {
   std::vector<buffer_binding> b = {
       {RTVK_BINDING_CAMERA, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, t.cameras.get()},
       {RTVK_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, g.materials()},
@@ -150,6 +165,11 @@ std::vector<buffer_binding> render_bindings(const gpu_scene& g, const render_tar
       {RTVK_BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.status.get()}};
   for (const buffer_binding& o : g.object_bindings()) b.push_back(o);
   for (const buffer_binding& o : g.appearance_bindings()) b.push_back(o);
+  if (accel)
+    b.push_back({RTVK_BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, VK_NULL_HANDLE,
+                 accel->top()});
+  if (ray_times)
+    b.push_back({RTVK_BINDING_RAY_TIMES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ray_times->get()});
   return b;
 }
 
@@ -194,6 +214,7 @@ struct engine_parts {
   const gpu_render_options& options;
   bool& drawn;
   pacer& pace;
+  std::uint32_t& trace_cost;  // render_push::trace_cost, doubled whenever a traversal was cut
 };
 
 // A submission in flight: what it asked of the pixels, and when.
@@ -218,7 +239,7 @@ struct in_flight {
 // first when that is 0), and ends with those rows encoded into the image's bytes, not read back.
 class band_renderer {
  public:
-  band_renderer(const engine_parts& engine, const compute_pipeline& pipeline,
+  band_renderer(const engine_parts& engine, const shader_program& pipeline,
                 const compute_pipeline* tonemap, const render_push& push, const render_window& win,
                 bool kept)
       : e_(engine),
@@ -227,7 +248,8 @@ class band_renderer {
         push_(push),
         win_(win),
         kept_(kept),
-        target_base_(kept ? std::uint32_t(win.sample_begin) : 0) {}
+        target_base_(kept ? std::uint32_t(win.sample_begin) : 0),
+        compute_stage(VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | pipeline.stages()) {}
 
   // The cameras of the views the next bands draw (written into the command stream).
   void set_views(const std::vector<camera>& views, std::size_t first, std::uint32_t count) {
@@ -300,6 +322,7 @@ class band_renderer {
                    bool last) {
     const std::uint32_t step = e_.pace.samples_per_dispatch();
     push_.loop_budget = e_.pace.loop_budget(VkDeviceSize(win_.width) * b.pixels());
+    push_.trace_cost = e_.trace_cost;
     std::uint32_t dispatches = 0;
     const std::uint64_t ticket = e_.ctx.submit(
         [&](VkCommandBuffer cb) { dispatches = record(cb, b, first, from, to, step, last); });
@@ -321,6 +344,9 @@ class band_renderer {
     const auto& st = *static_cast<const render_status*>(e_.targets.status_readback.read());
     if (st.starved_pixels > 0 && !e_.pace.starved(st.starved_budget))
       throw overrun(st, st.starved_budget, e_.ctx.device());
+    // The driver's loop limit cut some traversal short: those pixels kept nothing of it and go
+    // on in the next pass, where each ray counts twice as many iterations.
+    if (st.cut_traversals > 0) e_.trace_cost = std::min(e_.trace_cost * 2, max_trace_cost);
     if (st.overflowed_samples > 0) throw overflow(st, push_.sample_limit);
     // Device time where there is a timer: the wall time includes waiting behind the other
     // submission in flight.
@@ -430,13 +456,16 @@ class band_renderer {
   }
 
   engine_parts e_;  // the engine's context, targets, timer, options and carried-over state
-  const compute_pipeline& pipeline_;
+  const shader_program& pipeline_;
   const compute_pipeline* tonemap_;  // encodes the readback to bytes; null: sums
   render_push push_;                 // band and target fields change per dispatch
   const render_window& win_;         // region and sample range of every view
   std::vector<camera_ubo> cameras_;  // of the views the bands draw (set_views)
   bool kept_;                        // the image's sums stay on the device (the viewer's)
   std::uint32_t target_base_;        // samples the kept sums already hold; 0 otherwise
+  // The stages the render's shaders run in: compute (tonemap.comp, and render.comp or
+  // render_query.comp) and the ray-tracing pipeline's, for barriers.
+  VkPipelineStageFlags compute_stage;
 };
 
 // Runs body(row) for rows [0, rows) on every core: readback conversion should not leave all but
@@ -468,8 +497,8 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       sky_(s.sky),
       motion_(s.motion),
       // The tree is built first: the limits are checked with its exact size.
-      host_arrays_(
-          std::make_unique<gpu_scene::host_arrays>(gpu_scene::build(s, options.engine.use_bvh))),
+      host_arrays_(std::make_unique<gpu_scene::host_arrays>(gpu_scene::build(
+          s, options.engine.use_bvh || options.engine.traversal != gpu_traversal::compute))),
       scene_buffers_(gpu_scene::buffers(ctx, *host_arrays_)),
       wg_(workgroup_size(ctx.device())),
       // The limits before any allocation, with the smallest targets: larger ones are checked
@@ -483,15 +512,44 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       exponent_(rtvk::sum_exponent(brightest(s.sky))),
       pacer_(pacing_for(cpu_device(ctx.device())), options.samples_per_dispatch,
              options.samples_per_submission, options.loop_budget) {
-  host_arrays_.reset();  // on the device now
+  const bool pipelines = options.engine.traversal == gpu_traversal::ray_pipeline;
+  if (pipelines) render_stages_ |= VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
   upload();
+  if (options.engine.traversal != gpu_traversal::compute) {
+    const char* flag = pipelines ? "--accel rt-pipeline" : "--accel rt-query";
+    if (pipelines ? !ctx.ray_tracing_pipelines() : !ctx.ray_queries()) {
+      const std::string missing = missing_ray_tracing(ctx.device(), pipelines);
+      throw usage_error(std::string(flag) + ": device '" + ctx.device().name + "' lacks " +
+                        (missing.empty() ? std::string("it (not enabled)") : missing));
+    }
+    accel_ = std::make_unique<scene_accel>(ctx, *host_arrays_, s.motion,
+                                           std::string(flag) + " --scene " + s.name);
+  }
+  host_arrays_.reset();  // on the device now
+  if (pipelines)
+    ray_times_ =
+        std::make_unique<gpu_buffer>(ctx_, targets_->pixels * sizeof(float),
+                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::device_local);
+  trace_cost_ = first_trace_cost(ctx.device());
   setup_seconds_ = seconds_since(start_);
+}
+
+const char* gpu_engine::traversal_name() const {
+  switch (options_.engine.traversal) {
+    case gpu_traversal::ray_query:
+      return "rt-query";
+    case gpu_traversal::ray_pipeline:
+      return "rt-pipeline";
+    case gpu_traversal::compute:
+      break;
+  }
+  return options_.engine.use_bvh ? "bvh" : "none";
 }
 
 void gpu_engine::upload() {
   ctx_.submit_and_wait([&](VkCommandBuffer cb) {
     scene_.record_upload(cb);
-    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage,
+    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, render_stages_,
             VK_ACCESS_SHADER_READ_BIT);
   });
 }
@@ -514,16 +572,20 @@ render_targets& gpu_engine::targets_for(VkDeviceSize pixels) {
 }
 
 void gpu_engine::rebind_all() {
+  if (options_.engine.traversal == gpu_traversal::ray_pipeline)
+    ray_times_ =
+        std::make_unique<gpu_buffer>(ctx_, targets_->pixels * sizeof(float),
+                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::device_local);
   for (auto& [switches, pipeline] : pipelines_)
-    pipeline->rebind(render_bindings(scene_, *targets_));
+    pipeline->rebind(render_bindings(scene_, *targets_, accel_.get(), ray_times_.get()));
   if (tonemap_) tonemap_->rebind(tonemap_bindings(*targets_));
 }
 
-const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool count_rays,
-                                                 bool lights, bool calibrated) {
+const shader_program& gpu_engine::pipeline_for(bool jitter, bool lens, bool count_rays, bool lights,
+                                               bool calibrated) {
   const std::uint32_t switches = (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u) |
                                  (lights ? 8u : 0u) | (calibrated ? 16u : 0u);
-  std::unique_ptr<compute_pipeline>& p = pipelines_[switches];
+  std::unique_ptr<shader_program>& p = pipelines_[switches];
   if (!p) {
     std::uint32_t spec[RTVK_SPEC_COUNT] = {};  // by constant_id
     spec[0] = wg_[0];
@@ -535,9 +597,21 @@ const compute_pipeline& gpu_engine::pipeline_for(bool jitter, bool lens, bool co
     scene_.specialize(spec);
     spec[RTVK_SPEC_LIGHTS] = lights;
     spec[RTVK_SPEC_CALIBRATED] = calibrated;
-    p = std::make_unique<compute_pipeline>(ctx_, render_shader(),
-                                           render_bindings(scene_, *targets_), sizeof(render_push),
-                                           spec, cache_.get());
+    const auto bindings = render_bindings(scene_, *targets_, accel_.get(), ray_times_.get());
+    switch (options_.engine.traversal) {
+      case gpu_traversal::compute:
+        p = std::make_unique<compute_pipeline>(ctx_, render_shader(), bindings, sizeof(render_push),
+                                               spec, cache_.get());
+        break;
+      case gpu_traversal::ray_query:
+        p = std::make_unique<compute_pipeline>(ctx_, render_query_shader(), bindings,
+                                               sizeof(render_push), spec, cache_.get());
+        break;
+      case gpu_traversal::ray_pipeline:
+        p = std::make_unique<ray_pipeline>(ctx_, render_ray_shaders(), bindings,
+                                           sizeof(render_push), spec, cache_.get(), wg_);
+        break;
+    }
     cache_.save();  // a cache that cannot be written only makes the next run slower
   }
   return *p;
@@ -579,7 +653,7 @@ std::vector<std::uint32_t> gpu_engine::encode_sums(const std::vector<pixel_sum>&
   staging.write(sums.data(), bytes);
   ctx_.submit_and_wait([&](VkCommandBuffer cb) {
     if (drawn_)
-      barrier(cb, compute_stage | transfer_stage,
+      barrier(cb, render_stages_ | transfer_stage,
               shader_rw | VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
               transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
     const VkBufferCopy in{0, 0, bytes};
@@ -631,7 +705,7 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
   const bool calibrated = std::any_of(views.begin(), views.end(), [](const camera& c) {
     return is_calibrated(c.projection()) || c.frame().readout != 0;
   });
-  band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, pacer_},
+  band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, pacer_, trace_cost_},
                       pipeline_for(rs.jitter, lens, count_rays, push.light_count > 0, calibrated),
                       tonemap, push, win, kept);
 
@@ -696,10 +770,10 @@ void gpu_engine::reset_accumulation(int width, int height) {
   const render_targets& t = targets_for(pixels);
   ctx_.submit_and_wait([&](VkCommandBuffer cb) {
     if (drawn_)
-      barrier(cb, compute_stage | transfer_stage, shader_rw | VK_ACCESS_TRANSFER_READ_BIT,
+      barrier(cb, render_stages_ | transfer_stage, shader_rw | VK_ACCESS_TRANSFER_READ_BIT,
               transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdFillBuffer(cb, t.bytes.get(), 0, pixels * 4, 0xff000000u);
-    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage | transfer_stage,
+    barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, render_stages_ | transfer_stage,
             shader_rw | VK_ACCESS_TRANSFER_READ_BIT);
   });
 }
@@ -718,7 +792,7 @@ image_rgb8 gpu_engine::read_accumulation(int width, int height) {
   const VkDeviceSize pixels = VkDeviceSize(width) * VkDeviceSize(height);
   if (targets_->pixels < pixels) throw std::invalid_argument("read_accumulation: no such image");
   ctx_.submit_and_wait([&](VkCommandBuffer cb) {
-    barrier(cb, compute_stage | transfer_stage,
+    barrier(cb, render_stages_ | transfer_stage,
             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, transfer_stage,
             VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
     const VkBufferCopy copy{0, 0, pixels * 4};

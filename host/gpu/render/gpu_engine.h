@@ -23,6 +23,7 @@
 #include "render_targets.h"
 #include "sample_sum.h"
 #include "scene.h"
+#include "scene_accel.h"
 
 namespace rtvk::gpu {
 
@@ -108,7 +109,12 @@ class gpu_engine {
 
   int sum_exponent() const { return exponent_; }           // F of every render of this scene
   double setup_seconds() const { return setup_seconds_; }  // the constructor, wall clock
-  double build_seconds() const { return scene_.build_seconds(); }  // of which the BVH
+  // Of which the BVH, and on the hardware paths the acceleration structures.
+  double build_seconds() const {
+    return scene_.build_seconds() + (accel_ ? accel_->build_seconds() : 0.0);
+  }
+  // What finds the hits: "bvh", "none", "rt-query" or "rt-pipeline" (--accel's words).
+  const char* traversal_name() const;
   const pipeline_cache& cache() const { return cache_; }
 
  private:
@@ -128,8 +134,8 @@ class gpu_engine {
   // The targets, reallocated (after checking the device's limits) when too small.
   render_targets& targets_for(VkDeviceSize pixels);
   // The pipeline with these switches, built (through the cache) the first time it is asked for.
-  const compute_pipeline& pipeline_for(bool jitter, bool lens, bool count_rays, bool lights,
-                                       bool calibrated);
+  const shader_program& pipeline_for(bool jitter, bool lens, bool count_rays, bool lights,
+                                     bool calibrated);
   const compute_pipeline& tonemap_pipeline();
   void rebind_all();
   void write_thresholds(double gamma);
@@ -148,7 +154,14 @@ class gpu_engine {
   std::unique_ptr<render_targets> targets_;    // grown on demand
   pipeline_cache cache_;                       // compiled code, kept between runs
   // One per combination of the render's switches (specialization constants), made on first use.
-  std::map<std::uint32_t, std::unique_ptr<compute_pipeline>> pipelines_;
+  std::map<std::uint32_t, std::unique_ptr<shader_program>> pipelines_;
+  // The hardware paths' acceleration structures (none on the compute path), and rt-pipeline's
+  // rays' times (one float per pixel of the targets).
+  std::unique_ptr<scene_accel> accel_;
+  std::unique_ptr<gpu_buffer> ray_times_;
+  // The stages the render's shaders run in: compute, and a ray-tracing pipeline's.
+  VkPipelineStageFlags render_stages_ = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+  std::uint32_t trace_cost_ = 1;               // render_push::trace_cost (gpu_engine.cpp)
   std::unique_ptr<compute_pipeline> tonemap_;  // made on first use
   device_timer timer_;                         // device time of each submission
   int exponent_;                               // F of the sums (sample_sum.h)

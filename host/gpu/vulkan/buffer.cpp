@@ -28,10 +28,16 @@ unique_buffer make_buffer(VkDevice device, VkDeviceSize size, VkBufferUsageFlags
   return unique_buffer(device, buffer);
 }
 
-unique_memory allocate(VkDevice device, VkDeviceSize size, std::uint32_t type) {
+// `addressed`: the memory of a buffer whose device address is taken (acceleration structures and
+// their inputs), which must be allocated for it.
+unique_memory allocate(VkDevice device, VkDeviceSize size, std::uint32_t type,
+                       bool addressed = false) {
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = size;
   alloc.memoryTypeIndex = type;
+  VkMemoryAllocateFlagsInfo flags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
+  flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
+  if (addressed) alloc.pNext = &flags;
   VkDeviceMemory memory = VK_NULL_HANDLE;
   vk_check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
   return unique_memory(device, memory);
@@ -85,7 +91,8 @@ gpu_buffer::gpu_buffer(const gpu_context& ctx, VkDeviceSize size, VkBufferUsageF
   VkMemoryRequirements req{};
   vkGetBufferMemoryRequirements(device_, owned.get(), &req);
   const std::uint32_t type = memory_type_for(ctx, req.memoryTypeBits, use);
-  memory_ = allocate(device_, req.size, type);
+  memory_ =
+      allocate(device_, req.size, type, (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) != 0);
   bound_ = memory_.get();
   buffer_ = std::move(owned);
   vk_check(vkBindBufferMemory(device_, buffer_.get(), bound_, 0), "vkBindBufferMemory");

@@ -5,18 +5,33 @@
 #include <vector>
 
 #include "context.h"
+#include "descriptors.h"
 #include "vk_handle.h"
 
 namespace rtvk::gpu {
 
-struct buffer_binding {
-  std::uint32_t binding;  // layout(binding = N) in the shader
-  VkDescriptorType type;  // uniform or storage buffer
-  VkBuffer buffer;        // bound over its whole range
+// What a render records of its shader, whichever kind of pipeline runs it: the band renderer
+// (host/gpu/render/gpu_engine.cpp) drives a compute_pipeline or a ray_pipeline alike.
+class shader_program {
+ public:
+  virtual ~shader_program() = default;
+  // Points the descriptor set at other buffers (same bindings, same types). Only while no
+  // submission that uses the set is in flight.
+  virtual void rebind(const std::vector<buffer_binding>& bindings) = 0;
+  // Binds the pipeline and its descriptor set.
+  virtual void bind(VkCommandBuffer cb) const = 0;
+  virtual void push(VkCommandBuffer cb, const void* data, std::uint32_t bytes) const = 0;
+  // Runs `groups` workgroups in x, y and z (a ray-tracing pipeline: as many launches as their
+  // invocations); returns how many commands it recorded.
+  virtual std::uint32_t dispatch(VkCommandBuffer cb,
+                                 const std::array<std::uint32_t, 3>& groups) const = 0;
+  // The pipeline stages its shaders run in, for barriers.
+  virtual VkPipelineStageFlags stages() const = 0;
 };
 
-// A compute shader with its one descriptor set (set 0), all bindings buffers.
-class compute_pipeline {
+// A compute shader with its one descriptor set (set 0), all bindings buffers or acceleration
+// structures.
+class compute_pipeline : public shader_program {
  public:
   // spec_constants fill specialization constant ids 0, 1, ... in order; `cache`, when given,
   // supplies and keeps the device's compiled code.
@@ -25,21 +40,19 @@ class compute_pipeline {
                    std::span<const std::uint32_t> spec_constants = {},
                    VkPipelineCache cache = VK_NULL_HANDLE);
 
-  ~compute_pipeline();
+  ~compute_pipeline() override;
   compute_pipeline(const compute_pipeline&) = delete;
   compute_pipeline& operator=(const compute_pipeline&) = delete;
 
-  // Points the descriptor set at other buffers (same bindings, same types). Only while no
-  // submission that uses the set is in flight.
-  void rebind(const std::vector<buffer_binding>& bindings);
-
-  // Binds the pipeline and its descriptor set.
-  void bind(VkCommandBuffer cb) const;
-  void push(VkCommandBuffer cb, const void* data, std::uint32_t bytes) const;
+  void rebind(const std::vector<buffer_binding>& bindings) override;
+  void bind(VkCommandBuffer cb) const override;
+  void push(VkCommandBuffer cb, const void* data, std::uint32_t bytes) const override;
   // vkCmdDispatch of `groups` workgroups in x, y and z, split into tiles within the device's
   // maxComputeWorkGroupCount (vkCmdDispatchBase, so gl_GlobalInvocationID is as one dispatch
   // would number it). Returns how many dispatches it recorded.
-  std::uint32_t dispatch(VkCommandBuffer cb, const std::array<std::uint32_t, 3>& groups) const;
+  std::uint32_t dispatch(VkCommandBuffer cb,
+                         const std::array<std::uint32_t, 3>& groups) const override;
+  VkPipelineStageFlags stages() const override { return VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT; }
 
  private:
   const gpu_context& ctx_;  // tells whether the device may still be using the pipeline

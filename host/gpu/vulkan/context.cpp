@@ -50,6 +50,34 @@ std::uint32_t presenting_family(const device_info& d, VkSurfaceKHR surface) {
                     : " cannot present to the window from any of its queues"));
 }
 
+// The features hardware ray tracing needs, chained for vkCreateDevice: device addresses,
+// acceleration structures, and ray queries and pipelines where the device has them.
+struct ray_tracing_features {
+  VkPhysicalDeviceBufferDeviceAddressFeatures address{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_BUFFER_DEVICE_ADDRESS_FEATURES};
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR structures{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  VkPhysicalDeviceRayQueryFeaturesKHR query{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR pipeline{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  void chain(bool queries, bool pipelines) {
+    address.bufferDeviceAddress = VK_TRUE;
+    structures.accelerationStructure = VK_TRUE;
+    address.pNext = &structures;
+    void** next = &structures.pNext;
+    if (queries) {
+      query.rayQuery = VK_TRUE;
+      *next = &query;
+      next = &query.pNext;
+    }
+    if (pipelines) {
+      pipeline.rayTracingPipeline = VK_TRUE;
+      *next = &pipeline;
+    }
+  }
+};
+
 }  // namespace
 
 gpu_context::gpu_context(const gpu_options& options)
@@ -80,7 +108,15 @@ gpu_context::gpu_context(const gpu_options& options)
   if (has_device_extension(d.handle, "VK_KHR_portability_subset"))
     extensions.push_back("VK_KHR_portability_subset");
   if (surface_.get()) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  ray_tracing_features rt;
+  if (options.ray_tracing && d.acceleration_structures) {
+    for (const char* e : ray_tracing_extensions(d)) extensions.push_back(e);
+    ray_queries_ = d.ray_queries;
+    ray_tracing_pipelines_ = d.ray_tracing_pipelines;
+    rt.chain(ray_queries_, ray_tracing_pipelines_);
+  }
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  if (options.ray_tracing && d.acceleration_structures) info.pNext = &rt.address;
   info.queueCreateInfoCount = std::uint32_t(queue_infos.size());
   info.pQueueCreateInfos = queue_infos.data();
   info.enabledExtensionCount = std::uint32_t(extensions.size());

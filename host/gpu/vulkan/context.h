@@ -28,6 +28,9 @@ struct gpu_options {
   bool validate = false;                             // enable VK_LAYER_KHRONOS_validation
   std::chrono::milliseconds fence_timeout{120'000};  // longest wait for one submission
   device_limit_caps caps;                            // tests only
+  // Enable what the device offers of hardware ray tracing (acceleration structures, ray queries,
+  // ray-tracing pipelines, and the extensions they need): --accel rt-query, rt-pipeline, auto.
+  bool ray_tracing = false;
   // Presenting to a window (rtvk view): the instance extensions its window system needs, and
   // what makes the window's surface once the instance exists. The chosen device must then
   // present from a queue family that can also compute and draw (the viewer blits and composes
@@ -76,6 +79,10 @@ class gpu_context {
   std::vector<std::uint32_t> shared_families() const;
   // The window's surface, when made with options.make_surface; else VK_NULL_HANDLE.
   VkSurfaceKHR surface() const { return surface_.get(); }
+  // What of hardware ray tracing the device was created with (gpu_options::ray_tracing and
+  // the device offering it): the extensions and features are enabled.
+  bool ray_queries() const { return ray_queries_; }
+  bool ray_tracing_pipelines() const { return ray_tracing_pipelines_; }
   std::uint32_t validation_messages() const { return instance_.validation_messages(); }
   bool validating() const { return instance_.validating(); }
   // Throws when the validation layer has reported anything (printed above): a validated run
@@ -157,6 +164,8 @@ class gpu_context {
   queue_lane compute_;                      // renders (and everything, without a split)
   std::unique_ptr<queue_lane> presenting_;  // a window's frames, when another family's
   bool lost_ = false;                       // a wait timed out or the device was lost
+  bool ray_queries_ = false;                // VK_KHR_ray_query enabled
+  bool ray_tracing_pipelines_ = false;      // VK_KHR_ray_tracing_pipeline enabled
 };
 
 }  // namespace rtvk::gpu

@@ -163,6 +163,39 @@ std::uint32_t compute_family(const std::vector<VkQueueFamilyProperties>& familie
   return first;
 }
 
+namespace {
+// What each hardware path needs, in the order a message names the first one missing.
+constexpr const char* accel_needs[] = {VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                                       VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME,
+                                       VK_KHR_BUFFER_DEVICE_ADDRESS_EXTENSION_NAME,
+                                       VK_EXT_DESCRIPTOR_INDEXING_EXTENSION_NAME,
+                                       VK_KHR_SPIRV_1_4_EXTENSION_NAME,
+                                       VK_KHR_SHADER_FLOAT_CONTROLS_EXTENSION_NAME};
+}  // namespace
+
+std::vector<const char*> ray_tracing_extensions(const device_info& d) {
+  const auto exts = device_extensions(d.handle);
+  std::vector<const char*> out;
+  for (const char* e : accel_needs)
+    if (has(exts, e)) out.push_back(e);
+  if (d.ray_queries) out.push_back(VK_KHR_RAY_QUERY_EXTENSION_NAME);
+  if (d.ray_tracing_pipelines) out.push_back(VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
+  return out;
+}
+
+std::string missing_ray_tracing(const device_info& d, bool pipelines) {
+  const auto exts = device_extensions(d.handle);
+  for (const char* e : accel_needs)
+    if (!has(exts, e)) return e;
+  const char* own =
+      pipelines ? VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME : VK_KHR_RAY_QUERY_EXTENSION_NAME;
+  if (!has(exts, own)) return own;
+  if (!d.acceleration_structures) return "the accelerationStructure feature";
+  if (pipelines ? !d.ray_tracing_pipelines : !d.ray_queries)
+    return pipelines ? "the rayTracingPipeline feature" : "the rayQuery feature";
+  return {};
+}
+
 bool has_device_extension(VkPhysicalDevice dev, const char* name) {
   return has(device_extensions(dev), name);
 }

@@ -51,6 +51,14 @@ std::uint32_t compute_family(const std::vector<VkQueueFamilyProperties>& familie
 // Makes `family` the one rtvk submits to (and times with).
 void use_queue_family(device_info& d, std::uint32_t family);
 
+// The device extensions hardware ray tracing needs, those of them the device lists: acceleration
+// structures and what they build on (device addresses, deferred host operations, descriptor
+// indexing; SPIR-V 1.4 and float controls for the shaders), ray queries, ray-tracing pipelines.
+std::vector<const char*> ray_tracing_extensions(const device_info& d);
+// Why the device cannot take a hardware path (`pipelines`: ray-tracing pipelines, else ray
+// queries): the first extension it lacks, or its feature that is off; empty when it can.
+std::string missing_ray_tracing(const device_info& d, bool pipelines);
+
 // Whether the device offers the named extension.
 bool has_device_extension(VkPhysicalDevice dev, const char* name);
 

@@ -86,6 +86,8 @@ using unique_surface = owned_handle<VkInstance, VkSurfaceKHR, vkDestroySurfaceKH
 using unique_swapchain = device_handle<VkSwapchainKHR, vkDestroySwapchainKHR>;
 using unique_semaphore = device_handle<VkSemaphore, vkDestroySemaphore>;
 using unique_image = device_handle<VkImage, vkDestroyImage>;
+using unique_acceleration_structure =
+    device_handle<VkAccelerationStructureKHR, vkDestroyAccelerationStructureKHR>;
 using unique_instance = root_handle<VkInstance, vkDestroyInstance>;
 using unique_device = root_handle<VkDevice, vkDestroyDevice>;
 

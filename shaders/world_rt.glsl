@@ -1,0 +1,155 @@
+// The world searched through the driver's acceleration structure (--accel rt-query and
+// rt-pipeline), built by host/gpu/render/scene_accel.cpp: in the top level the scene's own objects
+// (custom index 0) and each instance k (custom index k + 1, its placement as the instance's
+// transform); in each bottom level one geometry of boxes -- the group's spheres, then its quads --
+// and one of triangles, which the driver tests itself. The driver only proposes candidates: each
+// is tested by the very test_object the compute BVH calls, on the ray in its group's space as
+// frame_of and to_group make it, and the nearest is kept by test_object's tie rule. So the hit and
+// its t are the compute path's, bit for bit; only a triangle the driver's own test misses (at an
+// edge, by rounding) can differ. Included by world.glsl.
+#ifndef RTVK_WORLD_RT_GLSL
+#define RTVK_WORLD_RT_GLSL
+
+#if defined(RTVK_RAY_QUERY) || defined(RTVK_RAY_PIPELINE) || defined(RTVK_RT_OBJECT_STAGE)
+
+#ifndef RTVK_RT_OBJECT_STAGE
+layout(set = 0, binding = RTVK_BINDING_TLAS) uniform accelerationStructureEXT tlas;
+#endif
+
+// The leaf reference (RTVK_LEAF_* kind | position) of a candidate: primitive `p` of instance
+// `inst`'s box geometry (`box`) or triangle geometry; `inst` 0 is the scene's own objects.
+uint candidate_ref(uint inst, bool box, uint p) {
+  uint sphere_first = 0u, sphere_count = pc.sphere_count, quad_first = 0u, triangle_first = 0u;
+  if (any_instances && inst != 0u) {
+    sphere_first = instances[inst - 1u].sphere_first;
+    sphere_count = instances[inst - 1u].sphere_count;
+    quad_first = instances[inst - 1u].quad_first;
+    triangle_first = instances[inst - 1u].triangle_first;
+  }
+  if (!box) return RTVK_LEAF_TRIANGLE | (triangle_first + p);
+  if (p < sphere_count) return RTVK_LEAF_SPHERE | (sphere_first + p);
+  return RTVK_LEAF_QUAD | (quad_first + p - sphere_count);
+}
+
+// The ray in the space of instance `inst`'s group, as hit_bvh makes it (0: the scene's ray).
+ray group_ray(uint inst, ray r) {
+  return (any_instances && inst != 0u) ? to_group(frame_of(inst - 1u), r) : r;
+}
+
+// The nearest hit so far, as hit_bvh keeps it: what the hardware paths carry through a traversal
+// (rt-pipeline: the ray's payload, which the any-hit shader updates).
+struct nearest_hit {
+  float closest;   // its t
+  int best;        // its object's scene index (the tie rule's key); -1: none yet
+  uint best_ref;   // its leaf reference
+  uint best_inst;  // the instance + 1 it was reached through; 0: the scene's own
+};
+
+// Tests candidate `ref` of instance `inst` on ray `g` (in that instance's group space) with
+// test_object, updating `n`; true when it became the nearest.
+bool try_candidate(uint ref, uint inst, ray g, float t_min, inout nearest_hit n) {
+  sheared_ray sr;
+  if (any_triangles) sr = shear_ray(g);
+  precise float closest = n.closest;
+  int best = n.best;
+  uint best_ref = n.best_ref, best_inst = n.best_inst;
+  test_object(ref, g, sr, t_min, closest, best, best_ref, inst, best_inst);
+  if (best == n.best && best_ref == n.best_ref && best_inst == n.best_inst && closest == n.closest)
+    return false;
+  n.closest = closest;
+  n.best = best;
+  n.best_ref = best_ref;
+  n.best_inst = best_inst;
+  return true;
+}
+
+// lavapipe stops every loop of an invocation, silently, once 65,535 trips were taken in all --
+// its own traversal loop's trips, which rtvk cannot count, included -- and a traversal cut short
+// ends in a miss. A loop of pc.probe_trips (2) trips run after the invocation's work shows it:
+// past the limit, it stops after its first. The body mixes the trips so no compiler can fold the
+// loop away.
+bool limit_was_hit() {
+  uint mixed = 0u;
+  for (uint i = 0u; i < pc.probe_trips; ++i) mixed = mixed * 0x9e3779b9u + i + 1u;
+  return mixed != 0x9e3779b9u + 2u;
+}
+
+// The invocation's slot in the band's buffers (render_body.glsl's `index`), from its launch id.
+uint launch_slot(uvec3 id) {
+  return (id.z * pc.band_rows + pc.sums_row0 + id.y) * pc.region_width + id.x;
+}
+
+#ifdef RTVK_RAY_QUERY
+// hit_world through a ray query: each candidate proposed is tested as above; a box whose object
+// becomes the nearest is committed at our t, a triangle at the driver's (which only bounds the
+// rest of the traversal). Each candidate counts a trip against the loop budget, and each ray
+// pc.trace_cost more for the driver's own loop.
+bool hit_hardware(ray r, float t_min, float t_max, precise inout hit_record rec,
+                  inout uint iterations) {
+  iterations += pc.trace_cost;
+  nearest_hit n = nearest_hit(t_max, -1, 0u, 0u);
+  float committed = t_max;  // the driver's bound on the traversal
+  uint inst = 0u;           // the instance of the last candidate, whose group ray `g` is
+  ray g = r;
+  rayQueryEXT q;
+  rayQueryInitializeEXT(q, tlas, gl_RayFlagsNoneEXT, 0xffu, r.origin, t_min, r.direction, t_max);
+  while (rayQueryProceedEXT(q)) {
+    if (++iterations > pc.loop_budget) {
+      rayQueryTerminateEXT(q);
+      return false;
+    }
+    uint at = rayQueryGetIntersectionInstanceCustomIndexEXT(q, false);
+    if (at != inst) {
+      inst = at;
+      g = group_ray(inst, r);
+    }
+    bool box = rayQueryGetIntersectionTypeEXT(q, false) == gl_RayQueryCandidateIntersectionAABBEXT;
+    uint ref = candidate_ref(inst, box, rayQueryGetIntersectionPrimitiveIndexEXT(q, false));
+    if (!try_candidate(ref, inst, g, t_min, n)) continue;
+    if (!box) {
+      rayQueryConfirmIntersectionEXT(q);
+      committed = min(committed, rayQueryGetIntersectionTEXT(q, false));
+    } else if (n.closest < committed) {
+      rayQueryGenerateIntersectionEXT(q, n.closest);
+      committed = n.closest;
+    }
+  }
+  if (n.best < 0) return false;
+  sheared_ray world_sr;
+  if (any_triangles) world_sr = shear_ray(r);
+  record_winner(n.best_ref, n.best_inst, r, world_sr, n.closest, rec);
+  hit_object = uint(n.best);
+  hit_instance = n.best_inst;
+  return true;
+}
+#endif
+
+#ifdef RTVK_RAY_PIPELINE
+// Each launch's ray time, for the intersection and any-hit shaders, which cannot read the payload's
+// caller (written only when some sphere moves).
+layout(std430, set = 0, binding = RTVK_BINDING_RAY_TIMES) shadercallcoherent buffer ray_time_block {
+  float ray_times[];
+};
+layout(location = 0) rayPayloadEXT nearest_hit traced;
+
+// hit_world through traceRayEXT: rt_object.rint proposes the boxes' hits, rt_object.rahit tests
+// every candidate as the ray query does and keeps the nearest in the payload. Each ray counts
+// pc.trace_cost iterations against the loop budget.
+bool hit_hardware(ray r, float t_min, float t_max, precise inout hit_record rec,
+                  inout uint iterations) {
+  iterations += pc.trace_cost;
+  if (motion) ray_times[launch_slot(gl_LaunchIDEXT)] = r.time;
+  traced = nearest_hit(t_max, -1, 0u, 0u);
+  traceRayEXT(tlas, gl_RayFlagsNoneEXT, 0xffu, 0u, 1u, 0u, r.origin, t_min, r.direction, t_max, 0);
+  if (traced.best < 0) return false;
+  sheared_ray world_sr;
+  if (any_triangles) world_sr = shear_ray(r);
+  record_winner(traced.best_ref, traced.best_inst, r, world_sr, traced.closest, rec);
+  hit_object = uint(traced.best);
+  hit_instance = traced.best_inst;
+  return true;
+}
+#endif
+
+#endif
+#endif
