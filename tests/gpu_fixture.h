@@ -27,6 +27,7 @@ class GpuTest : public ::testing::Test {
       gpu::gpu_options o;
       o.device = device_under_test();
       o.validate = true;
+      o.ray_tracing = ray_tracing_;
       ctx_ = std::make_unique<gpu::gpu_context>(o);
     } catch (const std::exception& e) {
       if (in_ci()) FAIL() << "no Vulkan device in CI (GPU tests must run): " << e.what();
@@ -42,6 +43,7 @@ class GpuTest : public ::testing::Test {
   gpu::gpu_context& gpu() { return *ctx_; }
 
   std::unique_ptr<gpu::gpu_context> ctx_;  // fresh per test
+  bool ray_tracing_ = false;  // made with gpu_options::ray_tracing (set by a derived fixture)
 };
 
 }  // namespace rtvk::test

@@ -52,13 +52,12 @@ constexpr VkPipelineStageFlags transfer_stage = VK_PIPELINE_STAGE_TRANSFER_BIT;
 constexpr VkAccessFlags shader_rw = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
 
 // The iterations each traced ray counts on the hardware paths, besides its candidates, for the
-// driver's traversal loop rtvk cannot see (render_push::trace_cost): on a CPU device (lavapipe,
-// whose loop limit counts that loop too) a guess that halves the iterations a budget allows,
-// doubled whenever a traversal was cut anyway; elsewhere one, only for the pacer's sake.
+// driver's traversal loop rtvk cannot see (render_push::trace_cost): one at first, doubled
+// whenever an invocation ran into a driver's loop limit (limit_was_hit) all the same. Mesa 25's
+// lavapipe, the only one with the extensions, was not seen to cut a traversal even with budgets
+// past its limit (tests/gpu/test_gpu_hardware_rt.cpp); the guard is there for drivers that do.
+constexpr std::uint32_t first_trace_cost = 1;
 constexpr std::uint32_t max_trace_cost = 1u << 14;
-std::uint32_t first_trace_cost(const device_info& d) {
-  return d.type == VK_PHYSICAL_DEVICE_TYPE_CPU ? 32u : 1u;
-}
 
 }  // namespace
 
@@ -214,7 +213,8 @@ struct engine_parts {
   const gpu_render_options& options;
   bool& drawn;
   pacer& pace;
-  std::uint32_t& trace_cost;  // render_push::trace_cost, doubled whenever a traversal was cut
+  std::uint32_t& trace_cost;      // render_push::trace_cost, doubled whenever a traversal was cut
+  std::uint32_t& simulated_cuts;  // gpu_render_options::simulated_cuts still to make
 };
 
 // A submission in flight: what it asked of the pixels, and when.
@@ -271,6 +271,7 @@ class band_renderer {
     // the pixel starved and the budget grows (a few times at most): more passes than that would
     // mean none moves any more.
     const std::uint32_t most_final_passes = samples + 16;
+    cuts_seen_ = 0;  // the band's status is cleared
     for (;;) {
       if (e_.options.engine.cancelled && e_.options.engine.cancelled()) {
         e_.ctx.wait_all();
@@ -323,6 +324,11 @@ class band_renderer {
     const std::uint32_t step = e_.pace.samples_per_dispatch();
     push_.loop_budget = e_.pace.loop_budget(VkDeviceSize(win_.width) * b.pixels());
     push_.trace_cost = e_.trace_cost;
+    push_.probe_trips = 2;
+    if (e_.simulated_cuts > 0) {
+      --e_.simulated_cuts;
+      push_.probe_trips = 3;  // limit_was_hit: a 3-trip loop is not the 2-trip one it expects
+    }
     std::uint32_t dispatches = 0;
     const std::uint64_t ticket = e_.ctx.submit(
         [&](VkCommandBuffer cb) { dispatches = record(cb, b, first, from, to, step, last); });
@@ -346,7 +352,12 @@ class band_renderer {
       throw overrun(st, st.starved_budget, e_.ctx.device());
     // The driver's loop limit cut some traversal short: those pixels kept nothing of it and go
     // on in the next pass, where each ray counts twice as many iterations.
-    if (st.cut_traversals > 0) e_.trace_cost = std::min(e_.trace_cost * 2, max_trace_cost);
+    // (The band's status counts them since its start: only the new ones count here.)
+    if (st.cut_traversals > cuts_seen_) {
+      e_.trace_cost = std::min(e_.trace_cost * 2, max_trace_cost);
+      if (stats) stats->cut_traversals += st.cut_traversals - cuts_seen_;
+      cuts_seen_ = st.cut_traversals;
+    }
     if (st.overflowed_samples > 0) throw overflow(st, push_.sample_limit);
     // Device time where there is a timer: the wall time includes waiting behind the other
     // submission in flight.
@@ -466,6 +477,7 @@ class band_renderer {
   // The stages the render's shaders run in: compute (tonemap.comp, and render.comp or
   // render_query.comp) and the ray-tracing pipeline's, for barriers.
   VkPipelineStageFlags compute_stage;
+  std::uint32_t cuts_seen_ = 0;  // render_status::cut_traversals of the band, as last read
 };
 
 // Runs body(row) for rows [0, rows) on every core: readback conversion should not leave all but
@@ -530,7 +542,8 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
     ray_times_ =
         std::make_unique<gpu_buffer>(ctx_, targets_->pixels * sizeof(float),
                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::device_local);
-  trace_cost_ = first_trace_cost(ctx.device());
+  trace_cost_ = options.trace_cost ? options.trace_cost : first_trace_cost;
+  simulated_cuts_ = options.simulated_cuts;
   setup_seconds_ = seconds_since(start_);
 }
 
@@ -705,9 +718,10 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
   const bool calibrated = std::any_of(views.begin(), views.end(), [](const camera& c) {
     return is_calibrated(c.projection()) || c.frame().readout != 0;
   });
-  band_renderer bands({ctx_, targets, timer_, wg_, options_, drawn_, pacer_, trace_cost_},
-                      pipeline_for(rs.jitter, lens, count_rays, push.light_count > 0, calibrated),
-                      tonemap, push, win, kept);
+  band_renderer bands(
+      {ctx_, targets, timer_, wg_, options_, drawn_, pacer_, trace_cost_, simulated_cuts_},
+      pipeline_for(rs.jitter, lens, count_rays, push.light_count > 0, calibrated), tonemap, push,
+      win, kept);
 
   // Bands as large as memory allows (layout) and the pacer's work allows now: a dispatch's work
   // is bounded by its pixels times its loop budget, so the first bands of a render on a device

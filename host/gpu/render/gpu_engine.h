@@ -162,6 +162,7 @@ class gpu_engine {
   // The stages the render's shaders run in: compute, and a ray-tracing pipeline's.
   VkPipelineStageFlags render_stages_ = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
   std::uint32_t trace_cost_ = 1;               // render_push::trace_cost (gpu_engine.cpp)
+  std::uint32_t simulated_cuts_ = 0;           // gpu_render_options::simulated_cuts still to make
   std::unique_ptr<compute_pipeline> tonemap_;  // made on first use
   device_timer timer_;                         // device time of each submission
   int exponent_;                               // F of the sums (sample_sum.h)

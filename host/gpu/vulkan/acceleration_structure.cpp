@@ -16,6 +16,8 @@ VkPhysicalDeviceAccelerationStructurePropertiesKHR acceleration_limits(const gpu
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
   props.pNext = &as;
   vkGetPhysicalDeviceProperties2(ctx.device().handle, &props);
+  const std::uint64_t cap = ctx.caps().primitives;  // tests only
+  if (cap != 0 && cap < as.maxPrimitiveCount) as.maxPrimitiveCount = cap;
   return as;
 }
 

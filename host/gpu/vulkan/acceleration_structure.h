@@ -11,7 +11,8 @@ namespace rtvk::gpu {
 // The device address of a buffer made with VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT.
 VkDeviceAddress device_address(const gpu_context& ctx, VkBuffer buffer);
 
-// The device's acceleration-structure limits (VkPhysicalDeviceAccelerationStructurePropertiesKHR).
+// The device's acceleration-structure limits (VkPhysicalDeviceAccelerationStructurePropertiesKHR),
+// maxPrimitiveCount within the context's caps.
 VkPhysicalDeviceAccelerationStructurePropertiesKHR acceleration_limits(const gpu_context& ctx);
 
 // One acceleration structure (a bottom or top level) with the device-local buffer it lives in.

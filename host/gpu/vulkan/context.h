@@ -20,6 +20,7 @@ struct device_limit_caps {
   std::uint32_t allocations = 0;      // maxMemoryAllocationCount
   VkDeviceSize heap_size = 0;         // every memory heap's size, bytes
   std::uint32_t workgroup_count = 0;  // maxComputeWorkGroupCount[0]
+  std::uint64_t primitives = 0;       // maxPrimitiveCount of acceleration structures
 };
 
 struct gpu_options {
@@ -82,6 +83,7 @@ class gpu_context {
   // What of hardware ray tracing the device was created with (gpu_options::ray_tracing and
   // the device offering it): the extensions and features are enabled.
   bool ray_queries() const { return ray_queries_; }
+  const device_limit_caps& caps() const { return options_.caps; }
   bool ray_tracing_pipelines() const { return ray_tracing_pipelines_; }
   std::uint32_t validation_messages() const { return instance_.validation_messages(); }
   bool validating() const { return instance_.validating(); }

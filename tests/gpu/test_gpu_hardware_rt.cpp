@@ -1,0 +1,212 @@
+// The hardware paths (--accel rt-query, rt-pipeline) against the compute BVH. On a device with
+// the extensions (Mesa 25's lavapipe, CI's last pass) every built-in scene, a mesh with its
+// instances, and a moving sphere must give the compute path's exact sums: the driver only
+// proposes candidates and test_object decides (world_rt.glsl). On a device without them (Mesa
+// 22.3's lavapipe) the engine must refuse, naming the extension missing. The fixture's
+// validation layer (synchronization validation included) must stay silent either way.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "errors.h"
+#include "gpu_engine.h"
+#include "gpu_fixture.h"
+#include "mesh_helpers.h"
+#include "render_helpers.h"
+#include "scene.h"
+
+namespace rtvk {
+namespace {
+
+class GpuHardwareRt : public test::GpuTest {
+ protected:
+  GpuHardwareRt() { ray_tracing_ = true; }
+
+  bool has(gpu_traversal t) const {
+    return t == gpu_traversal::ray_query ? ctx_->ray_queries() : ctx_->ray_tracing_pipelines();
+  }
+
+  // The scene's sums on this device through traversal `t` (`budget`, `per_dispatch`: fixed loop
+  // budget and samples per dispatch; 0: paced).
+  gpu::sum_image sums(const scene& s, gpu_traversal t, std::uint32_t budget = 0,
+                      std::uint32_t per_dispatch = 0) {
+    gpu::gpu_render_options o;
+    o.engine.traversal = t;
+    o.loop_budget = budget;
+    o.samples_per_dispatch = per_dispatch;
+    o.samples_per_submission = per_dispatch;
+    gpu::gpu_engine engine(gpu(), s, o);
+    const camera cam = test::scene_camera(s);
+    return engine.render_sums({cam}, s.render,
+                              whole_render(cam.image_width(), cam.image_height(), s.render.spp))[0];
+  }
+
+  // Pixels whose sums differ between `want` (the compute BVH's) and traversal `t`'s (`budget`,
+  // `per_dispatch`: as sums takes them).
+  int differing_pixels(const scene& s, const gpu::sum_image& want, gpu_traversal t,
+                       std::uint32_t budget = 0, std::uint32_t per_dispatch = 0) {
+    const gpu::sum_image got = sums(s, t, budget, per_dispatch);
+    EXPECT_EQ(got.pixels.size(), want.pixels.size());
+    int differ = 0;
+    for (std::size_t i = 0; i < want.pixels.size() && i < got.pixels.size(); ++i) {
+      const gpu::pixel_sum& a = want.pixels[i];
+      const gpu::pixel_sum& b = got.pixels[i];
+      differ += a.r != b.r || a.g != b.g || a.b != b.b || a.r_top != b.r_top ||
+                a.g_top != b.g_top || a.b_top != b.b_top || a.samples != b.samples;
+    }
+    return differ;
+  }
+  int differing_pixels(const scene& s, gpu_traversal t, std::uint32_t budget = 0,
+                       std::uint32_t per_dispatch = 0) {
+    return differing_pixels(s, sums(s, gpu_traversal::compute), t, budget, per_dispatch);
+  }
+};
+
+constexpr gpu_traversal hardware[] = {gpu_traversal::ray_query, gpu_traversal::ray_pipeline};
+
+const char* name_of(gpu_traversal t) {
+  return t == gpu_traversal::ray_query ? "rt-query" : "rt-pipeline";
+}
+
+// A small render of a built-in scene: its camera, objects, materials and sky.
+scene small(std::string_view name, int spp) {
+  scene s = builtin_scene(name);
+  s.render.width = 32;
+  s.render.spp = spp;
+  s.render.max_depth = 6;
+  return s;
+}
+
+// A torus knot of a few thousand triangles, placed three times by instances (one turned and
+// stretched), beside a sphere that moves over the shutter and one of the scene's own.
+scene knots_and_a_moving_sphere() {
+  scene s = builtin_scene("seed");
+  s.name = "knots";
+  s.materials = {{"gold", {material_type::metal, color(0.9, 0.7, 0.3), 0.1, 1.5}},
+                 {"white", {material_type::lambertian, color(0.8), 0, 1.5}}};
+  object_group knot;
+  knot.name = "knot";
+  const test::indexed_mesh m = test::torus_knot(4000);
+  for (const auto& f : m.faces)
+    knot.triangles.push_back({{m.positions[f[0]], m.positions[f[1]], m.positions[f[2]]}, 0});
+  s.groups = {knot};
+  s.instances = {{0, make_transform(vec3(0.3), vec3(0, 1, 0), 0, vec3(-0.8, 0, -2))},
+                 {0, make_transform(vec3(0.25, 0.4, 0.25), vec3(1, 1, 0), 35, vec3(0.8, 0, -2))},
+                 {0, make_transform(vec3(0.2), vec3(0, 0, 1), 90, vec3(0, 0.6, -2.5))}};
+  s.spheres = {sphere(point3(0, -100.5, -1), 100, 1),
+               sphere(point3(0, -0.2, -1.5), 0.2, 1, point3(0.3, -0.2, -1.5))};
+  main_camera(s).pose.shutter_open = 0;
+  main_camera(s).pose.shutter_close = 1;
+  s.render.width = 64;
+  s.render.spp = 8;
+  s.render.max_depth = 8;
+  return s;
+}
+
+// Spheres and quads are boxes whose candidates test_object decides, with the compute path's
+// rays: the sums must be the compute BVH's, bit for bit, in every built-in scene (instances,
+// moving spheres, media, textures and lights included).
+TEST_F(GpuHardwareRt, EveryBuiltInSceneGivesTheComputeBvhsExactSums) {
+  for (const gpu_traversal t : hardware) {
+    if (has(t)) continue;
+    // Mesa 22.3's lavapipe: refused before anything is built, naming what is missing.
+    gpu::gpu_render_options o;
+    o.engine.traversal = t;
+    try {
+      gpu::gpu_engine engine(gpu(), small("seed", 1), o);
+      ADD_FAILURE() << name_of(t) << " accepted on a device without it";
+    } catch (const usage_error& e) {
+      EXPECT_NE(std::string(e.what()).find("VK_KHR_"), std::string::npos) << e.what();
+    }
+  }
+  if (!has(gpu_traversal::ray_query) && !has(gpu_traversal::ray_pipeline)) return;
+  for (const std::string& name : builtin_scene_names()) {
+    if (name.rfind("spheres:", 0) == 0) continue;  // the pattern, not a scene
+    const scene s = small(name, 2);
+    const gpu::sum_image want = sums(s, gpu_traversal::compute);
+    for (const gpu_traversal t : hardware) {
+      if (!has(t)) continue;
+      SCOPED_TRACE(name + " through " + name_of(t));
+      EXPECT_EQ(differing_pixels(s, want, t), 0);
+    }
+  }
+}
+
+// Triangles are the driver's own: it proposes those its test hits and test_object decides, so
+// a pixel may differ only where the two tests part at an edge, by rounding.
+TEST_F(GpuHardwareRt, InstancedMeshesAndAMovingSphereGiveTheComputeBvhsImage) {
+  const scene s = knots_and_a_moving_sphere();
+  for (const gpu_traversal t : hardware) {
+    if (!has(t)) continue;  // refusal: EveryBuiltInSceneGivesTheComputeBvhsExactSums
+    SCOPED_TRACE(name_of(t));
+    const int pixels = s.render.width * (s.render.width / 16 * 9);
+    EXPECT_LE(differing_pixels(s, t), pixels / 200);  // at most half a percent
+  }
+}
+
+// A driver may stop an invocation's loops silently after some number of trips in all (lavapipe
+// 22.3 after 65,535), its own traversal loop's included, which rtvk cannot count. So each
+// invocation on a hardware path checks at its end whether that happened (limit_was_hit), keeps
+// nothing if it did, and the engine redraws it with each ray counting more (trace_cost). Mesa
+// 25's lavapipe never cut a traversal here, even with a loop budget past 65,535 and thousands of
+// samples in one dispatch, so the first submissions are told to see their probe cut
+// (simulated_cuts): the render must count those invocations and still give the compute path's
+// sums, bit for bit.
+TEST_F(GpuHardwareRt, InvocationsALoopLimitCutShortAreRedrawn) {
+  if (!has(gpu_traversal::ray_query) && !has(gpu_traversal::ray_pipeline)) return;
+  scene s = small("book-final", 64);
+  s.render.width = 16;
+  s.render.max_depth = 50;
+  const gpu::sum_image want = sums(s, gpu_traversal::compute);
+  for (const gpu_traversal t : hardware) {
+    if (!has(t)) continue;
+    SCOPED_TRACE(name_of(t));
+    gpu::gpu_render_options o;
+    o.engine.traversal = t;
+    o.loop_budget = 1'000'000;  // past lavapipe 22.3's limit: only the guard stands
+    o.samples_per_dispatch = o.samples_per_submission = 64;  // the cut ones are the last
+    o.simulated_cuts = 2;
+    gpu::gpu_engine engine(gpu(), s, o);
+    const camera cam = test::scene_camera(s);
+    render_stats stats;
+    const gpu::sum_image got = engine.render_sums(
+        {cam}, s.render, whole_render(cam.image_width(), cam.image_height(), s.render.spp), {},
+        &stats)[0];
+    // Every invocation of those submissions saw its probe cut (as many as its pixels, each time).
+    EXPECT_GT(stats.cut_traversals, 0u);
+    EXPECT_LE(stats.cut_traversals, 2u * std::uint64_t(got.pixels.size()));
+    int differ = 0;
+    for (std::size_t i = 0; i < want.pixels.size(); ++i)
+      differ += want.pixels[i].r != got.pixels[i].r || want.pixels[i].g != got.pixels[i].g ||
+                want.pixels[i].b != got.pixels[i].b ||
+                want.pixels[i].samples != got.pixels[i].samples;
+    EXPECT_EQ(differ, 0);
+  }
+}
+
+// The device's limits come first: a scene past maxPrimitiveCount is refused (usage_error, exit 2
+// on the command line) naming the limit, before anything is built.
+TEST_F(GpuHardwareRt, PrimitivesPastTheDevicesLimitAreRefusedNamingIt) {
+  const scene s = small("book-final", 1);  // 485 spheres
+  for (const gpu_traversal t : hardware) {
+    if (!has(t)) continue;
+    gpu::gpu_options o;
+    o.device = test::device_under_test();
+    o.validate = true;
+    o.ray_tracing = true;
+    o.caps.primitives = 100;
+    gpu::gpu_context capped(o);
+    gpu::gpu_render_options r;
+    r.engine.traversal = t;
+    try {
+      gpu::gpu_engine engine(capped, s, r);
+      ADD_FAILURE() << name_of(t) << ": 485 spheres accepted under a limit of 100";
+    } catch (const usage_error& e) {
+      EXPECT_NE(std::string(e.what()).find("maxPrimitiveCount 100"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(capped.validation_messages(), 0u);
+  }
+}
+
+}  // namespace
+}  // namespace rtvk
