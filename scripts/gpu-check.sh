@@ -5,12 +5,12 @@
 # build (build/ci: rtvk, rtvk_tests, the test layer) and .gpu/libs.tar.xz (scripts/gpu-bundle.sh)
 # carried along. Writes check.log, tests.log, bench.json and a few images into OUT.
 # Usage: bash scripts/gpu-check.sh OUT [seconds for the tests, default 200] [gtest filter]
-# RTVK_CHECK_STEPS picks steps (default "bench meshes both tests"; also "sampling").
+# RTVK_CHECK_STEPS picks steps (default "bench rt meshes both tests"; also "sampling").
 set -uo pipefail
 out=${1:?usage: gpu-check.sh OUT [test-seconds] [filter]}
 test_seconds=${2:-200}
 filter=${3:--Xvfb*:DevicePick*}
-steps=" ${RTVK_CHECK_STEPS:-bench meshes both tests} "
+steps=" ${RTVK_CHECK_STEPS:-bench rt meshes both tests} "
 root=$(pwd)
 exec > >(tee -a "$out/check.log") 2>&1
 step() { echo; echo "== $* ($(date +%T))"; }
@@ -73,6 +73,24 @@ bench forest-all --scene docs/scenes/forest.json --backend all --spp 16 --repeat
 bench cornell-gpu --scene cornell-box --backend gpu --spp 200 --repeat 3
 bench cornell-1000spp-gpu --scene cornell-box --backend gpu --spp 1000 --repeat 3
 bench next-week-final-gpu --scene next-week-final --backend gpu --spp 1000 --repeat 1
+fi
+
+if [[ $steps == *" rt "* ]]; then
+step "hardware ray tracing: --accel bvh, rt-query, rt-pipeline (whichever the device has)"
+$rtvk devices | grep -E "ray queries|^\*"
+: > "$out/bench-rt.json"
+for accel in bvh rt-query rt-pipeline; do
+  for scene in book-final docs/scenes/knot.json; do
+    name=rt-$accel-$(basename "$scene" .json)
+    echo "-- $name"
+    timeout 120 $rtvk bench --scene "$scene" --width 1200 --aspect 16:9 --spp 16 --backend gpu \
+      --accel $accel --repeat 5 --json /tmp/$name.json && \
+      { echo "\"$name\":"; cat /tmp/$name.json; echo ","; } >> "$out/bench-rt.json"
+  done
+  timeout 120 $rtvk render --scene book-final --width 400 --spp 8 --backend both --accel $accel \
+    -o "$out/rt-$accel.png"
+  echo "exit $?"
+done
 fi
 
 if [[ $steps == *" sampling "* ]]; then

@@ -128,6 +128,16 @@ void main() {
     iterations += lens_work;
     p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   }
+#if defined(RTVK_RAY_QUERY) || defined(RTVK_RAY_PIPELINE)
+  // A driver's loop limit that counted its own traversal loop, unseen, would have cut some ray
+  // short into a miss: then nothing of this dispatch is kept or counted, and the host counts each
+  // traced ray as more iterations (world_rt.glsl).
+  if (limit_was_hit()) {
+    atomicAdd(status.cut_traversals, 1u);
+    atomicAdd(status.unfinished_pixels, 1u);
+    return;
+  }
+#endif
   if (iterations > pc.loop_budget) {
     atomicAdd(status.unfinished_pixels, 1u);  // the host dispatches again
     if (acc.samples == first) {  // one sample needs more than a whole budget: the host gives
@@ -142,15 +152,5 @@ void main() {
     uint before = atomicAdd(status.rays_low, rays_added);
     if (before + rays_added < before) atomicAdd(status.rays_high, 1u);
   }
-#if defined(RTVK_RAY_QUERY) || defined(RTVK_RAY_PIPELINE)
-  // The driver's traversal loop counts against lavapipe's limit too, unseen: past it, some ray
-  // may have missed what it should have hit, so nothing of this dispatch is kept and the host
-  // counts each traced ray as more iterations (world_rt.glsl).
-  if (limit_was_hit()) {
-    atomicAdd(status.cut_traversals, 1u);
-    atomicAdd(status.unfinished_pixels, 1u);
-    return;
-  }
-#endif
   sums[index] = acc;
 }

@@ -43,7 +43,17 @@ struct nearest_hit {
   int best;        // its object's scene index (the tie rule's key); -1: none yet
   uint best_ref;   // its leaf reference
   uint best_inst;  // the instance + 1 it was reached through; 0: the scene's own
+  uint trips;      // rt-pipeline: candidates the any-hit shader may still test (loop budget)
 };
+
+// Whether a ray may go to the driver: the specification asks for a finite origin and direction
+// (anything else is undefined, a hang on some GPUs); the compute path takes any ray, so the
+// others take its walk instead (the BVH is built and uploaded on every path) and find what it
+// finds.
+bool driver_takes(ray r) {
+  return is_finite(r.origin.x) && is_finite(r.origin.y) && is_finite(r.origin.z) &&
+         is_finite(r.direction.x) && is_finite(r.direction.y) && is_finite(r.direction.z);
+}
 
 // Tests candidate `ref` of instance `inst` on ray `g` (in that instance's group space) with
 // test_object, updating `n`; true when it became the nearest.
@@ -86,8 +96,9 @@ uint launch_slot(uvec3 id) {
 // pc.trace_cost more for the driver's own loop.
 bool hit_hardware(ray r, float t_min, float t_max, precise inout hit_record rec,
                   inout uint iterations) {
+  if (!driver_takes(r)) return hit_bvh(r, t_min, t_max, rec, iterations);
   iterations += pc.trace_cost;
-  nearest_hit n = nearest_hit(t_max, -1, 0u, 0u);
+  nearest_hit n = nearest_hit(t_max, -1, 0u, 0u, 0u);
   float committed = t_max;  // the driver's bound on the traversal
   uint inst = 0u;           // the instance of the last candidate, whose group ray `g` is
   ray g = r;
@@ -134,13 +145,22 @@ layout(location = 0) rayPayloadEXT nearest_hit traced;
 
 // hit_world through traceRayEXT: rt_object.rint proposes the boxes' hits, rt_object.rahit tests
 // every candidate as the ray query does and keeps the nearest in the payload. Each ray counts
-// pc.trace_cost iterations against the loop budget.
+// pc.trace_cost iterations against the loop budget, and each candidate the any-hit shader tests
+// one more: it ends the traversal when the budget is spent, and the ray counts as over it.
 bool hit_hardware(ray r, float t_min, float t_max, precise inout hit_record rec,
                   inout uint iterations) {
+  if (!driver_takes(r)) return hit_bvh(r, t_min, t_max, rec, iterations);
   iterations += pc.trace_cost;
+  if (iterations >= pc.loop_budget) return false;
   if (motion) ray_times[launch_slot(gl_LaunchIDEXT)] = r.time;
-  traced = nearest_hit(t_max, -1, 0u, 0u);
+  uint allowed = pc.loop_budget - iterations;
+  traced = nearest_hit(t_max, -1, 0u, 0u, allowed);
   traceRayEXT(tlas, gl_RayFlagsNoneEXT, 0xffu, 0u, 1u, 0u, r.origin, t_min, r.direction, t_max, 0);
+  if (traced.trips == 0u) {  // the budget ran out inside the traversal
+    iterations = pc.loop_budget + 1u;
+    return false;
+  }
+  iterations += allowed - traced.trips;
   if (traced.best < 0) return false;
   sheared_ray world_sr;
   if (any_triangles) world_sr = shear_ray(r);

@@ -392,8 +392,8 @@ struct render_status {
   uint dropped_samples;     // samples with a NaN or infinite channel: they add black
   uint rays_low;            // rays traced for the samples added (when counted), low word
   uint rays_high;           // and high word
-  uint cut_traversals;      // hardware paths: invocations whose traversal the driver's loop limit
-                            // cut short (lavapipe): nothing of them is added; the render fails
+  uint cut_traversals;      // hardware paths: invocations a driver's loop limit cut short
+                            // (limit_was_hit): nothing of them is kept; the host redraws them
 };
 
 // Push constants of overlay.comp (std430): the viewer's overlay, a band at the top left of the

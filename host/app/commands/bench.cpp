@@ -113,6 +113,9 @@ void check_json_folder(const std::string& path) {
 }
 
 engine_options engine_from(const bench_options& o) {
+  if ((o.accel == "rt-query" || o.accel == "rt-pipeline") && o.backend == "cpu")
+    throw usage_error("--accel " + o.accel +
+                      ": the device's hardware ray tracing; needs --backend gpu or all");
   engine_options engine;
   engine.use_bvh = o.accel != "none";
   engine.threads = o.threads;

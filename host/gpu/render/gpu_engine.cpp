@@ -26,6 +26,12 @@
 namespace rtvk::gpu {
 namespace {
 
+// rt-pipeline's rays' times: a float per pixel of the targets (world_rt.glsl's ray_times).
+std::unique_ptr<gpu_buffer> make_ray_times(const gpu_context& ctx, VkDeviceSize pixels) {
+  return std::make_unique<gpu_buffer>(ctx, pixels * sizeof(float),
+                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::device_local);
+}
+
 // One subgroup wide (so a row of pixels, whose paths start alike, shares a warp or a SIMD batch)
 // and 64 invocations in all, within the device's limits: 8x8 on lavapipe (subgroups of 8),
 // 32x2 on NVIDIA, 64x1 on AMD.
@@ -538,10 +544,7 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
                                            std::string(flag) + " --scene " + s.name);
   }
   host_arrays_.reset();  // on the device now
-  if (pipelines)
-    ray_times_ =
-        std::make_unique<gpu_buffer>(ctx_, targets_->pixels * sizeof(float),
-                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::device_local);
+  if (pipelines) ray_times_ = make_ray_times(ctx_, targets_->pixels);
   trace_cost_ = options.trace_cost ? options.trace_cost : first_trace_cost;
   simulated_cuts_ = options.simulated_cuts;
   setup_seconds_ = seconds_since(start_);
@@ -569,14 +572,20 @@ void gpu_engine::upload() {
 
 render_targets& gpu_engine::targets_for(VkDeviceSize pixels) {
   if (targets_->pixels >= pixels) return *targets_;
-  check_device_fits(ctx_, render_targets::buffers(scene_buffers_, pixels),
-                    "--scene " + scene_name_);
+  std::vector<buffer_request> wanted = render_targets::buffers(scene_buffers_, pixels);
+  const bool times = options_.engine.traversal == gpu_traversal::ray_pipeline;
+  if (times)
+    wanted.push_back({"the rays' times", pixels * sizeof(float), true, memory_use::device_local});
+  check_device_fits(ctx_, wanted, "--scene " + scene_name_);
   targets_.reset();  // no submission is in flight; the old ones go first to make room
+  ray_times_.reset();
   thresholds_gamma_ = 0;
   try {
     targets_ = std::make_unique<render_targets>(ctx_, pixels);
+    if (times) ray_times_ = make_ray_times(ctx_, pixels);
   } catch (...) {  // the engine stays usable for smaller renders
     targets_ = std::make_unique<render_targets>(ctx_, 1);
+    if (times) ray_times_ = make_ray_times(ctx_, 1);
     rebind_all();
     throw;
   }
@@ -585,10 +594,6 @@ render_targets& gpu_engine::targets_for(VkDeviceSize pixels) {
 }
 
 void gpu_engine::rebind_all() {
-  if (options_.engine.traversal == gpu_traversal::ray_pipeline)
-    ray_times_ =
-        std::make_unique<gpu_buffer>(ctx_, targets_->pixels * sizeof(float),
-                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::device_local);
   for (auto& [switches, pipeline] : pipelines_)
     pipeline->rebind(render_bindings(scene_, *targets_, accel_.get(), ray_times_.get()));
   if (tonemap_) tonemap_->rebind(tonemap_bindings(*targets_));

@@ -238,6 +238,10 @@ scene_accel::scene_accel(gpu_context& ctx, const gpu_scene::host_arrays& a, time
   place(0, 0, VkTransformMatrixKHR{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}});
   for (std::size_t k = 0; k < a.instances.size(); ++k)
     place(instance_group[k], std::uint32_t(k + 1), placement(a.instances[k]));
+  // An instance's custom index is 24 bits wide (VkAccelerationStructureInstanceKHR).
+  if (a.instances.size() >= (1u << 24) - 1)
+    throw past_limit(subject, "instances", a.instances.size(),
+                     "the 24 bits of instanceCustomIndex, at most", (1u << 24) - 2, ctx);
   if (placed.size() > limits.maxInstanceCount)
     throw past_limit(subject, "top-level instances", placed.size(), "maxInstanceCount",
                      limits.maxInstanceCount, ctx);

@@ -21,8 +21,9 @@ namespace rtvk::gpu {
 class scene_accel {
  public:
   // Checks the device's limits first (usage_error beginning with `subject`, naming the limit:
-  // maxPrimitiveCount, maxInstanceCount, maxGeometryCount, the structures' and scratch sizes
-  // against the allocation and heap limits), then builds and waits.
+  // maxPrimitiveCount, maxInstanceCount and the custom index's 24 bits, the structures', the
+  // scratch's and the inputs' sizes against the allocation and heap limits; each bottom level
+  // has one geometry), then builds and waits.
   scene_accel(gpu_context& ctx, const gpu_scene::host_arrays& a, time_span motion,
               const std::string& subject);
 
