@@ -46,6 +46,18 @@ struct nearest_hit {
   uint trips;      // rt-pipeline: candidates the any-hit shader may still test (loop budget)
 };
 
+// hit_world's answer once the traversal is over: the nearest hit's record, made as hit_bvh makes
+// it (in its instance's space when it was reached through one), and the AOVs' ids.
+bool record_nearest(nearest_hit n, ray r, precise inout hit_record rec) {
+  if (n.best < 0) return false;
+  sheared_ray world_sr;
+  if (any_triangles) world_sr = shear_ray(r);
+  record_winner(n.best_ref, n.best_inst, r, world_sr, n.closest, rec);
+  hit_object = uint(n.best);
+  hit_instance = n.best_inst;
+  return true;
+}
+
 // Whether a ray may go to the driver: the specification asks for a finite origin and direction
 // (anything else is undefined, a hang on some GPUs); the compute path takes any ray, so the
 // others take its walk instead (the BVH is built and uploaded on every path) and find what it
@@ -125,13 +137,7 @@ bool hit_hardware(ray r, float t_min, float t_max, precise inout hit_record rec,
       committed = n.closest;
     }
   }
-  if (n.best < 0) return false;
-  sheared_ray world_sr;
-  if (any_triangles) world_sr = shear_ray(r);
-  record_winner(n.best_ref, n.best_inst, r, world_sr, n.closest, rec);
-  hit_object = uint(n.best);
-  hit_instance = n.best_inst;
-  return true;
+  return record_nearest(n, r, rec);
 }
 #endif
 
@@ -161,13 +167,7 @@ bool hit_hardware(ray r, float t_min, float t_max, precise inout hit_record rec,
     return false;
   }
   iterations += allowed - traced.trips;
-  if (traced.best < 0) return false;
-  sheared_ray world_sr;
-  if (any_triangles) world_sr = shear_ray(r);
-  record_winner(traced.best_ref, traced.best_inst, r, world_sr, traced.closest, rec);
-  hit_object = uint(traced.best);
-  hit_instance = traced.best_inst;
-  return true;
+  return record_nearest(traced, r, rec);
 }
 #endif
 

@@ -105,7 +105,8 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
          RTVK_MEMBER(render_push, sums_row0),      RTVK_MEMBER(render_push, quad_count),
          RTVK_MEMBER(render_push, triangle_count), RTVK_MEMBER(render_push, instance_count),
          RTVK_MEMBER(render_push, medium_count),   RTVK_MEMBER(render_push, light_count),
-         RTVK_MEMBER(render_push, strata)}}},
+         RTVK_MEMBER(render_push, strata),         RTVK_MEMBER(render_push, trace_cost),
+         RTVK_MEMBER(render_push, probe_trips)}}},
       {"gpu_quad",
        {sizeof(gpu::gpu_quad),
         {RTVK_MEMBER(gpu_quad, Q), RTVK_MEMBER(gpu_quad, material), RTVK_MEMBER(gpu_quad, u),
@@ -145,7 +146,7 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
         {RTVK_MEMBER(render_status, starved_pixels), RTVK_MEMBER(render_status, unfinished_pixels),
          RTVK_MEMBER(render_status, starved_budget), RTVK_MEMBER(render_status, overflowed_samples),
          RTVK_MEMBER(render_status, dropped_samples), RTVK_MEMBER(render_status, rays_low),
-         RTVK_MEMBER(render_status, rays_high)}}},
+         RTVK_MEMBER(render_status, rays_high), RTVK_MEMBER(render_status, cut_traversals)}}},
       {"gpu_light",
        {sizeof(gpu::gpu_light),
         {RTVK_MEMBER(gpu_light, a), RTVK_MEMBER(gpu_light, kind), RTVK_MEMBER(gpu_light, u),
@@ -338,7 +339,11 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
       {"hit_probe.comp", gpu::hit_probe_shader()},
       {"world_probe.comp", gpu::world_probe_shader()},
       {"kernel_probe.comp", gpu::kernel_probe_shader()},
-      {"light_probe.comp", gpu::light_probe_shader()}};
+      {"light_probe.comp", gpu::light_probe_shader()},
+      {"render_query.comp", gpu::render_query_shader()},
+      {"render_ray.rgen", gpu::render_ray_shaders().raygen},
+      {"rt_object.rint", gpu::render_ray_shaders().intersection},
+      {"rt_object.rahit", gpu::render_ray_shaders().any_hit}};
   std::map<std::string, int> checked;  // struct name -> times compared
   int blocks = 0, push_blocks = 0;
   for (const auto& [shader, words] : shaders) {
@@ -389,12 +394,13 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
     }
   }
   // Coverage cannot shrink unnoticed: every shared struct is checked in some shader, and the
-  // push constants (render.comp's, tonemap.comp's, overlay.comp's and world_probe.comp's) are
+  // push constants (render.comp's, tonemap.comp's, overlay.comp's, world_probe.comp's and the
+  // hardware paths' four: render_query.comp, render_ray.rgen, rt_object.rint and .rahit) are
   // among the blocks walked.
   for (const auto& [name, layout] : cpp_layouts())
     EXPECT_GT(checked[name], 0) << name << " was found in no shader's buffers or push constants";
   EXPECT_GE(blocks, 15) << "uniform, storage and push-constant blocks walked";
-  EXPECT_EQ(push_blocks, 4) << "push-constant blocks walked";
+  EXPECT_EQ(push_blocks, 8) << "push-constant blocks walked";
 }
 
 // --- The camera on the GPU ---------------------------------------------------------------------
