@@ -157,7 +157,10 @@ bool hit_hardware(ray r, float t_min, float t_max, precise inout hit_record rec,
                   inout uint iterations) {
   if (!driver_takes(r)) return hit_bvh(r, t_min, t_max, rec, iterations);
   iterations += pc.trace_cost;
-  if (iterations >= pc.loop_budget) return false;
+  if (iterations >= pc.loop_budget) {  // no trip left for a candidate: over budget, not a miss
+    iterations = pc.loop_budget + 1u;
+    return false;
+  }
   if (motion) ray_times[launch_slot(gl_LaunchIDEXT)] = r.time;
   uint allowed = pc.loop_budget - iterations;
   traced = nearest_hit(t_max, -1, 0u, 0u, allowed);

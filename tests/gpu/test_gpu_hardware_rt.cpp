@@ -200,6 +200,26 @@ TEST_F(GpuHardwareRt, InvocationsALoopLimitCutShortAreRedrawn) {
   }
 }
 
+// The loop budget runs out inside traversals: a ray query's candidates and a pipeline's any-hit
+// tests count against it, and a ray that meets the end of the budget must be drawn again under
+// the next dispatch's, never taken for a miss (which would add the sky to its sample).
+TEST_F(GpuHardwareRt, RaysThatRunOutOfBudgetAreDrawnAgainNotMissed) {
+  const bool queries = runs(gpu_traversal::ray_query);
+  const bool pipelines = runs(gpu_traversal::ray_pipeline);
+  if (!queries && !pipelines) return;
+  scene s = small("book-final", 32);
+  s.render.width = 16;
+  s.render.max_depth = 20;
+  const gpu::sum_image want = sums(s, gpu_traversal::compute);
+  for (const gpu_traversal t : hardware) {
+    if (!has(t)) continue;
+    for (const std::uint32_t budget : {97u, 160u, 333u}) {
+      SCOPED_TRACE(std::string(name_of(t)) + ", budget " + std::to_string(budget));
+      EXPECT_EQ(differing_pixels(s, want, t, budget, 4), 0);
+    }
+  }
+}
+
 // The device's limits come first: a scene past maxPrimitiveCount is refused (usage_error, exit 2
 // on the command line) naming the limit, before anything is built.
 TEST_F(GpuHardwareRt, PrimitivesPastTheDevicesLimitAreRefusedNamingIt) {
