@@ -1,6 +1,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -28,6 +29,9 @@ class GpuTest : public ::testing::Test {
       o.device = device_under_test();
       o.validate = true;
       o.ray_tracing = ray_tracing_;
+      // lavapipe compiles a pipeline's shaders when it first runs them, inside the submission:
+      // the hardware paths' large shaders, on a loaded machine, can take minutes.
+      if (ray_tracing_) o.fence_timeout = std::chrono::minutes(10);
       ctx_ = std::make_unique<gpu::gpu_context>(o);
     } catch (const std::exception& e) {
       if (in_ci()) FAIL() << "no Vulkan device in CI (GPU tests must run): " << e.what();
