@@ -7,6 +7,13 @@ include_guard(GLOBAL)
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
+# Everything `cmake --install` installs, built without the rest of the project: a whole build of
+# the release preset also compiles the test suite and the benchmarks, more than half of its
+# compile time. scripts/render.sh builds this target, so the README's install works right after
+# it.
+add_custom_target(rtvk_install_files)
+add_dependencies(rtvk_install_files rtvk)
+
 set(_rtvk_doc ${PROJECT_SOURCE_DIR}/host/app/doc)
 if(CMAKE_CROSSCOMPILING)
   message(STATUS "rtvk: cross-compiling, so no man page and no bash completion (both run rtvk)")
@@ -19,6 +26,7 @@ add_custom_command(
   DEPENDS rtvk ${_rtvk_doc}/gen-completion.sh
   COMMENT "Generating the bash completion from rtvk --help")
 add_custom_target(rtvk_completion ALL DEPENDS rtvk.bash)
+add_dependencies(rtvk_install_files rtvk_completion)
 install(FILES ${PROJECT_BINARY_DIR}/rtvk.bash DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
         RENAME rtvk)
 
@@ -34,4 +42,5 @@ add_custom_command(
   DEPENDS rtvk ${_rtvk_doc}/gen-man.sh ${_rtvk_doc}/rtvk.h2m
   COMMENT "Generating the man page from rtvk --help with help2man")
 add_custom_target(rtvk_man ALL DEPENDS rtvk.1.gz)
+add_dependencies(rtvk_install_files rtvk_man)
 install(FILES ${PROJECT_BINARY_DIR}/rtvk.1.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)

@@ -5,5 +5,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/install-deps.sh"
 cmake -S "$root" --preset release >/dev/null
-cmake --build "$root/build/release" --target rtvk
+# rtvk with its man page and completion, so that `cmake --install build/release` (README,
+# "Installing") has all it installs; not the test suite, which a whole build would compile too.
+cmake --build "$root/build/release" --target rtvk_install_files
 "$root/build/release/rtvk" render --scene seed -o seed.png "$@"

@@ -50,6 +50,12 @@ grep -q '^\.TH RTVK "1"' "$tmp/man.roff" || fail "the man page has no .TH line"
 for cmd in render compare devices scene bench merge view; do
   grep -qx ".SS \"rtvk $cmd\"" "$tmp/man.roff" || fail "the man page has no section for rtvk $cmd"
 done
+# Every built-in scene rtvk has, named in the description (in roff: bold, dashes escaped).
+"$build/rtvk" scene list >"$tmp/scenes.txt"
+while read -r scene _; do
+  want=${scene%%:*}
+  grep -qF "\\fB${want//-/\\-}" "$tmp/man.roff" || fail "the man page does not name the scene $scene"
+done <"$tmp/scenes.txt"
 if ! command -v man >/dev/null; then
   missing "no man (Debian: man-db), so the page is not rendered"
 else

@@ -51,12 +51,29 @@ document() {  # $1: the command path, such as "render" or "scene dump"
   for sub in $(subcommands <<<"$help"); do document "$1 $sub"; done
 }
 
+# The built-in scenes in roff, from `rtvk scene list` (a name a line; a parameter, as in
+# "spheres:N (N from 1 to 4000000)", is upper case after a colon): "\fBseed\fR, ... and
+# \fBspheres:\fR\fIN\fR (N from 1 to 4000000)", put where rtvk.h2m says @SCENES@.
+scenes=$("$rtvk" scene list | awk '
+  function esc(s) { gsub(/\\/, "\\e", s); gsub(/-/, "\\-", s); return s }
+  {
+    name = $1; rest = substr($0, length($1) + 1); param = ""
+    if (match(name, /:[A-Z]+$/)) { param = substr(name, RSTART + 1); name = substr(name, 1, RSTART) }
+    item[++n] = "\\fB" esc(name) "\\fR" (param != "" ? "\\fI" param "\\fR" : "") esc(rest)
+  }
+  END {
+    for (i = 1; i <= n; i++) printf "%s%s", item[i], (i == n ? "\n" : i == n - 1 ? " and " : ", ")
+  }')
+[[ -n $scenes ]] || { echo "gen-man.sh: rtvk scene list printed nothing" >&2; exit 1; }
+h2m_text=$(<"$h2m")
+printf '%s\n' "${h2m_text//@SCENES@/"$scenes"}" >"$work/rtvk.h2m"
+
 top=$("$rtvk" --help)
 {
   echo "[COMMANDS]"
   for cmd in $(subcommands <<<"$top"); do document "$cmd"; done
 } >"$work/commands.h2m"
 help2man --no-info --section=1 --name="ray tracer with a CPU reference and a Vulkan compute port" \
-  --include="$work/commands.h2m" --include="$h2m" --output="$work/rtvk.1" "$rtvk"
+  --include="$work/commands.h2m" --include="$work/rtvk.h2m" --output="$work/rtvk.1" "$rtvk"
 gzip -9n <"$work/rtvk.1" >"$out.tmp"
 mv "$out.tmp" "$out"
