@@ -1,62 +1,136 @@
 #!/usr/bin/env bash
-# README command 2: install what is missing, then for each preset build (warnings are errors) and
-# run its tests: fuzz (a one-minute libFuzzer run on the scene parser), ci (every test, on the
-# system's lavapipe), asan (every test again under AddressSanitizer + UndefinedBehaviorSanitizer +
-# LeakSanitizer, except the Slurm job-array test, which runs once, in ci), and last the ci tests
-# again (Slurm's aside) on a second lavapipe: Mesa 25 from bookworm-backports when the system
-# has bookworm's Mesa 22.3, else bookworm's 22.3, fetched by scripts/private-mesa.sh into
-# ~/.cache/rtvk-test-mesa/ (RTVK_MESA_DIR) and never installed: outside the source and build
-# trees, which the install test hides. RTVK_SECOND_MESA=SUITE picks that suite instead.
+# README command 2, and what CI runs (.ci/run): install what is missing, then build and test in
+# passes, each aimed at what it alone can find (docs/testing.md: what runs where, and why):
+#   fuzz    the three libFuzzer targets (scene files, mesh files, calibrations), a minute each
+#           from their committed corpora (clang, ASan + UBSan)
+#   ci      every test, on the system's lavapipe (release build, warnings are errors)
+#   asan    under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer: the host tests
+#           (label host) with no Vulkan driver at all, so a test that needs a device and is not
+#           labelled gpu fails; then the GPU tests that run every host-side Vulkan path (label
+#           sanitize) on the lavapipe that has ray tracing
+#   second  the GPU tests (label gpu) again, on a second lavapipe: Mesa 25 from
+#           bookworm-backports when the system has bookworm's Mesa 22.3, else bookworm's 22.3,
+#           fetched by scripts/private-mesa.sh into ~/.cache/rtvk-test-mesa/ (RTVK_MESA_DIR) and
+#           never installed (RTVK_SECOND_MESA=SUITE picks the suite)
+# At the end it prints each stage's time and the slowest tests of the run (build/test-report.txt).
+#
+#   scripts/test.sh --quick   the inner loop while working: builds the ci preset and runs the host
+#                             tests and a few GPU tests (label gpu-sanitize-quick), in about
+#                             two minutes
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-bash "$root/scripts/install-deps.sh" --test
+quick=false
+case ${1:-} in
+  --quick) quick=true ;;
+  "") ;;
+  *) echo "rtvk: test.sh: unknown argument '$1' (--quick or nothing)" >&2; exit 2 ;;
+esac
 cd "$root"
+jobs=${RTVK_TEST_JOBS:-$(nproc)}
+# One Mesa shader cache for every test process of every pass: lavapipe then compiles each of
+# rtvk's shader variants once per driver, not once per test (tests/test_main.cpp says why).
+export MESA_SHADER_CACHE_DIR=${MESA_SHADER_CACHE_DIR:-$root/build/mesa-shader-cache}
+logs=$root/build/test-logs
 timings=()
 timed() {  # timed LABEL COMMAND...: runs it, and notes how long it took
   local label=$1 start=$SECONDS
   shift
   "$@"
-  timings+=("$label: $((SECONDS - start)) s")
+  timings+=("$(printf '%5d s  %s' $((SECONDS - start)) "$label")")
 }
-run_preset() {
+build() {
   cmake --preset "$1" >/dev/null
   cmake --build --preset "$1"
-  ctest --preset "$1" -j2 "${@:2}"
+}
+# tests PASS PRESET CTEST-ARGS...: one ctest run, its output kept for the report.
+tests() {
+  local pass=$1 preset=$2
+  shift 2
+  mkdir -p "$logs"
+  ctest --preset "$preset" -j"$jobs" "$@" 2>&1 | tee "$logs/$pass.log"
+  return "${PIPESTATUS[0]}"
 }
 # Which lavapipe the loader offers, as rtvk sees it: the log says what each pass ran on.
 show_devices() { "$root/build/ci/rtvk" devices || true; }
+report() {
+  {
+    echo "== stages"
+    printf '%s\n' "${timings[@]}"
+    echo "== the slowest tests (seconds, pass, test)"
+    # ctest prints "  n/N Test  #k: NAME ....   Passed   12.34 sec" per test.
+    for f in "$logs"/*.log; do
+      [[ -f $f ]] || continue
+      sed -nE "s/^.*Test +#[0-9]+: ([^ ]+) .* ([0-9]+\.[0-9]+) sec$/\2 $(basename "$f" .log) \1/p" "$f"
+    done | sort -rn | head -20 | awk '{printf "%8.1f  %-14s %s\n", $1, $2, $3}'
+  } | tee "$root/build/test-report.txt"
+}
+trap report EXIT
+rm -rf "$logs"
+
+timed "install what is missing" bash "$root/scripts/install-deps.sh" --test
+
+if $quick; then
+  timed "build ci" build ci
+  timed "host and quick tests" tests quick ci -L '^host$|quick' -E '^Slurm\.'
+  exit 0
+fi
 
 system_mesa=$(dpkg-query -W -f='${Version}\n' "mesa-vulkan-drivers:$(dpkg --print-architecture)")
 if [[ $system_mesa == 22.* ]]; then second=bookworm-backports; else second=bookworm; fi
 second=${RTVK_SECOND_MESA:-$second}
+timed "fetch and unpack $second's lavapipe" bash scripts/private-mesa.sh "$second" >/dev/null
+second_env=$(bash scripts/private-mesa.sh "$second")
+# on_second COMMAND...: runs it with the loader pointed at the second lavapipe alone.
+on_second() {
+  (
+    # The suite picks lavapipe itself; a device named for other runs must not steer this one.
+    unset RTVK_DEVICE RTVK_TEST_DEVICE
+    set -a
+    # shellcheck disable=SC1090 # written by private-mesa.sh
+    source "$second_env"
+    set +a
+    # Mesa 25's lavapipe has ray queries and pipelines: the hardware paths' tests must find them
+    # there rather than pass by checking that they are refused.
+    if [[ $second == bookworm-backports ]]; then export RTVK_EXPECT_RAY_TRACING=1; fi
+    "$@"
+  )
+}
+# The hardware ray-tracing paths' host code (acceleration structures, ray pipelines) runs only
+# where the driver has them: the sanitizers' GPU tests go to the lavapipe that does.
+rt_mesa=system
+[[ $second == bookworm-backports ]] && rt_mesa=second
 
-for preset in fuzz ci asan; do
-  echo "== preset $preset"
-  timed "$preset" run_preset "$preset"
-  [[ $preset == ci ]] && show_devices
-done
+echo "== fuzz"
+timed "build fuzz" build fuzz
+timed "fuzz: 3 targets, 60 s each" tests fuzz fuzz
 
-echo "== preset ci again, on the lavapipe of $second's mesa-vulkan-drivers (the system has $system_mesa)"
-start=$SECONDS
-env_file=$(bash scripts/private-mesa.sh "$second")
-timings+=("fetch and unpack $second's lavapipe: $((SECONDS - start)) s")
-(
-  # The suite picks lavapipe itself; a device named for other runs must not steer this one.
-  unset RTVK_DEVICE RTVK_TEST_DEVICE
-  set -a
-  # shellcheck disable=SC1090 # written by private-mesa.sh
-  source "$env_file"
-  set +a
-  # Mesa 25's lavapipe has ray queries and pipelines: the hardware paths' tests must find them
-  # there rather than pass by checking that they are refused.
-  if [[ $second == bookworm-backports ]]; then export RTVK_EXPECT_RAY_TRACING=1; fi
-  listing=$(show_devices)
-  echo "$listing"
-  # The pass must run on the fetched driver, not silently on the system's.
-  want="Mesa ${RTVK_PRIVATE_MESA_VERSION%%-*}"
-  grep -qF "$want" <<<"$listing" || { echo "rtvk: expected a lavapipe of $want (above)" >&2; exit 1; }
-  timed "ci on $want" ctest --preset ci -j2 -E '^Slurm\.'
-  printf '%s\n' "${timings[@]}" >"$root/build/test-timings.txt"
-)
-echo "== timings"
-cat "$root/build/test-timings.txt"
+echo "== ci: every test, on the system's lavapipe ($system_mesa)"
+timed "build ci" build ci
+show_devices
+timed "ci: every test" tests ci ci
+
+echo "== asan: the host tests with no Vulkan driver, the sanitize GPU tests on lavapipe ($rt_mesa)"
+timed "build asan" build asan
+# without_driver COMMAND...: runs it with a loader that finds no driver at all, so that only a
+# test that needs no device can pass.
+without_driver() {
+  (
+    unset RTVK_DEVICE RTVK_TEST_DEVICE VK_ADD_DRIVER_FILES
+    export VK_DRIVER_FILES=/nonexistent/rtvk-no-driver.json VK_ICD_FILENAMES=/nonexistent/rtvk-no-driver.json
+    "$@"
+  )
+}
+timed "asan: host tests, no driver" without_driver tests asan-host asan -L '^host$'
+if [[ $rt_mesa == second ]]; then
+  timed "asan: sanitize GPU tests" on_second tests asan-gpu asan -L sanitize
+else
+  timed "asan: sanitize GPU tests" tests asan-gpu asan -L sanitize
+fi
+
+echo "== the GPU tests again, on the lavapipe of $second's mesa-vulkan-drivers (the system has $system_mesa)"
+listing=$(on_second show_devices)
+echo "$listing"
+# The pass must run on the fetched driver, not silently on the system's.
+want="Mesa $(sed -n 's/^RTVK_PRIVATE_MESA_VERSION=//p' "$second_env" | cut -d- -f1)"
+grep -qF "$want" <<<"$listing" || { echo "rtvk: expected a lavapipe of $want (above)" >&2; exit 1; }
+timed "GPU tests on $want" on_second tests second ci -L '^gpu'

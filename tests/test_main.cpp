@@ -38,6 +38,14 @@ int main(int argc, char** argv) {
   const std::filesystem::path cache =
       std::filesystem::temp_directory_path() / ("rtvk-test-cache-" + std::to_string(getpid()));
   setenv("XDG_CACHE_HOME", cache.c_str(), 1);
+  // Mesa keeps the machine code it compiles from rtvk's shaders in its own cache, under
+  // XDG_CACHE_HOME unless MESA_SHADER_CACHE_DIR says where: with the folder above, every test
+  // process would compile every shader variant it uses again, and Mesa 25's lavapipe takes up to
+  // a minute for the largest (GpuSampling.LightsSamplingMatchesTheCpu: 116 s cold, 4 s warm).
+  // The suite's processes, and the rtvk they run, share one Mesa cache in the build tree instead
+  // (scripts/test.sh points every pass at one): it holds only the driver's compiled code, keyed
+  // by the SPIR-V and the driver's build, so what a test checks is made anew by each test.
+  setenv("MESA_SHADER_CACHE_DIR", RTVK_TEST_MESA_CACHE, 0);
   testing::InitGoogleTest(&argc, argv);
   const int status = RUN_ALL_TESTS();
   std::error_code ec;

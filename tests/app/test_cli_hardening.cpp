@@ -23,7 +23,7 @@ using test::slurp;
 
 constexpr std::chrono::seconds prompt{20};  // "at once", with room for a loaded machine
 
-int files_in(const fs::path& dir) {
+int file_count(const fs::path& dir) {
   int n = 0;
   for (const auto& e : fs::directory_iterator(dir)) n += e.is_regular_file();
   return n;
@@ -52,7 +52,7 @@ TEST(CliHardening, MalformedOutputPatternsAreRefusedAtOnce) {
     EXPECT_EQ(r.status, 2) << name << ": " << r.err;
     EXPECT_NE(r.err.find("--output '" + pattern + "': "), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
-    EXPECT_EQ(files_in(dir.path()), 0) << name;
+    EXPECT_EQ(file_count(dir.path()), 0) << name;
   }
 }
 

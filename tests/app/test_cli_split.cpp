@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 using test::run_rtvk;
 using test::slurp;
 
-std::vector<std::string> gpu_args(std::vector<std::string> args) {
+std::vector<std::string> validated_gpu_args(std::vector<std::string> args) {
   args.insert(args.end(), {"--backend", "gpu", "--validate"});
   if (!test::test_device().empty()) args.insert(args.end(), {"--device", test::test_device()});
   return args;
@@ -48,13 +48,14 @@ class CliSplitGpu : public test::GpuTest {};
 TEST_F(CliSplitGpu, AllCamerasInOneRunEachEqualTheCameraAlone) {
   test::temp_dir dir;
   const std::string scene = write_four_camera_scene(dir.path()).string();
-  const auto all = run_rtvk(gpu_args({"render", "--scene", scene, "--camera", "all", "--frames",
-                                      "1", "-o", (dir.path() / "all_{camera}.png").string()}));
+  const auto all =
+      run_rtvk(validated_gpu_args({"render", "--scene", scene, "--camera", "all", "--frames", "1",
+                                   "-o", (dir.path() / "all_{camera}.png").string()}));
   ASSERT_EQ(all.status, 0) << all.err;
   EXPECT_NE(all.err.find("4 views together"), std::string::npos) << all.err;
   for (const std::string name : {"front", "left", "top", "dolly"}) {
     const fs::path alone = dir.path() / ("alone_" + name + ".png");
-    const auto r = run_rtvk(gpu_args(
+    const auto r = run_rtvk(validated_gpu_args(
         {"render", "--scene", scene, "--camera", name, "--frames", "1", "-o", alone.string()}));
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string together = slurp(dir.path() / ("all_" + name + ".png"));
@@ -72,7 +73,7 @@ TEST_F(CliSplitGpu, GpuTilesMergeToTheWholeRenderAndSampleHalvesAgree) {
   auto render = [&](std::vector<std::string> extra) {
     std::vector<std::string> args = base;
     args.insert(args.end(), extra.begin(), extra.end());
-    return run_rtvk(gpu_args(args)).status;
+    return run_rtvk(validated_gpu_args(args)).status;
   };
   ASSERT_EQ(render({"-o", at("whole.exr")}), 0);
   ASSERT_EQ(render({"--region", "0,0,20,33", "-o", at("t0.exr")}), 0);

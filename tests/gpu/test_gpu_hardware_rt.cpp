@@ -128,14 +128,21 @@ scene knots_and_a_moving_sphere() {
 }
 
 // Spheres and quads are boxes whose candidates test_object decides, with the compute path's
-// rays: the sums must be the compute BVH's, bit for bit, in every built-in scene (instances,
-// moving spheres, media, textures and lights included).
-TEST_F(GpuHardwareRt, EveryBuiltInSceneGivesTheComputeBvhsExactSums) {
+// rays: the sums must be the compute BVH's, bit for bit, in the built-in scenes that between them
+// hold every kind of object and placement a traversal meets: next-week-final (static and moving
+// spheres, a group placed by an instance, quads, a sphere of fog), cornell-smoke (fog in turned
+// boxes), bouncing-spheres (hundreds of moving spheres) and rest-of-life-final (rays aimed at
+// the lights). The other built-in scenes hold only spheres and quads, which these have too, and
+// differ in materials, textures and skies, which every traversal shares; each of them costs
+// Mesa 25's lavapipe two more shader variants to compile (about 20 s), so they are left out.
+// Seen failing with moving spheres boxed at their start only, and with instances' rays left in
+// world space.
+TEST_F(GpuHardwareRt, TheBuiltInScenesGiveTheComputeBvhsExactSums) {
   const bool queries = runs(gpu_traversal::ray_query);
   const bool pipelines = runs(gpu_traversal::ray_pipeline);
   if (!queries && !pipelines) return;
-  for (const std::string& name : builtin_scene_names()) {
-    if (name.rfind("spheres:", 0) == 0) continue;  // the pattern, not a scene
+  for (const std::string name :
+       {"next-week-final", "cornell-smoke", "bouncing-spheres", "rest-of-life-final"}) {
     const scene s = small(name, 2);
     const gpu::sum_image want = sums(s, gpu_traversal::compute);
     for (const gpu_traversal t : hardware) {

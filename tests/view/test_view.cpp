@@ -354,7 +354,9 @@ TEST_F(XvfbTest, CtrlCClosesTheWindowWithExit0AndNoScreenshot) {
   const test::process_result r = view.wait_at_most(60s);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_FALSE(std::filesystem::exists(shot));
-  EXPECT_EQ(printed_flags(r.out).front(), "render") << "the camera is printed on the way out";
+  const std::vector<std::string> printed = printed_flags(r.out);
+  ASSERT_FALSE(printed.empty()) << "nothing printed on the way out: " << r.err;
+  EXPECT_EQ(printed.front(), "render") << "the camera is printed on the way out";
   EXPECT_NE(r.err.find("was not written"), std::string::npos) << r.err;
 }
 
