@@ -22,9 +22,8 @@
 #
 # A full run takes about 20 minutes of a 2-core machine: about 4 for the coverage build, 11 for
 # some 385 tests one after another, 4 for gcov to read their runs. A test is stopped after
-# RTVK_COVERAGE_TEST_TIMEOUT seconds (default 150, which today stops one test that takes 6
-# minutes under coverage, and adds 2.5 minutes): a test that slow could never be in the set; its
-# lines are lost with it, and the report names it. The folder ends up at about 700 MB.
+# RTVK_COVERAGE_TEST_TIMEOUT seconds (default 150): a test that slow could never be in the set;
+# its lines are lost with it, and the report names it. The folder ends up at about 700 MB.
 #
 # RTVK_COVERAGE_BUILD=DIR measures an existing coverage build tree instead (configured with
 # --coverage; it is built, not configured), e.g. to try the tool without a second build.

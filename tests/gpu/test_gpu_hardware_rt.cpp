@@ -155,6 +155,8 @@ TEST_F(GpuHardwareRt, TheBuiltInScenesGiveTheComputeBvhsExactSums) {
 
 // Triangles are the driver's own: it proposes those its test hits and test_object decides, so
 // a pixel may differ only where the two tests part at an edge, by rounding.
+// Over 20 s under the sanitizers on Mesa 25 (26 s): three traversals' shader variants compiled
+// for it alone, and 12,000 triangles' acceleration structures built; 15 s without them.
 TEST_F(GpuHardwareRt, InstancedMeshesAndAMovingSphereGiveTheComputeBvhsImage) {
   const scene s = knots_and_a_moving_sphere();
   for (const gpu_traversal t : hardware) {
