@@ -15,8 +15,8 @@
 # At the end it prints each stage's time and the slowest tests of the run (build/test-report.txt).
 #
 #   scripts/test.sh --quick   the inner loop while working: builds the ci preset and runs the host
-#                             tests and a few GPU tests (label gpu-sanitize-quick), in about
-#                             two minutes
+#                             tests and a few GPU tests (labels gpu-sanitize-quick and
+#                             gpu-quick), in about a minute
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 quick=false
