@@ -111,11 +111,13 @@ timed "ci: every test" tests ci ci
 
 echo "== asan: the host tests with no Vulkan driver, the sanitize GPU tests on lavapipe ($rt_mesa)"
 timed "build asan" build asan
-# without_driver COMMAND...: runs it with a loader that finds no driver at all, so that only a
-# test that needs no device can pass.
+# without_driver COMMAND...: runs it with a loader that finds no driver at all, and as in CI
+# (where a GPU test without a device fails rather than skips), so that only a test that needs no
+# device can pass: one that needs a device and lacks the gpu label fails here, naming it.
 without_driver() {
   (
     unset RTVK_DEVICE RTVK_TEST_DEVICE VK_ADD_DRIVER_FILES
+    export CI=true
     export VK_DRIVER_FILES=/nonexistent/rtvk-no-driver.json VK_ICD_FILENAMES=/nonexistent/rtvk-no-driver.json
     "$@"
   )
