@@ -15,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_rtvk;
 
-void write(const fs::path& p, const std::string& text) {
+void write_text(const fs::path& p, const std::string& text) {
   fs::create_directories(p.parent_path());
   std::ofstream(p) << text;
 }
@@ -40,20 +40,21 @@ TEST(CliCalibration, BadLensInputExits2NamingTheFlagOrFieldAndValue) {
   const fs::path out = dir.path() / "out.png";
   const std::string bad_cal = (dir.path() / "in" / "fx0.yaml").string();
   const std::string good_cal = (dir.path() / "in" / "good.yaml").string();
-  write(bad_cal, opencv_yaml("0., 0., 319.5"));
-  write(good_cal, opencv_yaml("500., 0., 319.5"));
+  write_text(bad_cal, opencv_yaml("0., 0., 319.5"));
+  write_text(good_cal, opencv_yaml("500., 0., 319.5"));
   const fs::path fov = dir.path() / "in" / "fov", short_row = dir.path() / "in" / "short";
-  write(fov / "cameras.txt", "# cameras\n1 FOV 640 480 500 500 320 240 0.9\n");
-  write(fov / "images.txt", images_txt);
-  write(short_row / "cameras.txt", "1 PINHOLE 640 480 500 500\n");
-  write(short_row / "images.txt", images_txt);
+  write_text(fov / "cameras.txt", "# cameras\n1 FOV 640 480 500 500 320 240 0.9\n");
+  write_text(fov / "images.txt", images_txt);
+  write_text(short_row / "cameras.txt", "1 PINHOLE 640 480 500 500\n");
+  write_text(short_row / "images.txt", images_txt);
   const std::string bad_scene = (dir.path() / "in" / "fx0.json").string();
-  write(bad_scene,
-        R"({"camera": {"projection": "opencv", "intrinsics": [0, 500, 320, 240]}, "spheres": []})");
+  write_text(
+      bad_scene,
+      R"({"camera": {"projection": "opencv", "intrinsics": [0, 500, 320, 240]}, "spheres": []})");
   const std::string folding_scene = (dir.path() / "in" / "fold.json").string();
-  write(folding_scene,
-        R"({"camera": {"projection": "opencv", "intrinsics": [500, 500, 319.5, 239.5],)"
-        R"( "distortion": [-1], "calibration_size": [640, 480]}, "spheres": []})");
+  write_text(folding_scene,
+             R"({"camera": {"projection": "opencv", "intrinsics": [500, 500, 319.5, 239.5],)"
+             R"( "distortion": [-1], "calibration_size": [640, 480]}, "spheres": []})");
   const std::string opencv = "--projection=opencv", size = "--width=640", aspect = "--aspect=4:3";
   const struct {
     std::vector<std::string> args;
@@ -111,15 +112,15 @@ TEST(CliCalibration, BadLensInputExits2NamingTheFlagOrFieldAndValue) {
 TEST(CliCalibration, FlagsFilesAndSceneFieldsDrawTheSameLens) {
   test::temp_dir dir;
   const std::string cal = (dir.path() / "cal.yaml").string();
-  write(cal, opencv_yaml("500., 0., 319.5"));
+  write_text(cal, opencv_yaml("500., 0., 319.5"));
   const std::string scene = (dir.path() / "lens.json").string();
-  write(scene, R"({"render": {"width": 160, "aspect": "4:3", "spp": 2},)"
-               R"( "camera": {"projection": "opencv", "intrinsics": [500, 500, 319.5, 239.5],)"
-               R"( "distortion": [-0.1, 0.01], "calibration_size": [640, 480],)"
-               R"( "rolling_shutter": {"direction": "bottom-up", "readout": 0.01}},)"
-               R"( "materials": {"m": {"type": "normal"}},)"
-               R"( "spheres": [{"center": [0, 0, -1], "radius": 0.5, "material": "m"},)"
-               R"( {"center": [0, -100.5, -1], "radius": 100, "material": "m"}]})");
+  write_text(scene, R"({"render": {"width": 160, "aspect": "4:3", "spp": 2},)"
+                    R"( "camera": {"projection": "opencv", "intrinsics": [500, 500, 319.5, 239.5],)"
+                    R"( "distortion": [-0.1, 0.01], "calibration_size": [640, 480],)"
+                    R"( "rolling_shutter": {"direction": "bottom-up", "readout": 0.01}},)"
+                    R"( "materials": {"m": {"type": "normal"}},)"
+                    R"( "spheres": [{"center": [0, 0, -1], "radius": 0.5, "material": "m"},)"
+                    R"( {"center": [0, -100.5, -1], "radius": 100, "material": "m"}]})");
   const auto image = [&](const std::string& name, std::vector<std::string> args) {
     const std::string out = (dir.path() / (name + ".png")).string();
     args.insert(args.begin(), {"render", "--backend", "cpu", "-q", "-o", out});
@@ -142,7 +143,7 @@ TEST(CliCalibration, FlagsFilesAndSceneFieldsDrawTheSameLens) {
                             "\"rolling_shutter\"", "\"bottom-up\""})
     EXPECT_NE(dump.out.find(field), std::string::npos) << field << " in " << dump.out;
   const std::string dumped = (dir.path() / "dumped.json").string();
-  write(dumped, dump.out);
+  write_text(dumped, dump.out);
   EXPECT_EQ(image("dumped", {"--scene", dumped}), from_scene);
 }
 
@@ -189,8 +190,8 @@ TEST(CliCalibration, WhatTheLensWouldIgnoreOrMixIsRefused) {
   const auto merged = run_rtvk({"merge", a, b, "-o", (dir.path() / "m.png").string()});
   EXPECT_EQ(merged.status, 2) << merged.err;
   // bench reads a COLMAP model's first view (it ignored --colmap before).
-  write(dir.path() / "model/cameras.txt", "1 PINHOLE 64 32 40 40 32 16\n");
-  write(dir.path() / "model/images.txt", "1 1 0 0 0 0 0 5 1 a.png\n\n");
+  write_text(dir.path() / "model/cameras.txt", "1 PINHOLE 64 32 40 40 32 16\n");
+  write_text(dir.path() / "model/images.txt", "1 1 0 0 0 0 0 5 1 a.png\n\n");
   const auto bench = run_rtvk({"bench", "--colmap", (dir.path() / "model").string(), "--repeat",
                                "1", "--spp", "1", "--backend", "cpu"});
   EXPECT_EQ(bench.status, 0) << bench.err;

@@ -22,7 +22,7 @@ namespace {
 
 class GpuCalibrated : public test::GpuTest {};
 
-double exact_aspect(int width, int height) {
+double aspect_of(int width, int height) {
   double a = double(width) / height;
   while (int(width / a) < height) a = std::nextafter(a, 0.0);
   while (int(width / a) > height) a = std::nextafter(a, 1e300);
@@ -64,7 +64,7 @@ TEST_F(GpuCalibrated, TheLessonsSceneMatchesTheCpuUnderEveryCalibratedModel) {
     SCOPED_TRACE(std::string(projection_name(p)));
     camera_pose pose;
     set_lens(pose, p, 240, 120);
-    const camera c(pose, exact_aspect(240, 120), 240);
+    const camera c(pose, aspect_of(240, 120), 240);
     const image_rgb8 on_gpu = test::gpu_image(gpu(), s, c), on_cpu = test::cpu_image(s, c);
     const image_difference d = compare_images(on_gpu, on_cpu, 1);
     EXPECT_TRUE(agrees(d, agreement{})) << d.share_over * 100 << "% of pixels over 1 level";
@@ -79,7 +79,7 @@ TEST_F(GpuCalibrated, TheLessonsSceneMatchesTheCpuUnderEveryCalibratedModel) {
 
 TEST_F(GpuCalibrated, APosedMonteCarloViewMatchesTheCpuUnderEveryCalibratedModel) {
   scene s = test::small_scene("book-final", 96, 4);
-  s.render.aspect = exact_aspect(96, 48);
+  s.render.aspect = aspect_of(96, 48);
   s.render.max_depth = 10;
   // Measured on lavapipe (Mesa 22.3.6), per model: PSNR dB, share of pixels over 2 levels.
   const std::map<projection, std::pair<double, double>> measured{
@@ -145,7 +145,7 @@ scene rolling_scene() {
   s.materials = {{"white", {material_type::flat, color(1), 0, 1.5}}};
   s.spheres = {sphere(point3(-0.5, 0, -10), 0.5, 0, point3(0.5, 0, -10))};
   s.render.width = 161;
-  s.render.aspect = exact_aspect(161, 121);
+  s.render.aspect = aspect_of(161, 121);
   s.render.spp = 256;
   s.render.jitter = true;  // antialiased edges: each row's centroid to a fraction of a pixel
   s.render.max_depth = 2;

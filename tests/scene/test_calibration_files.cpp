@@ -362,7 +362,7 @@ TEST(ColmapModel, IdentityPoseLooksDownPlusZ) {
   EXPECT_EQ(cam.axis_w(), vec3(0, 0, -1));  // w points backwards
 }
 
-void expect_near(const vec3& got, const vec3& want) {
+void expect_close(const vec3& got, const vec3& want) {
   EXPECT_NEAR(got.x, want.x, 1e-12);
   EXPECT_NEAR(got.y, want.y, 1e-12);
   EXPECT_NEAR(got.z, want.z, 1e-12);
@@ -376,12 +376,12 @@ TEST(ColmapModel, QuarterTurnWorkedByHand) {
   const std::vector<colmap_view> views = parse_colmap_model(
       one_camera, image_line("0.70710678118654757 0 0.70710678118654757 0 0 0 5", "a.jpg"), "m");
   const camera_pose& p = views[0].pose;
-  expect_near(p.lookfrom, point3(5, 0, 0));
-  expect_near(p.lookat - p.lookfrom, vec3(-1, 0, 0));
+  expect_close(p.lookfrom, point3(5, 0, 0));
+  expect_close(p.lookat - p.lookfrom, vec3(-1, 0, 0));
   const camera cam(p, 640.0 / 480.0, 640);
-  expect_near(cam.lens_u(), vec3(0, 0, 1));
-  expect_near(cam.lens_v(), vec3(0, -1, 0));
-  expect_near(cam.axis_w(), vec3(1, 0, 0));
+  expect_close(cam.lens_u(), vec3(0, 0, 1));
+  expect_close(cam.lens_v(), vec3(0, -1, 0));
+  expect_close(cam.axis_w(), vec3(1, 0, 0));
   EXPECT_NEAR(dot(point3(0, 0, 1) - p.lookfrom, cam.lens_u()), 1, 1e-12);   // right by 1
   EXPECT_NEAR(dot(point3(0, -1, 0) - p.lookfrom, cam.lens_v()), 1, 1e-12);  // up by 1
   EXPECT_NEAR(dot(point3(0, 0, 0) - p.lookfrom, -cam.axis_w()), 5, 1e-12);  // 5 in front
