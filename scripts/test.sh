@@ -36,7 +36,10 @@ timed() {  # timed LABEL COMMAND...: runs it, and notes how long it took (and if
   local label=$1 start=$SECONDS status=0
   shift
   "$@" || status=$?
-  timings+=("$(printf '%5d s  %s' $((SECONDS - start)) "$label")$( ((status)) && echo "  (failed: $status)")")
+  local line
+  line=$(printf '%5d s  %s' $((SECONDS - start)) "$label")
+  if ((status)); then line+="  (failed: exit $status)"; fi
+  timings+=("$line")
   return "$status"
 }
 # (timed runs these where set -e does not reach, so each step's failure is passed on by &&.)
@@ -56,6 +59,7 @@ show_devices() { "$root/build/ci/rtvk" devices || true; }
 report() {
   # At exit, whatever the outcome: no pipe here may turn a green run red (head closing early).
   set +e +o pipefail
+  mkdir -p "$root/build"
   {
     echo "== stages"
     printf '%s\n' "${timings[@]}"
