@@ -85,8 +85,8 @@ fi
 system_mesa=$(dpkg-query -W -f='${Version}\n' "mesa-vulkan-drivers:$(dpkg --print-architecture)")
 if [[ $system_mesa == 22.* ]]; then second=bookworm-backports; else second=bookworm; fi
 second=${RTVK_SECOND_MESA:-$second}
-timed "fetch and unpack $second's lavapipe" bash scripts/private-mesa.sh "$second" >/dev/null
-second_env=$(bash scripts/private-mesa.sh "$second")
+fetch_second() { second_env=$(bash scripts/private-mesa.sh "$second"); }  # the env file's path
+timed "fetch and unpack $second's lavapipe" fetch_second
 # on_second COMMAND...: runs it with the loader pointed at the second lavapipe alone.
 on_second() {
   (
