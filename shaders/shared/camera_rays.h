@@ -1,5 +1,5 @@
 // The camera models: the ray through a point of the image, from the vectors the camera class
-// precomputes (host/scene/camera.h owns the pose and computes them; the GPU reads them from the
+// precomputes (host/camera/camera.h owns the pose and computes them; the GPU reads them from the
 // camera_ubo the host fills). docs/camera.md has each model's formula.
 #ifndef RTVK_CAMERA_RAYS_H
 #define RTVK_CAMERA_RAYS_H

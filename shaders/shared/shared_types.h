@@ -116,7 +116,7 @@ using uvec2 = glm::uvec2;
 #define RTVK_BOUNDARY_SPHERE 0
 #define RTVK_BOUNDARY_BOX 1
 
-// Camera models, as rtvk::projection (host/scene/camera.h).
+// Camera models, as rtvk::projection (host/camera/camera.h).
 #define RTVK_PROJECTION_PERSPECTIVE 0
 #define RTVK_PROJECTION_ORTHOGRAPHIC 1
 #define RTVK_PROJECTION_EQUIRECTANGULAR 2

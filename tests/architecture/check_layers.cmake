@@ -6,18 +6,21 @@
 cmake_minimum_required(VERSION 3.25)
 
 set(may_use_base "base;shared")
-set(may_use_scene "scene;base;shared")
-set(may_use_accel "accel;scene;base;shared")
-set(may_use_cpu "cpu;accel;scene;base;shared")
-set(may_use_image "image;scene;base;shared")
+set(may_use_camera "camera;base;shared")
+set(may_use_scene "scene;camera;base;shared")
+set(may_use_formats "formats;scene;camera;base;shared")
+set(may_use_accel "accel;scene;camera;base;shared")
+set(may_use_cpu "cpu;accel;scene;camera;base;shared")
+set(may_use_image "image;scene;camera;base;shared")
 set(may_use_gpu/vulkan "gpu/vulkan;base;shared")
-set(may_use_gpu/render "gpu/render;gpu/vulkan;accel;scene;base;shared")
-set(may_use_view "view;cpu;gpu/render;gpu/vulkan;accel;scene;base;shared")
-set(may_use_app/jobs "app/jobs;cpu;image;gpu/render;gpu/vulkan;accel;scene;base;shared")
+set(may_use_gpu/render "gpu/render;gpu/vulkan;accel;scene;camera;base;shared")
+set(may_use_view "view;cpu;gpu/render;gpu/vulkan;accel;scene;camera;base;shared")
+set(may_use_app/jobs
+    "app/jobs;cpu;image;gpu/render;gpu/vulkan;accel;formats;scene;camera;base;shared")
 set(may_use_app/commands
-    "app/commands;app/jobs;view;cpu;image;gpu/render;gpu/vulkan;accel;scene;base;shared")
+    "app/commands;app/jobs;view;cpu;image;gpu/render;gpu/vulkan;accel;formats;scene;camera;base;shared")
 set(may_use_app "app;app/commands;app/jobs;image;base;shared")
-set(layers base scene accel cpu image gpu/vulkan gpu/render view app/jobs app/commands app)
+set(layers base camera scene formats accel cpu image gpu/vulkan gpu/render view app/jobs app/commands app)
 
 # A new folder of sources must be given its place in the map above.
 file(GLOB_RECURSE all_sources RELATIVE ${ROOT}/host ${ROOT}/host/*.h ${ROOT}/host/*.cpp)

@@ -1,4 +1,4 @@
-// Camera projections (host/scene/camera.h, docs/camera.md): known answers worked out by hand,
+// Camera projections (host/camera/camera.h, docs/camera.md): known answers worked out by hand,
 // round trips through an inverse written here independently of the camera, and the apparent size
 // of a sphere in rendered images.
 #include <gtest/gtest.h>
