@@ -15,6 +15,9 @@ layout(std430, set = 0, binding = RTVK_BINDING_QUADS) readonly buffer quad_block
 layout(std430, set = 0, binding = RTVK_BINDING_TRIANGLES) readonly buffer triangle_block {
   gpu_triangle triangles[];
 };
+layout(std430, set = 0, binding = RTVK_BINDING_DISKS) readonly buffer disk_block {
+  gpu_disk disks[];
+};
 layout(std430, set = 0, binding = RTVK_BINDING_NORMALS) readonly buffer normal_block {
   vec4 vertex_normals[];
 };

@@ -7,6 +7,7 @@
 #ifndef RTVK_WORLD_GLSL
 #define RTVK_WORLD_GLSL
 #include "bvh.glsl"
+#include "hit_disk.h"
 #include "hit_quad.h"
 #include "hit_sphere.h"
 #include "hit_triangle.h"
@@ -19,6 +20,7 @@ layout(constant_id = RTVK_SPEC_MOTION) const bool motion = false;
 // Whether the scene has quads, triangles: without, their tests are compiled out.
 layout(constant_id = RTVK_SPEC_QUADS) const bool any_quads = false;
 layout(constant_id = RTVK_SPEC_TRIANGLES) const bool any_triangles = false;
+layout(constant_id = RTVK_SPEC_DISKS) const bool any_disks = false;
 // Whether the scene has instances: without, no walk enters a group's tree.
 layout(constant_id = RTVK_SPEC_INSTANCES) const bool any_instances = false;
 // Whether sphere hits find their texture coordinates (some image texture reads them).
@@ -38,6 +40,18 @@ quad_geometry quad_at(uint k) {
   g.normal = quads[k].normal;
   g.w = quads[k].w;
   g.D = quads[k].D;
+  return g;
+}
+
+// The disk at position k with its plane and axes, as the shared kernels take it.
+disk_geometry disk_at(uint k) {
+  disk_geometry g;
+  g.center = disks[k].center;
+  g.normal = disks[k].normal;
+  g.u = disks[k].u;
+  g.v = disks[k].v;
+  g.radius = disks[k].radius;
+  g.D = disks[k].D;
   return g;
 }
 
@@ -71,13 +85,16 @@ void test_object(uint ref, ray r, sheared_ray sr, float t_min, precise inout flo
   uint kind = ref & RTVK_LEAF_KIND_MASK;
   precise float t;
   int i;  // the object's scene index, read only when it is hit
-  if ((!any_quads && !any_triangles) || kind == RTVK_LEAF_SPHERE) {
+  if ((!any_quads && !any_triangles && !any_disks) || kind == RTVK_LEAF_SPHERE) {
     if (!hit_sphere(center_at(k, r.time), spheres[k].radius, r, t_min, closest, t)) return;
     i = int(spheres[k].scene_index);
-  } else if (!any_triangles || (any_quads && kind == RTVK_LEAF_QUAD)) {
+  } else if (any_quads && (kind == RTVK_LEAF_QUAD || (!any_triangles && !any_disks))) {
     precise vec2 uv;
     if (!hit_quad(quad_at(k), r, t_min, closest, t, uv)) return;
     i = int(quads[k].scene_index);
+  } else if (any_disks && (kind == RTVK_LEAF_DISK || !any_triangles)) {
+    if (!hit_disk(disk_at(k), r, t_min, closest, t)) return;
+    i = int(disks[k].scene_index);
   } else {
     precise vec3 weights;
     if (!hit_triangle(triangles[k].a, triangles[k].b, triangles[k].c, r, sr, t_min, closest, t,
@@ -99,10 +116,12 @@ void test_object(uint ref, ray r, sheared_ray sr, float t_min, precise inout flo
 void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_record rec) {
   uint k = ref & RTVK_LEAF_INDEX_MASK;
   uint kind = ref & RTVK_LEAF_KIND_MASK;
-  if ((!any_quads && !any_triangles) || kind == RTVK_LEAF_SPHERE) {
+  if ((!any_quads && !any_triangles && !any_disks) || kind == RTVK_LEAF_SPHERE) {
     record_hit(center_at(k, r.time), spheres[k].radius, spheres[k].material, r, t, with_uv, rec);
-  } else if (!any_triangles || (any_quads && kind == RTVK_LEAF_QUAD)) {
+  } else if (any_quads && (kind == RTVK_LEAF_QUAD || (!any_triangles && !any_disks))) {
     record_quad_hit(quad_at(k), quads[k].material, r, t, rec);
+  } else if (any_disks && (kind == RTVK_LEAF_DISK || !any_triangles)) {
+    record_disk_hit(disk_at(k), disks[k].material, r, t, rec);
   } else {
     gpu_triangle tri = triangles[k];
     // The blend's weights found again, as on the CPU (hittable_triangle.h's record_triangle).
@@ -176,7 +195,8 @@ uint sort_key(bool entered, float t) {
 // each trip counts one iteration against the loop budget. (It takes 13 to 15% less time on
 // lavapipe than the binary tree it replaced: docs/benchmarks.md.)
 bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inout uint iterations) {
-  if (pc.sphere_count + pc.quad_count + pc.triangle_count + pc.instance_count == 0u) return false;
+  if (pc.sphere_count + pc.quad_count + pc.triangle_count + pc.disk_count + pc.instance_count == 0u)
+    return false;
   sheared_ray world_sr, sr;
   if (any_triangles) world_sr = shear_ray(r);
   sr = world_sr;
@@ -316,6 +336,11 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
       if (++iterations > pc.loop_budget) return false;
       test_object(RTVK_LEAF_TRIANGLE | i, r, sr, t_min, closest, best, best_ref, 0u, best_inst);
     }
+  if (any_disks)
+    for (uint i = 0u; i < pc.disk_count; ++i) {
+      if (++iterations > pc.loop_budget) return false;
+      test_object(RTVK_LEAF_DISK | i, r, sr, t_min, closest, best, best_ref, 0u, best_inst);
+    }
   // Then each instance's group, with the ray in its space.
   if (any_instances)
     for (uint k = 0u; k < pc.instance_count; ++k) {
@@ -338,6 +363,12 @@ bool hit_world(ray r, float t_min, float t_max, precise inout hit_record rec,
           if (++iterations > pc.loop_budget) return false;
           test_object(RTVK_LEAF_TRIANGLE | (instances[k].triangle_first + i), g, gs, t_min, closest,
                       best, best_ref, k + 1u, best_inst);
+        }
+      if (any_disks)
+        for (uint i = 0u; i < instances[k].disk_count; ++i) {
+          if (++iterations > pc.loop_budget) return false;
+          test_object(RTVK_LEAF_DISK | (instances[k].disk_first + i), g, gs, t_min, closest, best,
+                      best_ref, k + 1u, best_inst);
         }
     }
   if (best < 0) return false;

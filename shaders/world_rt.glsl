@@ -1,7 +1,7 @@
 // The world searched through the driver's acceleration structure (--accel rt-query and
 // rt-pipeline), built by host/gpu/render/scene_accel.cpp: in the top level the scene's own objects
 // (custom index 0) and each instance k (custom index k + 1, its placement as the instance's
-// transform); in each bottom level one geometry of boxes -- the group's spheres, then its quads --
+// transform); in each bottom level one geometry of boxes -- the group's spheres, quads, disks --
 // and one of triangles, which the driver tests itself. The driver only proposes candidates: each
 // is tested by the very test_object the compute BVH calls, on the ray in its group's space as
 // frame_of and to_group make it, and the nearest is kept by test_object's tie rule. So the hit and
@@ -19,16 +19,20 @@ layout(set = 0, binding = RTVK_BINDING_TLAS) uniform accelerationStructureEXT tl
 // The leaf reference (RTVK_LEAF_* kind | position) of a candidate: primitive `p` of instance
 // `inst`'s box geometry (`box`) or triangle geometry; `inst` 0 is the scene's own objects.
 uint candidate_ref(uint inst, bool box, uint p) {
-  uint sphere_first = 0u, sphere_count = pc.sphere_count, quad_first = 0u, triangle_first = 0u;
+  uint sphere_first = 0u, sphere_count = pc.sphere_count, quad_first = 0u,
+       quad_count = pc.quad_count, triangle_first = 0u, disk_first = 0u;
   if (any_instances && inst != 0u) {
     sphere_first = instances[inst - 1u].sphere_first;
     sphere_count = instances[inst - 1u].sphere_count;
     quad_first = instances[inst - 1u].quad_first;
+    quad_count = instances[inst - 1u].quad_count;
     triangle_first = instances[inst - 1u].triangle_first;
+    disk_first = instances[inst - 1u].disk_first;
   }
   if (!box) return RTVK_LEAF_TRIANGLE | (triangle_first + p);
   if (p < sphere_count) return RTVK_LEAF_SPHERE | (sphere_first + p);
-  return RTVK_LEAF_QUAD | (quad_first + p - sphere_count);
+  if (p < sphere_count + quad_count) return RTVK_LEAF_QUAD | (quad_first + p - sphere_count);
+  return RTVK_LEAF_DISK | (disk_first + p - sphere_count - quad_count);
 }
 
 // The ray in the space of instance `inst`'s group, as hit_bvh makes it (0: the scene's ray).

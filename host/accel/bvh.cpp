@@ -398,7 +398,9 @@ dbox object_box(const primitive_spans& objects, std::size_t i, time_span motion)
   if (i < objects.quads.size()) return quad_box(objects.quads[i]);
   i -= objects.quads.size();
   if (i < objects.triangles.size()) return triangle_box(objects.triangles[i]);
-  const auto& box = objects.boxes[i - objects.triangles.size()];
+  i -= objects.triangles.size();
+  const auto& box = i < objects.disks.size() ? objects.disks[i].bounds()
+                                             : objects.boxes[i - objects.disks.size()];
   dbox b;
   b.grow(box[0]);
   b.grow(box[1]);

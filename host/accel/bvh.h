@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "disk.h"
 #include "quad.h"
 #include "shared_types.h"
 #include "sphere.h"
@@ -15,17 +16,37 @@
 
 namespace rtvk {
 
-// The objects a BVH is built over, numbered as one list: spheres, then quads, then triangles
-// (scene::spheres, quads, triangles; an object's number is its scene index).
+// The kinds of shape, numbered as their leaf codes (RTVK_LEAF_* >> RTVK_LEAF_KIND_SHIFT) and in
+// scene-index order: the arrays a traversal reads are one per kind, indexed by these.
+enum shape_kind : std::size_t { shape_sphere, shape_quad, shape_triangle, shape_disk };
+inline constexpr std::size_t shape_kinds = RTVK_SHAPE_KINDS;
+static_assert(shape_disk + 1 == shape_kinds, "a kind without its place in shape_kind");
+
+// A count per shape kind.
+using kind_counts = std::array<std::uint32_t, shape_kinds>;
+
+// The leaf code of kind k.
+constexpr std::uint32_t leaf_code(std::size_t k) {
+  return std::uint32_t(k) << RTVK_LEAF_KIND_SHIFT;
+}
+
+// The objects a BVH is built over, numbered as one list: spheres, then quads, triangles and
+// disks (scene::spheres, quads, triangles, disks; an object's number is its scene index).
 struct primitive_spans {
   std::span<const sphere> spheres;
   std::span<const quad> quads;
   std::span<const triangle> triangles;
-  // After the triangles: anything else by its box alone, corners lo and hi (instances).
+  std::span<const disk> disks = {};
+  // After the shapes: anything else by its box alone, corners lo and hi (instances).
   std::span<const std::array<point3, 2>> boxes = {};
-  std::size_t size() const {
-    return spheres.size() + quads.size() + triangles.size() + boxes.size();
+  // How many of each kind, in shape_kind order.
+  std::array<std::size_t, shape_kinds> counts() const {
+    return {spheres.size(), quads.size(), triangles.size(), disks.size()};
   }
+  std::size_t shapes() const {
+    return spheres.size() + quads.size() + triangles.size() + disks.size();
+  }
+  std::size_t size() const { return shapes() + boxes.size(); }
 };
 
 // A bounding volume hierarchy over objects (spheres, quads, triangles), built with binned SAH and

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -11,10 +12,9 @@ namespace rtvk {
 // each leaf slot the reference a wide node stores (RTVK_LEAF_* kind | position in its array).
 // Without a BVH the arrays are in scene order.
 struct leaf_layout {
-  std::vector<std::uint32_t> refs;       // leaf slot -> kind | position (empty without a BVH)
-  std::vector<std::uint32_t> spheres;    // sphere array position -> index into scene::spheres
-  std::vector<std::uint32_t> quads;      // quad array position -> index into scene::quads
-  std::vector<std::uint32_t> triangles;  // triangle array position -> index into scene::triangles
+  std::vector<std::uint32_t> refs;  // leaf slot -> kind | position (empty without a BVH)
+  // Per shape kind (shape_kind): array position -> index into that kind's scene list.
+  std::array<std::vector<std::uint32_t>, shape_kinds> kinds;
 };
 
 // The layout of `tree`'s leaves over `objects` (tree.order() in their numbering); with no tree

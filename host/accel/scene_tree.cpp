@@ -11,7 +11,7 @@ namespace rtvk {
 namespace {
 
 primitive_spans spans_of(const object_group& g) {
-  return primitive_spans{g.spheres, g.quads, g.triangles, {}};
+  return primitive_spans{g.spheres, g.quads, g.triangles, g.disks, {}};
 }
 
 // The box of a tree's root: its lanes' boxes together.
@@ -115,22 +115,19 @@ scene_tree build_scene_tree(const primitive_spans& world, std::span<const object
     throw std::invalid_argument(
         "the scene's trees are " + std::to_string(out.depth) +
         " levels deep with an instance's: more than a traversal's stack holds");
-  append_slots(out.spheres, layout.spheres, world_objects);
-  append_slots(out.quads, layout.quads, world_objects);
-  append_slots(out.triangles, layout.triangles, world_objects);
+  for (std::size_t k = 0; k < shape_kinds; ++k)
+    append_slots(out.slots[k], layout.kinds[k], world_objects);
   for (std::size_t g = 0; g < groups.size(); ++g) {
     if (!placed[g]) continue;
     group_span& span = out.groups[g];
     const leaf_layout& l = group_layouts[g];
-    const std::array<std::uint32_t, 3> base = {std::uint32_t(out.spheres.size()),
-                                               std::uint32_t(out.quads.size()),
-                                               std::uint32_t(out.triangles.size())};
+    kind_counts base{};
+    for (std::size_t k = 0; k < shape_kinds; ++k) {
+      base[k] = std::uint32_t(out.slots[k].size());
+      span.count[k] = std::uint32_t(l.kinds[k].size());
+      append_slots(out.slots[k], l.kinds[k], std::uint32_t(g));
+    }
     span.first = base;
-    span.count = {std::uint32_t(l.spheres.size()), std::uint32_t(l.quads.size()),
-                  std::uint32_t(l.triangles.size())};
-    append_slots(out.spheres, l.spheres, std::uint32_t(g));
-    append_slots(out.quads, l.quads, std::uint32_t(g));
-    append_slots(out.triangles, l.triangles, std::uint32_t(g));
     if (!use_bvh) continue;
     // The group's nodes after those before: interior children move by the node base, leaf
     // references by their kind's base.
@@ -143,9 +140,7 @@ scene_tree build_scene_tree(const primitive_spans& world, std::span<const object
         if (child & wide_node::leaf_bit) {
           const std::uint32_t ref = child & ~wide_node::leaf_bit;
           const std::uint32_t kind = ref & RTVK_LEAF_KIND_MASK;
-          const std::uint32_t at = base[kind == RTVK_LEAF_SPHERE ? 0
-                                        : kind == RTVK_LEAF_QUAD ? 1
-                                                                 : 2];
+          const std::uint32_t at = base[kind >> RTVK_LEAF_KIND_SHIFT];
           child = wide_node::leaf_bit | kind | ((ref & RTVK_LEAF_INDEX_MASK) + at);
         } else {
           child += node_base;
@@ -154,9 +149,9 @@ scene_tree build_scene_tree(const primitive_spans& world, std::span<const object
       out.nodes.push_back(n);
     }
   }
-  for (const auto* list : {&out.spheres, &out.quads, &out.triangles})
-    if (list->size() > std::size_t(RTVK_LEAF_INDEX_MASK) + 1)
-      throw std::invalid_argument("more objects of a kind than a leaf reference's 29 bits hold");
+  for (const std::vector<object_slot>& list : out.slots)
+    if (list.size() > std::size_t(RTVK_LEAF_INDEX_MASK) + 1)
+      throw std::invalid_argument("more objects of a kind than a leaf reference's 28 bits hold");
   return out;
 }
 

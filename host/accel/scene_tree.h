@@ -21,10 +21,10 @@ struct object_slot {
 inline constexpr std::uint32_t world_objects = ~0u;
 
 // Where a group's objects are: its tree's root among the wide nodes (with a BVH), and its
-// objects' positions in each kind's array (first, count: spheres, quads, triangles).
+// objects' positions in each kind's array (first, count: by shape_kind).
 struct group_span {
   std::uint32_t root = 0;
-  std::array<std::uint32_t, 3> first{}, count{};
+  kind_counts first{}, count{};
 };
 
 // Two levels for both backends, as hardware acceleration structures are built: one tree over
@@ -35,8 +35,9 @@ struct group_span {
 // Without a BVH there are no nodes and every array is in scene order, then group order.
 struct scene_tree {
   std::vector<wide_node> nodes;
-  std::vector<object_slot> spheres, quads, triangles;  // array position -> object
-  std::vector<group_span> groups;                      // a group no instance places: an empty span
+  // Per shape kind (shape_kind): array position -> object.
+  std::array<std::vector<object_slot>, shape_kinds> slots;
+  std::vector<group_span> groups;  // a group no instance places: an empty span
   std::uint32_t world_nodes = 0;  // the world's tree's nodes (0: no objects, no instances)
   int depth = 0;  // wide levels on the longest world path plus the longest group path
 };

@@ -169,8 +169,8 @@ bvh_world::bvh_world(const primitive_spans& objects, std::span<const triangle_sh
 }
 
 bvh_world::bvh_world(const scene& s, int threads) : with_uv_(scene_reads_uv(s)) {
-  build(primitive_spans{s.spheres, s.quads, s.triangles}, s.shading, s.groups, s.instances, threads,
-        s.motion);
+  build(primitive_spans{s.spheres, s.quads, s.triangles, s.disks}, s.shading, s.groups, s.instances,
+        threads, s.motion);
 }
 
 void bvh_world::build(const primitive_spans& objects, std::span<const triangle_shading> shading,
@@ -183,26 +183,28 @@ void bvh_world::build(const primitive_spans& objects, std::span<const triangle_s
   nodes_ = std::move(tree.nodes);
   const std::uint32_t first_quad = std::uint32_t(objects.spheres.size());
   const std::uint32_t first_triangle = first_quad + std::uint32_t(objects.quads.size());
+  const std::uint32_t first_disk = first_triangle + std::uint32_t(objects.triangles.size());
   // Each object's data and its key: the scene index for the world's, the group-order index for
   // a group's.
   const auto sphere_of = [&](object_slot o) -> const sphere& {
     return o.group == world_objects ? objects.spheres[o.index] : groups[o.group].spheres[o.index];
   };
-  spheres_.resize(tree.spheres.size());
-  sphere_index_.resize(tree.spheres.size());
+  const std::vector<object_slot>& sphere_slots = tree.slots[shape_sphere];
+  spheres_.resize(sphere_slots.size());
+  sphere_index_.resize(sphere_slots.size());
   const bool moves = std::any_of(objects.spheres.begin(), objects.spheres.end(),
                                  [](const sphere& s) { return s.center1.has_value(); });
   if (moves) velocities_.resize(spheres_.size());
   parallel_for(spheres_.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
-      const sphere& s = sphere_of(tree.spheres[k]);
+      const sphere& s = sphere_of(sphere_slots[k]);
       spheres_[k] = {s.center, s.radius, s.material};
-      sphere_index_[k] = tree.spheres[k].index;
+      sphere_index_[k] = sphere_slots[k].index;
       if (moves) velocities_[k] = s.velocity();
     }
   });
-  quads_.reserve(tree.quads.size());
-  for (const object_slot o : tree.quads) {
+  quads_.reserve(tree.slots[shape_quad].size());
+  for (const object_slot o : tree.slots[shape_quad]) {
     const bool own = o.group == world_objects;
     const quad& q = own ? objects.quads[o.index] : groups[o.group].quads[o.index];
     quads_.push_back({q.geometry(), q.material});
@@ -211,9 +213,9 @@ void bvh_world::build(const primitive_spans& objects, std::span<const triangle_s
   }
   // Triangles' shading, normals normalized once per shading entry of the world or a group.
   std::vector<std::vector<std::int32_t>> attributes_at(groups.size() + 1);
-  triangles_.resize(tree.triangles.size());
+  triangles_.resize(tree.slots[shape_triangle].size());
   for (std::size_t k = 0; k < triangles_.size(); ++k) {
-    const object_slot o = tree.triangles[k];
+    const object_slot o = tree.slots[shape_triangle][k];
     const bool own = o.group == world_objects;
     const triangle& t = own ? objects.triangles[o.index] : groups[o.group].triangles[o.index];
     const std::span<const triangle_shading> sh = own ? shading : groups[o.group].shading;
@@ -232,6 +234,15 @@ void bvh_world::build(const primitive_spans& objects, std::span<const triangle_s
     triangle_index_.push_back(o.index + (own ? first_triangle
                                              : std::uint32_t(groups[o.group].spheres.size() +
                                                              groups[o.group].quads.size())));
+  }
+  for (const object_slot o : tree.slots[shape_disk]) {
+    const bool own = o.group == world_objects;
+    const object_group* g = own ? nullptr : &groups[o.group];
+    const disk& d = own ? objects.disks[o.index] : g->disks[o.index];
+    disks_.push_back({d.geometry(), d.material});
+    disk_index_.push_back(o.index + (own ? first_disk
+                                         : std::uint32_t(g->spheres.size() + g->quads.size() +
+                                                         g->triangles.size())));
   }
   instances_.reserve(instances.size());
   for (const instance& i : instances)
@@ -253,7 +264,7 @@ inline void bvh_world::visit(std::uint32_t ref, const ray& r, const sheared_ray&
     best.offer(t, sphere_index_[k], ref, best.current);
 }
 
-// Quads and triangles, out of the sphere path's way: a scene of spheres keeps the loop it had.
+// Quads, triangles and disks, out of the sphere path's way: a scene of spheres keeps the loop it had.
 void bvh_world::visit_flat(std::uint32_t ref, const ray& r, const sheared_ray& sheared,
                            double t_min, nearest& best) const {
   const std::uint32_t k = ref & RTVK_LEAF_INDEX_MASK;
@@ -262,6 +273,10 @@ void bvh_world::visit_flat(std::uint32_t ref, const ray& r, const sheared_ray& s
     real2 uv;
     if (hit_quad(quads_[k].g, r, t_min, best.t, t, uv))
       best.offer(t, quad_index_[k], ref, best.current);
+    return;
+  }
+  if ((ref & RTVK_LEAF_KIND_MASK) == RTVK_LEAF_DISK) {
+    if (hit_disk(disks_[k].g, r, t_min, best.t, t)) best.offer(t, disk_index_[k], ref, best.current);
     return;
   }
   const leaf_triangle& tri = triangles_[k];
@@ -307,6 +322,9 @@ void bvh_world::record(const nearest& best, const ray& r, const sheared_ray& she
       return;
     case RTVK_LEAF_QUAD:
       record_quad_hit(quads_[k].g, uint(quads_[k].material), r, best.t, rec);
+      return;
+    case RTVK_LEAF_DISK:
+      record_disk_hit(disks_[k].g, uint(disks_[k].material), r, best.t, rec);
       return;
     default: {
       const leaf_triangle& tri = triangles_[k];

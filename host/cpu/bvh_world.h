@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "bvh.h"
+#include "hit_disk.h"
 #include "hit_quad.h"
 #include "hit_triangle.h"
 #include "hittable.h"
@@ -66,6 +67,10 @@ class bvh_world final : public hittable {
     int material;             // index into the scene's materials
     std::int32_t shading;     // index into attributes_, or -1: flat, uv barycentric
   };
+  struct leaf_disk {
+    disk_geometry g;  // its plane and axes
+    int material;     // index into the scene's materials
+  };
 
   // The binary tree (the GPU's) is built, collapsed and dropped: the CPU keeps only these. Each
   // kind's array is in leaf order (leaf_layout); *_index_ give each position's scene index.
@@ -74,10 +79,12 @@ class bvh_world final : public hittable {
   std::vector<vec3> velocities_;          // the spheres', in leaf order; empty when none moves
   std::vector<leaf_quad> quads_;          // in leaf order
   std::vector<leaf_triangle> triangles_;  // in leaf order
+  std::vector<leaf_disk> disks_;          // in leaf order
   std::vector<triangle_attributes> attributes_;  // triangles' vertex normals and uv
-  std::vector<std::uint32_t> sphere_index_, quad_index_, triangle_index_;  // scene indices
-  // (the world's objects), or indices in their group's order (a group's: spheres, quads,
-  // triangles); exact ties go to the later of (instance, index), the world's objects first.
+  std::vector<std::uint32_t> sphere_index_, quad_index_, triangle_index_, disk_index_;  // scene
+  // indices (the world's objects), or indices in their group's order (a group's: spheres, quads,
+  // triangles, disks); exact ties go to the later of (instance, index), the world's objects
+  // first.
 
   // An instance as the search reads it: the way into its group's space, and its tree's root.
   struct leaf_instance {

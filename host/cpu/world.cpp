@@ -1,6 +1,7 @@
 #include "world.h"
 
 #include "bvh_world.h"
+#include "hittable_disk.h"
 #include "hittable_instance.h"
 #include "hittable_quad.h"
 #include "hittable_sphere.h"
@@ -10,26 +11,27 @@ namespace rtvk {
 
 namespace {
 
-// Objects of one list (the scene's, or a group's), in order: spheres, quads, triangles.
+// Objects of one list (the scene's, or a group's), in order: spheres, quads, triangles, disks.
 void add_objects(hittable_list& to, const std::vector<sphere>& spheres,
                  const std::vector<quad>& quads, const std::vector<triangle>& triangles,
-                 const std::vector<triangle_shading>& shading) {
+                 const std::vector<triangle_shading>& shading, const std::vector<disk>& disks) {
   for (const sphere& sp : spheres) to.add(std::make_shared<hittable_sphere>(sp));
   for (const quad& q : quads) to.add(std::make_shared<hittable_quad>(q));
   for (const triangle& t : triangles)
     to.add(std::make_shared<hittable_triangle>(
         t, t.shading >= 0 ? &shading[std::size_t(t.shading)] : nullptr));
+  for (const disk& d : disks) to.add(std::make_shared<hittable_disk>(d));
 }
 
 }  // namespace
 
 hittable_list make_world(const scene& s) {
   hittable_list world;
-  add_objects(world, s.spheres, s.quads, s.triangles, s.shading);
+  add_objects(world, s.spheres, s.quads, s.triangles, s.shading, s.disks);
   std::vector<std::shared_ptr<const hittable>> groups;
   for (const object_group& g : s.groups) {
     auto list = std::make_shared<hittable_list>();
-    add_objects(*list, g.spheres, g.quads, g.triangles, g.shading);
+    add_objects(*list, g.spheres, g.quads, g.triangles, g.shading, g.disks);
     groups.push_back(std::move(list));
   }
   for (const instance& i : s.instances)

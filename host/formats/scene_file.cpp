@@ -759,8 +759,8 @@ void read_groups(const scene_reader& r, const json& groups, const std::filesyste
       if (g.quads[k].sampled)
         r.fail(p + "/quads/" + std::to_string(k) + "/sample",
                "lights sampling aims only at the scene's own objects, not a group's");
-    object_group group{name, std::move(g.spheres), std::move(g.quads), std::move(g.triangles),
-                       std::move(g.shading)};
+    object_group group{name,          std::move(g.spheres), std::move(g.quads),
+                       std::move(g.triangles), std::move(g.shading), std::move(g.disks)};
     if (empty(group)) r.fail(p, "the group has no object (nothing an instance could place)");
     s.groups.push_back(std::move(group));
   }
@@ -784,7 +784,7 @@ void read_instances(const scene_reader& r, const json& root, scene& s) {
     }
     if (s.instances.size() >= std::size_t(RTVK_LEAF_INDEX_MASK))
       r.fail(p, "more than " + std::to_string(std::size_t(RTVK_LEAF_INDEX_MASK)) +
-                    " instances (a BVH leaf reference's 29 bits, less one)");
+                    " instances (a BVH leaf reference's 28 bits, less one)");
     s.instances.push_back({std::uint32_t(found - s.groups.begin()), optional_transform(r, j, p)});
   });
 }

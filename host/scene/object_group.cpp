@@ -34,6 +34,17 @@ triangle placed(const triangle& tri, const transform& t) {
   return out;
 }
 
+std::optional<disk> placed(const disk& d, const transform& t) {
+  if (t.is_identity()) return d;
+  const std::optional<double> scale = t.uniform_scale();
+  if (!scale) return std::nullopt;
+  disk out = d;
+  out.center = t.apply_point(d.center);
+  out.normal = t.apply_normal(d.normal);
+  out.radius = d.radius * *scale;
+  return out;
+}
+
 triangle_shading placed(const triangle_shading& sh, const transform& t) {
   triangle_shading out = sh;
   if (sh.has_normals() && !t.is_identity())
@@ -54,7 +65,16 @@ std::optional<std::string> place_group(scene& s, const object_group& g, const tr
              "ellipsoid)";
     spheres.push_back(*p);
   }
+  std::vector<disk> disks;
+  for (const disk& d : g.disks) {
+    const std::optional<disk> p = placed(d, t);
+    if (!p)
+      return "the group has a disk, which a copy cannot stretch (only an instance can: an "
+             "ellipse)";
+    disks.push_back(*p);
+  }
   s.spheres.insert(s.spheres.end(), spheres.begin(), spheres.end());
+  s.disks.insert(s.disks.end(), disks.begin(), disks.end());
   for (const quad& q : g.quads) s.quads.push_back(placed(q, t));
   for (triangle tri : g.triangles) {
     if (tri.shading >= 0) {

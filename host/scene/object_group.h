@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "disk.h"
 #include "quad.h"
 #include "sphere.h"
 #include "transform.h"
@@ -22,6 +23,7 @@ struct object_group {
   std::vector<quad> quads;
   std::vector<triangle> triangles;        // shading indices refer to `shading`
   std::vector<triangle_shading> shading;  // the triangles' vertex normals and uv
+  std::vector<disk> disks;
 };
 
 // One placement of a group: where its objects are, without copying them. The renderers keep
@@ -33,21 +35,22 @@ struct instance {
 };
 
 inline std::size_t object_count(const object_group& g) {
-  return g.spheres.size() + g.quads.size() + g.triangles.size();
+  return g.spheres.size() + g.quads.size() + g.triangles.size() + g.disks.size();
 }
 
 inline bool empty(const object_group& g) {
-  return g.spheres.empty() && g.quads.empty() && g.triangles.empty();
+  return g.spheres.empty() && g.quads.empty() && g.triangles.empty() && g.disks.empty();
 }
 
 // Objects placed by t. Quads and triangles stay exact (a parallelogram maps to a parallelogram);
 // a mirroring t swaps a quad's edges and a triangle's last two vertices (normals and uv with
 // them), so that the front stays where it was. A sphere stays a sphere only under a rotation
-// and one scale: nothing otherwise (an ellipsoid).
+// and one scale: nothing otherwise (an ellipsoid); a disk the same (an ellipse).
 std::optional<sphere> placed(const sphere& sp, const transform& t);
 quad placed(const quad& q, const transform& t);
 triangle placed(const triangle& tri, const transform& t);
 triangle_shading placed(const triangle_shading& sh, const transform& t);
+std::optional<disk> placed(const disk& d, const transform& t);
 
 // Appends the objects of `g`, placed by `t`, to the scene (each kind after the scene's own).
 // Returns why it cannot (a sphere of the group under a non-uniform scale), or nothing.

@@ -8,7 +8,7 @@ namespace rtvk {
 
 // The ids of --aov object-id: 1, 2, ... one per object as the scene names it -- a sphere, a
 // quad, a box (its six quads), a triangle, a mesh file (all its triangles), an instance (all of
-// its group) -- in the order the renderers scan them: spheres, quads, triangles, then the
+// its group) -- in the order the renderers scan them: spheres, quads, triangles, disks, then the
 // instances. 0: nothing was hit.
 class object_ids {
  public:

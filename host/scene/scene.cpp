@@ -37,14 +37,12 @@ struct scene_like {
   const std::vector<quad>& quads;
   const std::vector<triangle>& triangles;
   const std::vector<triangle_shading>& shading;
+  const std::vector<disk>& disks;
 };
 
 // The objects of the scene, or of one of its groups (`who`: "scene" or "scene: group g").
-void check_objects(const std::string& who, const std::vector<sphere>& spheres,
-                   const std::vector<quad>& quads, const std::vector<triangle>& triangles,
-                   const std::vector<triangle_shading>& shading,
+void check_objects(const scene_like& s,
                    const std::function<void(const std::string&, int)>& check_material) {
-  const scene_like s{who, spheres, quads, triangles, shading};
   for (std::size_t i = 0; i < s.spheres.size(); ++i) {
     const sphere& sp = s.spheres[i];
     const std::string where = s.name + ": sphere " + std::to_string(i);
@@ -83,6 +81,17 @@ void check_objects(const std::string& who, const std::vector<sphere>& spheres,
     if (t.shading >= 0 && std::size_t(t.shading) >= s.shading.size())
       throw usage_error(where + ": shading index " + std::to_string(t.shading) + " does not exist");
   }
+  for (std::size_t i = 0; i < s.disks.size(); ++i) {
+    const disk& d = s.disks[i];
+    const std::string where = s.name + ": disk " + std::to_string(i);
+    check_point(where + ": center", d.center);
+    check_point(where + ": normal", d.normal);
+    if (!has_direction(d.normal)) throw usage_error(where + ": normal is zero: the disk has no plane");
+    if (!(d.radius > 0) || !(d.radius <= max_scene_coordinate))
+      throw usage_error(where + ": radius must be > 0 and at most 1e18, got " +
+                        format_number(d.radius));
+    check_material(where, d.material);
+  }
 }
 
 // The corners of the box around a group's objects.
@@ -100,6 +109,8 @@ std::vector<point3> group_corners(const object_group& g) {
     for (const point3& p : {q.Q, q.Q + q.u, q.Q + q.v, q.Q + q.u + q.v}) grow(p);
   for (const triangle& t : g.triangles)
     for (const point3& p : t.p) grow(p);
+  for (const disk& d : g.disks)
+    for (const point3& p : d.bounds()) grow(p);
   std::vector<point3> out;
   for (int c = 0; c < 8; ++c)
     out.push_back(point3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z));
@@ -171,7 +182,7 @@ void check_scene(const scene& s) {
   if (s.cameras.empty()) throw usage_error(s.name + ": the scene has no camera");
   if (object_count(s) > max_scene_objects)
     throw usage_error(s.name + ": " + std::to_string(object_count(s)) + " objects are more than " +
-                      std::to_string(max_scene_objects) + " (a BVH leaf reference's 29 bits)");
+                      std::to_string(max_scene_objects) + " (a BVH leaf reference's 28 bits)");
   for (std::size_t i = 0; i < s.cameras.size(); ++i) {
     const named_camera& c = s.cameras[i];
     if (!valid_camera_name(c.name))
@@ -186,11 +197,11 @@ void check_scene(const scene& s) {
       throw usage_error(s.name + ": camera " + c.name + ": " + e.what());
     }
   }
-  check_objects(s.name, s.spheres, s.quads, s.triangles, s.shading, check_material);
+  check_objects({s.name, s.spheres, s.quads, s.triangles, s.shading, s.disks}, check_material);
   for (const object_group& g : s.groups) {
     const std::string who = s.name + ": group " + g.name;
     if (empty(g)) throw usage_error(who + ": the group has no object");
-    check_objects(who, g.spheres, g.quads, g.triangles, g.shading, check_material);
+    check_objects({who, g.spheres, g.quads, g.triangles, g.shading, g.disks}, check_material);
     for (std::size_t i = 0; i < g.spheres.size(); ++i)
       if (g.spheres[i].center1)
         throw usage_error(who + ": sphere " + std::to_string(i) + " moves (a group's cannot)");

@@ -5,6 +5,7 @@
 
 #include "camera.h"
 #include "camera_path.h"
+#include "disk.h"
 #include "material.h"
 #include "object_group.h"
 #include "quad.h"
@@ -51,12 +52,13 @@ struct scene {
   render_settings render;                              // default image size, samples, depth, ...
   rtvk::sky sky;                                       // what rays that escape see
   std::vector<named_material> materials;               // objects index into this
-  // The objects. Hits are tested as if in one list: spheres, then quads, then triangles (each
-  // object's index in that list -- its scene index -- decides exact ties: the later wins).
+  // The objects. Hits are tested as if in one list: spheres, then quads, triangles and disks
+  // (each object's index in that list -- its scene index -- decides exact ties: the later wins).
   std::vector<sphere> spheres;            // the first book's
   std::vector<quad> quads;                // the second book's (a box is six)
   std::vector<triangle> triangles;        // given alone, or faces of meshes
   std::vector<triangle_shading> shading;  // triangles' vertex normals and uv
+  std::vector<disk> disks;                // after the triangles (docs/geometry.md)
   // Groups of objects stored once, and their placements: hit after every object above, in
   // instance order, each instance's objects in its group's order (spheres, quads, triangles).
   std::vector<object_group> groups;
@@ -74,10 +76,10 @@ struct scene {
 
 std::vector<material> scene_materials(const scene& s);
 
-// Objects stored, of every kind: spheres + quads + triangles, the groups' included once each
+// Objects stored, of every kind: spheres + quads + triangles + disks, the groups' included once each
 // (however many instances place them).
 inline std::size_t object_count(const scene& s) {
-  std::size_t n = s.spheres.size() + s.quads.size() + s.triangles.size();
+  std::size_t n = s.spheres.size() + s.quads.size() + s.triangles.size() + s.disks.size();
   for (const object_group& g : s.groups) n += object_count(g);
   return n;
 }
@@ -119,9 +121,9 @@ inline constexpr double max_scene_coordinate = 1e18;
 // <= 0, or a quad parallel edges.
 void check_scene(const scene& s);
 
-// The most objects (spheres, quads and triangles together) a scene may hold: a BVH leaf keeps 29
+// The most objects (spheres, quads, triangles and disks together) a scene may hold: a BVH leaf keeps 28
 // bits for an object's position in its kind's array.
-inline constexpr std::size_t max_scene_objects = std::size_t(1) << 29;
+inline constexpr std::size_t max_scene_objects = std::size_t(1) << 28;
 
 // The most media a scene may hold: every ray tests each of them (no BVH over media).
 inline constexpr std::size_t max_scene_media = 64;

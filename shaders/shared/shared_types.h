@@ -43,6 +43,7 @@ using uvec2 = glm::uvec2;
 #define RTVK_BINDING_LIGHTS 21      // storage buffer: gpu_light[], what lights sampling aims at
 #define RTVK_BINDING_TLAS 22        // acceleration structure: the scene's top level (--accel rt-*)
 #define RTVK_BINDING_RAY_TIMES 23   // storage buffer: float[], each launch's ray time (rt-pipeline)
+#define RTVK_BINDING_DISKS 24       // storage buffer: gpu_disk[], in the BVH's leaf order
 #define RTVK_BINDING_BYTES 9        // storage buffer: uint[], tonemap.comp's RGBA8 per pixel
 #define RTVK_BINDING_THRESHOLDS 10  // storage buffer: uvec2[256], byte_thresholds (byte_encoding.h)
 
@@ -64,7 +65,8 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_LIGHTS 13    // bool: scattering samples toward the lights (render.comp)
 #define RTVK_SPEC_CALIBRATED \
   14  // bool: a view has a calibrated lens or a rolling shutter (render.comp; camera_rays.h)
-#define RTVK_SPEC_COUNT 15  // constant ids in use
+#define RTVK_SPEC_DISKS 15  // bool: the scene has disks
+#define RTVK_SPEC_COUNT 16  // constant ids in use
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 85 camera
 // blocks of 192 bytes are 15.94 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
@@ -197,6 +199,19 @@ struct gpu_triangle {
 };
 #define RTVK_FLAT 0xffffffffu
 
+// std430 array element: 64 bytes. A disk with its plane and axes (disk_geometry,
+// shaders/shared/hit_disk.h), formed in double on the host.
+struct gpu_disk {
+  vec3 center;       // scene units
+  float radius;      // scene units, > 0
+  vec3 normal;       // unit normal: the front side
+  uint material;     // index into the materials buffer
+  vec3 u;            // unit axis in the plane (texture u)
+  uint scene_index;  // the disk's scene index (spheres, quads and triangles first)
+  vec3 v;            // cross(normal, u) (texture v)
+  float D;           // dot(normal, center)
+};
+
 // std430 array element: one placement of a group (host/accel/scene_tree.h), 128 bytes. The ray
 // enters the group's space as (dot(to_group_x.xyz, p) + to_group_x.w, ...) for points and without
 // the w for directions; normals come back by the rows normal_x, normal_y, normal_z (the inverse
@@ -216,7 +231,11 @@ struct gpu_instance {
   uint quad_count;      //
   uint triangle_first;  // its triangles in the triangle array
   uint triangle_count;  //
+  uint disk_first;      // its disks in the disk array
+  uint disk_count;      //
   uint pad0;            // unused
+  uint pad1;            // unused
+  uint pad2;            // unused
 };
 
 // std430 array element: 32 bytes.
@@ -310,16 +329,20 @@ struct bvh_wide_node {
   uint pad2;    // unused
 };
 #define RTVK_WIDE_LEAF 0x80000000u
-// A leaf's reference below RTVK_WIDE_LEAF: the object's kind in two bits, and its position in
-// that kind's array (spheres, quads or triangles, each in the BVH's leaf order).
-#define RTVK_LEAF_KIND_MASK 0x60000000u
+// A leaf's reference below RTVK_WIDE_LEAF: the object's kind in three bits (room for eight:
+// the shapes, and instances last), and its position in that kind's array (each in the BVH's
+// leaf order). A new shape takes the next free code.
+#define RTVK_LEAF_KIND_MASK 0x70000000u
+#define RTVK_LEAF_KIND_SHIFT 28
 #define RTVK_LEAF_SPHERE 0x00000000u
-#define RTVK_LEAF_QUAD 0x20000000u
-#define RTVK_LEAF_TRIANGLE 0x40000000u
-#define RTVK_LEAF_INSTANCE 0x60000000u  // position: the instance's index (gpu_instance[])
-#define RTVK_LEAF_INDEX_MASK 0x1fffffffu
+#define RTVK_LEAF_QUAD 0x10000000u
+#define RTVK_LEAF_TRIANGLE 0x20000000u
+#define RTVK_LEAF_DISK 0x30000000u
+#define RTVK_SHAPE_KINDS 4              // shape kinds in use: codes 0 to RTVK_SHAPE_KINDS - 1
+#define RTVK_LEAF_INSTANCE 0x70000000u  // position: the instance's index (gpu_instance[])
+#define RTVK_LEAF_INDEX_MASK 0x0fffffffu
 // Not a child: what a walk remembers when it enters an instance, so that it goes back to the
-// scene's ray when it comes off the stack (the instance leaf RTVK_LEAF_INSTANCE | 0x1fffffff, with
+// scene's ray when it comes off the stack (the instance leaf RTVK_LEAF_INSTANCE | 0x0fffffff, with
 // the leaf bit: no instance has that index).
 #define RTVK_WIDE_EXIT 0xffffffffu
 // Remembered children of a four-wide walk: three at most per level of its path, which is at most
@@ -359,6 +382,7 @@ struct render_push {
                         // candidates, for the driver's own traversal loop (world_rt.glsl)
   uint probe_trips;     // 2: the trips of the loop that tells whether lavapipe's loop limit
                         // cut a traversal short (limit_was_hit); a push constant, so not unrolled
+  uint disk_count;      // disks in the storage buffer
 };
 
 // std430 array element: one pixel's exact running sums, 48 bytes. Each channel is a 96-bit
@@ -617,7 +641,8 @@ static_assert(offsetof(render_push, light_count) == 92);
 static_assert(offsetof(render_push, strata) == 96);
 static_assert(offsetof(render_push, trace_cost) == 100);
 static_assert(offsetof(render_push, probe_trips) == 104);
-static_assert(sizeof(render_push) == 108 && sizeof(render_push) <= 128);
+static_assert(offsetof(render_push, disk_count) == 108);
+static_assert(sizeof(render_push) == 112 && sizeof(render_push) <= 128);
 static_assert(offsetof(gpu_quad, material) == 12);
 static_assert(offsetof(gpu_quad, u) == 16);
 static_assert(offsetof(gpu_quad, scene_index) == 28);
@@ -639,7 +664,17 @@ static_assert(offsetof(gpu_instance, root) == 96);
 static_assert(offsetof(gpu_instance, sphere_count) == 104);
 static_assert(offsetof(gpu_instance, quad_count) == 112);
 static_assert(offsetof(gpu_instance, triangle_count) == 120);
-static_assert(sizeof(gpu_instance) == 128);
+static_assert(offsetof(gpu_instance, disk_first) == 124);
+static_assert(offsetof(gpu_instance, disk_count) == 128);
+static_assert(sizeof(gpu_instance) == 144);
+static_assert(offsetof(gpu_disk, radius) == 12);
+static_assert(offsetof(gpu_disk, normal) == 16);
+static_assert(offsetof(gpu_disk, material) == 28);
+static_assert(offsetof(gpu_disk, u) == 32);
+static_assert(offsetof(gpu_disk, scene_index) == 44);
+static_assert(offsetof(gpu_disk, v) == 48);
+static_assert(offsetof(gpu_disk, D) == 60);
+static_assert(sizeof(gpu_disk) == 64);
 static_assert(offsetof(pixel_sum, r) == 0);
 static_assert(offsetof(pixel_sum, g) == 8);
 static_assert(offsetof(pixel_sum, b) == 16);

@@ -81,12 +81,18 @@ std::string scene_identity(const scene& s) {
     }
   };
   triangles(s.triangles, s.shading);
+  // Disks after a marker of their own, the groups' with them: scenes without keep their identity.
+  const auto disks = [&](const std::vector<disk>& list) {
+    for (const disk& d : list) append_bytes(out, std::uint8_t(0x44), d.center, d.normal, d.radius, d.material);
+  };
+  disks(s.disks);
   // Groups and their instances after markers of their own: scenes without keep their identity.
   for (const object_group& g : s.groups) {
     append_bytes(out, std::uint8_t(0x47), g.spheres.size(), g.quads.size(), g.triangles.size());
     for (const sphere& sp : g.spheres) append_bytes(out, sp.center, sp.radius, sp.material);
     for (const quad& q : g.quads) append_bytes(out, q.Q, q.u, q.v, q.material);
     triangles(g.triangles, g.shading);
+    disks(g.disks);
   }
   for (const instance& i : s.instances)
     append_bytes(out, std::uint8_t(0x49), i.group, i.placement.linear, i.placement.offset);

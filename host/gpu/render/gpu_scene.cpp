@@ -24,39 +24,93 @@ std::vector<buffer_spec> with_usage(std::vector<buffer_spec> specs, VkBufferUsag
   return specs;
 }
 
+// Every array of the scene on the device, in one list, in allocation order: what its binding
+// is, what messages call it and its upload copy, and its bytes. A new array is one line here
+// and one accessor in gpu_scene.h.
+enum class role { objects, appearance, materials };
+struct array_entry {
+  std::uint32_t binding;  // layout(binding = N) in the shaders
+  role bound_as;          // which binding list carries it
+  const char* array;      // "the sphere array": for device-fit messages
+  const char* copy;       // "the spheres' upload copy"
+  const void* data;       // the host array (may be empty)
+  VkDeviceSize used;      // its bytes (0: empty)
+  VkDeviceSize bytes;     // the buffer's (an empty array still takes one element)
+};
+
 template <typename T>
-void write_array(gpu_buffer& b, const std::vector<T>& v) {
-  if (!v.empty()) b.write(v.data(), v.size() * sizeof(T));
+array_entry entry(std::uint32_t binding, role r, const char* array, const char* copy,
+                  const std::vector<T>& v) {
+  return {binding, r, array, copy, v.data(), v.size() * sizeof(T), bytes_of(v)};
+}
+
+std::vector<array_entry> arrays_of(const gpu_scene::host_arrays& a) {
+  using r = role;
+  return {
+      entry(RTVK_BINDING_SPHERES, r::objects, "the sphere array", "the spheres' upload copy",
+            a.spheres),
+      entry(RTVK_BINDING_MATERIALS, r::materials, "the material array",
+            "the materials' upload copy", a.materials),
+      entry(RTVK_BINDING_BVH_NODES, r::objects, "the BVH", "the BVH's upload copy", a.nodes),
+      entry(RTVK_BINDING_VELOCITIES, r::objects, "the velocity array",
+            "the velocities' upload copy", a.velocities),
+      entry(RTVK_BINDING_QUADS, r::objects, "the quad array", "the quads' upload copy", a.quads),
+      entry(RTVK_BINDING_TRIANGLES, r::objects, "the triangle array", "the triangles' upload copy",
+            a.triangles),
+      entry(RTVK_BINDING_NORMALS, r::objects, "the vertex normal array",
+            "the vertex normals' upload copy", a.normals),
+      entry(RTVK_BINDING_INSTANCES, r::objects, "the instance array", "the instances' upload copy",
+            a.instances),
+      entry(RTVK_BINDING_TEXCOORDS, r::objects, "the texture coordinate array",
+            "the texture coordinates' upload copy", a.uvs),
+      entry(RTVK_BINDING_TEXTURES, r::appearance, "the texture array", "the textures' upload copy",
+            a.textures),
+      entry(RTVK_BINDING_TEXELS, r::appearance, "the image textures' texels",
+            "the texels' upload copy", a.texels),
+      entry(RTVK_BINDING_PERLIN, r::appearance, "the noise tables", "the noise tables' upload copy",
+            a.perlin),
+      entry(RTVK_BINDING_MEDIA, r::appearance, "the media array", "the media's upload copy",
+            a.media),
+      entry(RTVK_BINDING_LIGHTS, r::appearance, "the light array", "the lights' upload copy",
+            a.lights),
+      entry(RTVK_BINDING_DISKS, r::objects, "the disk array", "the disks' upload copy", a.disks),
+  };
 }
 
 // Allocation numbers for check_device_fits (the render targets' sets use others).
 enum : int { staging_set = 1, array_set };
 
+std::vector<buffer_spec> specs_of(const std::vector<array_entry>& arrays) {
+  std::vector<buffer_spec> out;
+  for (const array_entry& e : arrays) out.push_back({e.bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT});
+  return out;
+}
+
 }  // namespace
 
 gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   const auto start = std::chrono::steady_clock::now();
-  const scene_tree tree = build_scene_tree(primitive_spans{s.spheres, s.quads, s.triangles},
-                                           s.groups, s.instances, use_bvh, 0, s.motion);
+  const scene_tree tree =
+      build_scene_tree(primitive_spans{s.spheres, s.quads, s.triangles, s.disks}, s.groups,
+                       s.instances, use_bvh, 0, s.motion);
   const double seconds = seconds_since(start);
   std::vector<bvh_wide_node> nodes(tree.nodes.size());
   static_assert(sizeof(bvh_wide_node) == sizeof(wide_node));
   if (!nodes.empty())
     std::memcpy(nodes.data(), tree.nodes.data(), nodes.size() * sizeof(wide_node));
-  host_arrays a{to_gpu_spheres(s, tree.spheres),
-                to_gpu_materials(s),
-                std::move(nodes),
-                to_gpu_velocities(s, tree.spheres),
-                to_gpu_quads(s, tree.quads),
-                {},
-                {},
-                seconds,
-                scene_moves(s),
-                to_gpu_instances(s, tree.groups),
-                std::uint32_t(s.spheres.size()),
-                std::uint32_t(s.quads.size()),
-                std::uint32_t(s.triangles.size())};
-  a.triangles = to_gpu_triangles(s, tree.triangles, a.normals, a.uvs);
+  host_arrays a;
+  a.spheres = to_gpu_spheres(s, tree.slots[shape_sphere]);
+  a.materials = to_gpu_materials(s);
+  a.nodes = std::move(nodes);
+  a.velocities = to_gpu_velocities(s, tree.slots[shape_sphere]);
+  a.quads = to_gpu_quads(s, tree.slots[shape_quad]);
+  a.triangles = to_gpu_triangles(s, tree.slots[shape_triangle], a.normals, a.uvs);
+  a.disks = to_gpu_disks(s, tree.slots[shape_disk]);
+  a.build_seconds = seconds;
+  a.moves = scene_moves(s);
+  a.instances = to_gpu_instances(s, tree.groups);
+  a.own = {std::uint32_t(s.spheres.size()), std::uint32_t(s.quads.size()),
+           std::uint32_t(s.triangles.size()), std::uint32_t(s.disks.size())};
   a.textures = to_gpu_textures(s, a.texels);
   a.perlin = {to_gpu_perlin(make_perlin(s.noise_seed))};
   a.media = to_gpu_media(s);
@@ -69,12 +123,9 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const scene& s, bool use_bvh)
     : gpu_scene(ctx, build(s, use_bvh)) {}
 
 gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
-    : sphere_count_(std::uint32_t(a.spheres.size())),
-      quad_count_(std::uint32_t(a.quads.size())),
-      triangle_count_(std::uint32_t(a.triangles.size())),
-      own_spheres_(a.own_spheres),
-      own_quads_(a.own_quads),
-      own_triangles_(a.own_triangles),
+    : counts_{std::uint32_t(a.spheres.size()), std::uint32_t(a.quads.size()),
+              std::uint32_t(a.triangles.size()), std::uint32_t(a.disks.size())},
+      own_(a.own),
       instance_count_(std::uint32_t(a.instances.size())),
       medium_count_(std::uint32_t(a.media.size())),
       light_count_(std::uint32_t(a.lights.size())),
@@ -84,20 +135,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
                       [](const gpu_material& m) { return m.texture != RTVK_NO_TEXTURE; })),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
-      specs_{{bytes_of(a.spheres), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.materials), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.nodes), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.velocities), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.quads), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.triangles), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.normals), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.instances), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.uvs), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.textures), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.texels), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.perlin), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.media), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT},
-             {bytes_of(a.lights), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT}},
+      specs_(specs_of(arrays_of(a))),
       staging_(
           host_writes_device_memory(ctx)
               ? std::nullopt
@@ -108,101 +146,42 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
                                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT)
                        : specs_) {
   buffer_set& to = staging_ ? *staging_ : arrays_;
-  write_array(to[0], a.spheres);
-  write_array(to[1], a.materials);
-  write_array(to[2], a.nodes);
-  write_array(to[3], a.velocities);
-  write_array(to[4], a.quads);
-  write_array(to[5], a.triangles);
-  write_array(to[6], a.normals);
-  write_array(to[7], a.instances);
-  write_array(to[8], a.uvs);
-  write_array(to[9], a.textures);
-  write_array(to[10], a.texels);
-  write_array(to[11], a.perlin);
-  write_array(to[12], a.media);
-  write_array(to[13], a.lights);
+  const std::vector<array_entry> arrays = arrays_of(a);
+  for (std::size_t i = 0; i < arrays.size(); ++i) {
+    if (arrays[i].used > 0) to[i].write(arrays[i].data, arrays[i].used);
+    const role r = arrays[i].bound_as;
+    (r == role::objects      ? objects_
+     : r == role::appearance ? appearance_
+                             : material_binding_)
+        .push_back({arrays[i].binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, arrays_[i].get()});
+  }
 }
 
 std::vector<buffer_request> gpu_scene::buffers(const gpu_context& ctx, const host_arrays& a) {
-  const VkDeviceSize spheres = bytes_of(a.spheres), materials = bytes_of(a.materials),
-                     nodes = bytes_of(a.nodes), velocities = bytes_of(a.velocities),
-                     quads = bytes_of(a.quads), triangles = bytes_of(a.triangles),
-                     normals = bytes_of(a.normals), instances = bytes_of(a.instances),
-                     uvs = bytes_of(a.uvs), textures = bytes_of(a.textures),
-                     texels = bytes_of(a.texels), perlin = bytes_of(a.perlin),
-                     media = bytes_of(a.media), lights = bytes_of(a.lights);
   using u = memory_use;
-  if (host_writes_device_memory(ctx))
-    return {{"the sphere array", spheres, true, u::device_mapped, array_set},
-            {"the material array", materials, true, u::device_mapped, array_set},
-            {"the BVH", nodes, true, u::device_mapped, array_set},
-            {"the velocity array", velocities, true, u::device_mapped, array_set},
-            {"the quad array", quads, true, u::device_mapped, array_set},
-            {"the triangle array", triangles, true, u::device_mapped, array_set},
-            {"the vertex normal array", normals, true, u::device_mapped, array_set},
-            {"the instance array", instances, true, u::device_mapped, array_set},
-            {"the texture coordinate array", uvs, true, u::device_mapped, array_set},
-            {"the texture array", textures, true, u::device_mapped, array_set},
-            {"the image textures' texels", texels, true, u::device_mapped, array_set},
-            {"the noise tables", perlin, true, u::device_mapped, array_set},
-            {"the media array", media, true, u::device_mapped, array_set},
-            {"the light array", lights, true, u::device_mapped, array_set}};
-  return {{"the spheres' upload copy", spheres, false, u::staging, staging_set},
-          {"the sphere array", spheres, true, u::device_local, array_set},
-          {"the materials' upload copy", materials, false, u::staging, staging_set},
-          {"the material array", materials, true, u::device_local, array_set},
-          {"the BVH's upload copy", nodes, false, u::staging, staging_set},
-          {"the BVH", nodes, true, u::device_local, array_set},
-          {"the velocities' upload copy", velocities, false, u::staging, staging_set},
-          {"the velocity array", velocities, true, u::device_local, array_set},
-          {"the quads' upload copy", quads, false, u::staging, staging_set},
-          {"the quad array", quads, true, u::device_local, array_set},
-          {"the triangles' upload copy", triangles, false, u::staging, staging_set},
-          {"the triangle array", triangles, true, u::device_local, array_set},
-          {"the vertex normals' upload copy", normals, false, u::staging, staging_set},
-          {"the vertex normal array", normals, true, u::device_local, array_set},
-          {"the instances' upload copy", instances, false, u::staging, staging_set},
-          {"the instance array", instances, true, u::device_local, array_set},
-          {"the texture coordinates' upload copy", uvs, false, u::staging, staging_set},
-          {"the texture coordinate array", uvs, true, u::device_local, array_set},
-          {"the textures' upload copy", textures, false, u::staging, staging_set},
-          {"the texture array", textures, true, u::device_local, array_set},
-          {"the texels' upload copy", texels, false, u::staging, staging_set},
-          {"the image textures' texels", texels, true, u::device_local, array_set},
-          {"the noise tables' upload copy", perlin, false, u::staging, staging_set},
-          {"the noise tables", perlin, true, u::device_local, array_set},
-          {"the media's upload copy", media, false, u::staging, staging_set},
-          {"the media array", media, true, u::device_local, array_set},
-          {"the lights' upload copy", lights, false, u::staging, staging_set},
-          {"the light array", lights, true, u::device_local, array_set}};
+  std::vector<buffer_request> out;
+  const bool in_place = host_writes_device_memory(ctx);
+  for (const array_entry& e : arrays_of(a)) {
+    if (!in_place) out.push_back({e.copy, e.bytes, false, u::staging, staging_set});
+    out.push_back(
+        {e.array, e.bytes, true, in_place ? u::device_mapped : u::device_local, array_set});
+  }
+  return out;
 }
 
 std::vector<buffer_binding> gpu_scene::object_bindings() const {
-  constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  return {{RTVK_BINDING_SPHERES, storage, spheres()},
-          {RTVK_BINDING_VELOCITIES, storage, velocities()},
-          {RTVK_BINDING_QUADS, storage, quads()},
-          {RTVK_BINDING_TRIANGLES, storage, triangles()},
-          {RTVK_BINDING_NORMALS, storage, normals()},
-          {RTVK_BINDING_BVH_NODES, storage, nodes()},
-          {RTVK_BINDING_INSTANCES, storage, instances()},
-          {RTVK_BINDING_TEXCOORDS, storage, uvs()}};
+  return objects_;
 }
 
 std::vector<buffer_binding> gpu_scene::appearance_bindings() const {
-  constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  return {{RTVK_BINDING_TEXTURES, storage, textures()},
-          {RTVK_BINDING_TEXELS, storage, texels()},
-          {RTVK_BINDING_PERLIN, storage, perlin()},
-          {RTVK_BINDING_MEDIA, storage, media()},
-          {RTVK_BINDING_LIGHTS, storage, lights()}};
+  return appearance_;
 }
 
 void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
   spec[RTVK_SPEC_MOTION] = moves_;
-  spec[RTVK_SPEC_QUADS] = quad_count_ > 0;
-  spec[RTVK_SPEC_TRIANGLES] = triangle_count_ > 0;
+  spec[RTVK_SPEC_QUADS] = counts_[shape_quad] > 0;
+  spec[RTVK_SPEC_TRIANGLES] = counts_[shape_triangle] > 0;
+  spec[RTVK_SPEC_DISKS] = counts_[shape_disk] > 0;
   spec[RTVK_SPEC_INSTANCES] = instance_count_ > 0;
   spec[RTVK_SPEC_UV] = with_uv_;
   spec[RTVK_SPEC_TEXTURES] = any_textures_;
@@ -211,9 +190,10 @@ void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
 
 void gpu_scene::set_counts(render_push& push) const {
   // The scene's own: a scan without the BVH tests them, then each instance's group.
-  push.sphere_count = own_spheres_;
-  push.quad_count = own_quads_;
-  push.triangle_count = own_triangles_;
+  push.sphere_count = own_[shape_sphere];
+  push.quad_count = own_[shape_quad];
+  push.triangle_count = own_[shape_triangle];
+  push.disk_count = own_[shape_disk];
   push.instance_count = instance_count_;
   push.medium_count = medium_count_;
 }

@@ -14,9 +14,9 @@
 
 namespace rtvk::gpu {
 
-// The scene on the device: its objects (spheres, quads, triangles) and materials in the shared
-// header's layout, and the four-wide BVH over the objects that the CPU walks too (none when the
-// render tests every object). With the BVH each kind's array is stored in its leaf order
+// The scene on the device: its objects (spheres, quads, triangles, disks) and materials in the
+// shared header's layout, and the four-wide BVH over the objects that the CPU walks too (none when
+// the render tests every object). With the BVH each kind's array is stored in its leaf order
 // (leaf_layout), each object with its scene index; without it, in scene order. Where the
 // host can write the device's main memory (unified memory, resizable BAR:
 // host_writes_device_memory) the arrays are written there in place, once; elsewhere they are
@@ -32,12 +32,14 @@ class gpu_scene {
     std::vector<vec4> velocities;         // the spheres', in their order; empty: none moves
     std::vector<gpu_quad> quads;          // in the BVH's leaf order, or scene order without it
     std::vector<gpu_triangle> triangles;  // likewise
+    std::vector<gpu_disk> disks;          // likewise
     std::vector<vec4> normals;            // smooth triangles' vertex normals, three each
-    double build_seconds;                 // building the BVH took
-    bool moves;                           // some sphere has a velocity
+    double build_seconds = 0;             // building the BVH took
+    bool moves = false;                   // some sphere has a velocity
     std::vector<gpu_instance> instances;  // in scene order
-    // The scene's own objects of each kind: the first of each array (the groups' follow).
-    std::uint32_t own_spheres = 0, own_quads = 0, own_triangles = 0;
+    // The scene's own objects of each kind (shape_kind): the first of each array (the groups'
+    // follow).
+    kind_counts own{};
     std::vector<glm::vec2> uvs;         // triangles' vertex uv, as `normals`
     std::vector<gpu_texture> textures;  // by material's texture index
     std::vector<std::uint32_t> texels;  // the images', one after another
@@ -58,25 +60,12 @@ class gpu_scene {
   void record_upload(VkCommandBuffer cb) const;
   bool in_place() const { return !staging_; }  // written straight into device memory
 
-  std::uint32_t sphere_count() const { return sphere_count_; }
-  std::uint32_t quad_count() const { return quad_count_; }
-  std::uint32_t triangle_count() const { return triangle_count_; }
+  std::uint32_t sphere_count() const { return counts_[shape_sphere]; }
+  std::uint32_t quad_count() const { return counts_[shape_quad]; }
+  std::uint32_t triangle_count() const { return counts_[shape_triangle]; }
   bool moves() const { return moves_; }  // some sphere has a velocity (RTVK_SPEC_MOTION)
   double build_seconds() const { return build_seconds_; }
-  VkBuffer spheres() const { return arrays_[0].get(); }
   VkBuffer materials() const { return arrays_[1].get(); }
-  VkBuffer nodes() const { return arrays_[2].get(); }
-  VkBuffer velocities() const { return arrays_[3].get(); }
-  VkBuffer quads() const { return arrays_[4].get(); }
-  VkBuffer triangles() const { return arrays_[5].get(); }
-  VkBuffer normals() const { return arrays_[6].get(); }
-  VkBuffer instances() const { return arrays_[7].get(); }
-  VkBuffer uvs() const { return arrays_[8].get(); }
-  VkBuffer textures() const { return arrays_[9].get(); }
-  VkBuffer texels() const { return arrays_[10].get(); }
-  VkBuffer perlin() const { return arrays_[11].get(); }
-  VkBuffer media() const { return arrays_[12].get(); }
-  VkBuffer lights() const { return arrays_[13].get(); }
   std::uint32_t light_count() const { return light_count_; }
   // The bindings of the objects and the BVH (shaders/scene_buffers.glsl's), for every shader
   // that traces rays through the scene.
@@ -91,21 +80,19 @@ class gpu_scene {
   void set_counts(render_push& push) const;
 
  private:
-  std::uint32_t sphere_count_;                             // spheres the scene has
-  std::uint32_t quad_count_;                               // quads
-  std::uint32_t triangle_count_;                           // triangles
-  std::uint32_t own_spheres_, own_quads_, own_triangles_;  // of them, the scene's own
-  std::uint32_t instance_count_;                           // instances
-  std::uint32_t medium_count_;                             // media
-  std::uint32_t light_count_;                              // lights
-  bool with_uv_;                                           // RTVK_SPEC_UV
-  bool any_textures_;                                      // RTVK_SPEC_TEXTURES
-  double build_seconds_;                                   // building the BVH took
-  bool moves_;                                             // some sphere has a velocity
-  std::vector<buffer_spec> specs_;     // spheres, materials, nodes, velocities, quads, triangles,
-                                       // normals: sizes for copies
+  kind_counts counts_;                 // objects of each kind (shape_kind) the arrays hold
+  kind_counts own_;                    // of them, the scene's own
+  std::uint32_t instance_count_;       // instances
+  std::uint32_t medium_count_;         // media
+  std::uint32_t light_count_;          // lights
+  bool with_uv_;                       // RTVK_SPEC_UV
+  bool any_textures_;                  // RTVK_SPEC_TEXTURES
+  double build_seconds_;               // building the BVH took
+  bool moves_;                         // some sphere has a velocity
+  std::vector<buffer_spec> specs_;     // the arrays' sizes (gpu_scene.cpp's arrays_of), for copies
   std::optional<buffer_set> staging_;  // host copies; none when written in place
   buffer_set arrays_;                  // what the shader reads
+  std::vector<buffer_binding> objects_, appearance_, material_binding_;  // arrays_ bound
 };
 
 }  // namespace rtvk::gpu

@@ -39,11 +39,12 @@ struct object_list {
   const std::vector<quad>& quads;
   const std::vector<triangle>& triangles;
   const std::vector<triangle_shading>& shading;
+  const std::vector<disk>& disks;
 };
 object_list list_of(const scene& s, object_slot o) {
-  if (o.group == world_objects) return {s.spheres, s.quads, s.triangles, s.shading};
+  if (o.group == world_objects) return {s.spheres, s.quads, s.triangles, s.shading, s.disks};
   const object_group& g = s.groups[o.group];
-  return {g.spheres, g.quads, g.triangles, g.shading};
+  return {g.spheres, g.quads, g.triangles, g.shading, g.disks};
 }
 
 }  // namespace
@@ -109,6 +110,20 @@ std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const objec
   return out;
 }
 
+std::vector<gpu_disk> to_gpu_disks(const scene& s, std::span<const object_slot> slots) {
+  std::vector<gpu_disk> out;
+  out.reserve(slots.size());
+  for (const object_slot o : slots) {
+    const object_list l = list_of(s, o);
+    const disk& d = l.disks[o.index];
+    const disk_geometry g = d.geometry();
+    const uint first = uint(l.spheres.size() + l.quads.size() + l.triangles.size());
+    out.push_back({vec3(g.center), float(g.radius), vec3(g.normal), uint(d.material), vec3(g.u),
+                   first + o.index, vec3(g.v), float(g.D)});
+  }
+  return out;
+}
+
 std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group_span> groups) {
   std::vector<gpu_instance> out;
   out.reserve(s.instances.size());
@@ -130,6 +145,8 @@ std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group
     in.quad_count = g.count[1];
     in.triangle_first = g.first[2];
     in.triangle_count = g.count[2];
+    in.disk_first = g.first[shape_disk];
+    in.disk_count = g.count[shape_disk];
     out.push_back(in);
   }
   return out;

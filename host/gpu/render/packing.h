@@ -24,6 +24,7 @@ std::vector<gpu_sphere> to_gpu_spheres(const scene& s, std::span<const object_sl
 std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const object_slot> slots);
 // Quads with their planes (formed in double).
 std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const object_slot> slots);
+std::vector<gpu_disk> to_gpu_disks(const scene& s, std::span<const object_slot> slots);
 // Triangles, and the shading of those that have some: vertex normals (three vec4 each, in
 // `normals`, with gpu_triangle::normals's flags) and texture coordinates (three each, in `uvs`).
 std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const object_slot> slots,

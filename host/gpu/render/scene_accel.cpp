@@ -17,16 +17,18 @@
 namespace rtvk::gpu {
 namespace {
 
-// A group of objects: runs of the sphere, quad and triangle arrays (the scene's own, or what an
-// instance places).
+// A group of objects: runs of the sphere, quad, triangle and disk arrays (the scene's own, or
+// what an instance places).
 struct object_group {
-  std::uint32_t sphere_first, sphere_count, quad_first, quad_count, triangle_first, triangle_count;
+  std::uint32_t sphere_first, sphere_count, quad_first, quad_count, triangle_first, triangle_count,
+      disk_first, disk_count;
   auto key() const {
     return std::tie(sphere_first, sphere_count, quad_first, quad_count, triangle_first,
-                    triangle_count);
+                    triangle_count, disk_first, disk_count);
   }
   bool operator<(const object_group& o) const { return key() < o.key(); }
-  std::uint32_t boxes() const { return sphere_count + quad_count; }
+  // The shapes the driver knows only by their boxes: spheres, then quads, then disks.
+  std::uint32_t boxes() const { return sphere_count + quad_count + disk_count; }
 };
 
 // How far past an object its box reaches: the driver tests the ray in an instance's space with
@@ -49,6 +51,12 @@ VkAabbPositionsKHR sphere_box(const gpu_sphere& s, const glm::vec3& velocity, ti
   const glm::vec3 a = s.center + float(motion.lo) * velocity;
   const glm::vec3 b = s.center + float(motion.hi) * velocity;
   return box(glm::min(a, b) - r, glm::max(a, b) + r);
+}
+
+// A disk's box: along axis k it reaches radius * sqrt(1 - n_k^2) from its center.
+VkAabbPositionsKHR disk_box(const gpu_disk& d) {
+  const glm::vec3 reach = d.radius * glm::sqrt(glm::max(1.0f - d.normal * d.normal, 0.0f));
+  return box(d.center - reach, d.center + reach);
 }
 
 VkAabbPositionsKHR quad_box(const gpu_quad& q) {
@@ -146,12 +154,14 @@ scene_accel::scene_accel(gpu_context& ctx, const gpu_scene::host_arrays& a, time
   const auto limits = acceleration_limits(ctx);
 
   // The groups, each built once however many instances place it.
-  std::vector<object_group> groups{{0, a.own_spheres, 0, a.own_quads, 0, a.own_triangles}};
+  std::vector<object_group> groups{{0, a.own[shape_sphere], 0, a.own[shape_quad], 0,
+                                    a.own[shape_triangle], 0, a.own[shape_disk]}};
   std::map<object_group, std::uint32_t> group_index{{groups[0], 0}};
   std::vector<std::uint32_t> instance_group;
   for (const gpu_instance& in : a.instances) {
-    const object_group g{in.sphere_first, in.sphere_count,   in.quad_first,
-                         in.quad_count,   in.triangle_first, in.triangle_count};
+    const object_group g{in.sphere_first,   in.sphere_count,   in.quad_first,
+                         in.quad_count,     in.triangle_first, in.triangle_count,
+                         in.disk_first,     in.disk_count};
     auto [it, fresh] = group_index.try_emplace(g, std::uint32_t(groups.size()));
     if (fresh) groups.push_back(g);
     instance_group.push_back(it->second);
@@ -167,6 +177,8 @@ scene_accel::scene_accel(gpu_context& ctx, const gpu_scene::host_arrays& a, time
           sphere_box(a.spheres[k], a.moves ? glm::vec3(a.velocities[k]) : glm::vec3(0.0f), motion));
     for (std::uint32_t k = g.quad_first; k < g.quad_first + g.quad_count; ++k)
       boxes.push_back(quad_box(a.quads[k]));
+    for (std::uint32_t k = g.disk_first; k < g.disk_first + g.disk_count; ++k)
+      boxes.push_back(disk_box(a.disks[k]));
   }
   std::vector<float> corners;
   corners.reserve(a.triangles.size() * 9);
@@ -186,7 +198,7 @@ scene_accel::scene_accel(gpu_context& ctx, const gpu_scene::host_arrays& a, time
         g.triangle_count > limits.maxPrimitiveCount)
       throw past_limit(subject,
                        std::string(i == 0 ? "the scene's own" : "an instanced group's") +
-                           (g.boxes() > g.triangle_count ? " spheres and quads" : " triangles"),
+                           (g.boxes() > g.triangle_count ? " spheres, quads and disks" : " triangles"),
                        std::max<std::uint64_t>(g.boxes(), g.triangle_count), "maxPrimitiveCount",
                        limits.maxPrimitiveCount, ctx);
     build_plan& p = plans[2 * i];
