@@ -13,74 +13,13 @@
 #include <oneapi/tbb/parallel_invoke.h>
 #include <oneapi/tbb/parallel_reduce.h>
 
+#include "bvh_build.h"
 #include "parallel.h"
-#include "uninitialized_allocator.h"
 
 namespace rtvk {
 namespace {
 
-// A box in float, rounded outward from the spheres' double boxes, so unions stay exact and
-// conservative.
-// Four floats in one SIMD register (GCC and Clang vector extension): x, y, z and an unused w.
-using float4 = float __attribute__((vector_size(16)));
-inline float4 min4(float4 a, float4 b) {
-  return a < b ? a : b;
-}
-inline float4 max4(float4 a, float4 b) {
-  return a > b ? a : b;
-}
-inline float4 splat4(float v) {
-  return float4{v, v, v, v};
-}
-
-struct fbox {
-  float4 lo = splat4(std::numeric_limits<float>::infinity());
-  float4 hi = splat4(-std::numeric_limits<float>::infinity());
-  void grow(float4 l, float4 h) {
-    lo = min4(lo, l);
-    hi = max4(hi, h);
-  }
-  void grow(const fbox& b) { grow(b.lo, b.hi); }
-  void grow(float4 p) { grow(p, p); }
-  double half_area() const {
-    const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
-    return x < 0 ? 0 : x * y + y * z + z * x;
-  }
-};
-
-// One object as the builder sees it.
-struct prim {
-  float4 lo, hi;         // the object's box, rounded outward to float (w: 0)
-  std::uint32_t object;  // its scene index (primitive_spans: spheres, quads, triangles)
-  float4 centroid() const { return (lo + hi) * 0.5f; }
-};
-
-using prim_vector = uninitialized_vector<prim>;
-
-// What the builder knows of a range of prims before splitting it.
-struct range_info {
-  fbox bounds;     // of the spheres' boxes
-  fbox centroids;  // of their centroids
-};
-
-constexpr int bins = 16;
-// Ranges larger than this build their two halves as parallel tasks, and larger than
-// `parallel_bins` bin their prims in parallel chunks.
-constexpr std::size_t parallel_subtree = 4096;
-constexpr std::size_t parallel_bins = 1 << 16;
-// Ranges of at most this many prims try every split point instead of binning.
-constexpr std::size_t small_range = 12;
-
-// The float next to x towards -infinity / +infinity (std::nextafter without the libm call).
-float next_down(float x) {
-  if (!(x > -INFINITY) || x != x) return x;
-  if (x == 0) return -std::numeric_limits<float>::denorm_min();
-  const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
-  return std::bit_cast<float>(x > 0 ? bits - 1 : bits + 1);
-}
-float next_up(float x) {
-  return -next_down(-x);
-}
+using namespace bvh_build;
 
 // Float corners that contain the box, with a margin for the float slab test: lane c (0 left,
 // 1 right) of the node's min lanes and lane c + 2 of its max lanes. The margin, 2^-18 of the
@@ -355,84 +294,6 @@ class builder {
   std::vector<gpu::bvh_node>& nodes_;
   std::vector<std::uint32_t>& order_;
 };
-
-// A box in double, for the objects' boxes before they are rounded outward to float.
-struct dbox {
-  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
-  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
-  void grow(const glm::dvec3& p) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-};
-
-// A sphere's box over the whole of `motion`.
-dbox sphere_box(const sphere& s, time_span motion) {
-  const glm::dvec3 radius(std::abs(s.radius));
-  const point3 a = s.center_at(motion.lo), b = s.center_at(motion.hi);
-  // The GPU moves a center in float (float(c) + float(t) * float(v): a few roundings of
-  // 2^-24 each, relative), so a moving sphere's box grows by sixteen times that bound.
-  glm::dvec3 slack(0);
-  if (s.center1) {
-    const double t = std::max(std::abs(motion.lo), std::abs(motion.hi));
-    slack = (glm::abs(s.center) + t * glm::abs(s.velocity())) * 0x1p-20;
-  }
-  return {glm::min(a, b) - radius - slack, glm::max(a, b) + radius + slack};
-}
-
-dbox quad_box(const quad& q) {
-  dbox b;
-  for (const point3& p : {q.Q, q.Q + q.u, q.Q + q.v, q.Q + q.u + q.v}) b.grow(p);
-  return b;
-}
-
-dbox triangle_box(const triangle& t) {
-  dbox b;
-  for (const point3& p : t.p) b.grow(p);
-  return b;
-}
-
-dbox object_box(const primitive_spans& objects, std::size_t i, time_span motion) {
-  if (i < objects.spheres.size()) return sphere_box(objects.spheres[i], motion);
-  i -= objects.spheres.size();
-  if (i < objects.quads.size()) return quad_box(objects.quads[i]);
-  i -= objects.quads.size();
-  if (i < objects.triangles.size()) return triangle_box(objects.triangles[i]);
-  i -= objects.triangles.size();
-  const auto& box = i < objects.disks.size() ? objects.disks[i].bounds()
-                                             : objects.boxes[i - objects.disks.size()];
-  dbox b;
-  b.grow(box[0]);
-  b.grow(box[1]);
-  return b;
-}
-
-// The objects as prims, their boxes rounded outward to float, and the whole range's info.
-range_info make_prims(const primitive_spans& objects, time_span motion, prim_vector& prims) {
-  prims.resize(objects.size());
-  return tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, objects.size(), 4096), range_info{},
-      [&](const tbb::blocked_range<std::size_t>& r, range_info info) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-          const dbox box = object_box(objects, i, motion);
-          prim& p = prims[i];
-          p.lo = p.hi = splat4(0);
-          for (int k = 0; k < 3; ++k) {
-            p.lo[k] = next_down(float(box.lo[k]));
-            p.hi[k] = next_up(float(box.hi[k]));
-          }
-          p.object = std::uint32_t(i);
-          info.bounds.grow(p.lo, p.hi);
-          info.centroids.grow(p.centroid());
-        }
-        return info;
-      },
-      [](range_info a, const range_info& b) {
-        a.bounds.grow(b.bounds);
-        a.centroids.grow(b.centroids);
-        return a;
-      });
-}
 
 }  // namespace
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -19,6 +20,16 @@ struct quad {
 
   // The book's precomputed plane (normal, D, w), in double.
   quad_geometry geometry() const { return make_quad(Q, u, v); }
+  // Corners lo and hi of its box: the four corners' extremes.
+  std::array<point3, 2> bounds() const {
+    const point3 c[] = {Q, Q + u, Q + v, Q + u + v};
+    point3 lo = c[0], hi = c[0];
+    for (const point3& p : c) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    return {lo, hi};
+  }
 };
 
 // Whether edges u and v span an area, in double (the CPU) and in float (the GPU): a quad without

@@ -17,6 +17,11 @@ struct triangle {
   std::array<point3, 3> p{};  // vertices, scene units; counter-clockwise seen from the front
   int material = 0;           // index into the scene's materials
   std::int32_t shading = -1;  // index into the scene's triangle_shading; -1: flat, no uv
+
+  // Corners lo and hi of its box: the vertices' extremes.
+  std::array<point3, 2> bounds() const {
+    return {glm::min(glm::min(p[0], p[1]), p[2]), glm::max(glm::max(p[0], p[1]), p[2])};
+  }
 };
 
 // Whether the triangle with vertices p has an area to hit and a normal to shade with, in double
