@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <stdexcept>
 #include <vector>
@@ -36,7 +37,8 @@ class fake_queue : public band_queue {
   band_ticket submit(const band_submission& s) override {
     const std::size_t index = submitted.size();
     submitted.push_back(s);
-    readback_ = device_ ? device_(s, index) : render_status{};  // the device copies it back
+    // The device copies its counters into the submission's readback slot.
+    readback_.at(s.slot) = device_ ? device_(s, index) : render_status{};
     in_flight_most = std::max(in_flight_most, submitted.size() - waited_through);
     return {submitted.size(), 1};
   }
@@ -47,7 +49,7 @@ class fake_queue : public band_queue {
   void wait_all() noexcept override { ++waits_for_all; }
   bool has_timer() const override { return true; }
   double device_seconds(std::uint64_t) const override { return 0.001; }
-  render_status status() override { return readback_; }
+  render_status status(std::uint32_t slot) override { return readback_.at(slot); }
   std::string device_name() const override { return "the fake device"; }
 
   std::vector<band_submission> submitted;  // in order
@@ -58,7 +60,7 @@ class fake_queue : public band_queue {
 
  private:
   fake_device device_;
-  render_status readback_{};  // the status readback
+  std::array<render_status, band_slots> readback_{};  // the status readbacks
 };
 
 // A scheduler with its own pacer (one sample a submission unless told), over a band of one view.
@@ -133,6 +135,29 @@ TEST(BandScheduler, StarvedSamplesRaiseTheLoopBudget) {
   // submission's starved pixel makes it 1024 for those queued after it was read.
   EXPECT_EQ(f.queue.submitted[1].loop_budget, pacer::first_loop_budget);
   EXPECT_EQ(f.queue.submitted[2].loop_budget, 4 * pacer::first_loop_budget);
+}
+
+// Two submissions in flight whose counters differ. The device here is as fast as any: by the
+// time the host reads the first's counters, the second has copied its own too. Each must be
+// read from its own readback: the first's starved pixel raises the budget, its overflow fails
+// the render, though the second's counters are clean.
+TEST(BandScheduler, EachSubmissionIsReadFromItsOwnStatusReadback) {
+  scheduler_fixture f([](const band_submission& s, std::size_t index) {
+    return index == 0 ? starved(s.loop_budget) : render_status{};
+  });
+  f.draw();
+  EXPECT_EQ(f.queue.submitted[0].slot, 0u);
+  EXPECT_EQ(f.queue.submitted[1].slot, 1u);
+  EXPECT_EQ(f.queue.submitted[2].loop_budget, 4 * pacer::first_loop_budget);
+}
+
+TEST(BandScheduler, AnOverflowInTheOlderSubmissionIsNotHiddenByTheNewer) {
+  scheduler_fixture f([](const band_submission&, std::size_t index) {
+    render_status st{};
+    st.overflowed_samples = index == 0 ? 1 : 0;
+    return st;
+  });
+  EXPECT_THROW(f.draw(), sample_overflow_error);
 }
 
 TEST(BandScheduler, StarvedAtTheHighestBudgetFails) {

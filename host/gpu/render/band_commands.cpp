@@ -47,8 +47,8 @@ band_ticket band_commands::submit(const band_submission& s) {
   return {ticket, dispatches};
 }
 
-render_status band_commands::status() {
-  return *static_cast<const render_status*>(d_.targets.status_readback.read());
+render_status band_commands::status(std::uint32_t slot) {
+  return *static_cast<const render_status*>(d_.targets.status_readback(slot).read());
 }
 
 // Before a band's first samples: cleared sums and status.
@@ -145,7 +145,8 @@ std::uint32_t band_commands::record(VkCommandBuffer cb, const band_submission& s
           VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, transfer_stage,
           VK_ACCESS_TRANSFER_READ_BIT);
   const VkBufferCopy status{0, 0, sizeof(render_status)};
-  vkCmdCopyBuffer(cb, d_.targets.status.get(), d_.targets.status_readback.get(), 1, &status);
+  vkCmdCopyBuffer(cb, d_.targets.status.get(), d_.targets.status_readback(s.slot).get(), 1,
+                  &status);
   barrier(cb, compute_stage_ | transfer_stage,
           VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
           VK_ACCESS_HOST_READ_BIT);

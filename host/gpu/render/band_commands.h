@@ -67,7 +67,7 @@ class band_commands : public band_queue {
   void wait_all() noexcept override { d_.ctx.wait_all(); }
   bool has_timer() const override { return d_.timer.available(); }
   double device_seconds(std::uint64_t ticket) const override { return d_.timer.seconds(ticket); }
-  render_status status() override;
+  render_status status(std::uint32_t slot) override;
   std::string device_name() const override { return d_.ctx.device().name; }
 
  private:

@@ -96,11 +96,14 @@ band_scheduler::in_flight band_scheduler::submit(const band_pass& b, bool first,
   s.loop_budget = carry_.pace.loop_budget(std::uint64_t(win_.width) * b.pixels());
   s.trace_cost = carry_.trace_cost;
   s.probe_trips = 2;
+  // In turn: the submissions in flight (band_slots at most, waited for in order) never share one.
+  s.slot = next_slot_;
+  next_slot_ = (next_slot_ + 1) % band_slots;
   if (carry_.simulated_cuts > 0) {
     --carry_.simulated_cuts;
     s.probe_trips = 3;  // limit_was_hit: a 3-trip loop is not the 2-trip one it expects
   }
-  return {queue_.submit(s), to, s.last, std::chrono::steady_clock::now()};
+  return {queue_.submit(s), s.slot, to, s.last, std::chrono::steady_clock::now()};
 }
 
 // After the submission is done: device time, overruns, and the sizes of the next ones.
@@ -112,7 +115,7 @@ void band_scheduler::finish(const in_flight& f, render_stats* stats) {
     ++stats->submissions;
     stats->gpu_seconds += device_seconds;
   }
-  status_ = queue_.status();
+  status_ = queue_.status(f.slot);
   // A sample that did not fit its budget is drawn again under a larger one; one that did not
   // fit the largest fails the render.
   if (status_.starved_pixels > 0 && !carry_.pace.starved(status_.starved_budget))

@@ -43,6 +43,7 @@ struct band_submission {
   std::uint32_t loop_budget;  // render_push::loop_budget
   std::uint32_t trace_cost;   // render_push::trace_cost
   std::uint32_t probe_trips;  // render_push::probe_trips
+  std::uint32_t slot;         // the status readback it copies its counters into (< band_slots)
 };
 
 // A submission queued: its ticket (what wait and device_seconds take) and its dispatches.
@@ -55,7 +56,7 @@ struct band_ticket {
 class band_queue {
  public:
   virtual ~band_queue() = default;
-  // Records and queues one submission; it copies the status counters into the readback.
+  // Records and queues one submission; it copies the status counters into readback `s.slot`.
   virtual band_ticket submit(const band_submission& s) = 0;
   // Waits for the submission and all before it (throws on a timeout or a lost device).
   virtual void wait(std::uint64_t ticket) = 0;
@@ -63,8 +64,10 @@ class band_queue {
   virtual bool has_timer() const = 0;    // device times are measured
   // A finished submission's device time, seconds (0 without a timer).
   virtual double device_seconds(std::uint64_t ticket) const = 0;
-  // The status counters copied back, once the submission that copied them is waited for.
-  virtual render_status status() = 0;
+  // The status counters in readback `slot`, once the submission that copied them there is
+  // waited for. Each submission in flight has its own slot: a newer one, running while the host
+  // reads, writes the other.
+  virtual render_status status(std::uint32_t slot) = 0;
   virtual std::string device_name() const = 0;  // for messages
 };
 
@@ -105,6 +108,7 @@ class band_scheduler {
   // A submission in flight: what it asked of the pixels, and when.
   struct in_flight {
     band_ticket queued;                           // its ticket and dispatches
+    std::uint32_t slot;                           // its status readback
     std::uint32_t target;                         // samples every pixel has once it is done...
     bool complete;                                // ...unless some are unfinished (final target)
     std::chrono::steady_clock::time_point since;  // when it was submitted
@@ -121,6 +125,7 @@ class band_scheduler {
   const std::function<bool()>& cancelled_;  // engine_options::cancelled
   render_status status_{};                  // as the last finished submission left it
   std::uint32_t cuts_seen_ = 0;  // render_status::cut_traversals of the band, as last read
+  std::uint32_t next_slot_ = 0;  // the status readback of the next submission
 };
 
 }  // namespace rtvk::gpu
