@@ -22,6 +22,7 @@
 #include "overlay.h"
 #include "presenter.h"
 #include "render_cpu.h"
+#include "sample_target.h"
 #include "swapchain.h"
 #include "vk_error.h"
 #include "window.h"
@@ -359,9 +360,7 @@ bool session::fit_to_window(int fb_w, int fb_h) {
 
 void session::render_batch() {
   if (next_row_ == 0)  // a new pass: every row gets the same samples
-    pass_count_ = options_.target_spp == 0
-                      ? batch_.count
-                      : std::min(batch_.count, options_.target_spp - acc_.samples);
+    pass_count_ = next_pass_samples(options_.target_spp, acc_.samples, batch_.count);
   const camera cam(pose_, rs_.aspect, rs_.width);
   const int rows = std::min(batch_.rows, acc_.height - next_row_);
   const render_window window{0,    next_row_,    acc_.width,
@@ -439,7 +438,8 @@ viewer_result session::run() {
       next_row_ = 0;
       restart_ = false;
     }
-    const bool want_more = options_.target_spp == 0 || acc_.samples < options_.target_spp;
+    // Past max_spp samples the image stays as it is, shown (sample_target.h).
+    const bool want_more = next_pass_samples(options_.target_spp, acc_.samples, 1) > 0;
     if (want_more && !paused_) render_batch();
 
     if (acc_.samples != title_samples_) {  // how far it is, shown or not (the tests read it)

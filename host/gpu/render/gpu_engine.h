@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "band_commands.h"
+#include "band_scheduler.h"
 #include "byte_encoding.h"
 #include "camera.h"
 #include "compute_pipeline.h"
@@ -18,7 +20,9 @@
 #include "image_rgb8.h"
 #include "pacer.h"
 #include "pipeline_cache.h"
+#include "readback.h"
 #include "render_gpu.h"
+#include "render_plan.h"
 #include "render_settings.h"
 #include "render_targets.h"
 #include "sample_sum.h"
@@ -26,25 +30,6 @@
 #include "scene_accel.h"
 
 namespace rtvk::gpu {
-
-// A render's exact per-pixel sums as the device left them: the mean of a channel is
-// sum_mean(sum, samples, exponent) (sample_sum.h). For encoders and for tests.
-struct sum_image {
-  int width = 0, height = 0;      // pixels of the window
-  int exponent = 0;               // F: fractional bits of the sums
-  std::vector<pixel_sum> pixels;  // row-major from the window's top
-};
-
-// A pixel's channel sums, as integers.
-inline exact_sum red_sum(const pixel_sum& p) {
-  return channel_sum(p.r.x, p.r.y, p.r_top);
-}
-inline exact_sum green_sum(const pixel_sum& p) {
-  return channel_sum(p.g.x, p.g.y, p.g_top);
-}
-inline exact_sum blue_sum(const pixel_sum& p) {
-  return channel_sum(p.b.x, p.b.y, p.b_top);
-}
 
 // A scene set up on one device once -- spheres, materials and BVH uploaded, pipelines built on
 // first use -- and then drawn as often as a run asks: every view, frame, band, region and
@@ -118,17 +103,22 @@ class gpu_engine {
   const pipeline_cache& cache() const { return cache_; }
 
  private:
-  // What a render reads back: each band's sums, or its bytes encoded on the device; or nothing,
-  // the sums and bytes kept on the device (accumulate).
-  enum class readback_kind { sums, bytes, kept };
-  // Called for each band once its readback is in host memory: the band's first view (index into
-  // the render's views), views, first row (from the window's top) and rows, and the data (for
-  // each view in turn, rows x window width pixel_sum or RGBA8).
-  using band_sink = std::function<void(std::size_t first_view, std::uint32_t views, int row,
-                                       int rows, const void* data)>;
   void draw(const std::vector<camera>& views, const render_settings& rs, const render_window& win,
             readback_kind kind, const sample_progress& progress, render_stats* stats,
             const band_sink& sink);
+
+  // What draw_bands draws with: the render's commands and scheduler, its targets, and whether
+  // it counts rays and keeps its sums on the device.
+  struct band_tools {
+    band_commands& commands;
+    band_scheduler& bands;
+    render_targets& targets;
+    bool count_rays, kept;
+  };
+  // The render's bands, each as large as the layout and the pacer allow, handed to the sink.
+  void draw_bands(const std::vector<camera>& views, const render_window& win,
+                  const work_layout& layout, const band_tools& tools,
+                  const sample_progress& progress, render_stats* stats, const band_sink& sink);
 
   void upload();
   // The targets, reallocated (after checking the device's limits) when too small.

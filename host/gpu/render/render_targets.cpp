@@ -11,6 +11,14 @@ constexpr VkBufferUsageFlags storage_copy = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
 constexpr VkDeviceSize camera_bytes = RTVK_MAX_VIEWS * sizeof(camera_ubo);
 constexpr VkDeviceSize threshold_bytes = 256 * sizeof(uvec2);
 
+// The readback, then a status readback per submission in flight.
+std::vector<buffer_spec> host_specs(VkDeviceSize pixels) {
+  std::vector<buffer_spec> specs{{pixels * sizeof(pixel_sum), VK_BUFFER_USAGE_TRANSFER_DST_BIT}};
+  for (std::uint64_t k = 0; k < gpu_context::submission_slots; ++k)
+    specs.push_back({sizeof(render_status), VK_BUFFER_USAGE_TRANSFER_DST_BIT});
+  return specs;
+}
+
 // Allocation numbers for check_device_fits (the scene's sets use others).
 enum : int { device_set = 100, host_set };
 
@@ -26,16 +34,13 @@ render_targets::render_targets(const gpu_context& ctx, VkDeviceSize pixels)
                                        {threshold_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT},
                                        {sizeof(render_status), storage_copy}}),
-      host_(ctx, memory_use::readback,
-            std::vector<buffer_spec>{{pixels * sizeof(pixel_sum), VK_BUFFER_USAGE_TRANSFER_DST_BIT},
-                                     {sizeof(render_status), VK_BUFFER_USAGE_TRANSFER_DST_BIT}}),
+      host_(ctx, memory_use::readback, host_specs(pixels)),
       cameras(device_[2]),
       sums(device_[0]),
       bytes(device_[1]),
       thresholds(device_[3]),
       status(device_[4]),
-      readback(host_[0]),
-      status_readback(host_[1]) {}
+      readback(host_[0]) {}
 
 std::vector<buffer_request> render_targets::buffers(
     const std::vector<buffer_request>& scene_buffers, VkDeviceSize pixels) {
@@ -50,7 +55,8 @@ std::vector<buffer_request> render_targets::buffers(
        {"the byte thresholds", threshold_bytes, true, u::device_local, device_set},
        {"the status block", sizeof(render_status), true, u::device_local, device_set},
        {"the image band's readback", pixels * sizeof(pixel_sum), false, u::readback, host_set},
-       {"the status block's readback", sizeof(render_status), false, u::readback, host_set}});
+       {"the status block's readbacks", gpu_context::submission_slots * sizeof(render_status),
+        false, u::readback, host_set}});
   return out;
 }
 

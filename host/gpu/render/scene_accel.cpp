@@ -134,6 +134,13 @@ struct build_plan {
   }
 };
 
+// The bottom levels' geometries: rt_object.rahit charges one trip of the loop budget per call,
+// so a driver that calls it twice for one candidate (the specification allows it unless this is
+// set) would make the starved and unfinished counts, and so the passes, depend on the driver.
+// The nearest hit is the same either way (test_object keeps the nearest by its tie rule).
+constexpr VkGeometryFlagsKHR once_per_candidate =
+    VK_GEOMETRY_NO_DUPLICATE_ANY_HIT_INVOCATION_BIT_KHR;
+
 constexpr VkBuildAccelerationStructureFlagsKHR bottom_flags =
     VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
     VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR;
@@ -205,6 +212,7 @@ scene_accel::scene_accel(gpu_context& ctx, const gpu_scene::host_arrays& a, time
     if (g.boxes()) {
       VkAccelerationStructureGeometryKHR geo{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
       geo.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
+      geo.flags = once_per_candidate;
       geo.geometry.aabbs = {VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR};
       geo.geometry.aabbs.data.deviceAddress =
           box_address + first_box[i] * sizeof(VkAabbPositionsKHR);
@@ -216,6 +224,7 @@ scene_accel::scene_accel(gpu_context& ctx, const gpu_scene::host_arrays& a, time
     if (g.triangle_count) {
       VkAccelerationStructureGeometryKHR geo{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
       geo.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+      geo.flags = once_per_candidate;
       auto& tri = geo.geometry.triangles;
       tri = {VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR};
       tri.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
