@@ -13,14 +13,17 @@ set(may_use_accel "accel;scene;camera;base;shared")
 set(may_use_cpu "cpu;accel;scene;camera;base;shared")
 set(may_use_image "image;scene;camera;base;shared")
 set(may_use_gpu/vulkan "gpu/vulkan;base;shared")
-set(may_use_gpu/render "gpu/render;gpu/vulkan;accel;scene;camera;base;shared")
-set(may_use_view "view;cpu;gpu/render;gpu/vulkan;accel;scene;camera;base;shared")
-set(may_use_app/jobs
-    "app/jobs;cpu;image;gpu/render;gpu/vulkan;accel;formats;scene;camera;base;shared")
+set(may_use_gpu/pipeline "gpu/pipeline;gpu/vulkan;base;shared")
+set(may_use_gpu/scene "gpu/scene;gpu/pipeline;gpu/vulkan;accel;scene;camera;base;shared")
+set(gpu_layers "gpu/render;gpu/scene;gpu/pipeline;gpu/vulkan")
+set(may_use_gpu/render "${gpu_layers};accel;scene;camera;base;shared")
+set(may_use_view "view;cpu;${gpu_layers};accel;scene;camera;base;shared")
+set(may_use_app/jobs "app/jobs;cpu;image;${gpu_layers};accel;formats;scene;camera;base;shared")
 set(may_use_app/commands
-    "app/commands;app/jobs;view;cpu;image;gpu/render;gpu/vulkan;accel;formats;scene;camera;base;shared")
+    "app/commands;app/jobs;view;cpu;image;${gpu_layers};accel;formats;scene;camera;base;shared")
 set(may_use_app "app;app/commands;app/jobs;image;base;shared")
-set(layers base camera scene formats accel cpu image gpu/vulkan gpu/render view app/jobs app/commands app)
+set(layers base camera scene formats accel cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
+           app/jobs app/commands app)
 
 # A new folder of sources must be given its place in the map above.
 file(GLOB_RECURSE all_sources RELATIVE ${ROOT}/host ${ROOT}/host/*.h ${ROOT}/host/*.cpp)
@@ -87,6 +90,41 @@ foreach(layer IN LISTS layers)
   endforeach()
 endforeach()
 
+# Sizes: a folder of more than 25 sources wants splitting by job, and a source of more than 400
+# lines (outside tests/) by what it holds; shaders count too. Lines, not statements: what a reader
+# scrolls through.
+set(max_folder_sources 25)
+set(max_source_lines 400)
+set(folders ${layers})
+list(TRANSFORM folders PREPEND host/)
+list(APPEND folders shaders shaders/shared)
+set(largest_folder 0)
+set(largest_source 0)
+foreach(folder IN LISTS folders)
+  file(GLOB sources ${ROOT}/${folder}/*.h ${ROOT}/${folder}/*.cpp ${ROOT}/${folder}/*.glsl
+       ${ROOT}/${folder}/*.comp ${ROOT}/${folder}/*.rgen ${ROOT}/${folder}/*.rmiss
+       ${ROOT}/${folder}/*.rahit ${ROOT}/${folder}/*.rint)
+  list(LENGTH sources n)
+  if(n GREATER largest_folder)
+    set(largest_folder ${n})
+  endif()
+  if(n GREATER max_folder_sources)
+    list(APPEND problems "${folder}: ${n} sources, more than ${max_folder_sources}")
+  endif()
+  foreach(src IN LISTS sources)
+    file(READ ${src} content)
+    string(REGEX MATCHALL "\n" newlines "${content}")
+    list(LENGTH newlines lines)
+    if(lines GREATER largest_source)
+      set(largest_source ${lines})
+    endif()
+    if(lines GREATER max_source_lines)
+      file(RELATIVE_PATH where ${ROOT} ${src})
+      list(APPEND problems "${where}: ${lines} lines, more than ${max_source_lines}")
+    endif()
+  endforeach()
+endforeach()
+
 if(checked LESS 50)
   list(APPEND problems "only ${checked} sources found under ${ROOT}/host: wrong ROOT?")
 endif()
@@ -94,4 +132,6 @@ if(problems)
   list(JOIN problems "\n  " text)
   message(FATAL_ERROR "layering broken:\n  ${text}")
 endif()
-message(STATUS "${checked} sources include only headers of the layers they may use")
+message(STATUS "${checked} sources include only headers of the layers they may use; "
+               "the largest folder has ${largest_folder} sources, the longest source "
+               "${largest_source} lines")
