@@ -25,21 +25,35 @@ bool keep_image_undecoded(tinygltf::Image* image, const int, std::string*, std::
   return true;
 }
 
-// The files a glTF names (its external buffers) are read through rtvk's own reader: regular
-// files only, at most max_mesh_file_bytes, paths taken as written (tinygltf's default expands
-// them as a shell would). `allowed` (the user data) is false when the bytes came without a
-// folder to look in: then no file is read at all.
-bool file_exists(const std::string& path, void* allowed) {
+// The files a glTF names (its external buffers and images) are read through rtvk's own reader:
+// regular files only, at most max_mesh_file_bytes, paths taken as written (tinygltf's default
+// expands them as a shell would), and only where the guard allows. No guard (the user data)
+// means the bytes came without a folder to look in: then no file is read at all.
+struct gltf_files {
+  const path_guard* guard = nullptr;  // where its files may lie; null: nowhere
+  std::string refused;                // the first file refused by the guard, as tinygltf named it
+};
+bool file_exists(const std::string& path, void* user) {
+  const auto* files = static_cast<const gltf_files*>(user);
+  if (!files || !files->guard) return false;
+  // A file outside the folder "exists", so that reading it is refused with its reason (and
+  // whether such a file exists is not told).
   std::error_code ec;
-  return allowed && std::filesystem::is_regular_file(path, ec);
+  return !files->guard->allows(path) || std::filesystem::is_regular_file(path, ec);
 }
 std::string path_as_written(const std::string& path, void*) {
   return path;
 }
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                     void* allowed) {
-  if (!allowed) {
+                     void* user) {
+  auto* files = static_cast<gltf_files*>(user);
+  if (!files || !files->guard) {
     if (err) *err += "external file " + path + " not read ";
+    return false;
+  }
+  if (!files->guard->allows(path)) {
+    if (files->refused.empty()) files->refused = path;
+    if (err) *err += files->guard->outside(path) + " ";
     return false;
   }
   try {
@@ -412,15 +426,16 @@ class gltf_walker {
 
 namespace {
 
-// Parses a glTF (its images kept encoded, its external files read by rtvk's reader).
+// Parses a glTF (its images kept encoded, its external files read by rtvk's reader where `guard`
+// allows). A file outside that folder is refused by name, even where tinygltf would only warn
+// (an image it could not read).
 tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::string& name,
-                           const std::filesystem::path& base) {
+                           const std::filesystem::path& base, const path_guard& guard) {
   if (bytes.size() > 0xffffffffu) throw usage_error(name + ": larger than 4 GiB");
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_undecoded, nullptr);
-  static int allowed_marker = 0;
-  loader.SetFsCallbacks({file_exists, path_as_written, read_whole_file, write_nothing,
-                         base.empty() ? nullptr : &allowed_marker});
+  gltf_files files{base.empty() ? nullptr : &guard, {}};
+  loader.SetFsCallbacks({file_exists, path_as_written, read_whole_file, write_nothing, &files});
   tinygltf::Model model;
   std::string err, warn;
   const bool ok =
@@ -429,6 +444,7 @@ tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::str
                                            unsigned(bytes.size()), base.string())
              : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
                                           base.string());
+  if (!files.refused.empty()) throw usage_error(name + ": " + guard.outside(files.refused));
   if (!ok) {
     std::replace(err.begin(), err.end(), '\n', ' ');
     while (!err.empty() && err.back() == ' ') err.pop_back();
@@ -440,14 +456,15 @@ tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::str
 }  // namespace
 
 void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
-               const std::filesystem::path& base, const mesh_placement& how) {
-  const tinygltf::Model model = parse_gltf(bytes, binary, name, base);
+               const std::filesystem::path& base, const mesh_placement& how,
+               const path_guard& guard) {
+  const tinygltf::Model model = parse_gltf(bytes, binary, name, base, guard);
   mesh_builder b(s, name, how.placement);
   gltf_walker(model, b, how).walk_scene();
 }
 
 std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file, std::size_t index,
-                                              const std::string& name) {
+                                              const std::string& name, const path_guard& guard) {
   const std::string kind = mesh_kind(file);
   if (kind != "gltf" && kind != "glb")
     throw usage_error(name + ": " + file.string() + " is not .gltf or .glb");
@@ -455,7 +472,7 @@ std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file,
       read_regular_file(file, max_mesh_file_bytes, "glTF file (" + name + ")");
   const std::filesystem::path base = file.parent_path();
   const tinygltf::Model model =
-      parse_gltf(bytes, kind == "glb", file.string(), base.empty() ? "." : base);
+      parse_gltf(bytes, kind == "glb", file.string(), base.empty() ? "." : base, guard);
   if (index >= model.images.size() || model.images[index].image.empty())
     throw usage_error(name + ": " + file.string() + " has no image " + std::to_string(index));
   const std::vector<unsigned char>& img = model.images[index].image;

@@ -46,12 +46,14 @@ material from_mtl(const tinyobj::material_t& m) {
 // dumped scene finds it from anywhere. Returns the scene's texture index.
 int diffuse_texture(mesh_builder& b, const tinyobj::material_t& m,
                     const std::filesystem::path& base, const std::string& name,
-                    std::map<std::string, int>& textures) {
+                    const path_guard& guard, std::map<std::string, int>& textures) {
   const auto known = textures.find(m.diffuse_texname);
   if (known != textures.end()) return known->second;
   if (base.empty())
     throw usage_error(name + ": material " + m.name + ": map_Kd " + m.diffuse_texname +
                       ": no folder to read it from");
+  guard.check(base / m.diffuse_texname, name + ": material " + m.name + ": map_Kd",
+              m.diffuse_texname);
   std::error_code ec;
   const std::filesystem::path file = std::filesystem::absolute(base / m.diffuse_texname, ec);
   texture t;
@@ -67,7 +69,7 @@ int diffuse_texture(mesh_builder& b, const tinyobj::material_t& m,
 
 // The MTL file an OBJ names on its first mtllib line, read from `base` ("" when none).
 std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
-                     const std::string& name) {
+                     const std::string& name, const path_guard& guard) {
   std::istringstream lines(obj);
   std::string line;
   while (std::getline(lines, line)) {
@@ -77,6 +79,7 @@ std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
     file.erase(file.find_last_not_of(" \t\r") + 1);
     if (file.empty() || base.empty()) return "";
     const std::filesystem::path path = base / file;
+    guard.check(path, name + ": mtllib", file);
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
       throw usage_error(name + ": mtllib " + file + ": no such file beside the OBJ");
@@ -88,12 +91,13 @@ std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
 }  // namespace
 
 void load_obj(scene& s, const std::string& text, const std::string& name,
-              const std::filesystem::path& base, const mesh_placement& how) {
+              const std::filesystem::path& base, const mesh_placement& how,
+              const path_guard& guard) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(text, mtl_text(text, base, name), config) || !reader.Valid()) {
+  if (!reader.ParseFromString(text, mtl_text(text, base, name, guard), config) || !reader.Valid()) {
     std::string why = reader.Error();
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
     std::replace(why.begin(), why.end(), '\n', ' ');
@@ -107,7 +111,7 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
     for (const tinyobj::material_t& m : reader.GetMaterials()) {
       material out = from_mtl(m);
       if (!m.diffuse_texname.empty() && out.type != material_type::dielectric)
-        out.texture = diffuse_texture(b, m, base, name, textures);
+        out.texture = diffuse_texture(b, m, base, name, guard, textures);
       materials.push_back(b.add_material(name + ":" + m.name, out));
     }
   }
