@@ -88,6 +88,42 @@ std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
   return "";
 }
 
+// One corner of a face: its position, and its normal and texture coordinates where the file
+// gives them (`smooth` or `has_uv` cleared where it does not); every index checked.
+void read_corner(const mesh_builder& b, const tinyobj::attrib_t& a, const tinyobj::index_t& i,
+                 const std::string& where, point3& p, vec3& n, glm::dvec2& uv, bool& smooth,
+                 bool& has_uv) {
+  const std::size_t positions = a.vertices.size() / 3, normals = a.normals.size() / 3,
+                    uvs = a.texcoords.size() / 2;
+  if (i.vertex_index < 0 || std::size_t(i.vertex_index) >= positions)
+    b.fail(where, "vertex index " + std::to_string(i.vertex_index + 1) + " is not one of the " +
+                      std::to_string(positions) + " positions");
+  const std::size_t v = std::size_t(i.vertex_index);
+  p = b.position(vec3(a.vertices[3 * v], a.vertices[3 * v + 1], a.vertices[3 * v + 2]), transform{},
+                 where);
+  if (i.normal_index >= 0 && std::size_t(i.normal_index) < normals) {
+    const std::size_t m = std::size_t(i.normal_index);
+    n = vec3(a.normals[3 * m], a.normals[3 * m + 1], a.normals[3 * m + 2]);
+  } else if (i.normal_index >= 0) {
+    b.fail(where, "normal index " + std::to_string(i.normal_index + 1) + " is not one of the " +
+                      std::to_string(normals) + " normals");
+  } else {
+    smooth = false;
+  }
+  if (i.texcoord_index >= 0 && std::size_t(i.texcoord_index) < uvs) {
+    const std::size_t t = std::size_t(i.texcoord_index);
+    uv = glm::dvec2(a.texcoords[2 * t], a.texcoords[2 * t + 1]);
+    if (!(std::abs(uv.x) <= 1e6 && std::abs(uv.y) <= 1e6))
+      b.fail(where,
+             "texture coordinate " + std::to_string(t + 1) + " is not finite or beyond +-1e6");
+  } else if (i.texcoord_index >= 0) {
+    b.fail(where, "texture coordinate index " + std::to_string(i.texcoord_index + 1) +
+                      " is not one of the " + std::to_string(uvs) + " coordinates");
+  } else {
+    has_uv = false;
+  }
+}
+
 }  // namespace
 
 void load_obj(scene& s, const std::string& text, const std::string& name,
@@ -117,8 +153,6 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
   }
   int fallback = how.material;  // faces without a material: a gray diffuse one, made when needed
   const transform node;
-  const std::size_t positions = a.vertices.size() / 3, normals = a.normals.size() / 3,
-                    uvs = a.texcoords.size() / 2;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     const tinyobj::mesh_t& mesh = shape.mesh;
     std::size_t at = 0;
@@ -131,36 +165,8 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
       std::array<vec3, 3> n;
       std::array<glm::dvec2, 3> uv{};
       bool smooth = true, has_uv = true;
-      for (std::size_t k = 0; k < 3; ++k) {
-        const tinyobj::index_t i = mesh.indices[at + k];
-        if (i.vertex_index < 0 || std::size_t(i.vertex_index) >= positions)
-          b.fail(where, "vertex index " + std::to_string(i.vertex_index + 1) +
-                            " is not one of the " + std::to_string(positions) + " positions");
-        const std::size_t v = std::size_t(i.vertex_index);
-        p[k] = b.position(vec3(a.vertices[3 * v], a.vertices[3 * v + 1], a.vertices[3 * v + 2]),
-                          node, where);
-        if (i.normal_index >= 0 && std::size_t(i.normal_index) < normals) {
-          const std::size_t m = std::size_t(i.normal_index);
-          n[k] = vec3(a.normals[3 * m], a.normals[3 * m + 1], a.normals[3 * m + 2]);
-        } else if (i.normal_index >= 0) {
-          b.fail(where, "normal index " + std::to_string(i.normal_index + 1) +
-                            " is not one of the " + std::to_string(normals) + " normals");
-        } else {
-          smooth = false;
-        }
-        if (i.texcoord_index >= 0 && std::size_t(i.texcoord_index) < uvs) {
-          const std::size_t t = std::size_t(i.texcoord_index);
-          uv[k] = glm::dvec2(a.texcoords[2 * t], a.texcoords[2 * t + 1]);
-          if (!(std::abs(uv[k].x) <= 1e6 && std::abs(uv[k].y) <= 1e6))
-            b.fail(where, "texture coordinate " + std::to_string(t + 1) +
-                              " is not finite or beyond +-1e6");
-        } else if (i.texcoord_index >= 0) {
-          b.fail(where, "texture coordinate index " + std::to_string(i.texcoord_index + 1) +
-                            " is not one of the " + std::to_string(uvs) + " coordinates");
-        } else {
-          has_uv = false;
-        }
-      }
+      for (std::size_t k = 0; k < 3; ++k)
+        read_corner(b, a, mesh.indices[at + k], where, p[k], n[k], uv[k], smooth, has_uv);
       at += 3;
       int material = how.material;
       if (material < 0) {
