@@ -10,7 +10,7 @@ namespace rtvk {
 // render farm that accepts users' scene files must not let one read the machine's other files
 // into an image (docs/farm.md), so by default they must lie in the scene file's own folder.
 struct file_access {
-  bool any_path = true;        // --allow-any-path: wherever they are
+  bool any_path = false;       // --allow-any-path: wherever they are
   std::filesystem::path root;  // --scene-root DIR: anywhere in DIR; empty: the scene's folder
 };
 

@@ -21,7 +21,7 @@ namespace {
 
 // The folder a mesh's own files are confined to by default: the one it is read from.
 path_guard own_folder(const std::filesystem::path& base) {
-  return base.empty() ? path_guard::any() : path_guard::any();  // COMMIT-A
+  return base.empty() ? path_guard::any() : path_guard::within(base);
 }
 
 }  // namespace
