@@ -95,7 +95,7 @@ void write_sky(const scene& s, json& root) {
 // Each part of a scene file: the top-level fields it owns, its reader and its writer. Parts are
 // read and written in this order: cameras first, materials before the objects that name them.
 struct section {
-  std::vector<const char*> fields;
+  std::vector<const char*> fields;  // the top-level keys it reads
   void (*read)(const scene_reader& r, const json& root, scene& s);
   void (*write)(const scene& s, json& root);
 };
