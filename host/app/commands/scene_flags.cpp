@@ -29,6 +29,7 @@ void scene_path_flags::add_to(CLI::App& cmd) {
   cmd.add_option("--scene-root", root_,
                  "The folder a scene file's textures and meshes must lie in, instead of the scene "
                  "file's own folder")
+      ->type_name("DIR")
       ->excludes(any)
       ->group(group);
 }
@@ -92,6 +93,11 @@ void scene_flags::add_to(CLI::App& cmd) {
                                  "stratified pixels) or auto (default: lights where the scene has "
                                  "lights)")
                       ->group(group);
+  add_lens_to(cmd);
+  paths_.add_to(cmd);
+}
+
+void scene_flags::add_lens_to(CLI::App& cmd) {
   const std::string lens = "Calibrated cameras (docs/camera.md)";
   calibration_opt_ = cmd.add_option("--calibration", calibration_,
                                     "OpenCV calibration file (cv::FileStorage YAML or JSON: "
@@ -116,7 +122,6 @@ void scene_flags::add_to(CLI::App& cmd) {
                      "Rolling shutter [top-down:|bottom-up:]SECONDS: each row opens later by its "
                      "share of the readout time, and stays open for --shutter")
           ->group(lens);
-  paths_.add_to(cmd);
 }
 
 scene_overrides scene_flags::overrides() const {

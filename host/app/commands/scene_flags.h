@@ -34,6 +34,8 @@ class scene_flags {
   file_access access() const { return paths_.access(); }
 
  private:
+  void add_lens_to(CLI::App& cmd);  // the calibrated cameras' flags
+
   // Each flag's value as CLI11 parsed it (units as in scene_overrides), then its option, which
   // tells whether it was given.
   int width_ = 0;
