@@ -11,9 +11,20 @@ namespace rtvk {
 
 // mesh_obj.cpp and mesh_gltf.cpp.
 void load_obj(scene& s, const std::string& text, const std::string& name,
-              const std::filesystem::path& base, const mesh_placement& how);
+              const std::filesystem::path& base, const mesh_placement& how,
+              const path_guard& guard);
 void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
-               const std::filesystem::path& base, const mesh_placement& how);
+               const std::filesystem::path& base, const mesh_placement& how,
+               const path_guard& guard);
+
+namespace {
+
+// The folder a mesh's own files are confined to by default: the one it is read from.
+path_guard own_folder(const std::filesystem::path& base) {
+  return base.empty() ? path_guard::any() : path_guard::within(base);
+}
+
+}  // namespace
 
 std::string mesh_kind(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
@@ -28,31 +39,43 @@ std::string mesh_kind(const std::filesystem::path& file) {
 void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind,
                      const std::string& name, const std::filesystem::path& base,
                      const mesh_placement& how) {
+  load_mesh_bytes(s, bytes, kind, name, base, how, own_folder(base));
+}
+
+void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind,
+                     const std::string& name, const std::filesystem::path& base,
+                     const mesh_placement& how, const path_guard& guard) {
   if (kind == "obj")
-    load_obj(s, bytes, name, base, how);
+    load_obj(s, bytes, name, base, how, guard);
   else if (kind == "gltf" || kind == "glb")
-    load_gltf(s, bytes, kind == "glb", name, base, how);
+    load_gltf(s, bytes, kind == "glb", name, base, how, guard);
   else
     throw usage_error(name + ": not a mesh file (expected .obj, .gltf or .glb)");
 }
 
 void load_mesh(scene& s, const std::filesystem::path& file, const mesh_placement& how) {
+  load_mesh(s, file, how, own_folder(file.parent_path().empty() ? "." : file.parent_path()));
+}
+
+void load_mesh(scene& s, const std::filesystem::path& file, const mesh_placement& how,
+               const path_guard& guard) {
   const std::string kind = mesh_kind(file);
   if (kind.empty())
     throw usage_error(file.string() + ": not a mesh file (expected .obj, .gltf or .glb)");
   const std::string bytes = read_regular_file(file, max_mesh_file_bytes, "mesh file");
   const std::size_t before = s.triangles.size();
   load_mesh_bytes(s, bytes, kind, file.string(),
-                  file.parent_path().empty() ? "." : file.parent_path(), how);
+                  file.parent_path().empty() ? "." : file.parent_path(), how, guard);
   if (s.triangles.size() == before)
     throw usage_error(file.string() + ": the file has no triangles");
   s.compounds.push_back({true, std::uint32_t(before), std::uint32_t(s.triangles.size() - before)});
 }
 
-scene mesh_scene(const std::filesystem::path& file) {
+scene mesh_scene(const std::filesystem::path& file, const file_access& access) {
   scene s;
   s.name = file.string();
-  load_mesh(s, file, {});
+  const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
+  load_mesh(s, file, {}, path_guard::of(access, folder));
   // A camera that frames the bounds: looking at their center from the front, a little above and
   // to the right, far enough that the bounding sphere fills the view.
   point3 lo(INFINITY), hi(-INFINITY);

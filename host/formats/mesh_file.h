@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "confined_path.h"
 #include "scene.h"
 #include "textures.h"
 
@@ -23,25 +24,33 @@ struct mesh_placement {
 // (.gltf or .glb, chosen by the extension) to `s`: their vertex normals and texture coordinates
 // into s.shading, the file's materials into s.materials when `how.material` is -1. Throws
 // usage_error naming the file and where in it: a missing or unreadable file, indices out of
-// range, non-finite positions, a buffer that points outside its data, too many triangles.
+// range, non-finite positions, a buffer that points outside its data, too many triangles, a file
+// it names (MTL, image, buffer) outside the folder `guard` allows (without one: the mesh's own).
 void load_mesh(scene& s, const std::filesystem::path& file, const mesh_placement& how);
+void load_mesh(scene& s, const std::filesystem::path& file, const mesh_placement& how,
+               const path_guard& guard);
 
 // The same from bytes already read, `kind` "obj", "gltf" or "glb"; `name` names them in messages
-// and `base` is where a glTF's external buffers and an OBJ's MTL are looked for (empty: nowhere).
-// What the fuzzers call.
+// and `base` is where a glTF's external buffers and an OBJ's MTL are looked for (empty: nowhere),
+// confined to `base` unless `guard` says otherwise. What the fuzzers call.
 void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind,
                      const std::string& name, const std::filesystem::path& base,
                      const mesh_placement& how);
+void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind,
+                     const std::string& name, const std::filesystem::path& base,
+                     const mesh_placement& how, const path_guard& guard);
 
 // The kind of mesh file a path names by its extension ("obj", "gltf", "glb"), or "" for none.
 std::string mesh_kind(const std::filesystem::path& file);
 
 // Image `index` of a glTF file, decoded as an image texture (what a dumped scene names as
-// "FILE#images/N"); throws usage_error naming `name`, the file and the image.
+// "FILE#images/N"); throws usage_error naming `name`, the file and the image. The files the glTF
+// names must lie where `guard` allows (the caller checks `file` itself).
 std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file, std::size_t index,
-                                              const std::string& name);
+                                              const std::string& name, const path_guard& guard);
 
-// A scene of one mesh file, with its own materials, and a camera that frames its bounds.
-scene mesh_scene(const std::filesystem::path& file);
+// A scene of one mesh file, with its own materials, and a camera that frames its bounds; the
+// files it names confined as `access` says (by default to the mesh file's folder).
+scene mesh_scene(const std::filesystem::path& file, const file_access& access = {});
 
 }  // namespace rtvk

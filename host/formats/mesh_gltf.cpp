@@ -10,6 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gltf_accessor.h"
 #include "input_file.h"
 #include "mesh_builder.h"
 #include "mesh_file.h"
@@ -25,21 +26,35 @@ bool keep_image_undecoded(tinygltf::Image* image, const int, std::string*, std::
   return true;
 }
 
-// The files a glTF names (its external buffers) are read through rtvk's own reader: regular
-// files only, at most max_mesh_file_bytes, paths taken as written (tinygltf's default expands
-// them as a shell would). `allowed` (the user data) is false when the bytes came without a
-// folder to look in: then no file is read at all.
-bool file_exists(const std::string& path, void* allowed) {
+// The files a glTF names (its external buffers and images) are read through rtvk's own reader:
+// regular files only, at most max_mesh_file_bytes, paths taken as written (tinygltf's default
+// expands them as a shell would), and only where the guard allows. No guard (the user data)
+// means the bytes came without a folder to look in: then no file is read at all.
+struct gltf_files {
+  const path_guard* guard = nullptr;  // where its files may lie; null: nowhere
+  std::string refused;                // the first file refused by the guard, as tinygltf named it
+};
+bool file_exists(const std::string& path, void* user) {
+  const auto* files = static_cast<const gltf_files*>(user);
+  if (!files || !files->guard) return false;
+  // A file outside the folder "exists", so that reading it is refused with its reason (and
+  // whether such a file exists is not told).
   std::error_code ec;
-  return allowed && std::filesystem::is_regular_file(path, ec);
+  return !files->guard->allows(path) || std::filesystem::is_regular_file(path, ec);
 }
 std::string path_as_written(const std::string& path, void*) {
   return path;
 }
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                     void* allowed) {
-  if (!allowed) {
+                     void* user) {
+  auto* files = static_cast<gltf_files*>(user);
+  if (!files || !files->guard) {
     if (err) *err += "external file " + path + " not read ";
+    return false;
+  }
+  if (!files->guard->allows(path)) {
+    if (files->refused.empty()) files->refused = path;
+    if (err) *err += files->guard->outside(path) + " ";
     return false;
   }
   try {
@@ -137,106 +152,6 @@ transform node_transform(const tinygltf::Node& n) {
     t.offset = vec3(n.translation[0], n.translation[1], n.translation[2]);
   return t;
 }
-
-// Reads an accessor's elements as doubles, after checking that every byte it names lies in its
-// buffer.
-class accessor_reader {
- public:
-  accessor_reader(const tinygltf::Model& m, int index, const mesh_builder& b, std::string where)
-      : b_(b), where_(std::move(where)) {
-    if (index < 0 || std::size_t(index) >= m.accessors.size())
-      b_.fail(where_, "accessor " + std::to_string(index) + " does not exist");
-    a_ = &m.accessors[std::size_t(index)];
-    where_ += " (accessor " + std::to_string(index) + ")";
-    if (a_->sparse.isSparse) b_.fail(where_, "sparse accessors are not supported");
-    if (a_->bufferView < 0 || std::size_t(a_->bufferView) >= m.bufferViews.size())
-      b_.fail(where_, "has no buffer view");
-    const tinygltf::BufferView& view = m.bufferViews[std::size_t(a_->bufferView)];
-    if (view.buffer < 0 || std::size_t(view.buffer) >= m.buffers.size())
-      b_.fail(where_, "its buffer view names no buffer");
-    const std::vector<unsigned char>& data = m.buffers[std::size_t(view.buffer)].data;
-    components_ = tinygltf::GetNumComponentsInType(std::uint32_t(a_->type));
-    component_bytes_ = tinygltf::GetComponentSizeInBytes(std::uint32_t(a_->componentType));
-    if (components_ <= 0 || component_bytes_ <= 0) b_.fail(where_, "has an unknown type");
-    const std::size_t element = std::size_t(components_) * std::size_t(component_bytes_);
-    stride_ = view.byteStride ? view.byteStride : element;
-    if (stride_ < element || stride_ > 252)  // glTF's own bounds on a stride
-      b_.fail(where_, "its stride " + std::to_string(stride_) + " is not in [" +
-                          std::to_string(element) + ", 252]");
-    // The view within the buffer, then every byte of the accessor within the view. Each term is
-    // bounded before the sum (offsets by the buffer's size, the stride by 252, the count by
-    // 2^40), so nothing wraps.
-    const auto outside = [&] {
-      b_.fail(where_, "points outside its buffer's " + std::to_string(data.size()) + " bytes");
-    };
-    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) outside();
-    if (a_->byteOffset > view.byteLength || a_->count > (std::uint64_t(1) << 40)) outside();
-    const std::uint64_t end =
-        a_->count == 0
-            ? 0
-            : std::uint64_t(a_->byteOffset) + std::uint64_t(stride_) * (a_->count - 1) + element;
-    if (end > view.byteLength) outside();
-    base_ = data.data() + view.byteOffset + a_->byteOffset;
-  }
-
-  std::size_t count() const { return a_->count; }
-  int components() const { return components_; }
-  int type() const { return a_->type; }
-
-  // Component c of element i, as a double (normalized integers are scaled to [0, 1]).
-  double get(std::size_t i, int c) const {
-    const unsigned char* p = base_ + i * stride_ + std::size_t(c) * std::size_t(component_bytes_);
-    switch (a_->componentType) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT:
-        return load<float>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        return scaled(load<std::uint32_t>(p), 4294967295.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return scaled(load<std::uint16_t>(p), 65535.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return scaled(load<std::uint8_t>(p), 255.0);
-      case TINYGLTF_COMPONENT_TYPE_SHORT:
-        return scaled(load<std::int16_t>(p), 32767.0);
-      case TINYGLTF_COMPONENT_TYPE_BYTE:
-        return scaled(load<std::int8_t>(p), 127.0);
-      case TINYGLTF_COMPONENT_TYPE_DOUBLE:
-        return load<double>(p);
-      default:
-        b_.fail(where_, "has an unknown component type");
-    }
-  }
-  // Element i as an index (integer components only).
-  std::uint64_t index(std::size_t i) const {
-    const unsigned char* p = base_ + i * stride_;
-    switch (a_->componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        return load<std::uint32_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return load<std::uint16_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return load<std::uint8_t>(p);
-      default:
-        b_.fail(where_, "indices must be unsigned integers");
-    }
-  }
-  vec3 vec(std::size_t i) const { return vec3(get(i, 0), get(i, 1), get(i, 2)); }
-
- private:
-  template <typename T>
-  static T load(const unsigned char* p) {
-    T v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-  double scaled(double v, double max) const { return a_->normalized ? std::max(v / max, -1.0) : v; }
-
-  const mesh_builder& b_;
-  std::string where_;
-  const tinygltf::Accessor* a_ = nullptr;
-  const unsigned char* base_ = nullptr;
-  std::size_t stride_ = 0;
-  int components_ = 0, component_bytes_ = 0;
-};
 
 class gltf_walker {
  public:
@@ -412,15 +327,16 @@ class gltf_walker {
 
 namespace {
 
-// Parses a glTF (its images kept encoded, its external files read by rtvk's reader).
+// Parses a glTF (its images kept encoded, its external files read by rtvk's reader where `guard`
+// allows). A file outside that folder is refused by name, even where tinygltf would only warn
+// (an image it could not read).
 tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::string& name,
-                           const std::filesystem::path& base) {
+                           const std::filesystem::path& base, const path_guard& guard) {
   if (bytes.size() > 0xffffffffu) throw usage_error(name + ": larger than 4 GiB");
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_undecoded, nullptr);
-  static int allowed_marker = 0;
-  loader.SetFsCallbacks({file_exists, path_as_written, read_whole_file, write_nothing,
-                         base.empty() ? nullptr : &allowed_marker});
+  gltf_files files{base.empty() ? nullptr : &guard, {}};
+  loader.SetFsCallbacks({file_exists, path_as_written, read_whole_file, write_nothing, &files});
   tinygltf::Model model;
   std::string err, warn;
   const bool ok =
@@ -429,6 +345,7 @@ tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::str
                                            unsigned(bytes.size()), base.string())
              : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
                                           base.string());
+  if (!files.refused.empty()) throw usage_error(name + ": " + guard.outside(files.refused));
   if (!ok) {
     std::replace(err.begin(), err.end(), '\n', ' ');
     while (!err.empty() && err.back() == ' ') err.pop_back();
@@ -440,14 +357,15 @@ tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::str
 }  // namespace
 
 void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
-               const std::filesystem::path& base, const mesh_placement& how) {
-  const tinygltf::Model model = parse_gltf(bytes, binary, name, base);
+               const std::filesystem::path& base, const mesh_placement& how,
+               const path_guard& guard) {
+  const tinygltf::Model model = parse_gltf(bytes, binary, name, base, guard);
   mesh_builder b(s, name, how.placement);
   gltf_walker(model, b, how).walk_scene();
 }
 
 std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file, std::size_t index,
-                                              const std::string& name) {
+                                              const std::string& name, const path_guard& guard) {
   const std::string kind = mesh_kind(file);
   if (kind != "gltf" && kind != "glb")
     throw usage_error(name + ": " + file.string() + " is not .gltf or .glb");
@@ -455,7 +373,7 @@ std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file,
       read_regular_file(file, max_mesh_file_bytes, "glTF file (" + name + ")");
   const std::filesystem::path base = file.parent_path();
   const tinygltf::Model model =
-      parse_gltf(bytes, kind == "glb", file.string(), base.empty() ? "." : base);
+      parse_gltf(bytes, kind == "glb", file.string(), base.empty() ? "." : base, guard);
   if (index >= model.images.size() || model.images[index].image.empty())
     throw usage_error(name + ": " + file.string() + " has no image " + std::to_string(index));
   const std::vector<unsigned char>& img = model.images[index].image;

@@ -46,12 +46,14 @@ material from_mtl(const tinyobj::material_t& m) {
 // dumped scene finds it from anywhere. Returns the scene's texture index.
 int diffuse_texture(mesh_builder& b, const tinyobj::material_t& m,
                     const std::filesystem::path& base, const std::string& name,
-                    std::map<std::string, int>& textures) {
+                    const path_guard& guard, std::map<std::string, int>& textures) {
   const auto known = textures.find(m.diffuse_texname);
   if (known != textures.end()) return known->second;
   if (base.empty())
     throw usage_error(name + ": material " + m.name + ": map_Kd " + m.diffuse_texname +
                       ": no folder to read it from");
+  guard.check(base / m.diffuse_texname, name + ": material " + m.name + ": map_Kd",
+              m.diffuse_texname);
   std::error_code ec;
   const std::filesystem::path file = std::filesystem::absolute(base / m.diffuse_texname, ec);
   texture t;
@@ -67,7 +69,7 @@ int diffuse_texture(mesh_builder& b, const tinyobj::material_t& m,
 
 // The MTL file an OBJ names on its first mtllib line, read from `base` ("" when none).
 std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
-                     const std::string& name) {
+                     const std::string& name, const path_guard& guard) {
   std::istringstream lines(obj);
   std::string line;
   while (std::getline(lines, line)) {
@@ -77,6 +79,7 @@ std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
     file.erase(file.find_last_not_of(" \t\r") + 1);
     if (file.empty() || base.empty()) return "";
     const std::filesystem::path path = base / file;
+    guard.check(path, name + ": mtllib", file);
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
       throw usage_error(name + ": mtllib " + file + ": no such file beside the OBJ");
@@ -85,15 +88,52 @@ std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
   return "";
 }
 
+// One corner of a face: its position, and its normal and texture coordinates where the file
+// gives them (`smooth` or `has_uv` cleared where it does not); every index checked.
+void read_corner(const mesh_builder& b, const tinyobj::attrib_t& a, const tinyobj::index_t& i,
+                 const std::string& where, point3& p, vec3& n, glm::dvec2& uv, bool& smooth,
+                 bool& has_uv) {
+  const std::size_t positions = a.vertices.size() / 3, normals = a.normals.size() / 3,
+                    uvs = a.texcoords.size() / 2;
+  if (i.vertex_index < 0 || std::size_t(i.vertex_index) >= positions)
+    b.fail(where, "vertex index " + std::to_string(i.vertex_index + 1) + " is not one of the " +
+                      std::to_string(positions) + " positions");
+  const std::size_t v = std::size_t(i.vertex_index);
+  p = b.position(vec3(a.vertices[3 * v], a.vertices[3 * v + 1], a.vertices[3 * v + 2]), transform{},
+                 where);
+  if (i.normal_index >= 0 && std::size_t(i.normal_index) < normals) {
+    const std::size_t m = std::size_t(i.normal_index);
+    n = vec3(a.normals[3 * m], a.normals[3 * m + 1], a.normals[3 * m + 2]);
+  } else if (i.normal_index >= 0) {
+    b.fail(where, "normal index " + std::to_string(i.normal_index + 1) + " is not one of the " +
+                      std::to_string(normals) + " normals");
+  } else {
+    smooth = false;
+  }
+  if (i.texcoord_index >= 0 && std::size_t(i.texcoord_index) < uvs) {
+    const std::size_t t = std::size_t(i.texcoord_index);
+    uv = glm::dvec2(a.texcoords[2 * t], a.texcoords[2 * t + 1]);
+    if (!(std::abs(uv.x) <= 1e6 && std::abs(uv.y) <= 1e6))
+      b.fail(where,
+             "texture coordinate " + std::to_string(t + 1) + " is not finite or beyond +-1e6");
+  } else if (i.texcoord_index >= 0) {
+    b.fail(where, "texture coordinate index " + std::to_string(i.texcoord_index + 1) +
+                      " is not one of the " + std::to_string(uvs) + " coordinates");
+  } else {
+    has_uv = false;
+  }
+}
+
 }  // namespace
 
 void load_obj(scene& s, const std::string& text, const std::string& name,
-              const std::filesystem::path& base, const mesh_placement& how) {
+              const std::filesystem::path& base, const mesh_placement& how,
+              const path_guard& guard) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(text, mtl_text(text, base, name), config) || !reader.Valid()) {
+  if (!reader.ParseFromString(text, mtl_text(text, base, name, guard), config) || !reader.Valid()) {
     std::string why = reader.Error();
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
     std::replace(why.begin(), why.end(), '\n', ' ');
@@ -107,14 +147,12 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
     for (const tinyobj::material_t& m : reader.GetMaterials()) {
       material out = from_mtl(m);
       if (!m.diffuse_texname.empty() && out.type != material_type::dielectric)
-        out.texture = diffuse_texture(b, m, base, name, textures);
+        out.texture = diffuse_texture(b, m, base, name, guard, textures);
       materials.push_back(b.add_material(name + ":" + m.name, out));
     }
   }
   int fallback = how.material;  // faces without a material: a gray diffuse one, made when needed
   const transform node;
-  const std::size_t positions = a.vertices.size() / 3, normals = a.normals.size() / 3,
-                    uvs = a.texcoords.size() / 2;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     const tinyobj::mesh_t& mesh = shape.mesh;
     std::size_t at = 0;
@@ -127,36 +165,8 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
       std::array<vec3, 3> n;
       std::array<glm::dvec2, 3> uv{};
       bool smooth = true, has_uv = true;
-      for (std::size_t k = 0; k < 3; ++k) {
-        const tinyobj::index_t i = mesh.indices[at + k];
-        if (i.vertex_index < 0 || std::size_t(i.vertex_index) >= positions)
-          b.fail(where, "vertex index " + std::to_string(i.vertex_index + 1) +
-                            " is not one of the " + std::to_string(positions) + " positions");
-        const std::size_t v = std::size_t(i.vertex_index);
-        p[k] = b.position(vec3(a.vertices[3 * v], a.vertices[3 * v + 1], a.vertices[3 * v + 2]),
-                          node, where);
-        if (i.normal_index >= 0 && std::size_t(i.normal_index) < normals) {
-          const std::size_t m = std::size_t(i.normal_index);
-          n[k] = vec3(a.normals[3 * m], a.normals[3 * m + 1], a.normals[3 * m + 2]);
-        } else if (i.normal_index >= 0) {
-          b.fail(where, "normal index " + std::to_string(i.normal_index + 1) +
-                            " is not one of the " + std::to_string(normals) + " normals");
-        } else {
-          smooth = false;
-        }
-        if (i.texcoord_index >= 0 && std::size_t(i.texcoord_index) < uvs) {
-          const std::size_t t = std::size_t(i.texcoord_index);
-          uv[k] = glm::dvec2(a.texcoords[2 * t], a.texcoords[2 * t + 1]);
-          if (!(std::abs(uv[k].x) <= 1e6 && std::abs(uv[k].y) <= 1e6))
-            b.fail(where, "texture coordinate " + std::to_string(t + 1) +
-                              " is not finite or beyond +-1e6");
-        } else if (i.texcoord_index >= 0) {
-          b.fail(where, "texture coordinate index " + std::to_string(i.texcoord_index + 1) +
-                            " is not one of the " + std::to_string(uvs) + " coordinates");
-        } else {
-          has_uv = false;
-        }
-      }
+      for (std::size_t k = 0; k < 3; ++k)
+        read_corner(b, a, mesh.indices[at + k], where, p[k], n[k], uv[k], smooth, has_uv);
       at += 3;
       int material = how.material;
       if (material < 0) {

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <string>
 
+#include "confined_path.h"
 #include "scene.h"
 
 namespace rtvk {
@@ -13,9 +14,12 @@ inline constexpr std::uint64_t max_scene_file_bytes = std::uint64_t(1) << 30;
 
 // Reads a JSON scene file (docs/scene-format.md). Any problem -- unreadable file, invalid JSON,
 // a missing or unknown field, a wrong type, a non-finite number, a bad radius, an unknown
-// material -- throws usage_error naming the file and the line and column or the JSON path.
-scene load_scene_file(const std::filesystem::path& path);
-scene parse_scene_json(const std::string& text, const std::string& file_name);
+// material, a file it names outside the folder `access` allows -- throws usage_error naming the
+// file and the line and column or the JSON path. The files it names are relative to its folder
+// (parse_scene_json: file_name's).
+scene load_scene_file(const std::filesystem::path& path, const file_access& access = {});
+scene parse_scene_json(const std::string& text, const std::string& file_name,
+                       const file_access& access = {});
 
 // The scene as JSON in the same format; reading it back gives the identical scene.
 std::string dump_scene_json(const scene& s);
@@ -27,7 +31,8 @@ std::string dump_camera_json(const camera_pose& pose);
 // --scene VALUE names a file (rather than a built-in) when it ends in .json or contains a '/'.
 bool names_scene_file(const std::string& value);
 
-// The built-in scene or the file that `value` names.
-scene load_scene(const std::string& value);
+// The built-in scene or the file that `value` names (a scene file or a mesh file, the files it
+// names confined as `access` says).
+scene load_scene(const std::string& value, const file_access& access = {});
 
 }  // namespace rtvk

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "image_io.h"
 #include "partial_image.h"
 #include "process.h"
 #include "scene_file.h"
@@ -154,6 +155,46 @@ TEST(CliHardening, PiecesOfDifferentVersionsMergeOnlyWhenAllowed) {
       {"merge", "--allow-mixed-versions", at("s0.exr"), at("s2.exr"), "-o", at("mixed.png")});
   EXPECT_EQ(allowed.status, 0) << allowed.err;
   EXPECT_EQ(slurp(at("mixed.png")), slurp(at("same.png")));
+}
+
+// A scene file naming a texture outside its folder (a farm's users' files, docs/farm.md): every
+// command that reads it refuses it with the field and the path, unless a flag allows it.
+TEST(CliHardening, AScenesFilesOutsideItsFolderAreRefusedUnlessAllowed) {
+  test::temp_dir dir;
+  fs::create_directories(dir.path() / "scenes");
+  write_image(image_rgb8{1, 1, {255, 0, 0}}, dir.path() / "outside.png");
+  const std::string scene = (dir.path() / "scenes" / "s.json").string();
+  std::ofstream(scene) << R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"image",)"
+                          R"("file":"../outside.png"}}},)"
+                          R"("spheres":[{"center":[0,0,-1],"radius":0.5,"material":"m"}]})";
+  const std::string out = (dir.path() / "out.ppm").string();
+  const std::vector<std::string> render = {"render", "--scene", scene, "--width", "8",
+                                           "--spp",  "1",       "-q",  "-o",      out};
+  const auto with = [&](std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.begin() + 1, more.begin(), more.end());
+    return run_rtvk_within(prompt, args);
+  };
+  for (const auto& args : {render, std::vector<std::string>{"scene", "dump", scene}}) {
+    const auto r = run_rtvk_within(prompt, args);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("/materials/m/albedo/file: \"../outside.png\" is outside"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  EXPECT_EQ(with(render, {"--allow-any-path"}).status, 0);
+  EXPECT_TRUE(fs::exists(out));
+  fs::remove(out);
+  EXPECT_EQ(with(render, {"--scene-root", dir.path().string()}).status, 0);
+  EXPECT_TRUE(fs::exists(out));
+  fs::remove(out);
+  EXPECT_EQ(run_rtvk_within(prompt, {"scene", "dump", "--allow-any-path", scene}).status, 0);
+  const auto missing = with(render, {"--scene-root", (dir.path() / "nope").string()});
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("--scene-root"), std::string::npos) << missing.err;
+  EXPECT_EQ(with(render, {"--allow-any-path", "--scene-root", dir.path().string()}).status, 2);
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

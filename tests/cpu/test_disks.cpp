@@ -15,6 +15,7 @@
 #include "quantize.h"
 #include "render_cpu.h"
 #include "render_helpers.h"
+#include "scene_file.h"
 #include "world.h"
 
 namespace rtvk {
@@ -178,6 +179,53 @@ TEST(Disk, ABadDiskIsRefusedByName) {
   EXPECT_THROW(check_scene(s), std::exception);
   s.disks[0] = {point3(0), vec3(0, 1, 0), 1.0, 99};
   EXPECT_THROW(check_scene(s), std::exception);
+}
+
+// A scene file's disks, the scene's own and a group's, read back from their dump unchanged; a
+// transform places them; bad ones refused naming the field.
+TEST(Disk, SceneFilesReadAndWriteThem) {
+  const std::string text =
+      R"({"materials":{"m":{"type":"lambertian","albedo":[0.5,0.5,0.5]}},"spheres":[],)"
+      R"("disks":[{"center":[0,1,-2],"normal":[0,0,1],"radius":0.5,"material":"m"},)"
+      R"({"center":[0,0,0],"normal":[0,1,0],"radius":1,"material":"m",)"
+      R"("transform":{"scale":2,"translate":[1,0,0]}}],)"
+      R"("groups":{"g":{"disks":[{"center":[0,0,0],"normal":[1,0,0],"radius":0.25,)"
+      R"("material":"m"}]}},"instances":[{"group":"g"}]})";
+  const scene s = parse_scene_json(text, "disks.json");
+  ASSERT_EQ(s.disks.size(), 2u);
+  EXPECT_EQ(s.disks[1].center, point3(1, 0, 0));
+  EXPECT_EQ(s.disks[1].radius, 2);
+  ASSERT_EQ(s.groups.size(), 1u);
+  ASSERT_EQ(s.groups[0].disks.size(), 1u);
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_NE(dumped.find("\"disks\""), std::string::npos);
+  const scene again = parse_scene_json(dumped, "again.json");
+  ASSERT_EQ(again.disks.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(again.disks[i].center, s.disks[i].center);
+    EXPECT_EQ(again.disks[i].normal, s.disks[i].normal);
+    EXPECT_EQ(again.disks[i].radius, s.disks[i].radius);
+  }
+  EXPECT_EQ(dump_scene_json(again), dumped);
+  const auto refusal = [](const std::string& disk) {
+    try {
+      parse_scene_json(R"({"materials":{"m":{"type":"lambertian","albedo":[1,1,1]}},)"
+                       R"("spheres":[],"disks":[)" + disk + "]}",
+                       "bad.json");
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal(R"({"center":[0,0,0],"normal":[0,0,0],"radius":1,"material":"m"})"),
+            "bad.json: /disks/0/normal: expected a nonzero normal");
+  EXPECT_EQ(refusal(R"({"center":[0,0,0],"normal":[0,1,0],"radius":0,"material":"m"})"),
+            "bad.json: /disks/0/radius: expected a radius > 0, got 0");
+  EXPECT_NE(refusal(R"({"center":[0,0,0],"normal":[0,1,0],"radius":1,"material":"m",)"
+                    R"("transform":{"scale":[1,2,1]}})")
+                .find("/disks/0/transform: a disk can be scaled only uniformly"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"center":[0,0,0],"normal":[0,1,0],"radius":1,"material":"x"})"), "accepted");
 }
 
 }  // namespace

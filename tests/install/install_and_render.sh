@@ -96,7 +96,7 @@ for pair in render:--scene render:--output render:-o bench:--json compare:--diff
 done
 touch "$work/a.json" "$work/b.png" "$work/c.exr" "$work/d.ppm"
 expect "bench compare devices merge render scene view" rtvk ""
-expect "--samples --sampling --scene --seed --shutter --spp" rtvk render --s
+expect "--samples --sampling --scene --scene-root --seed --shutter --spp" rtvk render --s
 expect "--spp" rtvk render --scene seed --sp
 expect "auto both cpu gpu" rtvk render --backend ""
 expect "seed simple-light spheres:" rtvk render --scene s

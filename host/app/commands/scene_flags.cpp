@@ -1,7 +1,9 @@
 #include "scene_flags.h"
 
+#include <filesystem>
 #include <optional>
 
+#include "errors.h"
 #include "image_size.h"
 #include "render_settings.h"
 
@@ -16,6 +18,33 @@ std::optional<T> if_given(const CLI::Option* o, const T& value) {
 }
 
 }  // namespace
+
+void scene_path_flags::add_to(CLI::App& cmd) {
+  const std::string group = "Scene files' paths (docs/farm.md)";
+  CLI::Option* any =
+      cmd.add_flag("--allow-any-path", any_path_,
+                   "Let a scene file name textures and meshes anywhere (.., absolute paths, "
+                   "symlinks out), not only in its own folder")
+          ->group(group);
+  cmd.add_option("--scene-root", root_,
+                 "The folder a scene file's textures and meshes must lie in, instead of the scene "
+                 "file's own folder")
+      ->type_name("DIR")
+      ->excludes(any)
+      ->group(group);
+}
+
+file_access scene_path_flags::access() const {
+  file_access a;
+  a.any_path = any_path_;
+  if (!root_.empty()) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(root_, ec))
+      throw usage_error("--scene-root " + root_ + ": not a folder");
+    a.root = root_;
+  }
+  return a;
+}
 
 void scene_flags::add_to(CLI::App& cmd) {
   const std::string group = "Scene overrides (default: the scene's own settings)";
@@ -64,6 +93,11 @@ void scene_flags::add_to(CLI::App& cmd) {
                                  "stratified pixels) or auto (default: lights where the scene has "
                                  "lights)")
                       ->group(group);
+  add_lens_to(cmd);
+  paths_.add_to(cmd);
+}
+
+void scene_flags::add_lens_to(CLI::App& cmd) {
   const std::string lens = "Calibrated cameras (docs/camera.md)";
   calibration_opt_ = cmd.add_option("--calibration", calibration_,
                                     "OpenCV calibration file (cv::FileStorage YAML or JSON: "

@@ -2,9 +2,24 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "confined_path.h"
 #include "scene_overrides.h"
 
 namespace rtvk {
+
+// Where the files a scene file names may lie (--allow-any-path, --scene-root DIR): a flag pair
+// of every command that reads scene files (render, bench, view, scene dump).
+class scene_path_flags {
+ public:
+  void add_to(CLI::App& cmd);
+
+  // What the flags allow; throws usage_error for a --scene-root that is not a folder.
+  file_access access() const;
+
+ private:
+  bool any_path_ = false;  // --allow-any-path
+  std::string root_;       // --scene-root, "" when not given
+};
 
 // The command-line flags that override a scene's own settings (--width, --spp, --lookfrom, ...),
 // shared by `rtvk render` and `rtvk bench`: registered on a command, then read back as
@@ -15,8 +30,12 @@ class scene_flags {
 
   // The flags given, each as typed (checked when applied).
   scene_overrides overrides() const;
+  // Where the scene file's own files may lie.
+  file_access access() const { return paths_.access(); }
 
  private:
+  void add_lens_to(CLI::App& cmd);  // the calibrated cameras' flags
+
   // Each flag's value as CLI11 parsed it (units as in scene_overrides), then its option, which
   // tells whether it was given.
   int width_ = 0;
@@ -51,6 +70,7 @@ class scene_flags {
   CLI::Option* distortion_opt_ = nullptr;
   CLI::Option* rolling_shutter_opt_ = nullptr;
   CLI::Option* colmap_opt_ = nullptr;
+  scene_path_flags paths_;
 };
 
 }  // namespace rtvk
