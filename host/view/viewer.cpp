@@ -13,12 +13,14 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "accumulation.h"
 #include "bvh_world.h"
 #include "camera_controls.h"
 #include "elapsed.h"
 #include "errors.h"
 #include "format.h"
 #include "gpu_engine.h"
+#include "key_bindings.h"
 #include "overlay.h"
 #include "presenter.h"
 #include "render_cpu.h"
@@ -29,51 +31,6 @@
 
 namespace rtvk::view {
 namespace {
-
-// How far the accumulation is, row by row; the sums themselves and their encoding stay on the
-// device (gpu_engine::accumulate). Batches cover bands of rows, so rows may briefly hold one
-// pass more than others.
-struct accumulation {
-  int width = 0, height = 0;     // pixels
-  int samples = 0;               // per pixel in every row: the passes completed
-  std::vector<int> row_samples;  // per row, from the top
-
-  void reset(int w, int h) {
-    width = w;
-    height = h;
-    samples = 0;
-    row_samples.assign(std::size_t(h), 0);
-  }
-  // Counts `count` samples more for rows [row, row + rows).
-  void add(int row, int rows, int count) {
-    for (int y = row; y < row + rows; ++y) row_samples[std::size_t(y)] += count;
-    samples = *std::min_element(row_samples.begin(), row_samples.end());
-  }
-};
-
-// A batch is `count` samples of a band of rows. Both adapt so that a batch takes about 60 ms,
-// keeping the window above 10 frames a second on slow devices (lavapipe: bands of the image)
-// and busy on fast ones (many samples of the whole image): bands grow to the whole image before
-// samples grow past one, and samples shrink back to one before bands shrink.
-struct batch_shape {
-  int rows = 16;  // band height, pixels
-  int count = 1;  // samples per pixel
-
-  void adapt(double seconds, int height) {
-    constexpr double target = 0.06;
-    if (seconds < target / 2) {
-      if (rows < height)
-        rows = std::min(rows * 2, height);
-      else
-        count = std::min(count * 2, 1 << 16);
-    } else if (seconds > target * 2) {
-      if (count > 1)
-        count /= 2;
-      else
-        rows = std::max(rows / 2, 1);
-    }
-  }
-};
 
 // Rays are counted for the overlay's Mrays/s (a counter beside the sums: the image is the same).
 gpu::gpu_render_options counting(gpu::gpu_render_options o) {
@@ -233,38 +190,6 @@ viewer_result session::state() {
   r.seconds = seconds_since(started_);
   r.pixel_samples = pixel_samples_;
   return r;
-}
-
-// The keys that move the camera: each is one pure function of the pose (camera_controls.h).
-camera_pose moved_by_key(const camera_pose& p, int key) {
-  switch (key) {
-    case GLFW_KEY_W:
-      return fly(p, 1, 0, 0);
-    case GLFW_KEY_S:
-      return fly(p, -1, 0, 0);
-    case GLFW_KEY_D:
-      return fly(p, 0, 1, 0);
-    case GLFW_KEY_A:
-      return fly(p, 0, -1, 0);
-    case GLFW_KEY_E:
-      return fly(p, 0, 0, 1);
-    case GLFW_KEY_Q:
-      return fly(p, 0, 0, -1);
-    case GLFW_KEY_EQUAL:
-    case GLFW_KEY_KP_ADD:
-      return zoom(p, 1);
-    case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT:
-      return zoom(p, -1);
-    case GLFW_KEY_RIGHT_BRACKET:
-      return stop(p, 1);
-    case GLFW_KEY_LEFT_BRACKET:
-      return stop(p, -1);
-    case GLFW_KEY_P:
-      return next_projection(p);
-    default:
-      return p;
-  }
 }
 
 // The controls of docs/viewer.md: every move goes through the camera pose and restarts the

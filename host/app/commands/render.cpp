@@ -22,6 +22,7 @@
 #include "image_compare.h"
 #include "image_io.h"
 #include "interrupt.h"
+#include "job_flags.h"
 #include "light_sources.h"
 #include "partial_image.h"
 #include "pipeline_cache.h"
@@ -335,28 +336,6 @@ int run_render(render_options o) {
     throw render_cancelled(std::string(e.what()) + " (" + std::to_string(written) + " of " +
                            std::to_string(jobs.size()) + " images were finished and written)");
   }
-}
-
-// The options that pick the images (cameras, frames, part of each) and name their files.
-void add_job_options(CLI::App& cmd, job_request& jobs) {
-  cmd.add_option("-o,--output", jobs.output,
-                 "Output image: .png, .ppm, or .exr (linear float with the sample range, for "
-                 "rtvk merge); {camera}, {frame} and {frame:04} are filled in")
-      ->required();
-  cmd.add_option("--camera", jobs.cameras,
-                 "Camera of the scene to render (repeatable), or all; default: the first")
-      ->type_name("NAME|all");
-  cmd.add_option("--frames", jobs.frames,
-                 "Animation frames A:B (A up to, not including, B) or one frame N; default 0")
-      ->type_name("A:B|N");
-  cmd.add_option("--fps", jobs.fps, "Frames per second: frame f shows time f / fps")
-      ->capture_default_str();
-  cmd.add_option("--region", jobs.region,
-                 "Render only this rectangle of the image: x,y,w,h in pixels from the top left")
-      ->type_name("X,Y,W,H");
-  cmd.add_option("--samples", jobs.samples,
-                 "Render only samples A:B of each pixel's --spp (for splitting a render)")
-      ->type_name("A:B");
 }
 
 // The options that say how to draw and write them.

@@ -8,6 +8,7 @@
 #include <map>
 #include <tuple>
 
+#include "accel_boxes.h"
 #include "device_fit.h"
 #include "elapsed.h"
 #include "errors.h"
@@ -30,44 +31,6 @@ struct object_group {
   // The shapes the driver knows only by their boxes: spheres, then quads, then disks.
   std::uint32_t boxes() const { return sphere_count + quad_count + disk_count; }
 };
-
-// How far past an object its box reaches: the driver tests the ray in an instance's space with
-// its own inverse of the placement, which may round differently from frame_of's, and a box
-// must never be missed where test_object would hit (a candidate too many costs a test only).
-float box_margin(const glm::vec3& lo, const glm::vec3& hi) {
-  const float most = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x),
-                               std::abs(hi.y), std::abs(hi.z)});
-  return most * (1.0f / 65536.0f) + 1e-6f;
-}
-
-VkAabbPositionsKHR box(glm::vec3 lo, glm::vec3 hi) {
-  const float m = box_margin(lo, hi);
-  return {lo.x - m, lo.y - m, lo.z - m, hi.x + m, hi.y + m, hi.z + m};
-}
-
-// A sphere's box over the motion span (it moves in a straight line: its ends bound it).
-VkAabbPositionsKHR sphere_box(const gpu_sphere& s, const glm::vec3& velocity, time_span motion) {
-  const float r = std::abs(s.radius);
-  const glm::vec3 a = s.center + float(motion.lo) * velocity;
-  const glm::vec3 b = s.center + float(motion.hi) * velocity;
-  return box(glm::min(a, b) - r, glm::max(a, b) + r);
-}
-
-// A disk's box: along axis k it reaches radius * sqrt(1 - n_k^2) from its center.
-VkAabbPositionsKHR disk_box(const gpu_disk& d) {
-  const glm::vec3 reach = d.radius * glm::sqrt(glm::max(1.0f - d.normal * d.normal, 0.0f));
-  return box(d.center - reach, d.center + reach);
-}
-
-VkAabbPositionsKHR quad_box(const gpu_quad& q) {
-  const glm::vec3 c[] = {q.Q, q.Q + q.u, q.Q + q.v, q.Q + q.u + q.v};
-  glm::vec3 lo = c[0], hi = c[0];
-  for (const glm::vec3& p : c) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  return box(lo, hi);
-}
 
 // The instance's placement, group space to world: the inverse of its to_group rows, in double.
 VkTransformMatrixKHR placement(const gpu_instance& in) {
@@ -166,9 +129,8 @@ scene_accel::scene_accel(gpu_context& ctx, const gpu_scene::host_arrays& a, time
   std::map<object_group, std::uint32_t> group_index{{groups[0], 0}};
   std::vector<std::uint32_t> instance_group;
   for (const gpu_instance& in : a.instances) {
-    const object_group g{in.sphere_first,   in.sphere_count,   in.quad_first,
-                         in.quad_count,     in.triangle_first, in.triangle_count,
-                         in.disk_first,     in.disk_count};
+    const object_group g{in.sphere_first,   in.sphere_count,   in.quad_first, in.quad_count,
+                         in.triangle_first, in.triangle_count, in.disk_first, in.disk_count};
     auto [it, fresh] = group_index.try_emplace(g, std::uint32_t(groups.size()));
     if (fresh) groups.push_back(g);
     instance_group.push_back(it->second);
@@ -203,11 +165,12 @@ scene_accel::scene_accel(gpu_context& ctx, const gpu_scene::host_arrays& a, time
     const object_group& g = groups[i];
     if (std::uint64_t(g.boxes()) > limits.maxPrimitiveCount ||
         g.triangle_count > limits.maxPrimitiveCount)
-      throw past_limit(subject,
-                       std::string(i == 0 ? "the scene's own" : "an instanced group's") +
-                           (g.boxes() > g.triangle_count ? " spheres, quads and disks" : " triangles"),
-                       std::max<std::uint64_t>(g.boxes(), g.triangle_count), "maxPrimitiveCount",
-                       limits.maxPrimitiveCount, ctx);
+      throw past_limit(
+          subject,
+          std::string(i == 0 ? "the scene's own" : "an instanced group's") +
+              (g.boxes() > g.triangle_count ? " spheres, quads and disks" : " triangles"),
+          std::max<std::uint64_t>(g.boxes(), g.triangle_count), "maxPrimitiveCount",
+          limits.maxPrimitiveCount, ctx);
     build_plan& p = plans[2 * i];
     if (g.boxes()) {
       VkAccelerationStructureGeometryKHR geo{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
