@@ -47,7 +47,8 @@ inline bool hit_disk(disk_geometry d, ray r, real t_min, real t_max, precise OUT
   precise real root = (d.D - dot3(d.normal, r.origin)) / denom;
   if (!(is_finite(root) && t_min <= root && root <= t_max)) return false;
   precise real3 planar = ray_at(r, root) - d.center;
-  if (!(dot3(planar, planar) <= d.radius * d.radius)) return false;
+  precise real reach = d.radius * d.radius;
+  if (!(dot3(planar, planar) <= reach)) return false;
   t = root;
   return true;
 }
