@@ -37,7 +37,7 @@ struct named_material {
 };
 
 // What to render, independent of the backend: the CPU builds its hittables from it (cpu/world.h),
-// the GPU packs the same spheres and materials into storage buffers (gpu/render/packing.h).
+// the GPU packs the same spheres and materials into storage buffers (gpu/scene/packing.h).
 // A run of consecutive quads or triangles of a scene that make one object.
 struct primitive_run {
   bool triangles;       // of s.triangles; else of s.quads
