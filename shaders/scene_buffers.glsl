@@ -1,4 +1,4 @@
-// The scene's objects and the BVH over them, as gpu_scene (host/gpu/render/gpu_scene.h) binds
+// The scene's objects and the BVH over them, as gpu_scene (host/gpu/scene/gpu_scene.h) binds
 // them: what world.glsl reads. Included by every shader that traces rays through the scene.
 #ifndef RTVK_SCENE_BUFFERS_GLSL
 #define RTVK_SCENE_BUFFERS_GLSL

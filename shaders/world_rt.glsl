@@ -1,5 +1,5 @@
 // The world searched through the driver's acceleration structure (--accel rt-query and
-// rt-pipeline), built by host/gpu/render/scene_accel.cpp: in the top level the scene's own objects
+// rt-pipeline), built by host/gpu/scene/scene_accel.cpp: in the top level the scene's own objects
 // (custom index 0) and each instance k (custom index k + 1, its placement as the instance's
 // transform); in each bottom level one geometry of boxes -- the group's spheres, quads, disks --
 // and one of triangles, which the driver tests itself. The driver only proposes candidates: each
