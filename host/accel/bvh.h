@@ -8,11 +8,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "disk.h"
-#include "quad.h"
+#include "shape_lists.h"
 #include "shared_types.h"
-#include "sphere.h"
-#include "triangle.h"
 
 namespace rtvk {
 
@@ -48,6 +45,11 @@ struct primitive_spans {
   }
   std::size_t size() const { return shapes() + boxes.size(); }
 };
+
+// The spans of a scene's or a group's lists.
+inline primitive_spans spans_of(const shape_lists& l) {
+  return primitive_spans{l.spheres, l.quads, l.triangles, l.disks};
+}
 
 // A bounding volume hierarchy over objects (spheres, quads, triangles), built with binned SAH and
 // flattened depth first into one array of interior nodes (gpu::bvh_node, from the header shared

@@ -10,10 +10,6 @@
 namespace rtvk {
 namespace {
 
-primitive_spans spans_of(const object_group& g) {
-  return primitive_spans{g.spheres, g.quads, g.triangles, g.disks, {}};
-}
-
 // The box of a tree's root: its lanes' boxes together.
 std::array<point3, 2> root_box(const wide_bvh& tree) {
   point3 lo(std::numeric_limits<double>::infinity()), hi(-lo);

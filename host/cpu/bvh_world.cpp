@@ -169,8 +169,7 @@ bvh_world::bvh_world(const primitive_spans& objects, std::span<const triangle_sh
 }
 
 bvh_world::bvh_world(const scene& s, int threads) : with_uv_(scene_reads_uv(s)) {
-  build(primitive_spans{s.spheres, s.quads, s.triangles, s.disks}, s.shading, s.groups, s.instances,
-        threads, s.motion);
+  build(spans_of(s), s.shading, s.groups, s.instances, threads, s.motion);
 }
 
 void bvh_world::build(const primitive_spans& objects, std::span<const triangle_shading> shading,

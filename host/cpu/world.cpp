@@ -12,9 +12,8 @@ namespace rtvk {
 namespace {
 
 // Objects of one list (the scene's, or a group's), in order: spheres, quads, triangles, disks.
-void add_objects(hittable_list& to, const std::vector<sphere>& spheres,
-                 const std::vector<quad>& quads, const std::vector<triangle>& triangles,
-                 const std::vector<triangle_shading>& shading, const std::vector<disk>& disks) {
+void add_objects(hittable_list& to, const shape_lists& l) {
+  const auto& [spheres, quads, triangles, shading, disks] = l;
   for (const sphere& sp : spheres) to.add(std::make_shared<hittable_sphere>(sp));
   for (const quad& q : quads) to.add(std::make_shared<hittable_quad>(q));
   for (const triangle& t : triangles)
@@ -27,11 +26,11 @@ void add_objects(hittable_list& to, const std::vector<sphere>& spheres,
 
 hittable_list make_world(const scene& s) {
   hittable_list world;
-  add_objects(world, s.spheres, s.quads, s.triangles, s.shading, s.disks);
+  add_objects(world, s);
   std::vector<std::shared_ptr<const hittable>> groups;
   for (const object_group& g : s.groups) {
     auto list = std::make_shared<hittable_list>();
-    add_objects(*list, g.spheres, g.quads, g.triangles, g.shading, g.disks);
+    add_objects(*list, g);
     groups.push_back(std::move(list));
   }
   for (const instance& i : s.instances)

@@ -104,7 +104,7 @@ void read_scene_objects(const scene_reader& r, const json& root, scene& s) {
   read_objects(r, root, "", s);
 }
 void write_scene_objects(const scene& s, json& root) {
-  write_objects(root, s, s.spheres, s.quads, s.triangles, s.shading, s.disks);
+  write_objects(root, s, s);
 }
 
 const section sections[] = {

@@ -86,9 +86,7 @@ void write_materials(const scene& s, json& root);
 // scene_file_objects.cpp: "spheres", "quads", "boxes", "triangles" and "meshes", of the scene
 // (at "") or of a group (at its pointer).
 void read_objects(const scene_reader& r, const json& root, const std::string& at, scene& s);
-void write_objects(json& root, const scene& s, const std::vector<sphere>& spheres,
-                   const std::vector<quad>& quads, const std::vector<triangle>& triangles,
-                   const std::vector<triangle_shading>& shading, const std::vector<disk>& disks);
+void write_objects(json& root, const scene& s, const shape_lists& objects);
 
 // scene_file_groups.cpp: placements, "groups" and "instances".
 transform read_transform(const scene_reader& r, const json& j, const std::string& p);

@@ -108,12 +108,9 @@ void read_named_groups(const scene_reader& r, const json& groups, scene& s) {
       if (g.quads[k].sampled)
         r.fail(p + "/quads/" + std::to_string(k) + "/sample",
                "lights sampling aims only at the scene's own objects, not a group's");
-    object_group group{name,
-                       std::move(g.spheres),
-                       std::move(g.quads),
-                       std::move(g.triangles),
-                       std::move(g.shading),
-                       std::move(g.disks)};
+    object_group group;
+    static_cast<shape_lists&>(group) = std::move(g);  // the objects read, without the rest
+    group.name = name;
     if (empty(group)) r.fail(p, "the group has no object (nothing an instance could place)");
     s.groups.push_back(std::move(group));
   }
@@ -155,7 +152,7 @@ void write_groups(const scene& s, json& root) {
   json groups = json::object();
   for (const object_group& g : s.groups) {
     json objects = json::object();
-    write_objects(objects, s, g.spheres, g.quads, g.triangles, g.shading, g.disks);
+    write_objects(objects, s, g);
     groups[g.name] = objects;
   }
   root["groups"] = groups;

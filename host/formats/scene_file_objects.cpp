@@ -169,10 +169,8 @@ void read_objects(const scene_reader& r, const json& root, const std::string& at
 
 // The objects of the scene or of a group, as their fields: spheres always (a scene file's
 // required field), quads, triangles and disks where there are some.
-void write_objects(json& root, const scene& s, const std::vector<sphere>& sphere_list,
-                   const std::vector<quad>& quad_list, const std::vector<triangle>& triangle_list,
-                   const std::vector<triangle_shading>& shading,
-                   const std::vector<disk>& disk_list) {
+void write_objects(json& root, const scene& s, const shape_lists& objects) {
+  const auto& [sphere_list, quad_list, triangle_list, shading, disk_list] = objects;
   const auto material_name = [&](int m) { return s.materials[std::size_t(m)].name; };
   json spheres = json::array();
   for (const sphere& sp : sphere_list) {

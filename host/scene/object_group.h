@@ -4,11 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "disk.h"
-#include "quad.h"
-#include "sphere.h"
+#include "shape_lists.h"
 #include "transform.h"
-#include "triangle.h"
 
 namespace rtvk {
 
@@ -17,13 +14,10 @@ struct scene;
 // A group of objects defined once and placed any number of times, each placement an instance
 // with a transform of its own (the book's `translate` and `rotate_y` generalised): a tree, a
 // chair, a mesh read from one file. Its materials are the scene's.
-struct object_group {
-  std::string name;             // how instances name it in scene files
-  std::vector<sphere> spheres;  // still (a group's spheres do not move)
-  std::vector<quad> quads;
-  std::vector<triangle> triangles;        // shading indices refer to `shading`
-  std::vector<triangle_shading> shading;  // the triangles' vertex normals and uv
-  std::vector<disk> disks;
+// Its spheres are still (a group's spheres do not move); its triangles' shading indices refer
+// to its own `shading`.
+struct object_group : shape_lists {
+  std::string name;  // how instances name it in scene files
 };
 
 // One placement of a group: where its objects are, without copying them. The renderers keep
@@ -35,11 +29,11 @@ struct instance {
 };
 
 inline std::size_t object_count(const object_group& g) {
-  return g.spheres.size() + g.quads.size() + g.triangles.size() + g.disks.size();
+  return shape_count(g);
 }
 
 inline bool empty(const object_group& g) {
-  return g.spheres.empty() && g.quads.empty() && g.triangles.empty() && g.disks.empty();
+  return shape_count(g) == 0;
 }
 
 // Objects placed by t. Quads and triangles stay exact (a parallelogram maps to a parallelogram);

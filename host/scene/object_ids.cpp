@@ -6,7 +6,7 @@ namespace rtvk {
 
 object_ids::object_ids(const scene& s) {
   const std::size_t quads0 = s.spheres.size(), triangles0 = quads0 + s.quads.size();
-  own_.assign(triangles0 + s.triangles.size() + s.disks.size(), 0);
+  own_.assign(shape_count(s), 0);
   // Where a compound starts, and how long it runs, by scene index.
   std::vector<std::uint32_t> run(own_.size(), 0);
   for (const primitive_run& c : s.compounds) {

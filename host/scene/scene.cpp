@@ -30,22 +30,12 @@ void check_point(const std::string& what, const point3& p) {
 
 namespace {
 
-// What check_objects reads, named as the scene's fields so that its messages read the same.
-struct scene_like {
-  const std::string& name;
-  const std::vector<sphere>& spheres;
-  const std::vector<quad>& quads;
-  const std::vector<triangle>& triangles;
-  const std::vector<triangle_shading>& shading;
-  const std::vector<disk>& disks;
-};
-
 // The objects of the scene, or of one of its groups (`who`: "scene" or "scene: group g").
-void check_objects(const scene_like& s,
+void check_objects(const std::string& who, const shape_lists& s,
                    const std::function<void(const std::string&, int)>& check_material) {
   for (std::size_t i = 0; i < s.spheres.size(); ++i) {
     const sphere& sp = s.spheres[i];
-    const std::string where = s.name + ": sphere " + std::to_string(i);
+    const std::string where = who + ": sphere " + std::to_string(i);
     const auto in_range = [](double v) { return std::abs(v) <= max_scene_coordinate; };
     if (!in_range(sp.center.x) || !in_range(sp.center.y) || !in_range(sp.center.z))
       throw usage_error(where + ": center must be finite and within +-1e18, got " +
@@ -63,7 +53,7 @@ void check_objects(const scene_like& s,
   }
   for (std::size_t i = 0; i < s.quads.size(); ++i) {
     const quad& q = s.quads[i];
-    const std::string where = s.name + ": quad " + std::to_string(i);
+    const std::string where = who + ": quad " + std::to_string(i);
     check_point(where + ": Q", q.Q);
     check_point(where + ": Q + u + v", q.Q + q.u + q.v);
     check_point(where + ": u", q.u);
@@ -74,7 +64,7 @@ void check_objects(const scene_like& s,
   }
   for (std::size_t i = 0; i < s.triangles.size(); ++i) {
     const triangle& t = s.triangles[i];
-    const std::string where = s.name + ": triangle " + std::to_string(i);
+    const std::string where = who + ": triangle " + std::to_string(i);
     for (int k = 0; k < 3; ++k) check_point(where + ": vertex " + std::to_string(k), t.p[k]);
     if (!has_area(t.p)) throw usage_error(where + ": its vertices are collinear: no area");
     check_material(where, t.material);
@@ -83,10 +73,11 @@ void check_objects(const scene_like& s,
   }
   for (std::size_t i = 0; i < s.disks.size(); ++i) {
     const disk& d = s.disks[i];
-    const std::string where = s.name + ": disk " + std::to_string(i);
+    const std::string where = who + ": disk " + std::to_string(i);
     check_point(where + ": center", d.center);
     check_point(where + ": normal", d.normal);
-    if (!has_direction(d.normal)) throw usage_error(where + ": normal is zero: the disk has no plane");
+    if (!has_direction(d.normal))
+      throw usage_error(where + ": normal is zero: the disk has no plane");
     if (!(d.radius > 0) || !(d.radius <= max_scene_coordinate))
       throw usage_error(where + ": radius must be > 0 and at most 1e18, got " +
                         format_number(d.radius));
@@ -94,23 +85,16 @@ void check_objects(const scene_like& s,
   }
 }
 
-// The corners of the box around a group's objects.
+// The corners of the box around a group's objects: each shape's own box.
 std::vector<point3> group_corners(const object_group& g) {
   point3 lo(INFINITY), hi(-INFINITY);
-  const auto grow = [&](const point3& p) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  };
-  for (const sphere& sp : g.spheres) {
-    grow(sp.center - vec3(sp.radius));
-    grow(sp.center + vec3(sp.radius));
-  }
-  for (const quad& q : g.quads)
-    for (const point3& p : {q.Q, q.Q + q.u, q.Q + q.v, q.Q + q.u + q.v}) grow(p);
-  for (const triangle& t : g.triangles)
-    for (const point3& p : t.p) grow(p);
-  for (const disk& d : g.disks)
-    for (const point3& p : d.bounds()) grow(p);
+  for_each_kind(g, [&](const auto& list) {
+    for (const auto& shape : list)
+      for (const point3& p : shape.bounds()) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+  });
   std::vector<point3> out;
   for (int c = 0; c < 8; ++c)
     out.push_back(point3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z));
@@ -197,11 +181,11 @@ void check_scene(const scene& s) {
       throw usage_error(s.name + ": camera " + c.name + ": " + e.what());
     }
   }
-  check_objects({s.name, s.spheres, s.quads, s.triangles, s.shading, s.disks}, check_material);
+  check_objects(s.name, s, check_material);
   for (const object_group& g : s.groups) {
     const std::string who = s.name + ": group " + g.name;
     if (empty(g)) throw usage_error(who + ": the group has no object");
-    check_objects({who, g.spheres, g.quads, g.triangles, g.shading, g.disks}, check_material);
+    check_objects(who, g, check_material);
     for (std::size_t i = 0; i < g.spheres.size(); ++i)
       if (g.spheres[i].center1)
         throw usage_error(who + ": sphere " + std::to_string(i) + " moves (a group's cannot)");

@@ -45,20 +45,15 @@ struct primitive_run {
   std::uint32_t count;  // how many
 };
 
-struct scene {
+struct scene : shape_lists {
   std::string name;                                    // built-in name or the file it came from
   std::vector<named_camera> cameras{{"default", {}}};  // at least one; the first is the
                                                        // default; the lesson's camera unless set
   render_settings render;                              // default image size, samples, depth, ...
   rtvk::sky sky;                                       // what rays that escape see
   std::vector<named_material> materials;               // objects index into this
-  // The objects. Hits are tested as if in one list: spheres, then quads, triangles and disks
-  // (each object's index in that list -- its scene index -- decides exact ties: the later wins).
-  std::vector<sphere> spheres;            // the first book's
-  std::vector<quad> quads;                // the second book's (a box is six)
-  std::vector<triangle> triangles;        // given alone, or faces of meshes
-  std::vector<triangle_shading> shading;  // triangles' vertex normals and uv
-  std::vector<disk> disks;                // after the triangles (docs/geometry.md)
+  // The objects, one list per shape (shape_lists, the base: spheres, quads, triangles and their
+  // shading, disks), hit as if in one list in that order, an exact tie going to the later.
   // Groups of objects stored once, and their placements: hit after every object above, in
   // instance order, each instance's objects in its group's order (spheres, quads, triangles).
   std::vector<object_group> groups;
@@ -76,10 +71,10 @@ struct scene {
 
 std::vector<material> scene_materials(const scene& s);
 
-// Objects stored, of every kind: spheres + quads + triangles + disks, the groups' included once each
-// (however many instances place them).
+// Objects stored, of every kind: spheres + quads + triangles + disks, the groups' included once
+// each (however many instances place them).
 inline std::size_t object_count(const scene& s) {
-  std::size_t n = s.spheres.size() + s.quads.size() + s.triangles.size() + s.disks.size();
+  std::size_t n = shape_count(s);
   for (const object_group& g : s.groups) n += object_count(g);
   return n;
 }
@@ -121,8 +116,8 @@ inline constexpr double max_scene_coordinate = 1e18;
 // <= 0, or a quad parallel edges.
 void check_scene(const scene& s);
 
-// The most objects (spheres, quads, triangles and disks together) a scene may hold: a BVH leaf keeps 28
-// bits for an object's position in its kind's array.
+// The most objects (spheres, quads, triangles and disks together) a scene may hold: a BVH leaf
+// keeps 28 bits for an object's position in its kind's array.
 inline constexpr std::size_t max_scene_objects = std::size_t(1) << 28;
 
 // The most media a scene may hold: every ray tests each of them (no BVH over media).

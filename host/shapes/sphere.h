@@ -40,7 +40,7 @@ struct sphere {
   // Corners lo and hi of its box over the whole of `motion`. The GPU moves a center in float
   // (float(c) + float(t) * float(v): a few roundings of 2^-24 each, relative), so a moving
   // sphere's box grows by sixteen times that bound.
-  std::array<point3, 2> bounds(time_span motion) const {
+  std::array<point3, 2> bounds(time_span motion = {}) const {
     const vec3 r(std::abs(radius));
     const point3 a = center_at(motion.lo), b = center_at(motion.hi);
     vec3 slack(0);

@@ -91,8 +91,7 @@ std::vector<buffer_spec> specs_of(const std::vector<array_entry>& arrays) {
 gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   const auto start = std::chrono::steady_clock::now();
   const scene_tree tree =
-      build_scene_tree(primitive_spans{s.spheres, s.quads, s.triangles, s.disks}, s.groups,
-                       s.instances, use_bvh, 0, s.motion);
+      build_scene_tree(spans_of(s), s.groups, s.instances, use_bvh, 0, s.motion);
   const double seconds = seconds_since(start);
   std::vector<bvh_wide_node> nodes(tree.nodes.size());
   static_assert(sizeof(bvh_wide_node) == sizeof(wide_node));

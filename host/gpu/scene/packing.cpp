@@ -33,18 +33,9 @@ camera_ubo to_ubo(const camera& cam) {
 
 namespace {
 
-// The objects of the list a slot refers to, and the index its kind starts at in the scan order.
-struct object_list {
-  const std::vector<sphere>& spheres;
-  const std::vector<quad>& quads;
-  const std::vector<triangle>& triangles;
-  const std::vector<triangle_shading>& shading;
-  const std::vector<disk>& disks;
-};
-object_list list_of(const scene& s, object_slot o) {
-  if (o.group == world_objects) return {s.spheres, s.quads, s.triangles, s.shading, s.disks};
-  const object_group& g = s.groups[o.group];
-  return {g.spheres, g.quads, g.triangles, g.shading, g.disks};
+// The lists a slot refers to: the scene's own, or its group's.
+const shape_lists& list_of(const scene& s, object_slot o) {
+  return o.group == world_objects ? static_cast<const shape_lists&>(s) : s.groups[o.group];
 }
 
 }  // namespace
@@ -73,7 +64,7 @@ std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const object_slot> 
   std::vector<gpu_quad> out;
   out.reserve(slots.size());
   for (const object_slot o : slots) {
-    const object_list l = list_of(s, o);
+    const shape_lists& l = list_of(s, o);
     const quad& q = l.quads[o.index];
     const quad_geometry g = q.geometry();
     out.push_back({vec3(g.Q), uint(q.material), vec3(g.u), uint(l.spheres.size()) + o.index,
@@ -90,7 +81,7 @@ std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const objec
   normals.clear();
   uvs.clear();
   for (const object_slot o : slots) {
-    const object_list l = list_of(s, o);
+    const shape_lists& l = list_of(s, o);
     const triangle& t = l.triangles[o.index];
     uint smooth = RTVK_FLAT;
     if (t.shading >= 0) {
@@ -114,7 +105,7 @@ std::vector<gpu_disk> to_gpu_disks(const scene& s, std::span<const object_slot> 
   std::vector<gpu_disk> out;
   out.reserve(slots.size());
   for (const object_slot o : slots) {
-    const object_list l = list_of(s, o);
+    const shape_lists& l = list_of(s, o);
     const disk& d = l.disks[o.index];
     const disk_geometry g = d.geometry();
     const uint first = uint(l.spheres.size() + l.quads.size() + l.triangles.size());
