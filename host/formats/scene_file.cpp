@@ -112,7 +112,7 @@ const section sections[] = {
     {{"render"}, read_settings, write_settings},
     {{"sky", "background"}, read_sky, write_sky},
     {{"noise_seed", "materials"}, read_materials, write_materials},
-    {{"spheres", "quads", "boxes", "triangles", "disks", "meshes"}, read_scene_objects, write_scene_objects},
+    {object_fields(), read_scene_objects, write_scene_objects},
     {{"groups", "instances"}, read_groups, write_groups},
     {{"media"}, read_media, write_media},
 };

@@ -87,6 +87,9 @@ void write_materials(const scene& s, json& root);
 // (at "") or of a group (at its pointer).
 void read_objects(const scene_reader& r, const json& root, const std::string& at, scene& s);
 void write_objects(json& root, const scene& s, const shape_lists& objects);
+// The fields read_objects reads, one a kind of object: what a scene file's top level and a
+// group may hold besides their own fields.
+std::vector<const char*> object_fields();
 
 // scene_file_groups.cpp: placements, "groups" and "instances".
 transform read_transform(const scene_reader& r, const json& j, const std::string& p);

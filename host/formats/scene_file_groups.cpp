@@ -91,7 +91,8 @@ void read_named_groups(const scene_reader& r, const json& groups, scene& s) {
   for (const auto& [name, j] : groups.items()) {
     const std::string p = "/groups/" + escape_pointer(name);
     if (!j.is_object()) r.fail(p, "expected an object, got " + r.type_of(j));
-    r.only_fields(j, p, {"spheres", "quads", "boxes", "triangles", "disks", "meshes"});
+    const std::vector<const char*> fields = object_fields();
+    r.only_fields(j, p, {fields.begin(), fields.end()});
     scene g;
     g.materials = std::move(s.materials);
     read_objects(r, j, p, g);

@@ -161,6 +161,12 @@ constexpr object_kind object_kinds[] = {{"spheres", read_sphere}, {"quads", read
 
 }  // namespace
 
+std::vector<const char*> object_fields() {
+  std::vector<const char*> out;
+  for (const object_kind& kind : object_kinds) out.push_back(kind.field);
+  return out;
+}
+
 void read_objects(const scene_reader& r, const json& root, const std::string& at, scene& s) {
   for (const object_kind& kind : object_kinds)
     read_array(r, root, at, kind.field,
