@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 
 #include "aov_output.h"
 #include "aov_pass.h"
 #include "camera.h"
+#include "gpu_engine.h"
 #include "gpu_fixture.h"
 #include "object_ids.h"
 #include "render_aov.h"
@@ -83,6 +85,29 @@ expected_hit expect(int x, int y) {
 }
 
 class GpuAov : public test::GpuTest {};
+
+// rtvk render's AOVs go through the render's own scene and tree (gpu_engine::device_scene), one
+// pass for every image of the run: each view's ground truth must be what a pass over a scene of
+// its own finds, bit for bit, the second view's too (its camera written again, its rows read
+// back again; a window of another size grows the pass's buffer).
+TEST_F(GpuAov, OnePassOverTheRendersSceneServesEveryView) {
+  const scene s = known_scene();
+  gpu::gpu_engine engine(gpu(), s);
+  ASSERT_TRUE(engine.scene_has_bvh());
+  gpu::aov_pass pass(gpu(), engine.device_scene(), engine.scene_has_bvh());
+  camera_pose turned = s.cameras[0].path.pose;
+  turned.lookfrom = turned.lookfrom + vec3(0.4, 0.3, 0);
+  for (const auto& [pose, w] :
+       {std::pair{s.cameras[0].path.pose, width}, std::pair{turned, 2 * width}}) {
+    const camera cam(pose, double(width) / height, w);
+    const render_window win = whole_render(cam.image_width(), cam.image_height(), 1);
+    const std::vector<gpu::gpu_aov> shared = pass.run(cam, win);
+    const std::vector<gpu::gpu_aov> own = gpu::run_aov_pass(gpu(), s, true, cam, win);
+    ASSERT_EQ(shared.size(), own.size());
+    EXPECT_EQ(std::memcmp(shared.data(), own.data(), own.size() * sizeof(gpu::gpu_aov)), 0)
+        << "view " << w;
+  }
+}
 
 TEST_F(GpuAov, AKnownScenesGroundTruthIsExactOnBothBackends) {
   const scene s = known_scene();

@@ -224,23 +224,26 @@ int render_on_gpu(const run_context& cpu_run, gpu::gpu_context& ctx,
                   const std::vector<render_job>& jobs) {
   engine_options e = engine_from(cpu_run.o);
   e.traversal = traversal_for(cpu_run.o.accel, ctx);
+  run_context run = cpu_run;
+  const std::size_t group = gpu_group_size(run.win);
+  // Set up once (scene buffers, BVH, pipelines) for every group of the run.
+  gpu::gpu_engine engine(ctx, run.s,
+                         {.engine = e, .pipeline_cache_folder = gpu::default_cache_folder()});
   // The AOVs on the device too; with --backend both, checked against the CPU's.
   bool aovs_alike = true;
-  run_context run = cpu_run;
   run.aovs_alike = &aovs_alike;
+  // The AOVs through the render's own scene and tree, already on the device.
+  std::unique_ptr<gpu::aov_pass> aovs;
   run.aov_pass = [&](const render_job& job) {
-    std::vector<gpu::gpu_aov> found =
-        gpu::run_aov_pass(ctx, run.s, run.o.accel != "none", job.cam, run.win);
+    if (!aovs)
+      aovs = std::make_unique<gpu::aov_pass>(ctx, engine.device_scene(), engine.scene_has_bvh());
+    std::vector<gpu::gpu_aov> found = aovs->run(job.cam, run.win);
     if (run.o.backend == "both")
       aovs_alike &=
           aovs_agree(found, render_aov_cpu(job.cam, run.s, run.win, run.o.threads),
                      object_ids(run.s), run.win.width, run.several ? label(run, job) + ": " : "");
     return found;
   };
-  const std::size_t group = gpu_group_size(run.win);
-  // Set up once (scene buffers, BVH, pipelines) for every group of the run.
-  gpu::gpu_engine engine(ctx, run.s,
-                         {.engine = e, .pipeline_cache_folder = gpu::default_cache_folder()});
   // The summary says which device and which traversal drew the image.
   const std::string backend = "gpu (" + ctx.device().name + ", " + engine.traversal_name() + ")";
   // PNG and PPM are encoded on the device (4 bytes a pixel read back), unless the CPU's check

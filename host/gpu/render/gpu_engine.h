@@ -98,6 +98,12 @@ class gpu_engine {
   double build_seconds() const {
     return scene_.build_seconds() + (accel_ ? accel_->build_seconds() : 0.0);
   }
+  // The scene on the device, uploaded, for other passes over it (aov_pass), and whether it holds
+  // the compute BVH (every path but --accel none builds it).
+  const gpu_scene& device_scene() const { return scene_; }
+  bool scene_has_bvh() const {
+    return options_.engine.use_bvh || options_.engine.traversal != gpu_traversal::compute;
+  }
   // What finds the hits: "bvh", "none", "rt-query" or "rt-pipeline" (--accel's words).
   const char* traversal_name() const;
   const pipeline_cache& cache() const { return cache_; }
