@@ -12,6 +12,7 @@
 #include "hit_sphere.h"
 #include "hit_triangle.h"
 #include "instance_space.h"
+#include "scan_order.h"
 
 // Whether some sphere moves: without, the velocities (`velocities`, vec4[] in the spheres' order)
 // are never read. The host sets it for
@@ -102,7 +103,7 @@ void test_object(uint ref, ray r, sheared_ray sr, float t_min, precise inout flo
       return;
     i = int(triangles[k].scene_index);
   }
-  if (t < closest || inst > best_inst || (inst == best_inst && i > best)) {
+  if (t < closest || later_in_scan(inst, i, best_inst, best)) {
     closest = t;
     best = i;
     best_ref = ref;

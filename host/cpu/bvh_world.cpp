@@ -140,22 +140,21 @@ inline bool descend(const wide_node& n, unsigned entered, const float (&t)[4], n
 
 // The search's state: the nearest hit so far, and its object.
 struct bvh_world::nearest {
-  double t;                    // the hit's distance (t_max while there is none)
-  std::int64_t key = -1;       // the object's place in the scan order, -1 for none
-  std::uint32_t ref = 0;       // and its leaf reference (RTVK_LEAF_* kind | position)
-  std::int64_t instance = -1;  // the instance it was reached through, -1: the world's own
-  std::int64_t current = -1;   // the instance the walk is in now, -1: the world's tree
+  double t;                                   // the hit's distance (t_max while there is none)
+  int index = -1;                             // its object's place in the scan order; -1: none
+  std::uint32_t ref = 0;                      // and its leaf reference (RTVK_LEAF_* | position)
+  std::uint32_t instance = RTVK_OWN_OBJECTS;  // the instance + 1 it was reached through
+  std::uint32_t current = RTVK_OWN_OBJECTS;   // the instance + 1 the walk is in now
 
-  // Keeps a hit at t on object `i` (reference `r`) of `inst` when it is nearer, or as near and
-  // later in the scan order (the world's objects, then each instance's), as in a linear scan,
-  // so the order of the tests never matters.
-  void offer(double t_hit, std::int64_t i, std::uint32_t r, std::int64_t inst) {
-    const std::int64_t k = ((inst + 1) << 32) | i;
-    if (t_hit < t || k > key) {
+  // Keeps a hit at t on object `i` (reference `r`) of the instance walked now when it is
+  // nearer, or as near and later in the scan (scan_order.h, the GPU's rule too), so the order
+  // of the tests never matters.
+  void offer(double t_hit, std::uint32_t i, std::uint32_t r) {
+    if (t_hit < t || later_in_scan(current, int(i), instance, index)) {
       t = t_hit;
-      key = k;
+      index = int(i);
       ref = r;
-      instance = inst;
+      instance = current;
     }
   }
 };
@@ -239,9 +238,9 @@ void bvh_world::build(const primitive_spans& objects, std::span<const triangle_s
     const object_group* g = own ? nullptr : &groups[o.group];
     const disk& d = own ? objects.disks[o.index] : g->disks[o.index];
     disks_.push_back({d.geometry(), d.material});
-    disk_index_.push_back(o.index + (own ? first_disk
-                                         : std::uint32_t(g->spheres.size() + g->quads.size() +
-                                                         g->triangles.size())));
+    disk_index_.push_back(
+        o.index + (own ? first_disk
+                       : std::uint32_t(g->spheres.size() + g->quads.size() + g->triangles.size())));
   }
   instances_.reserve(instances.size());
   for (const instance& i : instances)
@@ -260,28 +259,28 @@ inline void bvh_world::visit(std::uint32_t ref, const ray& r, const sheared_ray&
   double t;
   if (hit_sphere(center_at(k, spheres_, velocities_, r.time), spheres_[k].radius, r, t_min, best.t,
                  t))
-    best.offer(t, sphere_index_[k], ref, best.current);
+    best.offer(t, sphere_index_[k], ref);
 }
 
-// Quads, triangles and disks, out of the sphere path's way: a scene of spheres keeps the loop it had.
+// Quads, triangles and disks, out of the sphere path's way: a scene of spheres keeps the loop it
+// had.
 void bvh_world::visit_flat(std::uint32_t ref, const ray& r, const sheared_ray& sheared,
                            double t_min, nearest& best) const {
   const std::uint32_t k = ref & RTVK_LEAF_INDEX_MASK;
   double t;
   if ((ref & RTVK_LEAF_KIND_MASK) == RTVK_LEAF_QUAD) {
     real2 uv;
-    if (hit_quad(quads_[k].g, r, t_min, best.t, t, uv))
-      best.offer(t, quad_index_[k], ref, best.current);
+    if (hit_quad(quads_[k].g, r, t_min, best.t, t, uv)) best.offer(t, quad_index_[k], ref);
     return;
   }
   if ((ref & RTVK_LEAF_KIND_MASK) == RTVK_LEAF_DISK) {
-    if (hit_disk(disks_[k].g, r, t_min, best.t, t)) best.offer(t, disk_index_[k], ref, best.current);
+    if (hit_disk(disks_[k].g, r, t_min, best.t, t)) best.offer(t, disk_index_[k], ref);
     return;
   }
   const leaf_triangle& tri = triangles_[k];
   real3 weights;
   if (hit_triangle(tri.p[0], tri.p[1], tri.p[2], r, sheared, t_min, best.t, t, weights))
-    best.offer(t, triangle_index_[k], ref, best.current);
+    best.offer(t, triangle_index_[k], ref);
 }
 
 // The ray in an instance's group space: the same t reaches the same point (the direction is
@@ -293,8 +292,8 @@ void bvh_world::enter(std::uint32_t i, const ray& r, double t_min, nearest& best
   const leaf_instance& in = instances_[i];
   const ray g = to_group(in.frame, r);
   const sheared_ray sheared = triangles_.empty() ? sheared_ray{} : shear_ray(g);
-  const std::int64_t outer = best.current;
-  best.current = i;
+  const std::uint32_t outer = best.current;
+  best.current = i + 1;
   walk(in.root, g, sheared, t_min, best, i);
   best.current = outer;
 }
@@ -304,11 +303,11 @@ void bvh_world::enter(std::uint32_t i, const ray& r, double t_min, nearest& best
 // offset grown by the placement's stretch).
 void bvh_world::record(const nearest& best, const ray& r, const sheared_ray& sheared,
                        hit_record& rec) const {
-  if (best.instance >= 0) {
-    const instance_frame& f = instances_[std::size_t(best.instance)].frame;
+  if (best.instance != RTVK_OWN_OBJECTS) {
+    const instance_frame& f = instances_[std::size_t(best.instance - 1)].frame;
     const ray g = to_group(f, r);
     nearest inner = best;
-    inner.instance = -1;
+    inner.instance = RTVK_OWN_OBJECTS;
     record(inner, g, triangles_.empty() ? sheared_ray{} : shear_ray(g), rec);
     carry_back(f, r, best.t, rec);
     return;
@@ -369,10 +368,10 @@ bool bvh_world::hit_which(const ray& r, double t_min, double t_max, hit_record& 
   const sheared_ray sheared = triangles_.empty() ? sheared_ray{} : shear_ray(r);
   nearest best{t_max};
   walk(0, r, sheared, t_min, best, -1);
-  if (best.key < 0) return false;
+  if (best.index < 0) return false;
   record(best, r, sheared, rec);
-  object = std::uint32_t(best.key & 0xffffffff);
-  instance = std::uint32_t(best.instance + 1);
+  object = std::uint32_t(best.index);
+  instance = best.instance;
   return true;
 }
 
