@@ -90,6 +90,18 @@ bool add_sample(inout pixel_sum acc, vec3 c, uint rays, inout uint dropped) {
          sum_overflows(c.b, pc.sample_limit);
 }
 
+// lavapipe 22.3 stops every loop of an invocation, silently, once 65,535 trips were taken in
+// all -- loops rtvk does not count and, on the hardware paths, the driver's own traversal loop
+// included -- and a loop cut short gives a wrong sample (a search cut short is a miss). A loop of
+// pc.probe_trips (2) trips run after the invocation's work shows it: past the limit, it stops
+// after its first. The body mixes the trips so no compiler can fold the loop away. On every path
+// and device: a driver not known to have a limit (pacer.h) is found out by it.
+bool limit_was_hit() {
+  uint mixed = 0u;
+  for (uint i = 0u; i < pc.probe_trips; ++i) mixed = mixed * 0x9e3779b9u + i + 1u;
+  return mixed != 0x9e3779b9u + 2u;
+}
+
 void main() {
   // x from the left, y from the top of the image; the dispatch covers one band of rows of the
   // region, for every view.
@@ -128,16 +140,14 @@ void main() {
     iterations += lens_work;
     p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   }
-#if defined(RTVK_RAY_QUERY) || defined(RTVK_RAY_PIPELINE)
-  // A driver's loop limit that counted its own traversal loop, unseen, would have cut some ray
-  // short into a miss: then nothing of this dispatch is kept or counted, and the host counts each
-  // traced ray as more iterations (world_rt.glsl).
+  // A driver's loop limit cut some loop short, unseen: nothing of this dispatch is kept or
+  // counted, and the host holds the budget below the limit (on a device it did not know had
+  // one) or counts each traced ray as more iterations (the hardware paths' traversals).
   if (limit_was_hit()) {
     atomicAdd(status.cut_traversals, 1u);
     atomicAdd(status.unfinished_pixels, 1u);
     return;
   }
-#endif
   if (iterations > pc.loop_budget) {
     atomicAdd(status.unfinished_pixels, 1u);  // the host dispatches again
     if (acc.samples == first) {  // one sample needs more than a whole budget: the host gives

@@ -28,8 +28,8 @@ struct render_stats {
   int submissions = 0;     // GPU: command buffers submitted (all views of a group share each)
   double gpu_seconds = 0;  // GPU: device time of those submissions (timestamp queries); 0 when
                            // the device's queue has no timestamps
-  std::uint64_t cut_traversals = 0;  // GPU hardware paths: invocations a driver's loop limit cut
-                                     // short, redrawn (render_status::cut_traversals)
+  std::uint64_t cut_traversals = 0;  // GPU: invocations a driver's loop limit cut short,
+                                     // redrawn (render_status::cut_traversals)
 };
 
 }  // namespace rtvk

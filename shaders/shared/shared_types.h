@@ -380,8 +380,8 @@ struct render_push {
                         // strata^2 - 1 in its own (camera_rays.h); 0 or 1: not stratified
   uint trace_cost;      // hardware paths: loop iterations each traced ray counts besides its
                         // candidates, for the driver's own traversal loop (world_rt.glsl)
-  uint probe_trips;     // 2: the trips of the loop that tells whether lavapipe's loop limit
-                        // cut a traversal short (limit_was_hit); a push constant, so not unrolled
+  uint probe_trips;     // 2: the trips of the loop that tells whether a driver's loop limit
+                        // cut the invocation short (limit_was_hit); a push constant, not unrolled
   uint disk_count;      // disks in the storage buffer
 };
 
@@ -416,8 +416,8 @@ struct render_status {
   uint dropped_samples;     // samples with a NaN or infinite channel: they add black
   uint rays_low;            // rays traced for the samples added (when counted), low word
   uint rays_high;           // and high word
-  uint cut_traversals;      // hardware paths: invocations a driver's loop limit cut short
-                            // (limit_was_hit): nothing of them is kept; the host redraws them
+  uint cut_traversals;      // invocations a driver's loop limit cut short (limit_was_hit):
+                            // nothing of them is kept; the host redraws them
 };
 
 // Push constants of overlay.comp (std430): the viewer's overlay, a band at the top left of the

@@ -66,8 +66,8 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       cache_(ctx, options.pipeline_cache_folder),
       timer_(ctx),
       exponent_(rtvk::sum_exponent(brightest(s.sky))),
-      pacer_(pacing_for(cpu_device(ctx.device())), options.samples_per_dispatch,
-             options.samples_per_submission, options.loop_budget) {
+      pacer_(pacing_of(ctx.device()), options.samples_per_dispatch, options.samples_per_submission,
+             options.loop_budget) {
   const bool pipelines = options.engine.traversal == gpu_traversal::ray_pipeline;
   if (pipelines) render_stages_ |= VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
   upload();

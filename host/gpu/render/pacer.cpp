@@ -10,7 +10,7 @@ pacer::pacer(const pacing& targets, std::uint32_t fixed_per_dispatch,
       fixed_(fixed_per_dispatch || fixed_per_submission),
       work_(std::clamp<std::uint64_t>(targets.first_work, 1, max_work)),
       lowest_budget_(fixed_loop_budget ? fixed_loop_budget : first_loop_budget),
-      highest_budget_(fixed_loop_budget ? fixed_loop_budget : max_loop_budget) {
+      highest_budget_(fixed_loop_budget ? fixed_loop_budget : targets.highest_budget) {
   if (!fixed_) return;
   per_dispatch_ = std::max(1u, fixed_per_dispatch);
   per_submission_ = std::max(per_dispatch_, fixed_per_submission);
@@ -29,6 +29,13 @@ bool pacer::starved(std::uint32_t budget) {
   if (budget >= highest_budget_) return false;
   lowest_budget_ = std::max(lowest_budget_,
                             std::uint32_t(std::min<std::uint64_t>(4ull * budget, highest_budget_)));
+  return true;
+}
+
+bool pacer::loop_limit_found() {
+  if (highest_budget_ <= loop_limited_budget) return false;
+  highest_budget_ = loop_limited_budget;
+  lowest_budget_ = std::min(lowest_budget_, highest_budget_);
   return true;
 }
 

@@ -25,15 +25,30 @@ struct pacing {
   double submission_grow, submission_shrink;  // seconds per submission
   bool small_bands;                           // bands sized to the sample count, as above
   std::uint64_t first_work;                   // loop iterations a first dispatch may run
+  std::uint32_t highest_budget;               // loop iterations one invocation may run
 };
+
+// The most loop iterations one invocation may run. lavapipe silently stops an invocation's loops
+// after 65,535 trips in all (Mesa 22.3; a cut is found by the probe at the end of every
+// invocation, render_body.glsl), so there rtvk stops first, at 60,000 (the rest is for loops it
+// does not count, such as rejection sampling). A device with no loop limit is bounded by time
+// instead: a budget grows only as far as some sample needs (fourfold at a time), and a dispatch
+// is given fewer pixels as it grows, so that its pixels times its budget stay within the work its
+// measured times allow; the fence timeout (--gpu-timeout) catches one sample longer than that on
+// its own. Its highest budget, 2^30, only keeps the shader's 32-bit count from wrapping.
+inline constexpr std::uint32_t loop_limited_budget = 60'000;
+inline constexpr std::uint32_t unlimited_budget = 1u << 30;
 
 // The targets for a CPU device (lavapipe) or for any other. lavapipe runs about 3e8 iterations a
 // second on two cores, so 2^26 is at most a quarter second there; on a GPU, as long on an old
 // integrated one and a millisecond on a discrete one. At the first loop budget that is 2^18
 // pixels: a 512x512 band, or the frames of a small animation in one dispatch.
-constexpr pacing pacing_for(bool cpu_device) {
-  return cpu_device ? pacing{0.1, 0.4, 0.25, 1.0, true, 1ull << 26}
-                    : pacing{0.004, 0.016, 0.1, 0.4, false, 1ull << 26};
+// `loop_limited`: the driver stops loops (lavapipe, known by its driver ID: loop_limited in
+// render_plan.h).
+constexpr pacing pacing_for(bool cpu_device, bool loop_limited) {
+  const std::uint32_t highest = loop_limited ? loop_limited_budget : unlimited_budget;
+  return cpu_device ? pacing{0.1, 0.4, 0.25, 1.0, true, 1ull << 26, highest}
+                    : pacing{0.004, 0.016, 0.1, 0.4, false, 1ull << 26, highest};
 }
 
 // Samples per dispatch and per submission, and how much work one dispatch may do. The samples
@@ -50,14 +65,13 @@ constexpr pacing pacing_for(bool cpu_device) {
 // as many pixels as the work allows at the lowest budget (a GPU wants many invocations), and
 // the budget grows only once a dispatch's pixels are all it was asked for. The lowest budget
 // starts at first_loop_budget and grows fourfold whenever some sample needed more
-// (`starved`), up to max_loop_budget, where a sample that does not fit fails the render.
+// (`starved`), up to the pacing's highest budget, where a sample that does not fit fails the
+// render. A device that turns out to cut loops all the same (`loop_limit_found`) is held to
+// loop_limited_budget from then on.
 class pacer {
  public:
   static constexpr std::uint32_t max_samples = 1u << 20;  // either size
   static constexpr std::uint32_t max_dispatches = 256;    // dispatches in one submission
-  // lavapipe silently stops loops at 65,535 iterations per invocation; the same bound on every
-  // device keeps a render that works on one working on all.
-  static constexpr std::uint32_t max_loop_budget = 60'000;
   static constexpr std::uint32_t first_loop_budget = 256;
   static constexpr std::uint64_t max_work = 1ull << 40;  // loop iterations per dispatch
 
@@ -80,6 +94,10 @@ class pacer {
   // that, up to the highest. False when `budget` was already the highest: the sample cannot be
   // drawn on any device.
   bool starved(std::uint32_t budget);
+  // The device cut an invocation's loops short (its probe saw it, render_body.glsl) though its
+  // driver was not known to: the highest budget becomes loop_limited_budget, as on lavapipe.
+  // False when it was that already (or lower): nothing to change.
+  bool loop_limit_found();
 
   // A submission of `dispatches` dispatches took `seconds` (device time where the device has a
   // timer: wall time includes the wait behind the other submission in flight). A time that is not
