@@ -173,6 +173,33 @@ TEST(Pacer, EveryFirstDispatchIsBoundedBeforeAnythingIsMeasured) {
   }
 }
 
+// The first dispatch is a calibration of first_work iterations, a fraction of a second even on a
+// device 30 times slower than two cores of lavapipe; its time scales the work at once to the
+// dispatch grow bound at the rate it showed, on fast and slow devices alike: the next dispatch,
+// every iteration of its bound used, takes the grow bound's time, within the shrink bound even
+// when the calibration used only a quarter of its bound. Later times step it as before.
+TEST(Pacer, TheCalibrationsTimeSizesTheWorkAtOnce) {
+  for (const bool cpu : {false, true}) {
+    const pacing t = pacing_for(cpu, cpu);
+    EXPECT_LE(double(t.first_work) * 1e-7, 0.5);
+    for (const double per_iteration : {1e-13, 1e-11, 1e-9, 1e-7}) {
+      SCOPED_TRACE(std::string(cpu ? "cpu" : "gpu") + " pacing, " + std::to_string(per_iteration) +
+                   " s an iteration");
+      pacer p(t);
+      EXPECT_EQ(p.work(), t.first_work);
+      p.measured(double(p.work()) * per_iteration, 1);
+      const double next = double(p.work()) * per_iteration;
+      if (p.work() < pacer::max_work) {
+        EXPECT_NEAR(next, t.dispatch_grow, t.dispatch_grow * 1e-6);
+      }
+      EXPECT_LE(4 * next, t.dispatch_shrink * (1 + 1e-6));
+      const std::uint64_t sized = p.work();
+      p.measured(next * 1.01, 1);  // just past the grow bound, far inside the shrink bound
+      EXPECT_EQ(p.work(), sized);
+    }
+  }
+}
+
 // The work grows on a fast device and shrinks on a slow one, so that a dispatch of the allowed
 // pixels at their budget stays inside the targets even when every invocation uses its whole
 // budget.

@@ -42,9 +42,16 @@ bool pacer::loop_limit_found() {
 void pacer::measured(double seconds, std::uint32_t dispatches) {
   if (!(seconds == seconds) || dispatches == 0) return;
   const double per_dispatch = seconds / dispatches;
-  // The work bounds every dispatch, fixed sample sizes or not.
-  if (per_dispatch < targets_.dispatch_grow && work_ < max_work) work_ *= 2;
-  if (per_dispatch > targets_.dispatch_shrink && work_ > 1) work_ /= 2;
+  // The work bounds every dispatch, fixed sample sizes or not. The first time (of the
+  // calibration) scales it to the grow bound at once; later ones step it.
+  if (!calibrated_ && per_dispatch > 0) {
+    calibrated_ = true;
+    const double scaled = double(work_) * targets_.dispatch_grow / per_dispatch;
+    work_ = std::uint64_t(std::clamp(scaled, 1.0, double(max_work)));
+  } else {
+    if (per_dispatch < targets_.dispatch_grow && work_ < max_work) work_ *= 2;
+    if (per_dispatch > targets_.dispatch_shrink && work_ > 1) work_ /= 2;
+  }
   if (fixed_) return;
   if (per_dispatch < targets_.dispatch_grow && per_dispatch_ < max_samples) per_dispatch_ *= 2;
   if (per_dispatch > targets_.dispatch_shrink && per_dispatch_ > 1) per_dispatch_ /= 2;
