@@ -122,7 +122,8 @@ void main() {
   uint iterations = 0u;
   uint rays = 0u;  // of the path in flight
   uint overflowed = 0u;  // samples past the limit
-  uint dropped = 0u;     // samples not finite
+  uint dropped = 0u;     // samples not finite, or whose BVH walk overflowed its stack
+  uint stack_drops = 0u;  // samples whose BVH walk overflowed its stack
   uint rays_added = 0u;  // by the samples added (when counted)
   // A calibrated lens's inverse loops too: each first ray counts its most Newton steps.
   uint lens_work = calibrated_model(cam.projection) ? RTVK_LENS_ITERATIONS + 1u : 0u;
@@ -133,6 +134,11 @@ void main() {
     bool ended = ray_color_step(p, c, iterations, rays);
     if (iterations > pc.loop_budget) break;  // the path in flight is dropped and drawn again
     if (!ended) continue;
+    if (stack_overflowed) {  // the walk stopped short: dropped as a NaN sample is, and counted
+      stack_overflowed = false;
+      ++stack_drops;
+      c = vec3(uintBitsToFloat(0x7fc00000u));
+    }
     if (add_sample(acc, c, rays, dropped)) ++overflowed;
     rays_added += rays;
     rays = 0u;
@@ -158,6 +164,7 @@ void main() {
   }
   if (overflowed != 0u) atomicAdd(status.overflowed_samples, overflowed);
   if (dropped != 0u) atomicAdd(status.dropped_samples, dropped);
+  if (stack_drops != 0u) atomicAdd(status.stack_overflows, stack_drops);
   if (count_rays && rays_added != 0u) {  // a 64-bit count: the carry goes to the high word
     uint before = atomicAdd(status.rays_low, rays_added);
     if (before + rays_added < before) atomicAdd(status.rays_high, 1u);

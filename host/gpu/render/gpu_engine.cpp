@@ -153,6 +153,7 @@ const shader_program& gpu_engine::pipeline_for(bool jitter, bool lens, bool coun
     scene_.specialize(spec);
     spec[RTVK_SPEC_LIGHTS] = lights;
     spec[RTVK_SPEC_CALIBRATED] = calibrated;
+    spec[RTVK_SPEC_STACK] = options_.stack_entries;
     const auto bindings = render_bindings(scene_, *targets_, accel_.get(), ray_times_.get());
     switch (options_.engine.traversal) {
       case gpu_traversal::compute:
@@ -301,7 +302,10 @@ void gpu_engine::draw_bands(const std::vector<camera>& views, const render_windo
       }
       b.view_rows_before += b.pixels();
       const render_status& st = tools.bands.last_status();  // the band's: all its samples' counts
-      if (stats) stats->dropped_samples += st.dropped_samples;
+      if (stats) {
+        stats->dropped_samples += st.dropped_samples;
+        stats->stack_overflows += st.stack_overflows;
+      }
       if (tools.kept) {
         if (stats && tools.count_rays)
           stats->rays += std::uint64_t(st.rays_high) << 32 | st.rays_low;

@@ -46,6 +46,8 @@ struct gpu_render_options {
   // hit (render_push::probe_trips 3 instead of 2), to prove the engine redraws what it kept none
   // of.
   std::uint32_t simulated_cuts = 0;
+  // Tests only: the entries of the BVH walk's stack in use (RTVK_SPEC_STACK); 0: all of them.
+  std::uint32_t stack_entries = 0;
   // Where compiled pipelines are kept between runs (default_cache_folder()); empty: nowhere.
   std::filesystem::path pipeline_cache_folder = {};
 };
