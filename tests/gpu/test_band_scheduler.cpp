@@ -132,7 +132,7 @@ TEST(BandScheduler, StarvedSamplesRaiseTheLoopBudget) {
     return st;
   });
   f.draw();
-  // 2^26 iterations over a million pixels is below the lowest budget, 256; the first
+  // 2^22 iterations over a million pixels is below the lowest budget, 256; the first
   // submission's starved pixel makes it 1024 for those queued after it was read.
   EXPECT_EQ(f.queue.submitted[1].loop_budget, pacer::first_loop_budget);
   EXPECT_EQ(f.queue.submitted[2].loop_budget, 4 * pacer::first_loop_budget);
