@@ -18,7 +18,7 @@ namespace rtvk::gpu {
 // pixels at least). With fewer samples there is little to gain, and many views in one dispatch (an
 // animation's frames) do better: one band, one wait and one readback for all of them. Before
 // anything was measured, a dispatch may run at most `first_work` loop iterations in all (its pixels
-// times its loop budget): a short calibration, a few milliseconds on two cores of lavapipe, far
+// times its loop budget): a short calibration, tens of milliseconds on two cores of lavapipe, far
 // inside Windows' 2-second watchdog (TDR), Linux's GPU job timeouts and --gpu-timeout on any
 // device; its measured time sizes the work of the dispatches after it.
 struct pacing {
@@ -67,10 +67,9 @@ constexpr pacing pacing_for(bool cpu_device, bool loop_limited) {
 // grow bound allows at the rate it showed (iterations a second, counting every one the bound
 // allowed: a dispatch whose invocations used a quarter of their budgets still ends inside the
 // shrink bound). After that it doubles or halves with the dispatch times as the samples do; a
-// dispatch is given
-// as many pixels as the work allows at the lowest budget (a GPU wants many invocations), and
-// the budget grows only once a dispatch's pixels are all it was asked for. The lowest budget
-// starts at first_loop_budget and grows fourfold whenever some sample needed more
+// dispatch is given as many pixels as the work allows at the lowest budget (a GPU wants many
+// invocations), and the budget grows only once a dispatch's pixels are all it was asked for. The
+// lowest budget starts at first_loop_budget and grows fourfold whenever some sample needed more
 // (`starved`), up to the pacing's highest budget, where a sample that does not fit fails the
 // render. A device that turns out to cut loops all the same (`loop_limit_found`) is held to
 // loop_limited_budget from then on.
