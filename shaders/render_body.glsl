@@ -90,6 +90,18 @@ bool add_sample(inout pixel_sum acc, vec3 c, uint rays, inout uint dropped) {
          sum_overflows(c.b, pc.sample_limit);
 }
 
+// lavapipe 22.3 stops every loop of an invocation, silently, once 65,535 trips were taken in
+// all -- loops rtvk does not count and, on the hardware paths, the driver's own traversal loop
+// included -- and a loop cut short gives a wrong sample (a search cut short is a miss). A loop of
+// pc.probe_trips (2) trips run after the invocation's work shows it: past the limit, it stops
+// after its first. The body mixes the trips so no compiler can fold the loop away. On every path
+// and device: a driver not known to have a limit (pacer.h) is found out by it.
+bool limit_was_hit() {
+  uint mixed = 0u;
+  for (uint i = 0u; i < pc.probe_trips; ++i) mixed = mixed * 0x9e3779b9u + i + 1u;
+  return mixed != 0x9e3779b9u + 2u;
+}
+
 void main() {
   // x from the left, y from the top of the image; the dispatch covers one band of rows of the
   // region, for every view.
@@ -110,7 +122,8 @@ void main() {
   uint iterations = 0u;
   uint rays = 0u;  // of the path in flight
   uint overflowed = 0u;  // samples past the limit
-  uint dropped = 0u;     // samples not finite
+  uint dropped = 0u;     // samples not finite, or whose BVH walk overflowed its stack
+  uint stack_drops = 0u;  // samples whose BVH walk overflowed its stack
   uint rays_added = 0u;  // by the samples added (when counted)
   // A calibrated lens's inverse loops too: each first ray counts its most Newton steps.
   uint lens_work = calibrated_model(cam.projection) ? RTVK_LENS_ITERATIONS + 1u : 0u;
@@ -121,6 +134,11 @@ void main() {
     bool ended = ray_color_step(p, c, iterations, rays);
     if (iterations > pc.loop_budget) break;  // the path in flight is dropped and drawn again
     if (!ended) continue;
+    if (stack_overflowed) {  // the walk stopped short: dropped as a NaN sample is, and counted
+      stack_overflowed = false;
+      ++stack_drops;
+      c = vec3(uintBitsToFloat(0x7fc00000u));
+    }
     if (add_sample(acc, c, rays, dropped)) ++overflowed;
     rays_added += rays;
     rays = 0u;
@@ -128,16 +146,14 @@ void main() {
     iterations += lens_work;
     p = pixel_path(cam, pixel, j, pc.sample_begin + acc.samples);
   }
-#if defined(RTVK_RAY_QUERY) || defined(RTVK_RAY_PIPELINE)
-  // A driver's loop limit that counted its own traversal loop, unseen, would have cut some ray
-  // short into a miss: then nothing of this dispatch is kept or counted, and the host counts each
-  // traced ray as more iterations (world_rt.glsl).
+  // A driver's loop limit cut some loop short, unseen: nothing of this dispatch is kept or
+  // counted, and the host holds the budget below the limit (on a device it did not know had
+  // one) or counts each traced ray as more iterations (the hardware paths' traversals).
   if (limit_was_hit()) {
     atomicAdd(status.cut_traversals, 1u);
     atomicAdd(status.unfinished_pixels, 1u);
     return;
   }
-#endif
   if (iterations > pc.loop_budget) {
     atomicAdd(status.unfinished_pixels, 1u);  // the host dispatches again
     if (acc.samples == first) {  // one sample needs more than a whole budget: the host gives
@@ -148,6 +164,7 @@ void main() {
   }
   if (overflowed != 0u) atomicAdd(status.overflowed_samples, overflowed);
   if (dropped != 0u) atomicAdd(status.dropped_samples, dropped);
+  if (stack_drops != 0u) atomicAdd(status.stack_overflows, stack_drops);
   if (count_rays && rays_added != 0u) {  // a 64-bit count: the carry goes to the high word
     uint before = atomicAdd(status.rays_low, rays_added);
     if (before + rays_added < before) atomicAdd(status.rays_high, 1u);

@@ -26,6 +26,11 @@ layout(constant_id = RTVK_SPEC_DISKS) const bool any_disks = false;
 layout(constant_id = RTVK_SPEC_INSTANCES) const bool any_instances = false;
 // Whether sphere hits find their texture coordinates (some image texture reads them).
 layout(constant_id = RTVK_SPEC_UV) const bool with_uv = false;
+// The entries of hit_bvh's stack a walk may use: 0, all RTVK_WIDE_STACK (a test makes it less
+// to force an overflow).
+layout(constant_id = RTVK_SPEC_STACK) const uint stack_entries = 0u;
+// Set when a walk found its stack full: it stopped, and render_body.glsl drops the sample.
+bool stack_overflowed = false;
 
 // Where the sphere in slot k is at `time` (sphere::center_at).
 precise vec3 center_at(uint k, float time) {
@@ -209,6 +214,10 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
   precise vec3 inv_d = safe_inverse(r.direction);
   precise float margin = origin_margin(o);
   precise float box_min = t_min * (1.0 - 1.0 / 1048576.0);
+  // The host's builder caps the tree's depth so that RTVK_WIDE_STACK is enough; each push is
+  // bounded all the same, so a deeper tree is a sample dropped and counted, never a write past
+  // the stack or a wrong hit.
+  int room = int(stack_entries == 0u ? RTVK_WIDE_STACK : min(stack_entries, RTVK_WIDE_STACK));
   uint stack_node[RTVK_WIDE_STACK];
   float stack_entry[RTVK_WIDE_STACK];
   int top = 0;
@@ -236,6 +245,10 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
                                     (RTVK_WIDE_LEAF | RTVK_LEAF_INSTANCE)) {
       // into an instance's group tree, with the ray in its space, until the marker comes off
       uint k = next & RTVK_LEAF_INDEX_MASK;
+      if (top >= room) {
+        stack_overflowed = true;
+        return false;
+      }
       stack_node[top] = RTVK_WIDE_EXIT;
       stack_entry[top++] = 0.0;
       rc = to_group(frame_of(k), r);
@@ -266,6 +279,10 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
         order_pair(k1, i1, k3, i3);
         order_pair(k1, i1, k2, i2);
         int count = bitCount(entered);
+        if (top + count - 1 > room) {
+          stack_overflowed = true;
+          return false;
+        }
         if (count > 3) {
           stack_node[top] = n.child[i3];
           stack_entry[top++] = uintBitsToFloat(k3);

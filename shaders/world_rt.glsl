@@ -89,17 +89,6 @@ bool try_candidate(uint ref, uint inst, ray g, float t_min, inout nearest_hit n)
   return true;
 }
 
-// lavapipe stops every loop of an invocation, silently, once 65,535 trips were taken in all --
-// its own traversal loop's trips, which rtvk cannot count, included -- and a traversal cut short
-// ends in a miss. A loop of pc.probe_trips (2) trips run after the invocation's work shows it:
-// past the limit, it stops after its first. The body mixes the trips so no compiler can fold the
-// loop away.
-bool limit_was_hit() {
-  uint mixed = 0u;
-  for (uint i = 0u; i < pc.probe_trips; ++i) mixed = mixed * 0x9e3779b9u + i + 1u;
-  return mixed != 0x9e3779b9u + 2u;
-}
-
 // The invocation's slot in the band's buffers (render_body.glsl's `index`), from its launch id.
 uint launch_slot(uvec3 id) {
   return (id.z * pc.band_rows + pc.sums_row0 + id.y) * pc.region_width + id.x;

@@ -24,12 +24,13 @@ struct engine_options {
 struct render_stats {
   std::uint64_t rays = 0;             // rays traced: camera rays plus scattered rays
   std::uint64_t dropped_samples = 0;  // samples with a NaN or infinite channel: added as black
+  std::uint64_t stack_overflows = 0;  // GPU: of those, samples whose BVH walk overflowed its stack
   double build_seconds = 0;           // of the render's time, building the BVH
   int submissions = 0;     // GPU: command buffers submitted (all views of a group share each)
   double gpu_seconds = 0;  // GPU: device time of those submissions (timestamp queries); 0 when
                            // the device's queue has no timestamps
-  std::uint64_t cut_traversals = 0;  // GPU hardware paths: invocations a driver's loop limit cut
-                                     // short, redrawn (render_status::cut_traversals)
+  std::uint64_t cut_traversals = 0;  // GPU: invocations a driver's loop limit cut short,
+                                     // redrawn (render_status::cut_traversals)
 };
 
 }  // namespace rtvk

@@ -66,7 +66,8 @@ using uvec2 = glm::uvec2;
 #define RTVK_SPEC_CALIBRATED \
   14  // bool: a view has a calibrated lens or a rolling shutter (render.comp; camera_rays.h)
 #define RTVK_SPEC_DISKS 15  // bool: the scene has disks
-#define RTVK_SPEC_COUNT 16  // constant ids in use
+#define RTVK_SPEC_STACK 16  // uint: entries of hit_bvh's stack in use; 0: all (tests make it less)
+#define RTVK_SPEC_COUNT 17  // constant ids in use
 
 // Views (cameras, animation frames) one dispatch draws, its z index picking the view: 85 camera
 // blocks of 192 bytes are 15.94 KiB, inside the 16 KiB uniform buffer every Vulkan device offers.
@@ -380,8 +381,8 @@ struct render_push {
                         // strata^2 - 1 in its own (camera_rays.h); 0 or 1: not stratified
   uint trace_cost;      // hardware paths: loop iterations each traced ray counts besides its
                         // candidates, for the driver's own traversal loop (world_rt.glsl)
-  uint probe_trips;     // 2: the trips of the loop that tells whether lavapipe's loop limit
-                        // cut a traversal short (limit_was_hit); a push constant, so not unrolled
+  uint probe_trips;     // 2: the trips of the loop that tells whether a driver's loop limit
+                        // cut the invocation short (limit_was_hit); a push constant, not unrolled
   uint disk_count;      // disks in the storage buffer
 };
 
@@ -416,8 +417,10 @@ struct render_status {
   uint dropped_samples;     // samples with a NaN or infinite channel: they add black
   uint rays_low;            // rays traced for the samples added (when counted), low word
   uint rays_high;           // and high word
-  uint cut_traversals;      // hardware paths: invocations a driver's loop limit cut short
-                            // (limit_was_hit): nothing of them is kept; the host redraws them
+  uint cut_traversals;      // invocations a driver's loop limit cut short (limit_was_hit):
+                            // nothing of them is kept; the host redraws them
+  uint stack_overflows;     // samples whose BVH walk would have pushed past its stack: dropped
+                            // (added black, counted in dropped_samples too), never a wrong hit
 };
 
 // Push constants of overlay.comp (std430): the viewer's overlay, a band at the top left of the
@@ -705,7 +708,8 @@ static_assert(offsetof(render_status, dropped_samples) == 16);
 static_assert(offsetof(render_status, rays_low) == 20);
 static_assert(offsetof(render_status, rays_high) == 24);
 static_assert(offsetof(render_status, cut_traversals) == 28);
-static_assert(sizeof(render_status) == 32);
+static_assert(offsetof(render_status, stack_overflows) == 32);
+static_assert(sizeof(render_status) == 36);
 static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
 static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);
 static_assert(sizeof(probe_io) == 48 * RTVK_PROBE_POINTS);

@@ -12,6 +12,7 @@
 #include "fault_layer.h"
 #include "gpu_fixture.h"
 #include "process.h"
+#include "software_device.h"
 #include "temp_dir.h"
 
 namespace rtvk {
@@ -64,6 +65,51 @@ TEST_F(RealGpuFaults, TheWatchdogLosesTheDevice) {
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("VK_ERROR_DEVICE_LOST"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// Whether the device under test stops an invocation's loops itself: lavapipe of Mesa 22 (the
+// system's 22.3) does, at 65,535 trips in all; Mesa 25's runs past it (the hardware paths' tests
+// run a budget of a million there) and a real GPU (RTVK_TEST_DEVICE) has no such limit.
+bool device_cuts_loops() {
+  return test::test_device().empty() &&
+         test::software_device().description.find("Mesa 22.") != std::string::npos;
+}
+
+// A device that reports no loop limit (the test layer's disguise: NVIDIA's driver ID) is not held
+// to lavapipe's 60,000 iterations: --accel none over 70,000 spheres needs more than that for each
+// ray, and renders there with the BVH's image. Underneath is lavapipe all the same: Mesa 25's has
+// no limit and renders; Mesa 22.3's stops loops at 65,535, which the probe at the end of every
+// invocation finds, and the render then fails as on lavapipe itself, never showing a loop cut
+// short. On lavapipe as it is (its driver ID), the same render stays within the 60,000 and fails:
+// exit 1, no image. Before, every device was held to 60,000 and the disguised render failed too.
+TEST_F(RealGpuFaults, ADeviceWithoutALoopLimitRendersPastLavapipesBudget) {
+  test::temp_dir dir;
+  const fs::path bvh = dir.path() / "bvh.png", scan = dir.path() / "scan.png";
+  const std::vector<std::string> common{"render",  "--scene", "spheres:70000", "--backend", "gpu",
+                                        "--width", "16",      "--spp",         "1"};
+  auto args = common;
+  args.insert(args.end(), {"-o", bvh.string()});
+  const auto want = run_rtvk(args);
+  ASSERT_EQ(want.status, 0) << want.err;
+  args = common;
+  args.insert(args.end(), {"--accel", "none", "-o", scan.string()});
+  const bool lavapipe = test::test_device().empty();
+  const std::string too_long = "pixel samples needed more than 60000 loop iterations on ";
+  if (lavapipe) {
+    const auto held = run_rtvk(args);
+    EXPECT_EQ(held.status, 1) << held.err;
+    EXPECT_NE(held.err.find(too_long + "llvmpipe"), std::string::npos) << held.err;
+    EXPECT_FALSE(fs::exists(scan));
+  }
+  const auto got = run_rtvk(args, test::fault_environment("disguise-device"));
+  if (device_cuts_loops()) {
+    EXPECT_EQ(got.status, 1) << got.err;
+    EXPECT_NE(got.err.find(too_long + "rtvk disguised GPU"), std::string::npos) << got.err;
+    EXPECT_FALSE(fs::exists(scan));
+    return;
+  }
+  ASSERT_EQ(got.status, 0) << got.err;
+  EXPECT_TRUE(bytes_of(bvh) == bytes_of(scan)) << "the scan's image is not the BVH's";
 }
 
 // Runs `args` twice, writing `output` (a file name, maybe with {frame}) into folders "plain" and

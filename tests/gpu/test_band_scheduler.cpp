@@ -63,12 +63,13 @@ class fake_queue : public band_queue {
   std::array<render_status, band_slots> readback_{};  // the status readbacks
 };
 
-// A scheduler with its own pacer (one sample a submission unless told), over a band of one view.
+// A scheduler with its own pacer (one sample a submission unless told), over a band of one view,
+// on a device known to cut loops (lavapipe's budgets) unless told.
 struct scheduler_fixture {
   explicit scheduler_fixture(fake_device device = {}, std::uint32_t fixed_budget = 0,
-                             std::function<bool()> cancel = {})
+                             std::function<bool()> cancel = {}, bool loop_limited = true)
       : queue(std::move(device)),
-        pace(pacing_for(false), 1, 1, fixed_budget),
+        pace(pacing_for(false, loop_limited), 1, 1, fixed_budget),
         cancelled(std::move(cancel)),
         scheduler(queue, {pace, trace_cost, cuts}, win, 1.0f, cancelled) {}
 
@@ -131,7 +132,7 @@ TEST(BandScheduler, StarvedSamplesRaiseTheLoopBudget) {
     return st;
   });
   f.draw();
-  // 2^26 iterations over a million pixels is below the lowest budget, 256; the first
+  // 2^22 iterations over a million pixels is below the lowest budget, 256; the first
   // submission's starved pixel makes it 1024 for those queued after it was read.
   EXPECT_EQ(f.queue.submitted[1].loop_budget, pacer::first_loop_budget);
   EXPECT_EQ(f.queue.submitted[2].loop_budget, 4 * pacer::first_loop_budget);
@@ -162,7 +163,7 @@ TEST(BandScheduler, AnOverflowInTheOlderSubmissionIsNotHiddenByTheNewer) {
 
 TEST(BandScheduler, StarvedAtTheHighestBudgetFails) {
   scheduler_fixture f([](const band_submission& s, std::size_t) { return starved(s.loop_budget); },
-                      pacer::max_loop_budget);
+                      loop_limited_budget);
   EXPECT_THROW(f.draw(), loop_budget_error);
 }
 
@@ -172,6 +173,19 @@ TEST(BandScheduler, CutTraversalsDoubleTheTraceCost) {
   });
   f.draw();
   EXPECT_EQ(f.trace_cost, 2u);  // one doubling: the count grew once
+  EXPECT_EQ(f.stats.cut_traversals, 5u);
+}
+
+// On a device not known to cut loops, the first cut holds the budgets to lavapipe's (the probe
+// found a limit); only a cut after that doubles the trace cost.
+TEST(BandScheduler, ACutOnADeviceWithoutAKnownLimitHoldsItToLavapipesBudget) {
+  scheduler_fixture f(
+      [](const band_submission&, std::size_t index) { return cut(index >= 2 ? 5u : 0u); }, 0, {},
+      false);
+  EXPECT_EQ(f.pace.highest_loop_budget(), unlimited_budget);
+  f.draw();
+  EXPECT_EQ(f.pace.highest_loop_budget(), loop_limited_budget);
+  EXPECT_EQ(f.trace_cost, 1u);
   EXPECT_EQ(f.stats.cut_traversals, 5u);
 }
 

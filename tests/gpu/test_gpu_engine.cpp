@@ -136,6 +136,27 @@ TEST_F(GpuEngine, AnOverrunInOneRenderDoesNotFailTheNext) {
   EXPECT_TRUE(test::same_pixels(fbs[0], fresh[0]));
 }
 
+// A BVH walk that finds its stack full stops and drops its sample (added black, counted), never
+// a write past the stack or a wrong hit. The builder's depth cap keeps every real tree within the
+// shader's stack, so the test lets the walk use only 2 of its entries (RTVK_SPEC_STACK): book-
+// final's 485 spheres need more, and the overflows are counted in the status and the stats (in
+// the dropped samples too). With the whole stack, none is.
+TEST_F(GpuEngine, AFullBvhStackDropsTheSampleAndCountsIt) {
+  const scene s = test::small_scene("book-final", 16, 2);
+  const camera cam = test::scene_camera(s);
+  const render_window win = whole_render(cam.image_width(), cam.image_height(), 2);
+  render_stats tiny, whole;
+  gpu::gpu_engine cramped(gpu(), s, {.stack_entries = 2});
+  cramped.render_views({cam}, s.render, win, {}, &tiny);
+  EXPECT_GT(tiny.stack_overflows, 0u);
+  EXPECT_GE(tiny.dropped_samples, tiny.stack_overflows);
+  EXPECT_LE(tiny.stack_overflows, std::uint64_t(cam.image_width()) * cam.image_height() * 2);
+  gpu::gpu_engine roomy(gpu(), s, {});
+  roomy.render_views({cam}, s.render, win, {}, &whole);
+  EXPECT_EQ(whole.stack_overflows, 0u);
+  EXPECT_EQ(whole.dropped_samples, 0u);
+}
+
 gpu::gpu_render_options cached_in(const std::filesystem::path& folder) {
   gpu::gpu_render_options o;
   o.pipeline_cache_folder = folder;

@@ -143,17 +143,23 @@ void write_job(const run_context& run, const render_job& job, const image_rgb8& 
   ++*run.written;
 }
 
-// The summary line; `dropped`: samples with a NaN or infinite channel, which added black.
+// The summary line; `dropped`: samples with a NaN or infinite channel, which added black;
+// `overflows`: of those, samples whose BVH walk overflowed its stack on the GPU.
 void summarize(const run_context& run, const render_job& job, const std::string& backend,
-               double seconds, std::uint64_t dropped) {
+               double seconds, std::uint64_t dropped, std::uint64_t overflows = 0) {
   if (run.o.quiet) return;
   std::fprintf(stderr, "rtvk: %s %dx%d, %d spp%s, on %s in %.3f s -> %s\n", label(run, job).c_str(),
                run.win.width, run.win.height, run.win.samples(),
                run.lights ? " (lights sampling)" : "", backend.c_str(), seconds,
                job.output.c_str());
-  if (dropped > 0)
+  if (dropped > overflows)
     std::fprintf(stderr, "rtvk: %llu samples were NaN or infinite and added black\n",
-                 static_cast<unsigned long long>(dropped));
+                 static_cast<unsigned long long>(dropped - overflows));
+  if (overflows > 0)
+    std::fprintf(stderr,
+                 "rtvk: %llu samples found the BVH walk's stack full and added black (a tree "
+                 "deeper than the shader's stack)\n",
+                 static_cast<unsigned long long>(overflows));
 }
 
 framebuffer draw_cpu(const run_context& run, const render_job& job, render_stats* stats = nullptr) {
@@ -268,7 +274,7 @@ int render_on_gpu(const run_context& cpu_run, gpu::gpu_context& ctx,
       summarize(run, part[k],
                 part.size() > 1 ? backend + ", " + std::to_string(part.size()) + " views together"
                                 : backend,
-                seconds, k == 0 ? stats.dropped_samples : 0);
+                seconds, k == 0 ? stats.dropped_samples : 0, k == 0 ? stats.stack_overflows : 0);
     }
   }
   return all_alike && aovs_alike ? 0 : 1;

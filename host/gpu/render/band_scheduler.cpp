@@ -15,11 +15,14 @@ constexpr std::uint32_t max_trace_cost = 1u << 14;
 
 // A sample needed more than the largest loop budget: the render fails rather than show it.
 loop_budget_error overrun(const render_status& st, std::uint32_t budget, const std::string& dev) {
-  return loop_budget_error(
-      std::to_string(st.starved_pixels) + " pixel samples needed more than " +
-      std::to_string(budget) + " loop iterations on " + dev +
-      " (lavapipe silently stops loops at 65,535, so rtvk stops first, on every device, and "
-      "writes no image): lower --depth, use fewer spheres or --sampling plain");
+  const std::string why =
+      budget == loop_limited_budget
+          ? " (its driver stops loops early, as lavapipe silently does at 65,535, so rtvk stops "
+            "first and writes no image)"
+          : " (the most one invocation may run here; no image was written)";
+  return loop_budget_error(std::to_string(st.starved_pixels) + " pixel samples needed more than " +
+                           std::to_string(budget) + " loop iterations on " + dev + why +
+                           ": lower --depth, use fewer objects, --accel bvh or --sampling plain");
 }
 
 // Samples past the exact sums' limit: the render fails rather than clamp them into bias.
@@ -120,11 +123,14 @@ void band_scheduler::finish(const in_flight& f, render_stats* stats) {
   // fit the largest fails the render.
   if (status_.starved_pixels > 0 && !carry_.pace.starved(status_.starved_budget))
     throw overrun(status_, status_.starved_budget, queue_.device_name());
-  // The driver's loop limit cut some traversal short: those pixels kept nothing of it and go
-  // on in the next pass, where each ray counts twice as many iterations.
+  // The driver's loop limit cut some invocation short: those pixels kept nothing of it and go on
+  // in the next pass. On a device not known to have a limit, under lavapipe's budget from now
+  // on; on one held to it already, its own traversal's trips were what passed the limit, and
+  // each ray counts twice as many iterations.
   // (The band's status counts them since its start: only the new ones count here.)
   if (status_.cut_traversals > cuts_seen_) {
-    carry_.trace_cost = std::min(carry_.trace_cost * 2, max_trace_cost);
+    if (!carry_.pace.loop_limit_found())
+      carry_.trace_cost = std::min(carry_.trace_cost * 2, max_trace_cost);
     if (stats) stats->cut_traversals += status_.cut_traversals - cuts_seen_;
     cuts_seen_ = status_.cut_traversals;
   }

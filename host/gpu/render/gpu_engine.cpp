@@ -66,8 +66,8 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       cache_(ctx, options.pipeline_cache_folder),
       timer_(ctx),
       exponent_(rtvk::sum_exponent(brightest(s.sky))),
-      pacer_(pacing_for(cpu_device(ctx.device())), options.samples_per_dispatch,
-             options.samples_per_submission, options.loop_budget) {
+      pacer_(pacing_of(ctx.device()), options.samples_per_dispatch, options.samples_per_submission,
+             options.loop_budget) {
   const bool pipelines = options.engine.traversal == gpu_traversal::ray_pipeline;
   if (pipelines) render_stages_ |= VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
   upload();
@@ -153,6 +153,7 @@ const shader_program& gpu_engine::pipeline_for(bool jitter, bool lens, bool coun
     scene_.specialize(spec);
     spec[RTVK_SPEC_LIGHTS] = lights;
     spec[RTVK_SPEC_CALIBRATED] = calibrated;
+    spec[RTVK_SPEC_STACK] = options_.stack_entries;
     const auto bindings = render_bindings(scene_, *targets_, accel_.get(), ray_times_.get());
     switch (options_.engine.traversal) {
       case gpu_traversal::compute:
@@ -301,7 +302,10 @@ void gpu_engine::draw_bands(const std::vector<camera>& views, const render_windo
       }
       b.view_rows_before += b.pixels();
       const render_status& st = tools.bands.last_status();  // the band's: all its samples' counts
-      if (stats) stats->dropped_samples += st.dropped_samples;
+      if (stats) {
+        stats->dropped_samples += st.dropped_samples;
+        stats->stack_overflows += st.stack_overflows;
+      }
       if (tools.kept) {
         if (stats && tools.count_rays)
           stats->rays += std::uint64_t(st.rays_high) << 32 | st.rays_low;

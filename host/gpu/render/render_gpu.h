@@ -42,10 +42,12 @@ struct gpu_render_options {
   // The hardware paths' first render_push::trace_cost; 0: the device's default (tests lower it
   // to make lavapipe's loop limit cut traversals short).
   std::uint32_t trace_cost = 0;
-  // Tests only: the first submissions on a hardware path whose limit_was_hit reports the limit
+  // Tests only: the first submissions, on any path, whose limit_was_hit reports the limit
   // hit (render_push::probe_trips 3 instead of 2), to prove the engine redraws what it kept none
   // of.
   std::uint32_t simulated_cuts = 0;
+  // Tests only: the entries of the BVH walk's stack in use (RTVK_SPEC_STACK); 0: all of them.
+  std::uint32_t stack_entries = 0;
   // Where compiled pipelines are kept between runs (default_cache_folder()); empty: nowhere.
   std::filesystem::path pipeline_cache_folder = {};
 };

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "light_sources.h"
-#include "pacer.h"
 #include "sample_sum.h"
 
 namespace rtvk::gpu {
@@ -25,11 +24,19 @@ bool cpu_device(const device_info& dev) {
   return dev.type == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }
 
+bool loop_limited(const device_info& dev) {
+  return dev.driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
+}
+
+pacing pacing_of(const device_info& dev) {
+  return pacing_for(cpu_device(dev), loop_limited(dev));
+}
+
 work_layout plan_work(const device_info& dev, const gpu_render_options& options,
                       const render_window& win, std::size_t views) {
   const VkDeviceSize row_bytes = VkDeviceSize(win.width) * sizeof(pixel_sum);
   const VkDeviceSize paced =
-      pacing_for(cpu_device(dev)).small_bands && win.samples() >= 8
+      pacing_of(dev).small_bands && win.samples() >= 8
           ? std::max<VkDeviceSize>(1u << 15, (1u << 18) / VkDeviceSize(win.samples())) *
                 sizeof(pixel_sum)
           : default_band_bytes;
@@ -77,7 +84,7 @@ render_push make_push(const sky& background, const render_settings& rs, const re
                                 std::to_string(objects.light_count()) + " lights to aim at");
   push.light_count = lights ? objects.light_count() : 0u;
   push.strata = pixel_strata(rs, lights);
-  push.probe_trips = 2;  // limit_was_hit's loop (world_rt.glsl)
+  push.probe_trips = 2;  // limit_was_hit's loop (render_body.glsl)
   return push;
 }
 

@@ -11,6 +11,7 @@
 #include "context.h"
 #include "descriptors.h"
 #include "gpu_scene.h"
+#include "pacer.h"
 #include "render_gpu.h"
 #include "render_settings.h"
 #include "render_targets.h"
@@ -27,6 +28,14 @@ std::array<std::uint32_t, 2> workgroup_size(const device_info& d);
 
 // A CPU device (lavapipe): paced as one (pacing_for).
 bool cpu_device(const device_info& dev);
+
+// A driver known to stop an invocation's loops silently (lavapipe, by its driver ID,
+// VK_DRIVER_ID_MESA_LLVMPIPE: never by its name, which a user may see renamed): its loop budgets
+// stay below the limit (pacer.h's loop_limited_budget).
+bool loop_limited(const device_info& dev);
+
+// The pacing of a render on `dev`: its kind (cpu_device) and its loop limit (loop_limited).
+pacing pacing_of(const device_info& dev);
 
 // How the views and rows of a render are grouped so that one group's sums fit one storage
 // buffer (and a bounded share of device memory): many views of a small region at once, or one
