@@ -20,6 +20,19 @@ struct engine_options {
   std::function<bool()> cancelled = {};
 };
 
+// What finds the hits, in --accel's words: "bvh", "none", "rt-query" or "rt-pipeline".
+inline const char* accel_word(const engine_options& e) {
+  switch (e.traversal) {
+    case gpu_traversal::ray_query:
+      return "rt-query";
+    case gpu_traversal::ray_pipeline:
+      return "rt-pipeline";
+    case gpu_traversal::compute:
+      break;
+  }
+  return e.use_bvh ? "bvh" : "none";
+}
+
 // What a render did, for `rtvk bench`.
 struct render_stats {
   std::uint64_t rays = 0;             // rays traced: camera rays plus scattered rays

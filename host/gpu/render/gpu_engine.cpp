@@ -88,18 +88,6 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
   setup_seconds_ = seconds_since(start_);
 }
 
-const char* gpu_engine::traversal_name() const {
-  switch (options_.engine.traversal) {
-    case gpu_traversal::ray_query:
-      return "rt-query";
-    case gpu_traversal::ray_pipeline:
-      return "rt-pipeline";
-    case gpu_traversal::compute:
-      break;
-  }
-  return options_.engine.use_bvh ? "bvh" : "none";
-}
-
 void gpu_engine::upload() {
   ctx_.submit_and_wait([&](VkCommandBuffer cb) {
     scene_.record_upload(cb);

@@ -105,7 +105,7 @@ class gpu_engine {
     return options_.engine.use_bvh || options_.engine.traversal != gpu_traversal::compute;
   }
   // What finds the hits: "bvh", "none", "rt-query" or "rt-pipeline" (--accel's words).
-  const char* traversal_name() const;
+  const char* traversal_name() const { return accel_word(options_.engine); }
   const pipeline_cache& cache() const { return cache_; }
 
  private:
