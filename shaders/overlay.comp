@@ -5,15 +5,15 @@
 // a few KiB), so the image itself never leaves the device. The band is written to its own buffer
 // and copied over the image that is shown; the encoded image (the screenshots') is untouched.
 #extension GL_GOOGLE_include_directive : require
-#include "shared_types.h"
+#include "overlay_push.h"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
-layout(std430, set = 0, binding = RTVK_BINDING_BYTES) readonly buffer byte_block { uint rgba[]; };
-layout(std430, set = 0, binding = RTVK_BINDING_OVERLAY_MASK) readonly buffer mask_block {
+layout(std430, set = 0, binding = RTVK_OVERLAY_BYTES) readonly buffer byte_block { uint rgba[]; };
+layout(std430, set = 0, binding = RTVK_OVERLAY_MASK) readonly buffer mask_block {
   uint mask[];
 };
-layout(std430, set = 0, binding = RTVK_BINDING_OVERLAY) writeonly buffer overlay_block {
+layout(std430, set = 0, binding = RTVK_OVERLAY_BAND) writeonly buffer overlay_block {
   uint band[];
 };
 layout(push_constant) uniform push_block { overlay_push pc; };

@@ -4,15 +4,16 @@
 // render's thresholds, no float rounding that could differ between devices. A render then reads
 // back 4 bytes a pixel instead of 48, and a window can show the same bytes.
 #extension GL_GOOGLE_include_directive : require
-#include "shared_types.h"
+#include "bindings.h"
+#include "render_types.h"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
-layout(std430, set = 0, binding = RTVK_BINDING_IMAGE) readonly buffer image_block {
+layout(std430, set = 0, binding = RTVK_TONEMAP_SUMS) readonly buffer image_block {
   pixel_sum sums[];
 };
-layout(std430, set = 0, binding = RTVK_BINDING_BYTES) writeonly buffer byte_block { uint rgba[]; };
-layout(std430, set = 0, binding = RTVK_BINDING_THRESHOLDS) readonly buffer threshold_block {
+layout(std430, set = 0, binding = RTVK_TONEMAP_BYTES) writeonly buffer byte_block { uint rgba[]; };
+layout(std430, set = 0, binding = RTVK_TONEMAP_THRESHOLDS) readonly buffer threshold_block {
   uvec2 thresholds[256];  // (low word, high word) of byte_thresholds
 };
 layout(push_constant) uniform push_block { tonemap_push pc; };

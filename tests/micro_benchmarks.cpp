@@ -66,7 +66,7 @@ class binary_bvh_world final : public hittable {
   }
 
   bool hit(const ray& r, double t_min, double t_max, hit_record& rec) const override {
-    const std::vector<gpu::bvh_node>& nodes = tree_.nodes();
+    const std::vector<bvh_node>& nodes = tree_.nodes();
     const glm::vec3 o(r.origin), inv_d = safe_inverse(glm::vec3(r.direction));
     const float margin = origin_margin(o), box_min = float(t_min) * (1.0f - 0x1p-20f);
     std::uint32_t stack_ref[RTVK_BVH_STACK], stack_count[RTVK_BVH_STACK];
@@ -78,7 +78,7 @@ class binary_bvh_world final : public hittable {
     std::uint32_t best_slot = 0;
     while (true) {
       if (count == 0) {
-        const gpu::bvh_node& n = nodes[first];
+        const bvh_node& n = nodes[first];
         const float box_max = float(best) * (1.0f + 0x1p-20f);
         const float t[2] = {ray_box_entry(o, inv_d, n, 0, box_min, box_max, margin),
                             ray_box_entry(o, inv_d, n, 1, box_min, box_max, margin)};

@@ -25,7 +25,7 @@ using namespace bvh_build;
 // 1 right) of the node's min lanes and lane c + 2 of its max lanes. The margin, 2^-18 of the
 // box's largest coordinate and extent, is computed in float: corner - margin rounds to nearest
 // and next_down then steps below it, so the stored corner is never inside the exact one.
-void store_bounds(const fbox& f, gpu::bvh_node& n, int c) {
+void store_bounds(const fbox& f, bvh_node& n, int c) {
   const float4 extent = (f.lo < 0 ? -f.lo : f.lo) + (f.hi < 0 ? -f.hi : f.hi) + (f.hi - f.lo);
   const float pad = 0x1p-18f * std::max({extent[0], extent[1], extent[2], 1e-30f});
   glm::vec4* const axes[3] = {&n.x, &n.y, &n.z};
@@ -72,7 +72,7 @@ struct binning {
 
 class builder {
  public:
-  builder(prim_vector& prims, std::vector<gpu::bvh_node>& nodes, std::vector<std::uint32_t>& order)
+  builder(prim_vector& prims, std::vector<bvh_node>& nodes, std::vector<std::uint32_t>& order)
       : prims_(prims), nodes_(nodes), order_(order) {}
 
   // Fills interior node `at` over prims_[begin, end) (more than max_leaf spheres), `depth` levels
@@ -104,8 +104,8 @@ class builder {
   void build_leaf_root(const range_info& info) {
     store_bounds(info.bounds, nodes_[0], 0);
     store_bounds(info.bounds, nodes_[0], 1);
-    nodes_[0].first = gpu::uvec2(0);
-    nodes_[0].count = gpu::uvec2(std::uint32_t(prims_.size()));
+    nodes_[0].first = glm::uvec2(0);
+    nodes_[0].count = glm::uvec2(std::uint32_t(prims_.size()));
     for (std::size_t i = 0; i < prims_.size(); ++i) order_[i] = prims_[i].object;
   }
 
@@ -291,7 +291,7 @@ class builder {
   }
 
   prim_vector& prims_;
-  std::vector<gpu::bvh_node>& nodes_;
+  std::vector<bvh_node>& nodes_;
   std::vector<std::uint32_t>& order_;
 };
 

@@ -8,8 +8,9 @@
 
 #include <glm/vec3.hpp>
 
+#include "bvh_node.h"
+#include "bvh_types.h"
 #include "shape_lists.h"
-#include "shared_types.h"
 
 namespace rtvk {
 
@@ -52,11 +53,11 @@ inline primitive_spans spans_of(const shape_lists& l) {
 }
 
 // A bounding volume hierarchy over objects (spheres, quads, triangles), built with binned SAH and
-// flattened depth first into one array of interior nodes (gpu::bvh_node, from the header shared
-// with the shaders), each holding both children's boxes and references; leaves live in their
-// parents. The shader traverses this array (shaders/world.glsl); the CPU the same tree collapsed
-// four wide (wide_bvh.h, cpu/bvh_world.h). Leaves refer to sphere slots, the spheres in leaf order;
-// order() gives each slot's index in the scene, so hits can be kept identical to a linear scan.
+// flattened depth first into one array of interior nodes (bvh_node.h), each holding both
+// children's boxes and references; leaves live in their parents. Both backends traverse the same
+// tree collapsed four wide (wide_bvh.h: cpu/bvh_world.h, shaders/world.glsl). Leaves refer to
+// sphere slots, the spheres in leaf order; order() gives each slot's index in the scene, so hits
+// can be kept identical to a linear scan.
 class bvh {
  public:
   // Built on `threads` threads (0: one per core); the tree does not depend on how many. A moving
@@ -69,7 +70,7 @@ class bvh {
 
   // Interior nodes, node 0 the root; none when there are no spheres. One sphere makes a root
   // whose two children are the same leaf.
-  const std::vector<gpu::bvh_node>& nodes() const { return nodes_; }
+  const std::vector<bvh_node>& nodes() const { return nodes_; }
   // Leaf slot -> index into the scene's spheres; every sphere has exactly one slot.
   const std::vector<std::uint32_t>& order() const { return order_; }
   // Interior levels on the longest path from the root (the root alone: 1; no spheres: 0).
@@ -87,7 +88,7 @@ class bvh {
   static constexpr int max_depth = RTVK_BVH_STACK;
 
  private:
-  std::vector<gpu::bvh_node> nodes_;  // depth first, node 0 the root
+  std::vector<bvh_node> nodes_;       // depth first, node 0 the root
   std::vector<std::uint32_t> order_;  // leaf slot -> index into the scene's spheres
   int depth_ = 0;                     // interior levels
 };
@@ -117,8 +118,8 @@ inline float origin_margin(const glm::vec3& o) {
 // Node boxes are padded for float rounding when they are built; `margin` (origin_margin) covers
 // the ray's side. The CPU's SSE test of both children (cpu/bvh_world.cpp) and the shader's vec4
 // test do the same float operations, lane by lane.
-inline float ray_box_entry(const glm::vec3& o, const glm::vec3& inv_d, const gpu::bvh_node& n,
-                           int c, float t_min, float t_max, float margin) {
+inline float ray_box_entry(const glm::vec3& o, const glm::vec3& inv_d, const bvh_node& n, int c,
+                           float t_min, float t_max, float margin) {
   const glm::vec4* const axes[3] = {&n.x, &n.y, &n.z};
   float enter = t_min, leave = t_max;
   for (int k = 0; k < 3; ++k) {

@@ -13,9 +13,9 @@ struct binary_child {
   std::uint32_t count;  // 0 interior, else spheres in the leaf
 };
 
-binary_child child_of(const gpu::bvh_node& n, int c) {
+binary_child child_of(const bvh_node& n, int c) {
   binary_child b{};
-  const gpu::vec4* const axes[3] = {&n.x, &n.y, &n.z};
+  const glm::vec4* const axes[3] = {&n.x, &n.y, &n.z};
   for (int k = 0; k < 3; ++k) {
     b.lo[k] = (*axes[k])[c];
     b.hi[k] = (*axes[k])[c + 2];
@@ -51,7 +51,7 @@ class collapser {
             (open < 0 || half_area(kids[std::size_t(c)]) > half_area(kids[std::size_t(open)])))
           open = c;
       if (open < 0) break;
-      const gpu::bvh_node& inner = binary_[kids[std::size_t(open)].first];
+      const bvh_node& inner = binary_[kids[std::size_t(open)].first];
       kids[std::size_t(open)] = child_of(inner, 0);
       kids[std::size_t(n++)] = child_of(inner, 1);
     }
@@ -88,7 +88,7 @@ class collapser {
     out_[at].child[c] = child;  // out_ may have grown: index, not a reference held across
   }
 
-  const std::vector<gpu::bvh_node>& binary_;
+  const std::vector<bvh_node>& binary_;
   std::span<const std::uint32_t> refs_;  // leaf slot -> reference; empty: the slot
   std::vector<wide_node>& out_;
   int depth_ = 0;

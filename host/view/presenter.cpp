@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "shaders.h"
-#include "shared_types.h"
+#include "overlay_push.h"
+#include "overlay_shader.h"
 #include "vk_error.h"
 
 namespace rtvk::view {
@@ -83,11 +83,11 @@ presenter::~presenter() {
 void presenter::show_from(VkBuffer bytes) {
   if (compose_ && bytes == bound_bytes_) return;
   const std::vector<gpu::buffer_binding> bindings{
-      {RTVK_BINDING_BYTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, bytes},
-      {RTVK_BINDING_OVERLAY_MASK, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, overlay_buffers_[0].get()},
-      {RTVK_BINDING_OVERLAY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, overlay_buffers_[1].get()}};
+      {RTVK_OVERLAY_BYTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, bytes},
+      {RTVK_OVERLAY_MASK, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, overlay_buffers_[0].get()},
+      {RTVK_OVERLAY_BAND, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, overlay_buffers_[1].get()}};
   if (!compose_) {
-    compose_ = std::make_unique<gpu::compute_pipeline>(ctx_, gpu::overlay_shader(), bindings,
+    compose_ = std::make_unique<gpu::compute_pipeline>(ctx_, overlay_shader(), bindings,
                                                        sizeof(gpu::overlay_push));
   } else {
     ctx_.wait_all();  // the set may not change under a frame in flight

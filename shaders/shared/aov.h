@@ -3,9 +3,9 @@
 // channels and their units.
 #ifndef RTVK_AOV_H
 #define RTVK_AOV_H
+#include "appearance_types.h"
 #include "kernel_lang.h"
 #include "ray.h"
-#include "shared_types.h"
 
 RTVK_KERNELS_BEGIN
 

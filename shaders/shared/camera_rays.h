@@ -3,10 +3,10 @@
 // camera_ubo the host fills). docs/camera.md has each model's formula.
 #ifndef RTVK_CAMERA_RAYS_H
 #define RTVK_CAMERA_RAYS_H
+#include "camera_ubo.h"
 #include "kernel_lang.h"
 #include "random.h"
 #include "ray.h"
-#include "shared_types.h"
 
 RTVK_KERNELS_BEGIN
 

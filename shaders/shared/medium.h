@@ -4,10 +4,10 @@
 // (the nearest of the world's hit and the media's scattering points wins), with these kernels.
 #ifndef RTVK_MEDIUM_H
 #define RTVK_MEDIUM_H
+#include "appearance_types.h"
 #include "kernel_lang.h"
 #include "random.h"
 #include "ray.h"
-#include "shared_types.h"
 
 RTVK_KERNELS_BEGIN
 

@@ -10,11 +10,11 @@
 // functions that read the table take LIGHTS_PARAM first and pass LIGHTS on.
 #ifndef RTVK_PDF_H
 #define RTVK_PDF_H
+#include "appearance_types.h"
 #include "hit_sphere.h"
 #include "kernel_lang.h"
 #include "random.h"
 #include "ray.h"
-#include "shared_types.h"
 
 RTVK_KERNELS_BEGIN
 

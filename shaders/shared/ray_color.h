@@ -4,12 +4,12 @@
 // between; everything else is here.
 #ifndef RTVK_RAY_COLOR_H
 #define RTVK_RAY_COLOR_H
+#include "appearance_types.h"
 #include "kernel_lang.h"
 #include "pdf.h"
 #include "random.h"
 #include "ray.h"
 #include "scatter.h"
-#include "shared_types.h"
 
 RTVK_KERNELS_BEGIN
 

@@ -2,10 +2,10 @@
 // Each returns false when the ray is absorbed; `s` is the stream of this bounce.
 #ifndef RTVK_SCATTER_H
 #define RTVK_SCATTER_H
+#include "appearance_types.h"
 #include "kernel_lang.h"
 #include "random.h"
 #include "ray.h"
-#include "shared_types.h"
 
 RTVK_KERNELS_BEGIN
 

@@ -8,9 +8,9 @@
 // them take TABLES_PARAM first and pass TABLES on, which is empty in GLSL.
 #ifndef RTVK_TEXTURE_H
 #define RTVK_TEXTURE_H
+#include "appearance_types.h"
 #include "kernel_lang.h"
 #include "ray.h"
-#include "shared_types.h"
 
 RTVK_KERNELS_BEGIN
 

@@ -84,7 +84,7 @@ std::vector<sphere> growing_spiral(int n) {
 // Interior levels on the longest path from node `at`, read from the nodes themselves; checks on
 // the way that every leaf holds 1 to max_leaf spheres and counts the slots the leaves cover.
 int walk_depth(const bvh& tree, std::uint32_t at, std::vector<int>& slot_uses) {
-  const gpu::bvh_node& n = tree.nodes()[at];
+  const bvh_node& n = tree.nodes()[at];
   int below = 0;
   for (int c = 0; c < 2; ++c) {
     if (n.count[c] == 0) {
@@ -185,20 +185,20 @@ TEST(BvhBuild, TheTreeIsTheSameOnOneThreadAndOnManyAndHoldsEverySphere) {
   const bvh one(spheres, 1), many(spheres, 4);
   ASSERT_EQ(one.nodes().size(), spheres.size() - 1);
   ASSERT_EQ(many.nodes().size(), one.nodes().size());
-  EXPECT_EQ(std::memcmp(one.nodes().data(), many.nodes().data(),
-                        one.nodes().size() * sizeof(gpu::bvh_node)),
-            0);
+  EXPECT_EQ(
+      std::memcmp(one.nodes().data(), many.nodes().data(), one.nodes().size() * sizeof(bvh_node)),
+      0);
   EXPECT_EQ(one.order(), many.order());
   EXPECT_EQ(one.depth(), many.depth());
   std::vector<int> slot_uses(spheres.size());
   EXPECT_EQ(walk_depth(many, 0, slot_uses), many.depth());
   EXPECT_EQ(std::count(slot_uses.begin(), slot_uses.end(), 1), std::ptrdiff_t(spheres.size()));
   int outside = 0;
-  for (const gpu::bvh_node& n : many.nodes())
+  for (const bvh_node& n : many.nodes())
     for (int c = 0; c < 2; ++c) {
       if (n.count[c] == 0) continue;
       const sphere& s = spheres[many.order()[n.first[c]]];
-      const gpu::vec4* const axes[3] = {&n.x, &n.y, &n.z};
+      const glm::vec4* const axes[3] = {&n.x, &n.y, &n.z};
       for (int k = 0; k < 3; ++k)
         outside += !(double((*axes[k])[c]) <= s.center[k] - s.radius &&
                      s.center[k] + s.radius <= double((*axes[k])[c + 2]));

@@ -10,7 +10,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "shared_types.h"
+#include "camera_ubo.h"
+#include "probe_types.h"
 
 namespace rtvk::f32 {
 
@@ -35,10 +36,10 @@ bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_ma
 // GPU starts the next ray.
 glm::vec3 scatter_origin(glm::vec3 center, float radius, ray_f r, float t, glm::vec3 leaving);
 
-// run_kernel_probe (shaders/shared/kernel_probe.h) in float: what kernel_probe.comp computes.
+// run_kernel_probe (tests/gpu/probes/kernel_probe.h) in float: what kernel_probe.comp computes.
 void run_kernel_probe(gpu::kernel_probe_entry& e);
 
-// run_light_probe (shaders/shared/light_probe.h) in float: what light_probe.comp computes.
+// run_light_probe (tests/gpu/probes/light_probe.h) in float: what light_probe.comp computes.
 void run_light_probe(gpu::light_probe_entry& e);
 
 }  // namespace rtvk::f32

@@ -15,14 +15,17 @@
 #include <vector>
 
 #include "gpu_fixture.h"
+#include "overlay_push.h"
+#include "overlay_shader.h"
 #include "packing.h"
 #include "probe.h"
+#include "probe_shaders.h"
 #include "shaders.h"
 
 namespace rtvk {
 namespace {
 
-// --- What the C++ compiler made of shaders/shared_types.h -------------------------------------
+// --- What the C++ compiler made of the shared structs (shaders/shared/shared_types.h) ----------
 
 struct cpp_member {
   std::string name;
@@ -39,7 +42,8 @@ struct cpp_struct {
 #member, offsetof(gpu::type, member) \
   }
 
-// Every struct of shared_types.h, every member. Listed by hand on purpose: a member added to the
+// Every struct that crosses to the GPU (shared_types.h's headers, the viewer's overlay_push.h and
+// the probes' probe_types.h), every member. Listed by hand on purpose: a member added to the
 // header but not here makes the member counts differ, and a renamed one is missing by name, so
 // this table cannot fall behind silently.
 const std::map<std::string, cpp_struct>& cpp_layouts() {
@@ -154,6 +158,11 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
          RTVK_MEMBER(render_status, starved_budget), RTVK_MEMBER(render_status, overflowed_samples),
          RTVK_MEMBER(render_status, dropped_samples), RTVK_MEMBER(render_status, rays_low),
          RTVK_MEMBER(render_status, rays_high), RTVK_MEMBER(render_status, cut_traversals)}}},
+      {"gpu_aov",
+       {sizeof(gpu::gpu_aov),
+        {RTVK_MEMBER(gpu_aov, normal), RTVK_MEMBER(gpu_aov, distance), RTVK_MEMBER(gpu_aov, albedo),
+         RTVK_MEMBER(gpu_aov, depth), RTVK_MEMBER(gpu_aov, object), RTVK_MEMBER(gpu_aov, instance),
+         RTVK_MEMBER(gpu_aov, material), RTVK_MEMBER(gpu_aov, hit)}}},
       {"gpu_light",
        {sizeof(gpu::gpu_light),
         {RTVK_MEMBER(gpu_light, a), RTVK_MEMBER(gpu_light, kind), RTVK_MEMBER(gpu_light, u),
@@ -340,7 +349,8 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
   const std::vector<std::pair<std::string, std::span<const std::uint32_t>>> shaders = {
       {"render.comp", gpu::render_shader()},
       {"tonemap.comp", gpu::tonemap_shader()},
-      {"overlay.comp", gpu::overlay_shader()},
+      {"aov.comp", gpu::aov_shader()},
+      {"overlay.comp", view::overlay_shader()},
       {"probe.comp", gpu::probe_shader()},
       {"rng_probe.comp", gpu::rng_probe_shader()},
       {"hit_probe.comp", gpu::hit_probe_shader()},
@@ -401,13 +411,13 @@ TEST(ShaderLayout, EveryOffsetTheShadersUseIsTheOffsetOfTheCppStruct) {
     }
   }
   // Coverage cannot shrink unnoticed: every shared struct is checked in some shader, and the
-  // push constants (render.comp's, tonemap.comp's, overlay.comp's, world_probe.comp's and the
-  // hardware paths' four: render_query.comp, render_ray.rgen, rt_object.rint and .rahit) are
-  // among the blocks walked.
+  // push constants (render.comp's, tonemap.comp's, aov.comp's, overlay.comp's, world_probe.comp's
+  // and the hardware paths' four: render_query.comp, render_ray.rgen, rt_object.rint and .rahit)
+  // are among the blocks walked.
   for (const auto& [name, layout] : cpp_layouts())
     EXPECT_GT(checked[name], 0) << name << " was found in no shader's buffers or push constants";
   EXPECT_GE(blocks, 15) << "uniform, storage and push-constant blocks walked";
-  EXPECT_EQ(push_blocks, 8) << "push-constant blocks walked";
+  EXPECT_EQ(push_blocks, 9) << "push-constant blocks walked";
 }
 
 // --- The camera on the GPU ---------------------------------------------------------------------

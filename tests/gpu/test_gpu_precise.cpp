@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 
+#include "probe_shaders.h"
 #include "shaders.h"
 
 namespace rtvk {

@@ -106,9 +106,9 @@ std::vector<buffer_binding> render_bindings(const gpu_scene& g, const render_tar
 }
 
 std::vector<buffer_binding> tonemap_bindings(const render_targets& t) {
-  return {{RTVK_BINDING_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.sums.get()},
-          {RTVK_BINDING_BYTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.bytes.get()},
-          {RTVK_BINDING_THRESHOLDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.thresholds.get()}};
+  return {{RTVK_TONEMAP_SUMS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.sums.get()},
+          {RTVK_TONEMAP_BYTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.bytes.get()},
+          {RTVK_TONEMAP_THRESHOLDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.thresholds.get()}};
 }
 
 }  // namespace rtvk::gpu

@@ -6,6 +6,7 @@
 
 #include "camera.h"
 #include "context.h"
+#include "probe_types.h"
 #include "scene.h"
 #include "shared_types.h"
 
@@ -23,12 +24,12 @@ std::vector<rng_probe_entry> run_rng_probe(gpu_context& ctx, std::vector<rng_pro
 std::vector<hit_probe_entry> run_hit_probe(gpu_context& ctx, std::vector<hit_probe_entry> entries);
 
 // Runs kernel_probe.comp: fills the outputs of each entry with the shared kernels' answers
-// (run_kernel_probe in shaders/shared/kernel_probe.h).
+// (run_kernel_probe in kernel_probe.h).
 std::vector<kernel_probe_entry> run_kernel_probe(gpu_context& ctx,
                                                  std::vector<kernel_probe_entry> entries);
 
 // Runs light_probe.comp: fills the outputs of each entry with pdf.h's densities and samplers
-// (run_light_probe in shaders/shared/light_probe.h).
+// (run_light_probe in light_probe.h).
 std::vector<light_probe_entry> run_light_probe(gpu_context& ctx,
                                                std::vector<light_probe_entry> entries);
 

@@ -2,6 +2,7 @@
 // Test probe: hit_sphere of hit_sphere.h for the host's rays, intervals and spheres, so tests can
 // feed it what a render rarely meets (degenerate rays) and compare with the C++ compilation of the same function.
 #extension GL_GOOGLE_include_directive : require
+#include "probe_types.h"
 #include "shared_types.h"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;

@@ -4,6 +4,7 @@
 #define RTVK_LIGHT_PROBE_H
 #include "kernel_lang.h"
 #include "pdf.h"
+#include "probe_types.h"
 #include "shared_types.h"
 
 RTVK_KERNELS_BEGIN

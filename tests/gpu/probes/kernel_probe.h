@@ -5,6 +5,7 @@
 #define RTVK_KERNEL_PROBE_H
 #include "fixed_sum.h"
 #include "kernel_lang.h"
+#include "probe_types.h"
 #include "random.h"
 #include "ray.h"
 #include "ray_color.h"

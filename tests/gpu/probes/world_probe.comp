@@ -2,6 +2,7 @@
 // Test probe: hit_world (world.glsl, the GPU's own traversal) along the host's rays, so tests can
 // hold its closest hits against the CPU's four-wide traversal on the same rays.
 #extension GL_GOOGLE_include_directive : require
+#include "probe_types.h"
 #include "shared_types.h"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;

@@ -1,6 +1,7 @@
 #version 450
 // Test probe: the random numbers for the host's counters, to compare bit for bit with the C++.
 #extension GL_GOOGLE_include_directive : require
+#include "probe_types.h"
 #include "shared_types.h"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;

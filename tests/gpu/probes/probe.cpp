@@ -6,7 +6,7 @@
 #include "compute_pipeline.h"
 #include "gpu_scene.h"
 #include "packing.h"
-#include "shaders.h"
+#include "probe_shaders.h"
 
 namespace rtvk::gpu {
 namespace {

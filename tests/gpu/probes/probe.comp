@@ -2,6 +2,7 @@
 // Test probe: the rays get_ray makes for the host's (u, v) and lens points, so tests can hold the
 // GPU's camera against the CPU camera. (The structs' layout is checked from the SPIR-V itself.)
 #extension GL_GOOGLE_include_directive : require
+#include "probe_types.h"
 #include "shared_types.h"
 
 layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;

@@ -1,0 +1,34 @@
+#include "probe_shaders.h"
+
+// The generated headers declare uint32_t arrays without including <cstdint> themselves.
+#include <cstdint>
+
+#include "hit_probe_spv.h"
+#include "kernel_probe_spv.h"
+#include "light_probe_spv.h"
+#include "probe_spv.h"
+#include "rng_probe_spv.h"
+#include "world_probe_spv.h"
+
+namespace rtvk::gpu {
+
+std::span<const std::uint32_t> probe_shader() {
+  return probe_spv;
+}
+std::span<const std::uint32_t> rng_probe_shader() {
+  return rng_probe_spv;
+}
+std::span<const std::uint32_t> hit_probe_shader() {
+  return hit_probe_spv;
+}
+std::span<const std::uint32_t> world_probe_shader() {
+  return world_probe_spv;
+}
+std::span<const std::uint32_t> kernel_probe_shader() {
+  return kernel_probe_spv;
+}
+std::span<const std::uint32_t> light_probe_shader() {
+  return light_probe_spv;
+}
+
+}  // namespace rtvk::gpu

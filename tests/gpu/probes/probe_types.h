@@ -1,0 +1,192 @@
+// The structs of the tests' probe shaders (this folder; probe.h runs them). Test code only:
+// the rtvk executable carries none of it (Architecture.TheRtvkBinaryCarriesNoTestProbes).
+#ifndef RTVK_PROBE_TYPES_H
+#define RTVK_PROBE_TYPES_H
+
+#include "appearance_types.h"
+#include "bindings.h"
+#include "glsl_types.h"
+
+// Each probe's pipeline is the scene's bindings (world_probe.comp reads the scene's buffers,
+// probe.comp the camera) and its one buffer of entries, past the scene's list.
+#define RTVK_BINDING_PROBE RTVK_SCENE_BINDINGS_END  // storage buffer: the probe's entries
+
+#define RTVK_PROBE_POINTS 5  // (u, v) pairs probe.comp turns into rays
+// The kernel probe's to_fixed scale and limit: a render's, F = 42 (sample_sum.h).
+#define RTVK_PROBE_SUM_SCALE 4398046511104.0  // 2^42
+#define RTVK_PROBE_SAMPLE_LIMIT 8589934592.0  // 2^33
+
+RTVK_GPU_TYPES_BEGIN
+
+// std430, read and written by probe.comp: the host fills uv, the shader fills the rest.
+struct probe_io {
+  vec4 uv[RTVK_PROBE_POINTS];          // xy: normalized image coordinates; zw: lens sample
+  vec4 direction[RTVK_PROBE_POINTS];   // xyz: get_ray(uv).direction
+  vec4 ray_origin[RTVK_PROBE_POINTS];  // xyz: get_ray(uv).origin
+};
+#ifdef __cplusplus
+static_assert(offsetof(probe_io, direction) == 16 * RTVK_PROBE_POINTS);
+static_assert(offsetof(probe_io, ray_origin) == 32 * RTVK_PROBE_POINTS);
+static_assert(sizeof(probe_io) == 48 * RTVK_PROBE_POINTS);
+#endif
+
+// std430 array element for rng_probe.comp: the host fills the counters, the shader the results.
+struct rng_probe_entry {
+  uint pixel;         // counter: pixel index
+  uint sample_index;  // counter: sample index
+  uint bounce;        // counter: bounce
+  uint dim;           // counter: dimension
+  uint bits;          // random_bits(seed 0x5eed, ...)
+  float value;        // random_float(seed 0x5eed, ...)
+  float turn_cos;     // turn_cos_sin(value).x: cos(2 pi value)
+  float turn_sin;     // turn_cos_sin(value).y: sin(2 pi value)
+};
+#ifdef __cplusplus
+static_assert(offsetof(rng_probe_entry, bits) == 16);
+static_assert(offsetof(rng_probe_entry, value) == 20);
+static_assert(sizeof(rng_probe_entry) == 32);
+#endif
+
+// std430 array element for hit_probe.comp: the host fills a ray, an interval and a sphere; the
+// shader runs hit_sphere on them.
+struct hit_probe_entry {
+  vec3 origin;     // ray origin, scene units
+  float t_min;     // interval start
+  vec3 direction;  // ray direction (may be degenerate: that is what the probe is for)
+  float t_max;     // interval end
+  vec3 center;     // sphere center, scene units
+  float radius;    // sphere radius, scene units
+  float t;         // out: the root hit_sphere found (0 when none)
+  uint hit;        // out: 1 when hit_sphere reported a hit
+  uint pad0;       // unused
+  uint pad1;       // unused
+};
+#ifdef __cplusplus
+static_assert(offsetof(hit_probe_entry, t_min) == 12);
+static_assert(offsetof(hit_probe_entry, direction) == 16);
+static_assert(offsetof(hit_probe_entry, t_max) == 28);
+static_assert(offsetof(hit_probe_entry, center) == 32);
+static_assert(offsetof(hit_probe_entry, radius) == 44);
+static_assert(offsetof(hit_probe_entry, t) == 48);
+static_assert(offsetof(hit_probe_entry, hit) == 52);
+static_assert(sizeof(hit_probe_entry) == 64);
+#endif
+
+// std430 array element for world_probe.comp: the host fills a ray, the shader what hit_world
+// finds along it in [0.001, max float].
+struct world_probe_entry {
+  vec3 origin;      // in: ray origin, scene units
+  float t;          // out: the closest hit's t (0 when none)
+  vec3 direction;   // in: ray direction
+  uint hit;         // out: 1 when something was hit
+  vec3 normal;      // out: the hit's normal, facing against the ray
+  uint material;    // out: the hit sphere's material index
+  uint iterations;  // out: loop trips the search took
+  uint pad0;        // unused
+  uint pad1;        // unused
+  uint pad2;        // unused
+};
+#ifdef __cplusplus
+static_assert(offsetof(world_probe_entry, t) == 12);
+static_assert(offsetof(world_probe_entry, direction) == 16);
+static_assert(offsetof(world_probe_entry, hit) == 28);
+static_assert(offsetof(world_probe_entry, normal) == 32);
+static_assert(offsetof(world_probe_entry, material) == 44);
+static_assert(offsetof(world_probe_entry, iterations) == 48);
+static_assert(sizeof(world_probe_entry) == 64);
+#endif
+
+// std430 array element for kernel_probe.comp (kernel_probe.h): the host fills a hit, the ray
+// arriving at it, a material and a random stream; the shader runs the shared kernels on them.
+struct kernel_probe_entry {
+  vec3 p;              // in: the hit point, scene units
+  float offset;        // in: hit_record::offset
+  vec3 normal;         // in: unit normal, facing against the ray
+  uint front_face;     // in: 1 when the ray arrived from outside
+  vec3 direction;      // in: the arriving ray's direction
+  uint type;           // in: RTVK_MATERIAL_*
+  vec3 albedo;         // in: the material's albedo
+  float fuzz;          // in: metal's fuzz
+  float ir;            // in: dielectric's index of refraction
+  uint key;            // in: the random stream's key
+  uint bounce;         // in: the random stream's bounce
+  uint scattered;      // out: 1 when scatter scattered
+  vec3 attenuation;    // out: scatter's attenuation
+  float disk_x;        // out: random_in_unit_disk(rnd 0, rnd 1).x
+  vec3 origin_out;     // out: the scattered ray's origin
+  float disk_y;        // out: and .y
+  vec3 direction_out;  // out: the scattered ray's direction
+  float sample_value;  // in: a sample's channel for to_fixed (fixed_sum.h)
+  vec3 sky;            // out: sky_color(direction, the book's white and blue)
+  uint fixed_low;      // out: to_fixed(sample_value, RTVK_PROBE_SUM_SCALE), low word
+  vec3 ball;           // out: random_in_unit_sphere(rnd 0, rnd 1, rnd 2)
+  uint fixed_high;     // out: and its high word
+  uint fixed_top;      // out: and its top word
+  uint overflows;      // out: 1 when sum_overflows(sample_value, RTVK_PROBE_SAMPLE_LIMIT)
+  uint pad0;           // unused
+  uint pad1;           // unused
+};
+#ifdef __cplusplus
+static_assert(offsetof(kernel_probe_entry, offset) == 12);
+static_assert(offsetof(kernel_probe_entry, normal) == 16);
+static_assert(offsetof(kernel_probe_entry, front_face) == 28);
+static_assert(offsetof(kernel_probe_entry, direction) == 32);
+static_assert(offsetof(kernel_probe_entry, type) == 44);
+static_assert(offsetof(kernel_probe_entry, albedo) == 48);
+static_assert(offsetof(kernel_probe_entry, fuzz) == 60);
+static_assert(offsetof(kernel_probe_entry, ir) == 64);
+static_assert(offsetof(kernel_probe_entry, key) == 68);
+static_assert(offsetof(kernel_probe_entry, bounce) == 72);
+static_assert(offsetof(kernel_probe_entry, scattered) == 76);
+static_assert(offsetof(kernel_probe_entry, attenuation) == 80);
+static_assert(offsetof(kernel_probe_entry, disk_x) == 92);
+static_assert(offsetof(kernel_probe_entry, origin_out) == 96);
+static_assert(offsetof(kernel_probe_entry, disk_y) == 108);
+static_assert(offsetof(kernel_probe_entry, direction_out) == 112);
+static_assert(offsetof(kernel_probe_entry, sample_value) == 124);
+static_assert(offsetof(kernel_probe_entry, sky) == 128);
+static_assert(offsetof(kernel_probe_entry, fixed_low) == 140);
+static_assert(offsetof(kernel_probe_entry, ball) == 144);
+static_assert(offsetof(kernel_probe_entry, fixed_high) == 156);
+static_assert(offsetof(kernel_probe_entry, fixed_top) == 160);
+static_assert(offsetof(kernel_probe_entry, overflows) == 164);
+static_assert(sizeof(kernel_probe_entry) == 176);
+#endif
+
+// std430 array element for light_probe.comp (light_probe.h): pdf.h's densities toward one light
+// and the cosine density, at a point the host picks, with the host's random numbers.
+struct light_probe_entry {
+  gpu_light light;      // in: the light
+  vec3 origin;          // in: where the directions start, scene units
+  float time;           // in: the ray's instant (a sphere light moves)
+  vec3 direction;       // in: a direction whose densities are asked
+  float r1;             // in: the first random number of the samplers
+  vec3 normal;          // in: the cosine density's unit normal
+  float r2;             // in: the second
+  vec3 sampled;         // out: light_random(light, origin, time, r1, r2)
+  float pdf;            // out: light_pdf(light, origin, direction, time)
+  vec3 cosine_sampled;  // out: cosine_random(normal, r1, r2)
+  float cosine;         // out: cosine_pdf(normal, direction)
+  float sampled_pdf;    // out: light_pdf of `sampled`
+  uint pad0;            // unused
+  uint pad1;            // unused
+  uint pad2;            // unused
+};
+#ifdef __cplusplus
+static_assert(offsetof(light_probe_entry, origin) == 64);
+static_assert(offsetof(light_probe_entry, time) == 76);
+static_assert(offsetof(light_probe_entry, direction) == 80);
+static_assert(offsetof(light_probe_entry, r1) == 92);
+static_assert(offsetof(light_probe_entry, normal) == 96);
+static_assert(offsetof(light_probe_entry, r2) == 108);
+static_assert(offsetof(light_probe_entry, sampled) == 112);
+static_assert(offsetof(light_probe_entry, pdf) == 124);
+static_assert(offsetof(light_probe_entry, cosine_sampled) == 128);
+static_assert(offsetof(light_probe_entry, cosine) == 140);
+static_assert(offsetof(light_probe_entry, sampled_pdf) == 144);
+static_assert(sizeof(light_probe_entry) == 160);
+#endif
+
+RTVK_GPU_TYPES_END
+
+#endif  // RTVK_PROBE_TYPES_H
