@@ -11,33 +11,15 @@
 RTVK_KERNELS_BEGIN
 
 #ifdef __cplusplus
-// The camera's precomputed vectors in the compilation's `real`: the fields of camera_ubo
-// (shared_types.h, what the GPU reads) that get_ray uses, by the same names.
+// The camera's precomputed vectors in the compilation's `real`: camera_ubo's fields (camera_ubo.h,
+// what the GPU reads), made from the same list, by the same names.
+#define RTVK_FRAME_TYPE_vec3 real3
+#define RTVK_FRAME_TYPE_vec4 real4
+#define RTVK_FRAME_TYPE_float real
+#define RTVK_FRAME_TYPE_uint uint
+#define RTVK_CAMERA_FRAME_MEMBER(type, name) RTVK_FRAME_TYPE_##type name;
 struct camera_frame {
-  real3 origin;         // eye position, scene units
-  real3 horizontal;     // full viewport width as a vector, on the focus plane, scene units
-  real3 vertical;       // full viewport height as a vector, on the focus plane, scene units
-  real3 lower_left;     // lower-left corner of the viewport, scene units
-  real3 to_lower_left;  // lower_left - origin, formed without cancelling (in double on the host)
-  real3 lens_u;         // unit vector to the camera's right
-  real3 lens_v;         // unit vector to the camera's up
-  real3 axis_w;         // unit vector backwards, away from what the camera looks at
-  real lens_radius;     // aperture / 2, scene units
-  real aspect;          // image width / height
-  real fisheye_fov;     // fisheye field of view across the circle, radians
-  real focus_dist;      // distance to the plane in perfect focus, scene units
-  uint projection;      // RTVK_PROJECTION_*
-  real time_open;       // the instant the shutter opens, seconds (frame time + shutter open)
-  real shutter;         // how long each row's shutter stays open, seconds; 0: an instant
-  real readout;         // rolling shutter: first row's opening to the last's, seconds; > 0 top
-                        // row first, < 0 bottom row first, 0: global shutter
-  real lens_limit;      // calibrated models' valid field (see calibrated_direction)
-  real lens_angle;      // opencv-fisheye: the largest angle from the axis, radians
-  real4 intrinsics;     // calibrated models: fx, fy, cx, cy in this image's pixels
-  real4 distortion_a;   // lens_intrinsics::k[0..3] (opencv: k1 k2 p1 p2)
-  real4 distortion_b;   // lens_intrinsics::k[4..7] (opencv: k3 k4 k5 k6)
-  uint image_width;     // pixels
-  uint image_height;    // pixels
+  RTVK_CAMERA_FIELDS(RTVK_CAMERA_FRAME_MEMBER)
 };
 #else
 #define camera_frame camera_ubo

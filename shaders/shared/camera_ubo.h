@@ -23,34 +23,46 @@
 
 RTVK_GPU_TYPES_BEGIN
 
-// std140. Each vec3 takes a 16-byte slot; the scalar after it packs into the slot's last 4 bytes.
+// The camera's fields, each named once: camera_ubo below, camera_frame (camera_rays.h: the C++
+// kernels' camera, in their precision) and gpu::to_ubo (host/gpu/render/packing.cpp) are all made
+// from this list, so a field added here reaches the shaders, the CPU and the packing together.
+// X(type, name), type the GPU's: vec3, vec4, float or uint (camera_frame's real3, real4, real,
+// uint). In std140 order: each vec3 takes a 16-byte slot, and the scalar after it packs into the
+// slot's last 4 bytes. The long stories: `readout` > 0 opens the top row first, < 0 the bottom
+// row first, 0 is a global shutter; `lens_limit` is the calibrated models' valid field
+// (camera_rays.h): opencv, the largest undistorted radius^2; opencv-fisheye, the largest
+// distorted angle, radians; fisheye-polynomial, the image circle's radius, pixels (0: none).
+#define RTVK_CAMERA_FIELDS(X)                                                           \
+  X(vec3, origin)        /* eye position, scene units */                                \
+  X(uint, image_width)   /* pixels */                                                   \
+  X(vec3, horizontal)    /* full viewport width as a vector, scene units */             \
+  X(uint, image_height)  /* pixels */                                                   \
+  X(vec3, vertical)      /* full viewport height as a vector, scene units */            \
+  X(float, lens_radius)  /* aperture / 2, scene units */                                \
+  X(vec3, lower_left)    /* lower-left corner of the viewport, scene units */           \
+  X(uint, projection)    /* RTVK_PROJECTION_* */                                        \
+  X(vec3, lens_u)        /* unit vector to the camera's right */                        \
+  X(float, aspect)       /* image width / height */                                     \
+  X(vec3, lens_v)        /* unit vector to the camera's up */                           \
+  X(float, fisheye_fov)  /* fisheye field of view across the circle, radians */         \
+  X(vec3, axis_w)        /* unit vector backwards, away from what the camera sees */    \
+  X(float, focus_dist)   /* distance to the plane in perfect focus, scene units */      \
+  X(vec3, to_lower_left) /* lower_left - origin, formed in double on the host */        \
+  X(float, time_open)    /* the shutter opens, seconds (frame time + shutter open) */   \
+  X(float, shutter)      /* each row's shutter stays open, seconds; 0: an instant */    \
+  X(float, readout)      /* rolling shutter: first row's opening to last's, seconds */  \
+  X(float, lens_limit)   /* calibrated models' valid field (above) */                   \
+  X(float, lens_angle)   /* opencv-fisheye: the largest angle from the axis, radians */ \
+  X(vec4, intrinsics)    /* calibrated models: fx, fy, cx, cy in this image's pixels */ \
+  X(vec4, distortion_a)  /* k[0..3] of lens_intrinsics (opencv: k1 k2 p1 p2) */         \
+  X(vec4, distortion_b)  /* k[4..7] of lens_intrinsics (opencv: k3 k4 k5 k6) */
+
+// One member of a struct of the GPU's types.
+#define RTVK_CAMERA_UBO_MEMBER(type, name) type name;
+
+// std140: the list above, one per view.
 struct camera_ubo {
-  vec3 origin;         // eye position, scene units
-  uint image_width;    // pixels
-  vec3 horizontal;     // full viewport width as a vector, scene units
-  uint image_height;   // pixels
-  vec3 vertical;       // full viewport height as a vector, scene units
-  float lens_radius;   // aperture / 2, scene units
-  vec3 lower_left;     // lower-left corner of the viewport, scene units
-  uint projection;     // RTVK_PROJECTION_*
-  vec3 lens_u;         // unit vector to the camera's right
-  float aspect;        // image width / height
-  vec3 lens_v;         // unit vector to the camera's up
-  float fisheye_fov;   // fisheye field of view across the circle, radians
-  vec3 axis_w;         // unit vector backwards, away from what the camera looks at
-  float focus_dist;    // distance to the plane in perfect focus, scene units
-  vec3 to_lower_left;  // lower_left - origin, formed in double on the host, scene units
-  float time_open;     // the instant the shutter opens, seconds (frame time + shutter open)
-  float shutter;       // how long each row's shutter stays open, seconds; 0: an instant
-  float readout;       // rolling shutter: seconds from the first row's opening to the last
-                       // row's; > 0 top row first, < 0 bottom row first, 0: global shutter
-  float lens_limit;    // calibrated models' valid field (camera_rays.h): opencv, the largest
-                       // undistorted radius^2; opencv-fisheye, the largest distorted angle,
-                       // radians; fisheye-polynomial, the image circle's radius, pixels (0: none)
-  float lens_angle;    // opencv-fisheye: the largest angle from the axis, radians
-  vec4 intrinsics;     // calibrated models: fx, fy, cx, cy in this image's pixels
-  vec4 distortion_a;   // k[0..3] of lens_intrinsics (opencv: k1 k2 p1 p2)
-  vec4 distortion_b;   // k[4..7] of lens_intrinsics (opencv: k3 k4 k5 k6)
+  RTVK_CAMERA_FIELDS(RTVK_CAMERA_UBO_MEMBER)
 };
 
 #ifdef __cplusplus

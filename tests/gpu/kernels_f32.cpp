@@ -18,20 +18,10 @@ glm::vec2 turn_cos_sin(float b) {
 }
 
 ray_f get_ray(const gpu::camera_ubo& cam, float s, float t, glm::vec2 lens) {
-  k::camera_frame f{};
-  f.origin = cam.origin;
-  f.horizontal = cam.horizontal;
-  f.vertical = cam.vertical;
-  f.lower_left = cam.lower_left;
-  f.to_lower_left = cam.to_lower_left;
-  f.lens_u = cam.lens_u;
-  f.lens_v = cam.lens_v;
-  f.axis_w = cam.axis_w;
-  f.lens_radius = cam.lens_radius;
-  f.aspect = cam.aspect;
-  f.fisheye_fov = cam.fisheye_fov;
-  f.focus_dist = cam.focus_dist;
-  f.projection = cam.projection;
+  k::camera_frame f{};  // in float, every field is the GPU's own value
+#define RTVK_UNPACK_CAMERA_FIELD(type, name) f.name = cam.name;
+  RTVK_CAMERA_FIELDS(RTVK_UNPACK_CAMERA_FIELD)
+#undef RTVK_UNPACK_CAMERA_FIELD
   const k::ray r = k::get_ray(f, s, t, lens);
   return {r.origin, r.direction};
 }

@@ -4,30 +4,10 @@ namespace rtvk::gpu {
 
 camera_ubo to_ubo(const camera& cam) {
   camera_ubo u{};
-  const camera_frame& f = cam.frame();  // get_ray's vectors, each field by its name
-  u.origin = vec3(f.origin);
-  u.horizontal = vec3(f.horizontal);
-  u.vertical = vec3(f.vertical);
-  u.lower_left = vec3(f.lower_left);
-  u.to_lower_left = vec3(f.to_lower_left);
-  u.lens_u = vec3(f.lens_u);
-  u.lens_v = vec3(f.lens_v);
-  u.axis_w = vec3(f.axis_w);
-  u.lens_radius = float(f.lens_radius);
-  u.aspect = float(f.aspect);
-  u.fisheye_fov = float(f.fisheye_fov);
-  u.focus_dist = float(f.focus_dist);
-  u.projection = f.projection;
-  u.image_width = uint(cam.image_width());
-  u.image_height = uint(cam.image_height());
-  u.time_open = float(f.time_open);
-  u.shutter = float(f.shutter);
-  u.readout = float(f.readout);
-  u.lens_limit = float(f.lens_limit);
-  u.lens_angle = float(f.lens_angle);
-  u.intrinsics = vec4(f.intrinsics);
-  u.distortion_a = vec4(f.distortion_a);
-  u.distortion_b = vec4(f.distortion_b);
+  const camera_frame& f = cam.frame();  // get_ray's vectors: camera_ubo's fields, by their names
+#define RTVK_PACK_CAMERA_FIELD(type, name) u.name = type(f.name);
+  RTVK_CAMERA_FIELDS(RTVK_PACK_CAMERA_FIELD)
+#undef RTVK_PACK_CAMERA_FIELD
   return u;
 }
 
