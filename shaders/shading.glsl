@@ -39,7 +39,10 @@ const float max_float = 3.402823466e+38;  // stands in for the host's infinity a
 bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint iterations,
                     inout uint rays) {
   c = vec3(0.0);
-  if (++iterations > pc.loop_budget) return true;
+  // A step counts trace_cost iterations (1 until a driver's loop limit cut an invocation short
+  // all the same: the loops rtvk does not count, such as the samples' own, then weigh more).
+  iterations += pc.trace_cost;
+  if (iterations > pc.loop_budget) return true;
   if (path_ends_unlit(p, pc.max_depth)) return true;
   ++rays;
   hit_record rec;

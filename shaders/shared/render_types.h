@@ -39,8 +39,9 @@ struct render_push {
   uint light_count;     // lights in their storage buffer; 0: plain sampling
   uint strata;          // the pixel is cut into strata x strata cells, each of samples 0 to
                         // strata^2 - 1 in its own (camera_rays.h); 0 or 1: not stratified
-  uint trace_cost;      // hardware paths: loop iterations each traced ray counts besides its
-                        // candidates, for the driver's own traversal loop (world_rt.glsl)
+  uint trace_cost;      // loop iterations each path step counts (shading.glsl), and on the
+                        // hardware paths each traced ray too, for the driver's own traversal
+                        // loop (world_rt.glsl): 1, doubled after a loop limit cut an invocation
   uint probe_trips;     // 2: the trips of the loop that tells whether a driver's loop limit
                         // cut the invocation short (limit_was_hit); a push constant, not unrolled
   uint disk_count;      // disks in the storage buffer

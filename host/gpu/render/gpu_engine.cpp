@@ -36,11 +36,14 @@ std::unique_ptr<gpu_buffer> make_ray_times(const gpu_context& ctx, VkDeviceSize 
                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::device_local);
 }
 
-// The iterations each traced ray counts on the hardware paths, besides its candidates, for the
-// driver's traversal loop rtvk cannot see (render_push::trace_cost): one at first, doubled
-// whenever an invocation ran into a driver's loop limit (limit_was_hit) all the same. Mesa 25's
-// lavapipe, the only one with the extensions, was not seen to cut a traversal even with budgets
-// past its limit (tests/gpu/test_gpu_hardware_rt.cpp); the guard is there for drivers that do.
+// The iterations each path step counts, and on the hardware paths each traced ray besides its
+// candidates, for the loops rtvk does not count -- a compute invocation's samples' own loop, the
+// driver's traversal loop -- (render_push::trace_cost): one at first, doubled whenever an
+// invocation ran into a driver's loop limit (limit_was_hit) all the same. On lavapipe 22.3 a
+// compute invocation of tens of thousands of short samples (a tiny image at 2^20 samples) passes
+// 65,535 trips with 60,000 counted: each doubling halves its samples until none is cut. Mesa 25's
+// lavapipe was not seen to cut a traversal even with budgets past its limit
+// (tests/gpu/test_gpu_hardware_rt.cpp); the guard is there for drivers that do.
 constexpr std::uint32_t first_trace_cost = 1;
 
 }  // namespace
