@@ -20,6 +20,13 @@ enum class material_type : std::uint32_t {
   isotropic = RTVK_MATERIAL_ISOTROPIC,          // a medium's phase function: scatters every way
 };
 
+// How a material's alpha (its opacity, 0 to 1) decides which hits count (glTF's alphaMode).
+enum class alpha_mode : std::uint32_t {
+  opaque = 0,  // every hit counts; alpha is ignored
+  mask = 1,    // a hit counts where alpha >= alpha_cutoff, else the ray passes through
+  blend = 2,   // a hit counts with probability alpha (stochastic transparency: unbiased)
+};
+
 // A surface's optics. One flat struct (rather than a class per material) so the GPU copy is the
 // same data; what each kind does with a ray is the shared kernels' (shaders/shared/scatter.h and
 // ray_color.h), which both backends compile.
@@ -32,6 +39,14 @@ struct material {
   int texture = -1;        // index into the scene's textures: the color at a hit is the texture's
                            // value there instead of albedo; -1: albedo everywhere
   bool one_sided = false;  // diffuse_light: emits from its front side only (the third book's)
+  // Beyond the books (glTF and MTL materials, docs/mesh-formats.md); the defaults change nothing.
+  color emission{0, 0, 0};    // radiance emitted besides what it reflects, any strength (glTF
+                              // emissiveFactor times emissive_strength; MTL Ke)
+  int emission_texture = -1;  // index into the scene's textures: multiplies emission; -1: none
+  alpha_mode alpha = alpha_mode::opaque;  // how `opacity` decides which hits count
+  double opacity = 1;         // base alpha, 0 to 1: times the texture's alpha and the vertex alpha
+  double alpha_cutoff = 0.5;  // mask: a hit counts where the alpha is at least this
+  bool cull_back = false;     // rays that hit its back pass through (glTF doubleSided: false)
 };
 
 // What a kind is called in scene files and which of material's parameters it reads: the one

@@ -40,14 +40,16 @@ std::uint8_t linear_to_byte(float v) {
 }
 
 std::shared_ptr<const texel_image> load_texel_image(const std::filesystem::path& file,
-                                                    const std::string& name) {
+                                                    const std::string& name,
+                                                    texel_encoding encoding) {
   const std::string what = "image texture (" + name + ")";
   const std::string bytes = read_regular_file(file, max_texture_file_bytes, what);
-  return decode_texel_image(bytes, name + ": " + file.string());
+  return decode_texel_image(bytes, name + ": " + file.string(), encoding);
 }
 
 std::shared_ptr<const texel_image> decode_texel_image(const std::string& bytes,
-                                                      const std::string& where) {
+                                                      const std::string& where,
+                                                      texel_encoding encoding) {
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int length = int(std::min<std::size_t>(bytes.size(), 0x7fffffff));
   int w = 0, h = 0, channels = 0;
@@ -58,22 +60,28 @@ std::shared_ptr<const texel_image> decode_texel_image(const std::string& bytes,
     throw usage_error(where + ": " + std::to_string(w) + "x" + std::to_string(h) +
                       " texels is past the limit (" + std::to_string(max_texture_side) +
                       " a side, " + std::to_string(max_texture_texels) + " in all)");
-  stbi_uc* pixels = stbi_load_from_memory(data, length, &w, &h, &channels, 3);
+  stbi_uc* pixels = stbi_load_from_memory(data, length, &w, &h, &channels, 4);
   if (!pixels)
     throw usage_error(where + ": cannot decode the image (" + stbi_failure_reason() + ")");
-  // stb_image's own LDR-to-linear rule (stbi_loadf: (byte / 255)^2.2 in float), then the book's
-  // byte per channel.
+  // The book's: stb_image's own LDR-to-linear rule (stbi_loadf: (byte / 255)^2.2 in float); sRGB:
+  // IEC 61966-2-1's curve; then the book's byte per channel.
   std::array<std::uint8_t, 256> to_linear{};
-  for (int b = 0; b < 256; ++b)
-    to_linear[std::size_t(b)] = linear_to_byte(std::pow(float(b) / 255.0f, 2.2f));
+  for (int b = 0; b < 256; ++b) {
+    const float v = float(b) / 255.0f;
+    const float linear = encoding == texel_encoding::book ? std::pow(v, 2.2f)
+                         : encoding == texel_encoding::srgb
+                             ? (v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f))
+                             : v;
+    to_linear[std::size_t(b)] = linear_to_byte(linear);
+  }
   auto image = std::make_shared<texel_image>();
   image->width = w;
   image->height = h;
   image->texels.resize(std::size_t(w) * std::size_t(h));
   for (std::size_t i = 0; i < image->texels.size(); ++i) {
-    const stbi_uc* p = pixels + 3 * i;
+    const stbi_uc* p = pixels + 4 * i;
     image->texels[i] = std::uint32_t(to_linear[p[0]]) | std::uint32_t(to_linear[p[1]]) << 8 |
-                       std::uint32_t(to_linear[p[2]]) << 16 | 0xff000000u;
+                       std::uint32_t(to_linear[p[2]]) << 16 | std::uint32_t(p[3]) << 24;
   }
   stbi_image_free(pixels);
   return image;

@@ -34,7 +34,7 @@ enum class image_wrap : std::uint32_t {
 };
 
 // An image's texels as both backends read them: linear values, a byte a channel, RGBA8 with red
-// in the lowest byte (alpha unused), rows from the top.
+// in the lowest byte (alpha linear, 255 where the image has none), rows from the top.
 struct texel_image {
   int width = 0;                      // texels across
   int height = 0;                     // rows
@@ -66,15 +66,25 @@ inline constexpr std::uint64_t max_texture_file_bytes = std::uint64_t(1) << 30;
 // textures use it): 1 GiB of RGBA8, and every texel index fits 32 bits.
 inline constexpr std::uint64_t max_scene_texels = std::uint64_t(1) << 28;
 
-// Reads a PNG or JPEG (8 bits a channel; what stb_image reads) as the book's rtw_image does:
-// linear by gamma 2.2, then a byte a channel (floor(256 v), clamped). Throws usage_error naming
-// `name` (the scene file's path of the field) and the file: missing, unreadable, not an image,
-// truncated, or larger than the limits above.
+// How an image's bytes map to linear values: its color space.
+enum class texel_encoding : std::uint32_t {
+  book = 0,    // the book's rtw_image: (byte / 255)^2.2 (every image a scene file names)
+  srgb = 1,    // the sRGB transfer function: glTF base color and emissive images, MTL maps
+  linear = 2,  // data, not colors: glTF metallic-roughness, occlusion and normal images
+};
+
+// Reads a PNG or JPEG (8 bits a channel; what stb_image reads) and makes its colors linear by
+// `encoding` (by default as the book's rtw_image does: gamma 2.2), then a byte a channel
+// (floor(256 v), clamped); alpha is kept as it is (linear in every color space). Throws usage_error
+// naming `name` (the scene file's path of the field) and the file: missing, unreadable, not an
+// image, truncated, or larger than the limits above.
 std::shared_ptr<const texel_image> load_texel_image(const std::filesystem::path& file,
-                                                    const std::string& name);
+                                                    const std::string& name,
+                                                    texel_encoding encoding = texel_encoding::book);
 // The same for an image's encoded bytes (a glTF's embedded image); `name` leads every message.
-std::shared_ptr<const texel_image> decode_texel_image(const std::string& bytes,
-                                                      const std::string& name);
+std::shared_ptr<const texel_image> decode_texel_image(
+    const std::string& bytes, const std::string& name,
+    texel_encoding encoding = texel_encoding::book);
 
 // The book's linear-to-byte rule for one channel value: 0 at or below 0, 255 at or above 1,
 // else floor(256 v).

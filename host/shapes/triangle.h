@@ -39,9 +39,12 @@ inline bool has_area(const std::array<point3, 3>& p) {
 // What a mesh gives its vertices beyond positions: normals for smooth shading and texture
 // coordinates (image textures read them).
 struct triangle_shading {
-  std::array<vec3, 3> normal{};    // unit vertex normals, or all zero: flat
-  std::array<glm::dvec2, 3> uv{};  // texture coordinates (0, 0 where the mesh has none)
-  bool has_uv = false;             // uv came from the mesh (else a hit's uv is barycentric)
+  std::array<vec3, 3> normal{};      // unit vertex normals, or all zero: flat
+  std::array<glm::dvec2, 3> uv{};    // texture coordinates (0, 0 where the mesh has none)
+  bool has_uv = false;               // uv came from the mesh (else a hit's uv is barycentric)
+  std::array<glm::vec4, 3> color{};  // vertex colors (glTF COLOR_0, OBJ "v x y z r g b"): linear
+                                     // RGBA, multiplying the material's color and alpha
+  bool has_color = false;            // color came from the mesh
   bool has_normals() const { return normal[0] != vec3(0); }
 };
 
