@@ -65,6 +65,9 @@ struct scene : shape_lists {
   // Objects of several primitives, one object each to --aov object-id (object_ids.h): a box's
   // six quads, a mesh file's triangles.
   std::vector<primitive_run> compounds;
+  // What the loaders drew otherwise than the file asks (an optional extension ignored, a missing
+  // MTL drawn gray): one line each, said once; the CLI prints them to stderr as warnings.
+  std::vector<std::string> warnings;
   time_span motion;  // the instants rays may sample, seconds: BVHs bound moving spheres over it
                      // (render plans widen it to every frame's shutter; default [0, 1])
 };
