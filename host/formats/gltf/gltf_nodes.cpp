@@ -1,0 +1,143 @@
+// The glTF reader's walk: the default scene's node tree with each node's transform, and each
+// mesh's triangle primitives with their positions, normals, texture coordinates and materials.
+#include <glm/gtc/quaternion.hpp>
+
+#include "gltf_accessor.h"
+#include "gltf_reader.h"
+
+namespace rtvk {
+namespace {
+
+// A node's own transform: its matrix, or translation * rotation * scale.
+transform node_transform(const tinygltf::Node& n) {
+  transform t;
+  if (n.matrix.size() == 16) {
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) t.linear[c][r] = n.matrix[std::size_t(4 * c + r)];
+    t.offset = vec3(n.matrix[12], n.matrix[13], n.matrix[14]);
+    return t;
+  }
+  glm::dmat3 scale(1.0), rotation(1.0);
+  if (n.scale.size() == 3) scale = glm::dmat3(n.scale[0], 0, 0, 0, n.scale[1], 0, 0, 0, n.scale[2]);
+  if (n.rotation.size() == 4)  // x, y, z, w
+    rotation =
+        glm::mat3_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+  t.linear = rotation * scale;
+  if (n.translation.size() == 3)
+    t.offset = vec3(n.translation[0], n.translation[1], n.translation[2]);
+  return t;
+}
+
+}  // namespace
+
+gltf_walker::gltf_walker(const tinygltf::Model& m, mesh_builder& b, const mesh_placement& how)
+    : m_(m), b_(b), how_(how) {
+  if (how.material < 0) materials_.emplace(m, b);
+}
+
+void gltf_walker::walk_scene() {
+  std::vector<int> roots;
+  const int scene = m_.defaultScene >= 0 ? m_.defaultScene : 0;
+  if (std::size_t(scene) < m_.scenes.size()) {
+    roots = m_.scenes[std::size_t(scene)].nodes;
+  } else {  // no scenes: every node that is nobody's child
+    std::vector<bool> child(m_.nodes.size());
+    for (const tinygltf::Node& n : m_.nodes)
+      for (int c : n.children)
+        if (c >= 0 && std::size_t(c) < child.size()) child[std::size_t(c)] = true;
+    for (std::size_t i = 0; i < child.size(); ++i)
+      if (!child[i]) roots.push_back(int(i));
+  }
+  for (int n : roots) walk(n, transform{}, 0);
+}
+
+void gltf_walker::walk(int index, const transform& parent, int depth) {
+  const std::string where = "node " + std::to_string(index);
+  if (index < 0 || std::size_t(index) >= m_.nodes.size()) b_.fail(where, "does not exist");
+  if (depth > 64) b_.fail(where, "the node tree is deeper than 64 levels (or has a cycle)");
+  // glTF's nodes form trees: a node reached twice (a shared child, a cycle) would be walked
+  // once per path, exponentially many times.
+  if (walked_.empty()) walked_.resize(m_.nodes.size());
+  if (walked_[std::size_t(index)]) b_.fail(where, "is reached twice (glTF nodes form trees)");
+  walked_[std::size_t(index)] = true;
+  const tinygltf::Node& n = m_.nodes[std::size_t(index)];
+  const transform t = compose(parent, node_transform(n));
+  if (n.mesh >= 0) {
+    if (const std::optional<std::string> why = degenerate(t))
+      b_.fail(where, "its transform cannot place a mesh: " + *why);
+    add_mesh(n.mesh, t, where);
+  }
+  for (int c : n.children) walk(c, t, depth + 1);
+}
+
+void gltf_walker::add_mesh(int index, const transform& t, const std::string& node) {
+  if (std::size_t(index) >= m_.meshes.size())
+    b_.fail(node, "mesh " + std::to_string(index) + " does not exist");
+  const tinygltf::Mesh& mesh = m_.meshes[std::size_t(index)];
+  for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+    const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
+    add_primitive(mesh.primitives[p], t, where);
+  }
+}
+
+std::optional<accessor_reader> gltf_walker::attribute(const tinygltf::Primitive& prim,
+                                                      const char* name,
+                                                      const std::string& where) const {
+  const auto it = prim.attributes.find(name);
+  if (it == prim.attributes.end()) return std::nullopt;
+  return accessor_reader(m_, it->second, b_, where + " " + name);
+}
+
+void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const transform& t,
+                                const std::string& where) {
+  if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1)
+    b_.fail(where, "mode " + std::to_string(prim.mode) + " is not triangles (4)");
+  const std::optional<accessor_reader> pos = attribute(prim, "POSITION", where);
+  if (!pos) b_.fail(where, "has no POSITION");
+  if (pos->type() != TINYGLTF_TYPE_VEC3) b_.fail(where + " POSITION", "is not VEC3");
+  std::optional<accessor_reader> nrm = attribute(prim, "NORMAL", where);
+  if (nrm && (nrm->type() != TINYGLTF_TYPE_VEC3 || nrm->count() != pos->count()))
+    b_.fail(where + " NORMAL", "is not one VEC3 per position");
+  std::optional<accessor_reader> tex = attribute(prim, "TEXCOORD_0", where);
+  if (tex && (tex->type() != TINYGLTF_TYPE_VEC2 || tex->count() != pos->count()))
+    b_.fail(where + " TEXCOORD_0", "is not one VEC2 per position");
+  std::optional<accessor_reader> idx;
+  if (prim.indices >= 0) idx.emplace(m_, prim.indices, b_, where + " indices");
+  const std::size_t corners = idx ? idx->count() : pos->count();
+  if (corners % 3 != 0)
+    b_.fail(where, std::to_string(corners) + " vertices are not whole triangles");
+  const int material = material_of(prim, where);
+  for (std::size_t f = 0; f < corners / 3; ++f) {
+    const std::string face = where + " triangle " + std::to_string(f);
+    std::array<point3, 3> p;
+    std::array<vec3, 3> n;
+    std::array<glm::dvec2, 3> uv{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint64_t v = idx ? idx->index(3 * f + k) : 3 * f + k;
+      if (v >= pos->count())
+        b_.fail(face, "index " + std::to_string(v) + " is not one of the " +
+                          std::to_string(pos->count()) + " vertices");
+      p[k] = b_.position(pos->vec(std::size_t(v)), t, face);
+      if (nrm) n[k] = nrm->vec(std::size_t(v));
+      // glTF's v runs down the image from its top; rtvk's (the book's, OBJ's) up from its
+      // bottom.
+      if (tex) {
+        uv[k] = glm::dvec2(tex->get(std::size_t(v), 0), 1 - tex->get(std::size_t(v), 1));
+        if (!(std::abs(uv[k].x) <= 1e6 && std::abs(uv[k].y) <= 1e6))
+          b_.fail(face + " TEXCOORD_0", "is not finite or beyond +-1e6");
+      }
+    }
+    b_.add(p, material, nrm ? std::optional(n) : std::nullopt, uv, tex.has_value(), t);
+  }
+}
+
+int gltf_walker::material_of(const tinygltf::Primitive& prim, const std::string& where) {
+  if (how_.material >= 0) return how_.material;
+  if (prim.material >= 0) return materials_->scene_material(prim.material, where);
+  if (fallback_ < 0)
+    fallback_ =
+        b_.add_material(b_.name() + ":default", {material_type::lambertian, color(0.7), 0, 1.5});
+  return fallback_;
+}
+
+}  // namespace rtvk

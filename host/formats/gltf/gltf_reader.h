@@ -1,0 +1,64 @@
+#pragma once
+// Internal to the glTF reader (formats/gltf/, part of rtvk_formats): what its sources give each
+// other. load_gltf (mesh_gltf.cpp) parses the file, then walks its default scene.
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+#include "confined_path.h"
+#include "mesh_builder.h"
+#include "mesh_file.h"
+
+namespace rtvk {
+
+class accessor_reader;
+
+// gltf_files.cpp: a glTF parsed (its images kept encoded, its external files read by rtvk's
+// reader where `guard` allows; `base` empty: none read). Throws usage_error naming `name`.
+tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::string& name,
+                           const std::filesystem::path& base, const path_guard& guard);
+
+// gltf_material.cpp: the file's materials, appended to the scene once each, with the textures
+// they use.
+class gltf_materials {
+ public:
+  gltf_materials(const tinygltf::Model& m, mesh_builder& b);
+  // The scene's material for the file's material k; fails naming `where` if there is none.
+  int scene_material(int k, const std::string& where) const;
+
+ private:
+  int base_texture(const tinygltf::Material& mat);
+
+  const tinygltf::Model& m_;
+  mesh_builder& b_;
+  std::vector<int> materials_;         // the file's material k -> the scene's
+  std::map<int, int> image_textures_;  // the file's image k -> the scene's texture
+};
+
+// gltf_nodes.cpp: walks the default scene's node tree, appending each mesh's triangles.
+class gltf_walker {
+ public:
+  gltf_walker(const tinygltf::Model& m, mesh_builder& b, const mesh_placement& how);
+  void walk_scene();
+
+ private:
+  void walk(int index, const transform& parent, int depth);
+  void add_mesh(int index, const transform& t, const std::string& node);
+  std::optional<accessor_reader> attribute(const tinygltf::Primitive& prim, const char* name,
+                                           const std::string& where) const;
+  void add_primitive(const tinygltf::Primitive& prim, const transform& t, const std::string& where);
+  int material_of(const tinygltf::Primitive& prim, const std::string& where);
+
+  const tinygltf::Model& m_;
+  mesh_builder& b_;
+  const mesh_placement& how_;
+  std::optional<gltf_materials> materials_;  // the file's, unless how_ names one for all
+  int fallback_ = -1;         // primitives without a material: gray diffuse, made when needed
+  std::vector<bool> walked_;  // node k has been walked
+};
+
+}  // namespace rtvk

@@ -1,0 +1,35 @@
+// glTF 2.0 (.gltf and .glb), through Debian's tinygltf: the entry points. The reader's parts:
+// gltf_files.cpp (parsing, the files a glTF names), gltf_nodes.cpp (the node tree and its
+// primitives), gltf_material.cpp (materials and their textures), gltf_accessor.h (every accessor
+// checked against its buffer before it is read).
+#include "gltf_reader.h"
+#include "input_file.h"
+
+namespace rtvk {
+
+void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
+               const std::filesystem::path& base, const mesh_placement& how,
+               const path_guard& guard) {
+  const tinygltf::Model model = parse_gltf(bytes, binary, name, base, guard);
+  mesh_builder b(s, name, how.placement);
+  gltf_walker(model, b, how).walk_scene();
+}
+
+std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file, std::size_t index,
+                                              const std::string& name, const path_guard& guard) {
+  const std::string kind = mesh_kind(file);
+  if (kind != "gltf" && kind != "glb")
+    throw usage_error(name + ": " + file.string() + " is not .gltf or .glb");
+  const std::string bytes =
+      read_regular_file(file, max_mesh_file_bytes, "glTF file (" + name + ")");
+  const std::filesystem::path base = file.parent_path();
+  const tinygltf::Model model =
+      parse_gltf(bytes, kind == "glb", file.string(), base.empty() ? "." : base, guard);
+  if (index >= model.images.size() || model.images[index].image.empty())
+    throw usage_error(name + ": " + file.string() + " has no image " + std::to_string(index));
+  const std::vector<unsigned char>& img = model.images[index].image;
+  return decode_texel_image(std::string(img.begin(), img.end()),
+                            name + ": " + file.string() + "#images/" + std::to_string(index));
+}
+
+}  // namespace rtvk
