@@ -85,24 +85,29 @@ int gltf_materials::scene_material(int k, const std::string& where) const {
   return materials_[std::size_t(k)];
 }
 
-// The scene's texture for a material's base color image (decoded once per image), or -1.
+// The scene's texture for a material's base color (tinted by its factor), or -1.
 int gltf_materials::base_texture(const tinygltf::Material& mat) {
-  const int t = mat.pbrMetallicRoughness.baseColorTexture.index;
-  if (t < 0) return -1;
+  const tinygltf::TextureInfo& info = mat.pbrMetallicRoughness.baseColorTexture;
+  if (info.index < 0) return -1;
   const std::string where = "materials \"" + mat.name + "\" baseColorTexture";
-  if (std::size_t(t) >= m_.textures.size())
+  if (info.texCoord != 0)
+    b_.fail(where,
+            "reads TEXCOORD_" + std::to_string(info.texCoord) + " (rtvk reads TEXCOORD_0 only)");
+  color tint(1);
+  const std::vector<double>& f = mat.pbrMetallicRoughness.baseColorFactor;
+  for (std::size_t k = 0; k < 3 && k < f.size(); ++k) tint[int(k)] = unit(f[k]);
+  return image_texture(info.index, texel_encoding::book, tint, where);
+}
+
+// A texture of its own for each use of a glTF texture: the use's tint and the texture's sampler
+// are the texture's, while the decoded image is shared by every use of it in one color space.
+int gltf_materials::image_texture(int t, texel_encoding encoding, const color& tint,
+                                  const std::string& where) {
+  if (t < 0 || std::size_t(t) >= m_.textures.size())
     b_.fail(where, "texture " + std::to_string(t) + " does not exist");
-  if (mat.pbrMetallicRoughness.baseColorTexture.texCoord != 0)
-    b_.fail(where, "reads TEXCOORD_" +
-                       std::to_string(mat.pbrMetallicRoughness.baseColorTexture.texCoord) +
-                       " (rtvk reads TEXCOORD_0 only)");
   const int source = m_.textures[std::size_t(t)].source;
   if (source < 0 || std::size_t(source) >= m_.images.size())
     b_.fail(where, "texture " + std::to_string(t) + " has no image");
-  const auto cached = image_textures_.find(source);
-  if (cached != image_textures_.end()) return cached->second;
-  const tinygltf::Image& img = m_.images[std::size_t(source)];
-  if (img.image.empty()) b_.fail(where, "image " + std::to_string(source) + " has no data");
   texture tex;
   tex.type = texture_type::image;
   // Absolute, so that a dumped scene finds the file from wherever it is read.
@@ -110,8 +115,7 @@ int gltf_materials::base_texture(const tinygltf::Material& mat) {
   const std::filesystem::path file = std::filesystem::absolute(b_.name(), ec);
   tex.file =
       (ec ? b_.name() : file.lexically_normal().string()) + "#images/" + std::to_string(source);
-  const std::vector<double>& f = mat.pbrMetallicRoughness.baseColorFactor;
-  for (std::size_t k = 0; k < 3 && k < f.size(); ++k) tex.even[int(k)] = unit(f[k]);
+  tex.even = tint;
   const int sampler = m_.textures[std::size_t(t)].sampler;
   if (sampler >= 0 && std::size_t(sampler) < m_.samplers.size()) {
     tex.wrap_u = wrap_of(m_.samplers[std::size_t(sampler)].wrapS);
@@ -119,11 +123,15 @@ int gltf_materials::base_texture(const tinygltf::Material& mat) {
   } else {
     tex.wrap_u = tex.wrap_v = image_wrap::repeat;  // glTF's default sampler
   }
-  tex.image = decode_texel_image(std::string(img.image.begin(), img.image.end()),
-                                 b_.name() + ": images/" + std::to_string(source));
-  const int index = b_.add_texture(std::move(tex));
-  image_textures_[source] = index;
-  return index;
+  std::shared_ptr<const texel_image>& image = images_[{source, encoding}];
+  if (!image) {
+    const tinygltf::Image& img = m_.images[std::size_t(source)];
+    if (img.image.empty()) b_.fail(where, "image " + std::to_string(source) + " has no data");
+    image = decode_texel_image(std::string(img.image.begin(), img.image.end()),
+                               b_.name() + ": images/" + std::to_string(source), encoding);
+  }
+  tex.image = image;
+  return b_.add_texture(std::move(tex));
 }
 
 }  // namespace rtvk

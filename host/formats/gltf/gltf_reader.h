@@ -32,11 +32,13 @@ class gltf_materials {
 
  private:
   int base_texture(const tinygltf::Material& mat);
+  int image_texture(int t, texel_encoding encoding, const color& tint, const std::string& where);
 
   const tinygltf::Model& m_;
   mesh_builder& b_;
-  std::vector<int> materials_;         // the file's material k -> the scene's
-  std::map<int, int> image_textures_;  // the file's image k -> the scene's texture
+  std::vector<int> materials_;  // the file's material k -> the scene's
+  // The file's image k decoded in one color space, shared by every texture that uses it.
+  std::map<std::pair<int, texel_encoding>, std::shared_ptr<const texel_image>> images_;
 };
 
 // gltf_nodes.cpp: walks the default scene's node tree, appending each mesh's triangles.
