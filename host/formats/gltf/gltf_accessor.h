@@ -1,10 +1,10 @@
 #pragma once
-// Internal to formats/: a glTF accessor read as doubles, every byte it names checked against its
-// buffer first (mesh_gltf.cpp).
+// Internal to the glTF reader: an accessor read as the spec defines it, every byte it names
+// checked against its buffer first (gltf_accessor.cpp).
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <string>
+#include <vector>
 
 #include <tiny_gltf.h>
 
@@ -12,104 +12,62 @@
 
 namespace rtvk {
 
-// Reads an accessor's elements as doubles, after checking that every byte it names lies in its
-// buffer.
+// The component types by their C names, for accessor_reader::require.
+namespace tinygltf_types {
+inline constexpr int i8 = TINYGLTF_COMPONENT_TYPE_BYTE, u8 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                     i16 = TINYGLTF_COMPONENT_TYPE_SHORT,
+                     u16 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                     u32 = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+}  // namespace tinygltf_types
+
+// Reads an accessor's elements as doubles: floats as they are, normalized integers scaled by the
+// spec's formulas (signed ones to [-1, 1], unsigned ones to [0, 1]), other integers as their
+// values (KHR_mesh_quantization's positions and texture coordinates, which the node's transform
+// or the texture transform scales). A sparse accessor's substitutions are applied once, when it
+// is made (their indices kept in order, each looked up); an accessor without a buffer view reads
+// zeros, as the spec says.
 class accessor_reader {
  public:
-  accessor_reader(const tinygltf::Model& m, int index, const mesh_builder& b, std::string where)
-      : b_(b), where_(std::move(where)) {
-    if (index < 0 || std::size_t(index) >= m.accessors.size())
-      b_.fail(where_, "accessor " + std::to_string(index) + " does not exist");
-    a_ = &m.accessors[std::size_t(index)];
-    where_ += " (accessor " + std::to_string(index) + ")";
-    if (a_->sparse.isSparse) b_.fail(where_, "sparse accessors are not supported");
-    if (a_->bufferView < 0 || std::size_t(a_->bufferView) >= m.bufferViews.size())
-      b_.fail(where_, "has no buffer view");
-    const tinygltf::BufferView& view = m.bufferViews[std::size_t(a_->bufferView)];
-    if (view.buffer < 0 || std::size_t(view.buffer) >= m.buffers.size())
-      b_.fail(where_, "its buffer view names no buffer");
-    const std::vector<unsigned char>& data = m.buffers[std::size_t(view.buffer)].data;
-    components_ = tinygltf::GetNumComponentsInType(std::uint32_t(a_->type));
-    component_bytes_ = tinygltf::GetComponentSizeInBytes(std::uint32_t(a_->componentType));
-    if (components_ <= 0 || component_bytes_ <= 0) b_.fail(where_, "has an unknown type");
-    const std::size_t element = std::size_t(components_) * std::size_t(component_bytes_);
-    stride_ = view.byteStride ? view.byteStride : element;
-    if (stride_ < element || stride_ > 252)  // glTF's own bounds on a stride
-      b_.fail(where_, "its stride " + std::to_string(stride_) + " is not in [" +
-                          std::to_string(element) + ", 252]");
-    // The view within the buffer, then every byte of the accessor within the view. Each term is
-    // bounded before the sum (offsets by the buffer's size, the stride by 252, the count by
-    // 2^40), so nothing wraps.
-    const auto outside = [&] {
-      b_.fail(where_, "points outside its buffer's " + std::to_string(data.size()) + " bytes");
-    };
-    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) outside();
-    if (a_->byteOffset > view.byteLength || a_->count > (std::uint64_t(1) << 40)) outside();
-    const std::uint64_t end =
-        a_->count == 0
-            ? 0
-            : std::uint64_t(a_->byteOffset) + std::uint64_t(stride_) * (a_->count - 1) + element;
-    if (end > view.byteLength) outside();
-    base_ = data.data() + view.byteOffset + a_->byteOffset;
-  }
+  accessor_reader(const tinygltf::Model& m, int index, const mesh_builder& b, std::string where);
 
   std::size_t count() const { return a_->count; }
   int components() const { return components_; }
   int type() const { return a_->type; }
+  int component_type() const { return a_->componentType; }
+  bool normalized() const { return a_->normalized; }
+  const std::string& where() const { return where_; }
 
-  // Component c of element i, as a double (normalized integers are scaled to [0, 1]).
+  // Component c (< components()) of element i (< count()).
   double get(std::size_t i, int c) const {
-    const unsigned char* p = base_ + i * stride_ + std::size_t(c) * std::size_t(component_bytes_);
-    switch (a_->componentType) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT:
-        return load<float>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        return scaled(load<std::uint32_t>(p), 4294967295.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return scaled(load<std::uint16_t>(p), 65535.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return scaled(load<std::uint8_t>(p), 255.0);
-      case TINYGLTF_COMPONENT_TYPE_SHORT:
-        return scaled(load<std::int16_t>(p), 32767.0);
-      case TINYGLTF_COMPONENT_TYPE_BYTE:
-        return scaled(load<std::int8_t>(p), 127.0);
-      case TINYGLTF_COMPONENT_TYPE_DOUBLE:
-        return load<double>(p);
-      default:
-        b_.fail(where_, "has an unknown component type");
+    const std::size_t at = std::size_t(c) * std::size_t(component_bytes_);
+    if (!substituted_.empty()) {
+      const auto k = std::lower_bound(substituted_.begin(), substituted_.end(), i);
+      if (k != substituted_.end() && *k == i)
+        return read(values_ + std::size_t(k - substituted_.begin()) * element_ + at);
     }
+    return base_ ? read(base_ + i * stride_ + at) : 0;
   }
-  // Element i as an index (integer components only).
-  std::uint64_t index(std::size_t i) const {
-    const unsigned char* p = base_ + i * stride_;
-    switch (a_->componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        return load<std::uint32_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return load<std::uint16_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return load<std::uint8_t>(p);
-      default:
-        b_.fail(where_, "indices must be unsigned integers");
-    }
-  }
+  // Element i as an index (unsigned integer components only, checked when made).
+  std::uint64_t index(std::size_t i) const { return std::uint64_t(get(i, 0)); }
   vec3 vec(std::size_t i) const { return vec3(get(i, 0), get(i, 1), get(i, 2)); }
+  // Fails unless the accessor is one of `types` (TINYGLTF_TYPE_*) of the component types
+  // `components` (TINYGLTF_COMPONENT_TYPE_*; float always allowed) with `count` elements (0: any).
+  void require(std::initializer_list<int> types, std::initializer_list<int> components,
+               std::size_t count, const std::string& what) const;
 
  private:
-  template <typename T>
-  static T load(const unsigned char* p) {
-    T v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-  double scaled(double v, double max) const { return a_->normalized ? std::max(v / max, -1.0) : v; }
+  double read(const unsigned char* p) const;
+  void apply_sparse(const tinygltf::Model& m);
 
   const mesh_builder& b_;
   std::string where_;
   const tinygltf::Accessor* a_ = nullptr;
-  const unsigned char* base_ = nullptr;
-  std::size_t stride_ = 0;
+  const unsigned char* base_ = nullptr;  // element 0's bytes; null: no buffer view (zeros)
+  std::size_t stride_ = 0;               // bytes from one element to the next
+  std::size_t element_ = 0;              // bytes of one element, packed
   int components_ = 0, component_bytes_ = 0;
+  std::vector<std::size_t> substituted_;   // sparse: the elements replaced, increasing
+  const unsigned char* values_ = nullptr;  // sparse: their values, packed in that order
 };
 
 }  // namespace rtvk

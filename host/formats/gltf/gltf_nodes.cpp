@@ -92,17 +92,24 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const transform
                                 const std::string& where) {
   if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1)
     b_.fail(where, "mode " + std::to_string(prim.mode) + " is not triangles (4)");
+  using namespace tinygltf_types;
   const std::optional<accessor_reader> pos = attribute(prim, "POSITION", where);
   if (!pos) b_.fail(where, "has no POSITION");
-  if (pos->type() != TINYGLTF_TYPE_VEC3) b_.fail(where + " POSITION", "is not VEC3");
+  pos->require({TINYGLTF_TYPE_VEC3}, {i8, u8, i16, u16}, 0, "is not VEC3 of floats or integers");
   std::optional<accessor_reader> nrm = attribute(prim, "NORMAL", where);
-  if (nrm && (nrm->type() != TINYGLTF_TYPE_VEC3 || nrm->count() != pos->count()))
-    b_.fail(where + " NORMAL", "is not one VEC3 per position");
+  if (nrm)
+    nrm->require({TINYGLTF_TYPE_VEC3}, {i8, i16}, pos->count(), "is not one VEC3 per position");
   std::optional<accessor_reader> tex = attribute(prim, "TEXCOORD_0", where);
-  if (tex && (tex->type() != TINYGLTF_TYPE_VEC2 || tex->count() != pos->count()))
-    b_.fail(where + " TEXCOORD_0", "is not one VEC2 per position");
+  if (tex)
+    tex->require({TINYGLTF_TYPE_VEC2}, {i8, u8, i16, u16}, pos->count(),
+                 "is not one VEC2 per position");
   std::optional<accessor_reader> idx;
-  if (prim.indices >= 0) idx.emplace(m_, prim.indices, b_, where + " indices");
+  if (prim.indices >= 0) {
+    idx.emplace(m_, prim.indices, b_, where + " indices");
+    if (idx->component_type() == TINYGLTF_COMPONENT_TYPE_FLOAT)
+      b_.fail(idx->where(), "indices must be unsigned integers");
+    idx->require({TINYGLTF_TYPE_SCALAR}, {u8, u16, u32}, 0, "indices must be unsigned integers");
+  }
   const std::size_t corners = idx ? idx->count() : pos->count();
   if (corners % 3 != 0)
     b_.fail(where, std::to_string(corners) + " vertices are not whole triangles");
