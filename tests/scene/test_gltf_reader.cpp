@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "errors.h"
+#include "image_io.h"
 #include "mesh_file.h"
 #include "mesh_helpers.h"
 #include "render_cpu.h"
@@ -125,6 +126,76 @@ TEST(GltfReader, SparseAccessorsReplaceTheElementsTheyName) {
   } catch (const usage_error& e) {
     EXPECT_NE(std::string(e.what()).find("sparse indices"), std::string::npos) << e.what();
   }
+}
+
+// Duck from glTF-Quantized (KHR_mesh_quantization: normalized BYTE normals, UNSIGNED_SHORT
+// positions scaled by the node, UNSIGNED_SHORT texture coordinates scaled by
+// KHR_texture_transform) is the plain Duck, to the quantization's step.
+TEST(GltfReader, TheQuantizedDuckIsThePlainDuck) {
+  const scene plain = mesh_scene(gltf_data / "Duck/Duck.gltf");
+  const scene quantized = mesh_scene(gltf_data / "Duck/DuckQuantized.gltf");
+  ASSERT_EQ(plain.triangles.size(), quantized.triangles.size());
+  ASSERT_GT(plain.triangles.size(), 4000u);
+  // gltfpack reordered the triangles and their corners: each quantized corner is compared with
+  // the nearest corner of the plain triangle whose centroid is nearest.
+  const auto centroid = [](const triangle& t) { return (t.p[0] + t.p[1] + t.p[2]) / 3.0; };
+  double worst_p = 0, worst_uv = 0, worst_n = 0;
+  for (const triangle& b : quantized.triangles) {
+    const triangle* a = &plain.triangles[0];
+    for (const triangle& c : plain.triangles)
+      if (glm::length(centroid(c) - centroid(b)) < glm::length(centroid(*a) - centroid(b))) a = &c;
+    const triangle_shading& sa = plain.shading.at(std::size_t(a->shading));
+    const triangle_shading& sb = quantized.shading.at(std::size_t(b.shading));
+    for (std::size_t k = 0; k < 3; ++k) {
+      std::size_t j = 0;
+      for (std::size_t c = 1; c < 3; ++c)
+        if (glm::length(a->p[c] - b.p[k]) < glm::length(a->p[j] - b.p[k])) j = c;
+      worst_p = std::max(worst_p, glm::length(a->p[j] - b.p[k]));
+      worst_uv = std::max(worst_uv, glm::length(sa.uv[j] - sb.uv[k]));
+      worst_n = std::max(worst_n,
+                         glm::length(glm::normalize(sa.normal[j]) - glm::normalize(sb.normal[k])));
+    }
+  }
+  // The duck is about 1.6 units across, quantized to 14 bits; its uv in steps of 2.3e-4 (half a
+  // step on each axis: 1.7e-4); normals to 8 bits.
+  EXPECT_LT(worst_p, 2e-4);
+  EXPECT_LT(worst_uv, 2e-4);
+  EXPECT_LT(worst_n, 2e-2);
+  EXPECT_EQ(quantized.textures.at(0).image->texels, plain.textures.at(0).image->texels);
+}
+
+// A material's base color texture may read TEXCOORD_1 and map it by KHR_texture_transform (its
+// own texCoord overriding the textureInfo's): offset, then rotation, then scale as the extension
+// composes them, in glTF's uv, before v is flipped to rtvk's.
+TEST(GltfReader, TextureTransformsAndCoordinateSetsMapTheUv) {
+  std::string bin;
+  put<float>(bin, {0, 0, 0, 1, 0, 0, 0, 1, 0});  // positions
+  put<float>(bin, {9, 9, 9, 9, 9, 9});           // TEXCOORD_0: not read
+  put<float>(bin, {0, 0, 1, 0, 0, 1});           // TEXCOORD_1
+  std::string doc =
+      triangle_gltf(bin, R"("POSITION":0,"TEXCOORD_0":1,"TEXCOORD_1":2)",
+                    R"({"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+                    R"({"bufferView":1,"componentType":5126,"count":3,"type":"VEC2"},)"
+                    R"({"bufferView":2,"componentType":5126,"count":3,"type":"VEC2"})",
+                    R"({"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":24},)"
+                    R"({"buffer":0,"byteOffset":60,"byteLength":24})",
+                    R"(,"textures":[{"source":0}],"images":[{"uri":"data:image/png;base64,)" +
+                        test::base64(encode_png(image_rgb8{1, 1, {255, 255, 255}})) + R"("}])");
+  doc.replace(doc.find(R"("materials":[{}])"), 16,
+              R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0,)"
+              R"("texCoord":0,"extensions":{"KHR_texture_transform":{"texCoord":1,)"
+              R"("offset":[0.5,0.25],"rotation":1.5707963267948966,"scale":[2,3]}}}}}])");
+  scene s;
+  load_mesh_bytes(s, doc, "gltf", "t.gltf", "", {});
+  const triangle_shading& sh = s.shading.at(std::size_t(s.triangles.at(0).shading));
+  // (1, 0) scaled to (2, 0), turned to (0, -2) (u' = cos u + sin v, v' = cos v - sin u), offset
+  // to (0.5, -1.75), v flipped: (0.5, 2.75). (0, 1): (0, 3), (3, 0), (3.5, 0.25), (3.5, 0.75).
+  EXPECT_NEAR(sh.uv[0].x, 0.5, 1e-12);
+  EXPECT_NEAR(sh.uv[0].y, 0.75, 1e-12);
+  EXPECT_NEAR(sh.uv[1].x, 0.5, 1e-12);
+  EXPECT_NEAR(sh.uv[1].y, 2.75, 1e-12);
+  EXPECT_NEAR(sh.uv[2].x, 3.5, 1e-12);
+  EXPECT_NEAR(sh.uv[2].y, 0.75, 1e-12);
 }
 
 }  // namespace

@@ -62,15 +62,15 @@ std::uint64_t load_index(const unsigned char* p, int bytes) {
 
 accessor_reader::accessor_reader(const tinygltf::Model& m, int index, const mesh_builder& b,
                                  std::string where)
-    : b_(b), where_(std::move(where)) {
+    : b_(&b), where_(std::move(where)) {
   if (index < 0 || std::size_t(index) >= m.accessors.size())
-    b_.fail(where_, "accessor " + std::to_string(index) + " does not exist");
+    b_->fail(where_, "accessor " + std::to_string(index) + " does not exist");
   a_ = &m.accessors[std::size_t(index)];
   where_ += " (accessor " + std::to_string(index) + ")";
   components_ = tinygltf::GetNumComponentsInType(std::uint32_t(a_->type));
   component_bytes_ = tinygltf::GetComponentSizeInBytes(std::uint32_t(a_->componentType));
-  if (components_ <= 0 || component_bytes_ <= 0) b_.fail(where_, "has an unknown type");
-  if (a_->count > (std::uint64_t(1) << 40)) b_.fail(where_, "has too many elements");
+  if (components_ <= 0 || component_bytes_ <= 0) b_->fail(where_, "has an unknown type");
+  if (a_->count > (std::uint64_t(1) << 40)) b_->fail(where_, "has too many elements");
   element_ = std::size_t(components_) * std::size_t(component_bytes_);
   const std::size_t element = element_;
   if (a_->bufferView >= 0) {
@@ -79,9 +79,9 @@ accessor_reader::accessor_reader(const tinygltf::Model& m, int index, const mesh
         m.bufferViews[std::size_t(a_->bufferView)].byteStride)
       stride_ = m.bufferViews[std::size_t(a_->bufferView)].byteStride;
     if (stride_ < element || stride_ > 252)  // glTF's own bounds on a stride
-      b_.fail(where_, "its stride " + std::to_string(stride_) + " is not in [" +
-                          std::to_string(element) + ", 252]");
-    base_ = view_bytes(m, a_->bufferView, a_->byteOffset, a_->count, element, stride_, b_, where_);
+      b_->fail(where_, "its stride " + std::to_string(stride_) + " is not in [" +
+                           std::to_string(element) + ", 252]");
+    base_ = view_bytes(m, a_->bufferView, a_->byteOffset, a_->count, element, stride_, *b_, where_);
   }
   if (a_->sparse.isSparse) apply_sparse(m);
 }
@@ -92,22 +92,22 @@ void accessor_reader::apply_sparse(const tinygltf::Model& m) {
   const auto& sp = a_->sparse;
   const std::string where = where_ + " sparse";
   if (sp.count < 1 || std::size_t(sp.count) > a_->count)
-    b_.fail(where, "count " + std::to_string(sp.count) + " is not in [1, " +
-                       std::to_string(a_->count) + "]");
+    b_->fail(where, "count " + std::to_string(sp.count) + " is not in [1, " +
+                        std::to_string(a_->count) + "]");
   const int ib = index_bytes(sp.indices.componentType);
-  if (ib == 0) b_.fail(where, "indices are not unsigned integers");
+  if (ib == 0) b_->fail(where, "indices are not unsigned integers");
   if (sp.indices.byteOffset < 0 || sp.values.byteOffset < 0)
-    b_.fail(where, "has a negative byteOffset");
-  const unsigned char* indices =
-      view_bytes(m, sp.indices.bufferView, std::size_t(sp.indices.byteOffset),
-                 std::uint64_t(sp.count), std::size_t(ib), std::size_t(ib), b_, where + " indices");
+    b_->fail(where, "has a negative byteOffset");
+  const unsigned char* indices = view_bytes(
+      m, sp.indices.bufferView, std::size_t(sp.indices.byteOffset), std::uint64_t(sp.count),
+      std::size_t(ib), std::size_t(ib), *b_, where + " indices");
   values_ = view_bytes(m, sp.values.bufferView, std::size_t(sp.values.byteOffset),
-                       std::uint64_t(sp.count), element_, element_, b_, where + " values");
+                       std::uint64_t(sp.count), element_, element_, *b_, where + " values");
   substituted_.reserve(std::size_t(sp.count));
   for (std::size_t k = 0; k < std::size_t(sp.count); ++k) {
     const std::uint64_t i = load_index(indices + k * std::size_t(ib), ib);
     if (i >= a_->count || (k > 0 && i <= substituted_.back()))
-      b_.fail(where, "index " + std::to_string(i) + " is out of range or out of order");
+      b_->fail(where, "index " + std::to_string(i) + " is out of range or out of order");
     substituted_.push_back(std::size_t(i));
   }
 }
@@ -130,7 +130,7 @@ double accessor_reader::read(const unsigned char* p) const {
     case TINYGLTF_COMPONENT_TYPE_BYTE:
       return norm ? std::max(load<std::int8_t>(p) / 127.0, -1.0) : load<std::int8_t>(p);
     default:
-      b_.fail(where_, "has an unknown component type");
+      b_->fail(where_, "has an unknown component type");
   }
 }
 
@@ -141,7 +141,7 @@ void accessor_reader::require(std::initializer_list<int> types,
   const bool component_ok = a_->componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
                             std::find(component_types.begin(), component_types.end(),
                                       a_->componentType) != component_types.end();
-  if (!type_ok || !component_ok || (count && a_->count != count)) b_.fail(where_, what);
+  if (!type_ok || !component_ok || (count && a_->count != count)) b_->fail(where_, what);
 }
 
 }  // namespace rtvk

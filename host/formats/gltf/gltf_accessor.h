@@ -59,7 +59,7 @@ class accessor_reader {
   double read(const unsigned char* p) const;
   void apply_sparse(const tinygltf::Model& m);
 
-  const mesh_builder& b_;
+  const mesh_builder* b_;  // names the file in messages
   std::string where_;
   const tinygltf::Accessor* a_ = nullptr;
   const unsigned char* base_ = nullptr;  // element 0's bytes; null: no buffer view (zeros)

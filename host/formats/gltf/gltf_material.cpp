@@ -70,13 +70,44 @@ image_wrap wrap_of(int gl_wrap) {
   return image_wrap::repeat;
 }
 
+// A textureInfo's texture coordinates: its texCoord, or KHR_texture_transform's texCoord where
+// that is given, mapped by the transform's offset * rotation * scale. The rotation turns as
+// Cesium and three.js turn it (the ones TextureTransformTest's markers were made against):
+// u' = cos r u + sin r v, v' = cos r v - sin r u.
+uv_mapping mapping_of(const tinygltf::TextureInfo& info) {
+  uv_mapping out;
+  out.set = info.texCoord;
+  const auto it = info.extensions.find("KHR_texture_transform");
+  if (it == info.extensions.end() || !it->second.IsObject()) return out;
+  const tinygltf::Value& t = it->second;
+  const auto pair = [&](const char* key, glm::dvec2 fallback) {
+    if (!t.Has(key) || !t.Get(key).IsArray() || t.Get(key).ArrayLen() != 2) return fallback;
+    for (int k = 0; k < 2; ++k)
+      if (t.Get(key).Get(k).IsNumber()) fallback[k] = t.Get(key).Get(k).GetNumberAsDouble();
+    return fallback;
+  };
+  const glm::dvec2 offset = pair("offset", glm::dvec2(0)), scale = pair("scale", glm::dvec2(1));
+  const double r = number_or(t, "rotation", 0);
+  if (t.Has("texCoord") && t.Get("texCoord").IsInt()) out.set = t.Get("texCoord").GetNumberAsInt();
+  const glm::dmat3 translation(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);  // column-major
+  const glm::dmat3 rotation(std::cos(r), -std::sin(r), 0, std::sin(r), std::cos(r), 0, 0, 0, 1);
+  const glm::dmat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+  out.matrix = translation * rotation * scaling;
+  return out;
+}
+
 }  // namespace
 
 gltf_materials::gltf_materials(const tinygltf::Model& m, mesh_builder& b) : m_(m), b_(b) {
-  for (const tinygltf::Material& mat : m.materials)
+  for (const tinygltf::Material& mat : m.materials) {
     materials_.push_back(b.add_material(
         b.name() + ":" + (mat.name.empty() ? std::to_string(materials_.size()) : mat.name),
         from_gltf(mat, base_texture(mat))));
+    const bool base = mat.pbrMetallicRoughness.baseColorTexture.index >= 0;
+    mappings_.push_back(mapping_of(base || mat.emissiveTexture.index < 0
+                                       ? mat.pbrMetallicRoughness.baseColorTexture
+                                       : mat.emissiveTexture));
+  }
 }
 
 int gltf_materials::scene_material(int k, const std::string& where) const {

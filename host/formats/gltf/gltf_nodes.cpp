@@ -2,7 +2,7 @@
 // mesh's triangle primitives with their positions, normals, texture coordinates and materials.
 #include <glm/gtc/quaternion.hpp>
 
-#include "gltf_accessor.h"
+#include "gltf_primitive.h"
 #include "gltf_reader.h"
 
 namespace rtvk {
@@ -65,52 +65,38 @@ void gltf_walker::walk(int index, const transform& parent, int depth) {
   if (n.mesh >= 0) {
     if (const std::optional<std::string> why = degenerate(t))
       b_.fail(where, "its transform cannot place a mesh: " + *why);
-    add_mesh(n.mesh, t, where);
+    add_mesh(n, t, where);
   }
   for (int c : n.children) walk(c, t, depth + 1);
 }
 
-void gltf_walker::add_mesh(int index, const transform& t, const std::string& node) {
+void gltf_walker::add_mesh(const tinygltf::Node& n, const transform& t, const std::string& node) {
+  const int index = n.mesh;
   if (std::size_t(index) >= m_.meshes.size())
     b_.fail(node, "mesh " + std::to_string(index) + " does not exist");
   const tinygltf::Mesh& mesh = m_.meshes[std::size_t(index)];
+  // Morph targets at their default weights: the node's, else the mesh's.
+  const std::vector<double>& weights = n.weights.empty() ? mesh.weights : n.weights;
   for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
     const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
-    add_primitive(mesh.primitives[p], t, where);
+    add_primitive(mesh.primitives[p], weights, t, where);
   }
 }
 
-std::optional<accessor_reader> gltf_walker::attribute(const tinygltf::Primitive& prim,
-                                                      const char* name,
-                                                      const std::string& where) const {
-  const auto it = prim.attributes.find(name);
-  if (it == prim.attributes.end()) return std::nullopt;
-  return accessor_reader(m_, it->second, b_, where + " " + name);
-}
-
-void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const transform& t,
-                                const std::string& where) {
+void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vector<double>& weights,
+                                const transform& t, const std::string& where) {
   if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1)
     b_.fail(where, "mode " + std::to_string(prim.mode) + " is not triangles (4)");
-  using namespace tinygltf_types;
-  const std::optional<accessor_reader> pos = attribute(prim, "POSITION", where);
-  if (!pos) b_.fail(where, "has no POSITION");
-  pos->require({TINYGLTF_TYPE_VEC3}, {i8, u8, i16, u16}, 0, "is not VEC3 of floats or integers");
-  std::optional<accessor_reader> nrm = attribute(prim, "NORMAL", where);
-  if (nrm)
-    nrm->require({TINYGLTF_TYPE_VEC3}, {i8, i16}, pos->count(), "is not one VEC3 per position");
-  std::optional<accessor_reader> tex = attribute(prim, "TEXCOORD_0", where);
-  if (tex)
-    tex->require({TINYGLTF_TYPE_VEC2}, {i8, u8, i16, u16}, pos->count(),
-                 "is not one VEC2 per position");
+  const primitive_vertices v(m_, prim, mapping_of(prim), weights, b_, where);
   std::optional<accessor_reader> idx;
   if (prim.indices >= 0) {
     idx.emplace(m_, prim.indices, b_, where + " indices");
     if (idx->component_type() == TINYGLTF_COMPONENT_TYPE_FLOAT)
       b_.fail(idx->where(), "indices must be unsigned integers");
+    using namespace tinygltf_types;
     idx->require({TINYGLTF_TYPE_SCALAR}, {u8, u16, u32}, 0, "indices must be unsigned integers");
   }
-  const std::size_t corners = idx ? idx->count() : pos->count();
+  const std::size_t corners = idx ? idx->count() : v.count();
   if (corners % 3 != 0)
     b_.fail(where, std::to_string(corners) + " vertices are not whole triangles");
   const int material = material_of(prim, where);
@@ -119,23 +105,31 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const transform
     std::array<point3, 3> p;
     std::array<vec3, 3> n;
     std::array<glm::dvec2, 3> uv{};
+    std::array<glm::vec4, 3> color{};
     for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint64_t v = idx ? idx->index(3 * f + k) : 3 * f + k;
-      if (v >= pos->count())
-        b_.fail(face, "index " + std::to_string(v) + " is not one of the " +
-                          std::to_string(pos->count()) + " vertices");
-      p[k] = b_.position(pos->vec(std::size_t(v)), t, face);
-      if (nrm) n[k] = nrm->vec(std::size_t(v));
-      // glTF's v runs down the image from its top; rtvk's (the book's, OBJ's) up from its
-      // bottom.
-      if (tex) {
-        uv[k] = glm::dvec2(tex->get(std::size_t(v), 0), 1 - tex->get(std::size_t(v), 1));
+      const std::uint64_t i = idx ? idx->index(3 * f + k) : 3 * f + k;
+      if (i >= v.count())
+        b_.fail(face, "index " + std::to_string(i) + " is not one of the " +
+                          std::to_string(v.count()) + " vertices");
+      p[k] = b_.position(v.position(std::size_t(i)), t, face);
+      if (v.has_normals()) n[k] = v.normal(std::size_t(i));
+      if (v.has_color()) color[k] = v.color(std::size_t(i));
+      if (v.has_uv()) {
+        uv[k] = v.uv(std::size_t(i));
         if (!(std::abs(uv[k].x) <= 1e6 && std::abs(uv[k].y) <= 1e6))
-          b_.fail(face + " TEXCOORD_0", "is not finite or beyond +-1e6");
+          b_.fail(face + " " + v.texcoord(), "is not finite or beyond +-1e6");
       }
     }
-    b_.add(p, material, nrm ? std::optional(n) : std::nullopt, uv, tex.has_value(), t);
+    b_.add(p, material, v.has_normals() ? std::optional(n) : std::nullopt, uv, v.has_uv(), t,
+           v.has_color() ? std::optional(color) : std::nullopt);
   }
+}
+
+uv_mapping gltf_walker::mapping_of(const tinygltf::Primitive& prim) const {
+  if (how_.material >= 0 || prim.material < 0 || !materials_ ||
+      std::size_t(prim.material) >= m_.materials.size())
+    return {};
+  return materials_->mapping(prim.material);
 }
 
 int gltf_walker::material_of(const tinygltf::Primitive& prim, const std::string& where) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <tiny_gltf.h>
+#include <glm/mat3x3.hpp>
 
 #include "confined_path.h"
 #include "mesh_builder.h"
@@ -15,12 +16,17 @@
 
 namespace rtvk {
 
-class accessor_reader;
-
 // gltf_files.cpp: a glTF parsed (its images kept encoded, its external files read by rtvk's
 // reader where `guard` allows; `base` empty: none read). Throws usage_error naming `name`.
 tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::string& name,
                            const std::filesystem::path& base, const path_guard& guard);
+
+// Where a material's texture coordinates come from: the TEXCOORD_<set> attribute, mapped by
+// KHR_texture_transform's matrix (in glTF's uv, v down) before rtvk flips v.
+struct uv_mapping {
+  int set = 0;             // which TEXCOORD_n
+  glm::dmat3 matrix{1.0};  // offset * rotation * scale, applied to (u, v, 1)
+};
 
 // gltf_material.cpp: the file's materials, appended to the scene once each, with the textures
 // they use.
@@ -29,6 +35,9 @@ class gltf_materials {
   gltf_materials(const tinygltf::Model& m, mesh_builder& b);
   // The scene's material for the file's material k; fails naming `where` if there is none.
   int scene_material(int k, const std::string& where) const;
+  // The texture coordinates the file's material k reads (its base color texture's; else its
+  // emissive texture's): rtvk's triangles carry one set.
+  const uv_mapping& mapping(int k) const { return mappings_[std::size_t(k)]; }
 
  private:
   int base_texture(const tinygltf::Material& mat);
@@ -36,7 +45,8 @@ class gltf_materials {
 
   const tinygltf::Model& m_;
   mesh_builder& b_;
-  std::vector<int> materials_;  // the file's material k -> the scene's
+  std::vector<int> materials_;        // the file's material k -> the scene's
+  std::vector<uv_mapping> mappings_;  // the file's material k's texture coordinates
   // The file's image k decoded in one color space, shared by every texture that uses it.
   std::map<std::pair<int, texel_encoding>, std::shared_ptr<const texel_image>> images_;
 };
@@ -49,11 +59,11 @@ class gltf_walker {
 
  private:
   void walk(int index, const transform& parent, int depth);
-  void add_mesh(int index, const transform& t, const std::string& node);
-  std::optional<accessor_reader> attribute(const tinygltf::Primitive& prim, const char* name,
-                                           const std::string& where) const;
-  void add_primitive(const tinygltf::Primitive& prim, const transform& t, const std::string& where);
+  void add_mesh(const tinygltf::Node& n, const transform& t, const std::string& node);
+  void add_primitive(const tinygltf::Primitive& prim, const std::vector<double>& weights,
+                     const transform& t, const std::string& where);
   int material_of(const tinygltf::Primitive& prim, const std::string& where);
+  uv_mapping mapping_of(const tinygltf::Primitive& prim) const;
 
   const tinygltf::Model& m_;
   mesh_builder& b_;
