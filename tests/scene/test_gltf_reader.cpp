@@ -3,6 +3,7 @@
 // transforms, materials, extensions and the messages that name files.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "errors.h"
@@ -196,6 +197,56 @@ TEST(GltfReader, TextureTransformsAndCoordinateSetsMapTheUv) {
   EXPECT_NEAR(sh.uv[1].y, 2.75, 1e-12);
   EXPECT_NEAR(sh.uv[2].x, 3.5, 1e-12);
   EXPECT_NEAR(sh.uv[2].y, 0.75, 1e-12);
+}
+
+// A glTF material's fields as rtvk's (the renderer's side of them is not tested here): base color
+// texture decoded as sRGB, alpha, cutoff, culling, emission times strength with its texture, and
+// a metallicRoughnessTexture whose mean keeps the default metallicFactor 1 from making metal; the
+// vertex colors of COLOR_0 (normalized UNSIGNED_BYTE VEC4).
+TEST(GltfReader, MaterialsAndVertexColorsAreFilledIn) {
+  std::string bin;
+  put<float>(bin, {0, 0, 0, 1, 0, 0, 0, 1, 0});
+  put<std::uint8_t>(bin, {255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 0});
+  const std::string png = encode_png(image_rgb8{2, 1, {188, 188, 188, 0, 30, 0}});
+  std::string doc = triangle_gltf(
+      bin, R"("POSITION":0,"COLOR_0":1)",
+      R"({"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+      R"({"bufferView":1,"componentType":5121,"normalized":true,"count":3,"type":"VEC4"})",
+      R"({"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":12})",
+      R"(,"textures":[{"source":0}],"images":[{"uri":"data:image/png;base64,)" + test::base64(png) +
+          R"("}])");
+  doc.replace(doc.find(R"("materials":[{}])"), 16,
+              R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0},)"
+              R"("baseColorFactor":[1,0.5,1,0.25],"metallicRoughnessTexture":{"index":0}},)"
+              R"("alphaMode":"MASK","alphaCutoff":0.3,"emissiveFactor":[1,0.5,0],)"
+              R"("emissiveTexture":{"index":0},"extensions":{"KHR_materials_emissive_strength":)"
+              R"({"emissiveStrength":4}}},{"alphaMode":"BLEND","doubleSided":true}])");
+  scene s;
+  load_mesh_bytes(s, doc, "gltf", "m.gltf", "", {});
+  ASSERT_EQ(s.materials.size(), 2u);
+  const material& m = s.materials[0].m;
+  EXPECT_EQ(m.type, material_type::lambertian);  // metallic 1 x the texture's mean blue, 0
+  EXPECT_EQ(m.opacity, 0.25);
+  EXPECT_EQ(m.alpha, alpha_mode::mask);
+  EXPECT_EQ(m.alpha_cutoff, 0.3);
+  EXPECT_TRUE(m.cull_back);
+  EXPECT_EQ(m.emission, color(4, 2, 0));
+  ASSERT_GE(m.texture, 0);
+  ASSERT_GE(m.emission_texture, 0);
+  const texture& base = s.textures[std::size_t(m.texture)];
+  EXPECT_EQ(base.even, color(1, 0.5, 1));
+  // 188 by the sRGB curve, ((188 / 255 + 0.055) / 1.055)^2.4, not the book's gamma 2.2.
+  const double linear = std::pow((188 / 255.0 + 0.055) / 1.055, 2.4);
+  EXPECT_EQ(base.image->texels[0] & 0xff, std::uint32_t(std::floor(256 * linear)));
+  EXPECT_EQ(s.textures[std::size_t(m.emission_texture)].image, base.image);  // both sRGB
+  EXPECT_EQ(s.materials[1].m.alpha, alpha_mode::blend);
+  EXPECT_FALSE(s.materials[1].m.cull_back);
+  EXPECT_EQ(s.materials[1].m.type, material_type::metal);  // glTF's defaults: metallic 1
+  const triangle_shading& sh = s.shading.at(std::size_t(s.triangles.at(0).shading));
+  ASSERT_TRUE(sh.has_color);
+  EXPECT_EQ(sh.color[0], glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(sh.color[1], glm::vec4(0, 1, 0, 128 / 255.f));
+  EXPECT_EQ(sh.color[2], glm::vec4(0, 0, 1, 0));
 }
 
 }  // namespace

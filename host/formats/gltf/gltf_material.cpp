@@ -16,51 +16,9 @@ double unit(double x) {
   return std::clamp(std::isfinite(x) ? x : 0.0, 0.0, 1.0);
 }
 
-// A glTF material as one of rtvk's (docs/geometry.md): an emissive factor that is not black is a
-// lamp of that color (times KHR_materials_emissive_strength); else KHR_materials_transmission's
-// factor >= 0.5 is glass of KHR_materials_ior's index (1.5 by default); else metallicFactor >=
-// 0.5 is metal of the base color, blurred by the roughness; else diffuse of the base color. A
-// base color texture (`base_texture`, the scene's texture index, or -1; the factor tints it)
-// stands in for the base color.
-material from_gltf(const tinygltf::Material& m, int base_texture) {
-  material out;
-  const auto ext = [&](const char* name) {
-    const auto it = m.extensions.find(name);
-    return it == m.extensions.end() ? tinygltf::Value() : it->second;
-  };
-  color emit(0);
-  for (std::size_t k = 0; k < 3 && k < m.emissiveFactor.size(); ++k)
-    emit[int(k)] = unit(m.emissiveFactor[k]);
-  // An emissive texture marks the parts of a surface that glow (a lamp's dial, a screen); rtvk's
-  // lamps emit everywhere and reflect nothing, so such a material stays what its base color makes
-  // it rather than turning wholly into a lamp.
-  if (emit != color(0) && m.emissiveTexture.index < 0) {
-    const double strength =
-        number_or(ext("KHR_materials_emissive_strength"), "emissiveStrength", 1);
-    out.type = material_type::diffuse_light;
-    out.albedo =
-        emit * (strength >= 0 && std::isfinite(strength) && strength < 1e6 ? strength : 1.0);
-    return out;
-  }
-  if (number_or(ext("KHR_materials_transmission"), "transmissionFactor", 0) >= 0.5) {
-    out.type = material_type::dielectric;
-    const double ior = number_or(ext("KHR_materials_ior"), "ior", 1.5);
-    out.ir = ior > 0 && std::isfinite(ior) ? ior : 1.5;
-    return out;
-  }
-  const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
-  color base(1);
-  for (std::size_t k = 0; k < 3 && k < pbr.baseColorFactor.size(); ++k)
-    base[int(k)] = unit(pbr.baseColorFactor[k]);
-  out.albedo = base;
-  out.texture = base_texture;
-  if (pbr.metallicFactor >= 0.5) {
-    out.type = material_type::metal;
-    out.fuzz = unit(pbr.roughnessFactor);
-    return out;
-  }
-  out.type = material_type::lambertian;
-  return out;
+tinygltf::Value extension(const tinygltf::Material& m, const char* name) {
+  const auto it = m.extensions.find(name);
+  return it == m.extensions.end() ? tinygltf::Value() : it->second;
 }
 
 // A glTF sampler's wrap mode as an image texture's.
@@ -100,14 +58,73 @@ uv_mapping mapping_of(const tinygltf::TextureInfo& info) {
 
 gltf_materials::gltf_materials(const tinygltf::Model& m, mesh_builder& b) : m_(m), b_(b) {
   for (const tinygltf::Material& mat : m.materials) {
-    materials_.push_back(b.add_material(
-        b.name() + ":" + (mat.name.empty() ? std::to_string(materials_.size()) : mat.name),
-        from_gltf(mat, base_texture(mat))));
+    const std::string k = std::to_string(materials_.size());
+    materials_.push_back(b.add_material(b.name() + ":" + (mat.name.empty() ? k : mat.name),
+                                        make(mat, "materials " + k)));
     const bool base = mat.pbrMetallicRoughness.baseColorTexture.index >= 0;
     mappings_.push_back(mapping_of(base || mat.emissiveTexture.index < 0
                                        ? mat.pbrMetallicRoughness.baseColorTexture
                                        : mat.emissiveTexture));
   }
+}
+
+// A glTF material as rtvk's (docs/mesh-formats.md), until issue 45's PBR: the base color (its
+// texture decoded as sRGB and tinted by the factor) and its alpha as opacity, alphaMode and
+// alphaCutoff, doubleSided false as back-face culling, and the emissive factor times
+// KHR_materials_emissive_strength (times the emissive texture, sRGB) as emission beside what the
+// surface reflects. Its kind: KHR_materials_transmission's factor >= 0.5 is glass of
+// KHR_materials_ior's index (1.5 by default); else a metallic value >= 0.5 is metal blurred by the
+// roughness; else diffuse. With a metallicRoughnessTexture, the metallic and roughness values are
+// the factors times the texture's mean (blue and green): a texture that marks a few metal parts
+// no longer makes the whole material metal because metallicFactor defaults to 1.
+material gltf_materials::make(const tinygltf::Material& mat, const std::string& where) {
+  material out;
+  const tinygltf::PbrMetallicRoughness& pbr = mat.pbrMetallicRoughness;
+  const std::vector<double>& f = pbr.baseColorFactor;
+  for (std::size_t k = 0; k < 3 && k < f.size(); ++k) out.albedo[int(k)] = unit(f[k]);
+  out.opacity = f.size() == 4 ? unit(f[3]) : 1;
+  if (pbr.baseColorTexture.index >= 0)
+    out.texture = image_texture(pbr.baseColorTexture.index, texel_encoding::srgb, out.albedo,
+                                where + " baseColorTexture");
+  if (mat.alphaMode == "MASK") out.alpha = alpha_mode::mask;
+  if (mat.alphaMode == "BLEND") out.alpha = alpha_mode::blend;
+  out.alpha_cutoff = std::isfinite(mat.alphaCutoff) ? std::max(mat.alphaCutoff, 0.0) : 0.5;
+  out.cull_back = !mat.doubleSided;
+  const double strength =
+      number_or(extension(mat, "KHR_materials_emissive_strength"), "emissiveStrength", 1);
+  for (std::size_t k = 0; k < 3 && k < mat.emissiveFactor.size(); ++k)
+    out.emission[int(k)] =
+        unit(mat.emissiveFactor[k]) *
+        (strength >= 0 && std::isfinite(strength) && strength < 1e6 ? strength : 1.0);
+  if (mat.emissiveTexture.index >= 0 && out.emission != color(0))
+    out.emission_texture = image_texture(mat.emissiveTexture.index, texel_encoding::srgb, color(1),
+                                         where + " emissiveTexture");
+  if (number_or(extension(mat, "KHR_materials_transmission"), "transmissionFactor", 0) >= 0.5) {
+    out.type = material_type::dielectric;
+    const double ior = number_or(extension(mat, "KHR_materials_ior"), "ior", 1.5);
+    out.ir = ior > 0 && std::isfinite(ior) ? ior : 1.5;
+    return out;
+  }
+  double metallic = unit(pbr.metallicFactor), roughness = unit(pbr.roughnessFactor);
+  if (pbr.metallicRoughnessTexture.index >= 0) {
+    const glm::dvec2 mean =
+        channel_means(pbr.metallicRoughnessTexture.index, where + " metallicRoughnessTexture");
+    metallic *= mean.x;
+    roughness *= mean.y;
+  }
+  out.type = metallic >= 0.5 ? material_type::metal : material_type::lambertian;
+  if (out.type == material_type::metal) out.fuzz = roughness;
+  return out;
+}
+
+// The mean metallic (blue) and roughness (green) of a metallicRoughnessTexture's image, decoded
+// as data (linear).
+glm::dvec2 gltf_materials::channel_means(int t, const std::string& where) {
+  const texel_image& image = *decoded(source_of(t, where), texel_encoding::linear, where);
+  glm::dvec2 sum(0);
+  for (std::uint32_t texel : image.texels)
+    sum += glm::dvec2((texel >> 16) & 0xff, (texel >> 8) & 0xff);
+  return image.texels.empty() ? glm::dvec2(1) : sum / (255.0 * double(image.texels.size()));
 }
 
 int gltf_materials::scene_material(int k, const std::string& where) const {
@@ -116,29 +133,11 @@ int gltf_materials::scene_material(int k, const std::string& where) const {
   return materials_[std::size_t(k)];
 }
 
-// The scene's texture for a material's base color (tinted by its factor), or -1.
-int gltf_materials::base_texture(const tinygltf::Material& mat) {
-  const tinygltf::TextureInfo& info = mat.pbrMetallicRoughness.baseColorTexture;
-  if (info.index < 0) return -1;
-  const std::string where = "materials \"" + mat.name + "\" baseColorTexture";
-  if (info.texCoord != 0)
-    b_.fail(where,
-            "reads TEXCOORD_" + std::to_string(info.texCoord) + " (rtvk reads TEXCOORD_0 only)");
-  color tint(1);
-  const std::vector<double>& f = mat.pbrMetallicRoughness.baseColorFactor;
-  for (std::size_t k = 0; k < 3 && k < f.size(); ++k) tint[int(k)] = unit(f[k]);
-  return image_texture(info.index, texel_encoding::book, tint, where);
-}
-
 // A texture of its own for each use of a glTF texture: the use's tint and the texture's sampler
 // are the texture's, while the decoded image is shared by every use of it in one color space.
 int gltf_materials::image_texture(int t, texel_encoding encoding, const color& tint,
                                   const std::string& where) {
-  if (t < 0 || std::size_t(t) >= m_.textures.size())
-    b_.fail(where, "texture " + std::to_string(t) + " does not exist");
-  const int source = m_.textures[std::size_t(t)].source;
-  if (source < 0 || std::size_t(source) >= m_.images.size())
-    b_.fail(where, "texture " + std::to_string(t) + " has no image");
+  const int source = source_of(t, where);
   texture tex;
   tex.type = texture_type::image;
   // Absolute, so that a dumped scene finds the file from wherever it is read.
@@ -154,6 +153,23 @@ int gltf_materials::image_texture(int t, texel_encoding encoding, const color& t
   } else {
     tex.wrap_u = tex.wrap_v = image_wrap::repeat;  // glTF's default sampler
   }
+  tex.image = decoded(source, encoding, where);
+  return b_.add_texture(std::move(tex));
+}
+
+// The image texture t shows; fails naming `where` if there is none.
+int gltf_materials::source_of(int t, const std::string& where) const {
+  if (t < 0 || std::size_t(t) >= m_.textures.size())
+    b_.fail(where, "texture " + std::to_string(t) + " does not exist");
+  const int source = m_.textures[std::size_t(t)].source;
+  if (source < 0 || std::size_t(source) >= m_.images.size())
+    b_.fail(where, "texture " + std::to_string(t) + " has no image");
+  return source;
+}
+
+// Image `source` decoded in one color space, once however many textures use it.
+std::shared_ptr<const texel_image> gltf_materials::decoded(int source, texel_encoding encoding,
+                                                           const std::string& where) {
   std::shared_ptr<const texel_image>& image = images_[{source, encoding}];
   if (!image) {
     const tinygltf::Image& img = m_.images[std::size_t(source)];
@@ -161,8 +177,7 @@ int gltf_materials::image_texture(int t, texel_encoding encoding, const color& t
     image = decode_texel_image(std::string(img.image.begin(), img.image.end()),
                                b_.name() + ": images/" + std::to_string(source), encoding);
   }
-  tex.image = image;
-  return b_.add_texture(std::move(tex));
+  return image;
 }
 
 }  // namespace rtvk

@@ -40,7 +40,11 @@ class gltf_materials {
   const uv_mapping& mapping(int k) const { return mappings_[std::size_t(k)]; }
 
  private:
-  int base_texture(const tinygltf::Material& mat);
+  material make(const tinygltf::Material& mat, const std::string& where);
+  glm::dvec2 channel_means(int t, const std::string& where);
+  int source_of(int t, const std::string& where) const;
+  std::shared_ptr<const texel_image> decoded(int source, texel_encoding encoding,
+                                             const std::string& where);
   int image_texture(int t, texel_encoding encoding, const color& tint, const std::string& where);
 
   const tinygltf::Model& m_;

@@ -28,8 +28,10 @@ std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file,
   if (index >= model.images.size() || model.images[index].image.empty())
     throw usage_error(name + ": " + file.string() + " has no image " + std::to_string(index));
   const std::vector<unsigned char>& img = model.images[index].image;
+  // Every image a glTF's materials name this way is a color (base color, emissive): sRGB.
   return decode_texel_image(std::string(img.begin(), img.end()),
-                            name + ": " + file.string() + "#images/" + std::to_string(index));
+                            name + ": " + file.string() + "#images/" + std::to_string(index),
+                            texel_encoding::srgb);
 }
 
 }  // namespace rtvk
