@@ -320,7 +320,7 @@ int run_render(render_options o) {
       throw usage_error("--aov " + o.aov + ": expected a comma-separated list of " + aov_names());
     aovs = *parsed;
   }
-  scene s = load_scene(o.scene, o.flags.access());
+  scene s = load_scene_saying_warnings(o.scene, o.flags.access());
   check_scene(s);
   render_window win;
   const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags.overrides(), win);

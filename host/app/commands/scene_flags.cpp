@@ -1,13 +1,21 @@
 #include "scene_flags.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 
 #include "errors.h"
 #include "image_size.h"
 #include "render_settings.h"
+#include "scene_file.h"
 
 namespace rtvk {
+
+scene load_scene_saying_warnings(const std::string& name, const file_access& access) {
+  scene s = load_scene(name, access);
+  for (const std::string& w : s.warnings) std::fprintf(stderr, "rtvk: warning: %s\n", w.c_str());
+  return s;
+}
 namespace {
 
 // The value when its option was given on the command line.

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "confined_path.h"
+#include "scene.h"
 #include "scene_overrides.h"
 
 namespace rtvk {
@@ -20,6 +21,11 @@ class scene_path_flags {
   bool any_path_ = false;  // --allow-any-path
   std::string root_;       // --scene-root, "" when not given
 };
+
+// A scene by name (load_scene: built-in, scene file or mesh), its loaders' warnings (an optional
+// glTF extension ignored, ...) said once each on stderr: what every command that reads a scene
+// calls.
+scene load_scene_saying_warnings(const std::string& name, const file_access& access);
 
 // The command-line flags that override a scene's own settings (--width, --spp, --lookfrom, ...),
 // shared by `rtvk render` and `rtvk bench`: registered on a command, then read back as

@@ -73,7 +73,7 @@ std::string render_flags(const std::string& scene_name, const view::viewer_resul
 int run_view(view_options o) {
   const interrupt_guard signals;  // SIGINT, SIGTERM: close the window cleanly
   if (!o.screenshot.empty()) output_pattern(o.screenshot, "--screenshot");  // checked up front
-  scene s = load_scene(o.scene, o.flags.access());
+  scene s = load_scene_saying_warnings(o.scene, o.flags.access());
   const scene_overrides overrides = o.flags.overrides();
   overrides.apply_cameras(s);  // --colmap's views (--camera picks one), a calibration's size
   overrides.apply(s);

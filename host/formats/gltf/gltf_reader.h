@@ -21,6 +21,12 @@ namespace rtvk {
 tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::string& name,
                            const std::filesystem::path& base, const path_guard& guard);
 
+// gltf_extensions.cpp: refuses a file that requires an extension rtvk does not honour (naming
+// `name` and the extension), and appends one line to `warnings` (unless there already) listing
+// the optional ones it ignores and the animations it does not play.
+void check_extensions(const tinygltf::Model& m, const std::string& name,
+                      std::vector<std::string>& warnings);
+
 // Where a material's texture coordinates come from: the TEXCOORD_<set> attribute, mapped by
 // KHR_texture_transform's matrix (in glTF's uv, v down) before rtvk flips v.
 struct uv_mapping {

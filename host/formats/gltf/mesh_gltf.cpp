@@ -1,7 +1,8 @@
 // glTF 2.0 (.gltf and .glb), through Debian's tinygltf: the entry points. The reader's parts:
 // gltf_files.cpp (parsing, the files a glTF names), gltf_nodes.cpp (the node tree and its
-// primitives), gltf_material.cpp (materials and their textures), gltf_accessor.h (every accessor
-// checked against its buffer before it is read).
+// primitives), gltf_primitive.cpp (a primitive's attributes and morph targets),
+// gltf_material.cpp (materials and their textures), gltf_accessor.cpp (every accessor checked
+// against its buffer before it is read), gltf_extensions.cpp (the extensions honoured).
 #include "gltf_reader.h"
 #include "input_file.h"
 
@@ -10,7 +11,8 @@ namespace rtvk {
 void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
                const std::filesystem::path& base, const mesh_placement& how,
                const path_guard& guard) {
-  const tinygltf::Model model = parse_gltf(bytes, binary, name, base, guard);
+  tinygltf::Model model = parse_gltf(bytes, binary, name, base, guard);
+  check_extensions(model, name, s.warnings);
   mesh_builder b(s, name, how.placement);
   gltf_walker(model, b, how).walk_scene();
 }
