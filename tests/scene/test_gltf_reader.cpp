@@ -293,5 +293,52 @@ TEST(GltfReader, RequiredExtensionsAreRefusedByNameAndIgnoredOnesWarnedOnce) {
   EXPECT_EQ(drawn.err.rfind("warning"), drawn.err.find("warning")) << drawn.err;  // once
 }
 
+// What mesh_scene's refusal says ("" when it loads).
+std::string refusal_of(const std::filesystem::path& file) {
+  try {
+    mesh_scene(file);
+  } catch (const usage_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Files that are not what they should be, each said in one short line naming the file: a missing
+// .bin or image (the path looked for), a git-lfs pointer or an HTML page saved in a glTF's or a
+// buffer's place, a bad data URI (cut, not printed whole).
+TEST(GltfReader, BrokenFilesAreSaidInOneLineNamingTheFile) {
+  const test::temp_dir dir;
+  const std::filesystem::path d = dir.path();
+  const std::string duck = read_file(gltf_data / "Duck/Duck.gltf");
+  write(d / "Duck.gltf", duck);
+  EXPECT_EQ(refusal_of(d / "Duck.gltf"), (d / "Duck.gltf").string() + ": " +
+                                             (d / "Duck0.bin").string() +
+                                             " not found (a file the glTF names)");
+  const std::string pointer =
+      "version https://git-lfs.github.com/spec/v1\noid sha256:4d7a21\nsize 102040\n";
+  write(d / "Duck0.bin", pointer);
+  EXPECT_EQ(refusal_of(d / "Duck.gltf"),
+            (d / "Duck.gltf").string() + ": " + (d / "Duck0.bin").string() +
+                " is a git-lfs pointer, not the file (fetch it with git lfs pull)");
+  write(d / "Duck0.bin", read_file(gltf_data / "Duck/Duck0.bin"));
+  EXPECT_EQ(refusal_of(d / "Duck.gltf"), (d / "Duck.gltf").string() +
+                                             ": materials 0 baseColorTexture: image 0: " +
+                                             (d / "DuckCM.png").string() + " not found");
+  write(d / "p.glb", pointer);
+  EXPECT_EQ(refusal_of(d / "p.glb"), (d / "p.glb").string() +
+                                         ": a git-lfs pointer, not the file (fetch it with git "
+                                         "lfs pull)");
+  write(d / "h.glb", "\n<!DOCTYPE html>\n<html lang=\"en\"><body>Duck.glb</body></html>");
+  EXPECT_EQ(refusal_of(d / "h.glb").find((d / "h.glb").string() + ": an HTML page"), 0u)
+      << refusal_of(d / "h.glb");
+  std::string bad = duck;
+  bad.replace(bad.find("Duck0.bin"), 9,
+              "data:application/octet-stream;base64," + std::string(100000, '!'));
+  write(d / "b.gltf", bad);
+  const std::string said = refusal_of(d / "b.gltf");
+  EXPECT_LT(said.size(), 300u) << said;
+  EXPECT_NE(said.find("a data URI of 100037 characters"), std::string::npos) << said;
+}
+
 }  // namespace
 }  // namespace rtvk

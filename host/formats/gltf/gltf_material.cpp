@@ -173,6 +173,11 @@ std::shared_ptr<const texel_image> gltf_materials::decoded(int source, texel_enc
   std::shared_ptr<const texel_image>& image = images_[{source, encoding}];
   if (!image) {
     const tinygltf::Image& img = m_.images[std::size_t(source)];
+    if (img.image.empty() && img.uri.rfind("data:", 0) == 0)
+      b_.fail(where, "image " + std::to_string(source) + ": its data URI (" +
+                         std::to_string(img.uri.size()) + " characters) is not valid base64");
+    if (img.image.empty() && !img.uri.empty())
+      b_.fail(where, "image " + std::to_string(source) + ": " + img.uri + " not found");
     if (img.image.empty()) b_.fail(where, "image " + std::to_string(source) + " has no data");
     image = decode_texel_image(std::string(img.image.begin(), img.image.end()),
                                b_.name() + ": images/" + std::to_string(source), encoding);
