@@ -293,6 +293,43 @@ TEST(GltfReader, RequiredExtensionsAreRefusedByNameAndIgnoredOnesWarnedOnce) {
   EXPECT_EQ(drawn.err.rfind("warning"), drawn.err.find("warning")) << drawn.err;  // once
 }
 
+// A skin at rest: the triangle follows its joints' global transforms times their inverse bind
+// matrices, blended by its weights, and its own node's transform (x + 100) is ignored as the spec
+// says. Joint 0 (node 1) moves up 5; joint 1 (node 2, node 1's child) 2 more along x, times its
+// inverse bind matrix (x - 1). Morph targets: the mesh's weight 0.5 of a target that moves z by 2.
+TEST(GltfReader, SkinsAtRestAndMorphTargetsAtTheirWeightsMoveTheVertices) {
+  std::string bin;
+  put<float>(bin, {0, 0, 0, 1, 0, 0, 0, 1, 0});                  // POSITION
+  put<std::uint8_t>(bin, {0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0});  // JOINTS_0
+  put<float>(bin, {1, 0, 0, 0, 0.5, 0.5, 0, 0, 1, 0, 0, 0});     // WEIGHTS_0
+  put<float>(bin, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0,  0, 0, 1,
+                   1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1});  // inverse bind matrices
+  put<float>(bin, {0, 0, 2, 0, 0, 2, 0, 0, 2});                        // the target's POSITION
+  std::string doc = triangle_gltf(
+      bin, R"("POSITION":0,"JOINTS_0":1,"WEIGHTS_0":2)",
+      R"({"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+      R"({"bufferView":1,"componentType":5121,"count":3,"type":"VEC4"},)"
+      R"({"bufferView":2,"componentType":5126,"count":3,"type":"VEC4"},)"
+      R"({"bufferView":3,"componentType":5126,"count":2,"type":"MAT4"},)"
+      R"({"bufferView":4,"componentType":5126,"count":3,"type":"VEC3"})",
+      R"({"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":12},)"
+      R"({"buffer":0,"byteOffset":48,"byteLength":48},{"buffer":0,"byteOffset":96,"byteLength":128},)"
+      R"({"buffer":0,"byteOffset":224,"byteLength":36})",
+      R"(,"skins":[{"joints":[1,2],"inverseBindMatrices":3}])");
+  doc.replace(doc.find(R"("nodes":[{"mesh":0}])"), 20,
+              R"("nodes":[{"mesh":0,"skin":0,"translation":[100,0,0]},)"
+              R"({"translation":[0,5,0],"children":[2]},{"translation":[2,0,0]}])");
+  doc.replace(doc.find(R"("scenes":[{"nodes":[0]}])"), 24, R"("scenes":[{"nodes":[0,1]}])");
+  doc.replace(doc.find(R"(,"material":0)"), 0, R"(,"targets":[{"POSITION":4}])");
+  doc.replace(doc.find(R"("meshes":[{)"), 11, R"("meshes":[{"weights":[0.5],)");
+  scene s;
+  load_mesh_bytes(s, doc, "gltf", "k.gltf", "", {});
+  ASSERT_EQ(s.triangles.size(), 1u);
+  EXPECT_EQ(s.triangles[0].p[0], point3(0, 5, 1));    // joint 0: (0, 5, 0)
+  EXPECT_EQ(s.triangles[0].p[1], point3(1.5, 5, 1));  // half joint 0, half joint 1: + (0.5, 0, 0)
+  EXPECT_EQ(s.triangles[0].p[2], point3(1, 6, 1));    // joint 1: + (2 - 1, 5, 0)
+}
+
 // What mesh_scene's refusal says ("" when it loads).
 std::string refusal_of(const std::filesystem::path& file) {
   try {

@@ -6,7 +6,6 @@
 #include "gltf_reader.h"
 
 namespace rtvk {
-namespace {
 
 // A node's own transform: its matrix, or translation * rotation * scale.
 transform node_transform(const tinygltf::Node& n) {
@@ -27,8 +26,6 @@ transform node_transform(const tinygltf::Node& n) {
     t.offset = vec3(n.translation[0], n.translation[1], n.translation[2]);
   return t;
 }
-
-}  // namespace
 
 gltf_walker::gltf_walker(const tinygltf::Model& m, mesh_builder& b, const mesh_placement& how)
     : m_(m), b_(b), how_(how) {
@@ -77,14 +74,17 @@ void gltf_walker::add_mesh(const tinygltf::Node& n, const transform& t, const st
   const tinygltf::Mesh& mesh = m_.meshes[std::size_t(index)];
   // Morph targets at their default weights: the node's, else the mesh's.
   const std::vector<double>& weights = n.weights.empty() ? mesh.weights : n.weights;
+  // A skinned mesh is placed by its joints alone (the spec ignores its node's transform).
+  const std::vector<glm::dmat4>* joints = n.skin >= 0 ? &joint_matrices(n.skin, node) : nullptr;
   for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
     const std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
-    add_primitive(mesh.primitives[p], weights, t, where);
+    add_primitive(mesh.primitives[p], weights, joints, t, where);
   }
 }
 
 void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vector<double>& weights,
-                                const transform& t, const std::string& where) {
+                                const std::vector<glm::dmat4>* joints, const transform& node,
+                                const std::string& where) {
   if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1)
     b_.fail(where, "mode " + std::to_string(prim.mode) + " is not triangles (4)");
   const primitive_vertices v(m_, prim, mapping_of(prim), weights, b_, where);
@@ -100,6 +100,8 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vect
   if (corners % 3 != 0)
     b_.fail(where, std::to_string(corners) + " vertices are not whole triangles");
   const int material = material_of(prim, where);
+  const bool skinned = joints && v.joints() && v.weights();
+  const transform t = skinned ? transform{} : node;
   for (std::size_t f = 0; f < corners / 3; ++f) {
     const std::string face = where + " triangle " + std::to_string(f);
     std::array<point3, 3> p;
@@ -111,8 +113,14 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vect
       if (i >= v.count())
         b_.fail(face, "index " + std::to_string(i) + " is not one of the " +
                           std::to_string(v.count()) + " vertices");
-      p[k] = b_.position(v.position(std::size_t(i)), t, face);
+      vec3 q = v.position(std::size_t(i));
       if (v.has_normals()) n[k] = v.normal(std::size_t(i));
+      if (skinned) {
+        const glm::dmat4 m = v.skin(std::size_t(i), *joints, face);
+        q = vec3(m * glm::dvec4(q, 1));
+        if (v.has_normals()) n[k] = glm::inverse(glm::transpose(glm::dmat3(m))) * n[k];
+      }
+      p[k] = b_.position(q, t, face);
       if (v.has_color()) color[k] = v.color(std::size_t(i));
       if (v.has_uv()) {
         uv[k] = v.uv(std::size_t(i));

@@ -86,4 +86,20 @@ glm::vec4 primitive_vertices::color(std::size_t i) const {
   return c;
 }
 
+glm::dmat4 primitive_vertices::skin(std::size_t i, const std::vector<glm::dmat4>& joints,
+                                    const std::string& where) const {
+  glm::dmat4 m(0.0);
+  for (int k = 0; k < 4; ++k) {
+    const double w = weights_->get(i, k);
+    if (!std::isfinite(w) || std::abs(w) > 1e6) b_.fail(where, "a skin weight is not finite");
+    if (w == 0) continue;
+    const double j = joints_->get(i, k);
+    if (!(j >= 0 && j < double(joints.size())))
+      b_.fail(where, "joint " + std::to_string(std::uint64_t(j)) + " is not one of the skin's " +
+                         std::to_string(joints.size()));
+    m += w * joints[std::size_t(j)];
+  }
+  return m;
+}
+
 }  // namespace rtvk

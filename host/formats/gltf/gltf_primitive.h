@@ -30,6 +30,10 @@ class primitive_vertices {
   // Texture coordinates mapped by the material's transform, v flipped to rtvk's.
   glm::dvec2 uv(std::size_t i) const;
   glm::vec4 color(std::size_t i) const;  // linear RGBA (alpha 1 for VEC3)
+  // Vertex i's joint matrices blended by its weights (`joints`: the skin's); fails naming
+  // `where` for a joint the skin does not have or a weight that is not finite.
+  glm::dmat4 skin(std::size_t i, const std::vector<glm::dmat4>& joints,
+                  const std::string& where) const;
   // The accessor a JOINTS_0 / WEIGHTS_0 names, when the primitive has it.
   const std::optional<accessor_reader>& joints() const { return joints_; }
   const std::optional<accessor_reader>& weights() const { return weights_; }

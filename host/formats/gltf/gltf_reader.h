@@ -9,6 +9,7 @@
 
 #include <tiny_gltf.h>
 #include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 
 #include "confined_path.h"
 #include "mesh_builder.h"
@@ -33,6 +34,9 @@ struct uv_mapping {
   int set = 0;             // which TEXCOORD_n
   glm::dmat3 matrix{1.0};  // offset * rotation * scale, applied to (u, v, 1)
 };
+
+// gltf_nodes.cpp: a node's own transform: its matrix, or translation * rotation * scale.
+transform node_transform(const tinygltf::Node& n);
 
 // gltf_material.cpp: the file's materials, appended to the scene once each, with the textures
 // they use.
@@ -71,7 +75,11 @@ class gltf_walker {
   void walk(int index, const transform& parent, int depth);
   void add_mesh(const tinygltf::Node& n, const transform& t, const std::string& node);
   void add_primitive(const tinygltf::Primitive& prim, const std::vector<double>& weights,
-                     const transform& t, const std::string& where);
+                     const std::vector<glm::dmat4>* joints, const transform& node,
+                     const std::string& where);
+  // gltf_skin.cpp: skins at rest.
+  glm::dmat4 global_matrix(int node, const std::string& where);
+  const std::vector<glm::dmat4>& joint_matrices(int skin, const std::string& node);
   int material_of(const tinygltf::Primitive& prim, const std::string& where);
   uv_mapping mapping_of(const tinygltf::Primitive& prim) const;
 
@@ -81,6 +89,8 @@ class gltf_walker {
   std::optional<gltf_materials> materials_;  // the file's, unless how_ names one for all
   int fallback_ = -1;         // primitives without a material: gray diffuse, made when needed
   std::vector<bool> walked_;  // node k has been walked
+  std::vector<int> parents_;  // node k's parent, or -1 (made when a skin needs it)
+  std::map<int, std::vector<glm::dmat4>> skins_;  // skin k's joint matrices
 };
 
 }  // namespace rtvk
