@@ -330,6 +330,26 @@ TEST(GltfReader, SkinsAtRestAndMorphTargetsAtTheirWeightsMoveTheVertices) {
   EXPECT_EQ(s.triangles[0].p[2], point3(1, 6, 1));    // joint 1: + (2 - 1, 5, 0)
 }
 
+// MorphPrimitivesTest: two primitives (a red grid over three quadrants, a green one over the
+// fourth) whose morph targets, at the mesh's weight 0.5, raise the middle; flat if they are not
+// applied. Both tint one image, each its own color.
+TEST(GltfReader, MorphPrimitivesTestIsRaisedAndTintedPerPrimitive) {
+  const scene s = mesh_scene(gltf_data / "MorphPrimitivesTest/MorphPrimitivesTest.glb");
+  point3 lo(1e30), hi(-1e30);
+  for (const triangle& t : s.triangles)
+    for (const point3& p : t.p) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  const double width = std::max(hi.x - lo.x, hi.z - lo.z);
+  const double height = std::min(hi.y - lo.y, std::min(hi.x - lo.x, hi.z - lo.z));
+  EXPECT_GT(height, 0.05 * width) << "flat: the morph targets were not applied";
+  ASSERT_EQ(s.textures.size(), 2u);
+  EXPECT_EQ(s.textures[0].image, s.textures[1].image);
+  EXPECT_EQ(s.textures[0].even, color(1, 0, 0));
+  EXPECT_EQ(s.textures[1].even, color(0, 1, 0));
+}
+
 // What mesh_scene's refusal says ("" when it loads).
 std::string refusal_of(const std::filesystem::path& file) {
   try {
