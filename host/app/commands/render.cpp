@@ -368,7 +368,7 @@ command_action add_render_command(CLI::App& app) {
   auto o = std::make_shared<render_options>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
   cmd->add_option(
-         "--scene", o->scene,
+         "--scene,scene", o->scene,
          "Built-in scene (see rtvk scene list), a .json scene file or a mesh (.obj, .gltf, .glb)")
       ->capture_default_str();
   cmd->add_option("--backend", o->backend,

@@ -144,7 +144,7 @@ command_action add_view_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "view", "Open a window and render progressively on a Vulkan device (needs a display)");
   cmd->add_option(
-         "--scene", o->scene,
+         "--scene,scene", o->scene,
          "Built-in scene (also spheres:N), a .json scene file or a mesh (.obj, .gltf, .glb)")
       ->capture_default_str();
   cmd->add_option("--camera", o->camera, "Camera of the scene to start from; default: the first");
