@@ -31,10 +31,12 @@ class mesh_builder {
     return q;
   }
 
-  // One face; `normals` are the file's (not yet placed), or none for a flat face.
+  // One face; `normals` are the file's (not yet placed), or none for a flat face; `colors` its
+  // corners' vertex colors (linear RGBA), or none.
   void add(const std::array<point3, 3>& p, int material,
            const std::optional<std::array<vec3, 3>>& normals, const std::array<glm::dvec2, 3>& uv,
-           bool has_uv, const transform& node) {
+           bool has_uv, const transform& node,
+           const std::optional<std::array<glm::vec4, 3>>& colors = std::nullopt) {
     if (object_count(s_) >= max_scene_objects)
       fail("faces", "more than " + std::to_string(max_scene_objects) + " objects in one scene");
     triangle t;
@@ -64,7 +66,12 @@ class mesh_builder {
     }
     std::array<glm::dvec2, 3> corners = uv;
     if (mirrored) std::swap(corners[1], corners[2]);
-    if (smooth || has_uv) {
+    if (colors) {
+      sh.color = *colors;
+      sh.has_color = true;
+      if (mirrored) std::swap(sh.color[1], sh.color[2]);
+    }
+    if (smooth || has_uv || colors) {
       sh.uv = corners;
       sh.has_uv = has_uv;
       t.shading = std::int32_t(s_.shading.size());
