@@ -14,7 +14,7 @@ TEST(ObjectIds, BoxesMeshesAndInstancesAreOneObjectEach) {
   s.spheres = {sphere(point3(0, 0, 0), 1), sphere(point3(3, 0, 0), 1)};
   s.quads.push_back({point3(0, 0, -5), vec3(1, 0, 0), vec3(0, 1, 0), 0});
   add_box(s, point3(-1, -1, -1), point3(1, 1, 1), 0);  // quads 1..6
-  for (int k = 0; k < 5; ++k)                          // triangles 0, 1: a "mesh"; 2..4 alone
+  for (int k = 0; k < 5; ++k)  // triangles 0, 1: a "mesh"; 2..4 alone
     s.triangles.push_back({{point3(k, 0, 0), point3(k + 1, 0, 0), point3(k, 1, 0)}, 0});
   s.compounds.push_back({true, 0, 2});
   s.groups.push_back({});
@@ -23,9 +23,9 @@ TEST(ObjectIds, BoxesMeshesAndInstancesAreOneObjectEach) {
   // Scan-order keys: spheres 0, 1; quads 2..8; triangles 9..13.
   EXPECT_EQ(ids.of(0, 0), 1u);
   EXPECT_EQ(ids.of(1, 0), 2u);
-  EXPECT_EQ(ids.of(2, 0), 3u);                                              // the lone quad
+  EXPECT_EQ(ids.of(2, 0), 3u);  // the lone quad
   for (std::uint32_t q = 3; q <= 8; ++q) EXPECT_EQ(ids.of(q, 0), 4u) << q;  // the box
-  EXPECT_EQ(ids.of(9, 0), 5u);                                              // the mesh
+  EXPECT_EQ(ids.of(9, 0), 5u);  // the mesh
   EXPECT_EQ(ids.of(10, 0), 5u);
   EXPECT_EQ(ids.of(11, 0), 6u);
   EXPECT_EQ(ids.of(13, 0), 8u);

@@ -18,8 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // root/outside.png, outside.obj, outside.mtl, outside.bin; root/scenes/ (the scene file's
-// folder) with inside.png, link.png -> ../outside.png, link-in.png -> inside.png and sub/;
-// root/scenes2/other.png, a sibling whose name begins with the scene folder's.
+// folder) with inside.png, link.png -> ../outside.png, link-in.png -> inside.png and sub/; root/scenes2/other.png, a sibling
+// whose name begins with the scene folder's.
 class ScenePaths : public ::testing::Test {
  protected:
   void SetUp() override {
