@@ -12,6 +12,7 @@
 #include "process.h"
 #include "render_cpu.h"
 #include "render_helpers.h"
+#include "scene_file.h"
 #include "temp_dir.h"
 
 namespace rtvk {
@@ -210,6 +211,34 @@ TEST(ObjFiles, NonFiniteVerticesAreRefusedByLine) {
   EXPECT_NE(r.err.find("nan.obj:3: v: number 1 is not finite, got 'nan'"), std::string::npos)
       << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.png"));
+}
+
+// A Latin-1 material name (0xE9, "é" on Windows) made `rtvk scene dump` exit 1 (nlohmann::json
+// throws on bytes that are not UTF-8): names are now read as UTF-8 where they are, Latin-1 byte
+// by byte where not, and dump and read back unchanged.
+TEST(ObjFiles, AnyBytesInANameSurviveSceneDump) {
+  const test::temp_dir dir;
+  write(dir.path() / "m.mtl",
+        "newmtl caf\xe9\nKd 1 0 0\nnewmtl na\xc3\xafve\nKd 0 1 0\n"
+        "newmtl x\x80\xff\xc3\nKd 0 0 1\n");
+  write(dir.path() / "m.obj",
+        "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl caf\xe9\nf 1 2 3\n"
+        "usemtl na\xc3\xafve\nf 1 3 2\nusemtl x\x80\xff\xc3\nf 2 1 3\n");
+  const scene s = mesh_scene(dir.path() / "m.obj");
+  ASSERT_EQ(s.materials.size(), 3u);
+  const std::string prefix = (dir.path() / "m.obj").string() + ":";
+  EXPECT_EQ(s.materials[0].name, prefix + "caf\xc3\xa9");                // Latin-1 read
+  EXPECT_EQ(s.materials[1].name, prefix + "na\xc3\xafve");               // UTF-8 kept
+  EXPECT_EQ(s.materials[2].name, prefix + "x\xc2\x80\xc3\xbf\xc3\x83");  // each bad byte
+  const std::string dumped = dump_scene_json(s);
+  write(dir.path() / "d.json", dumped);
+  const scene back = load_scene_file(dir.path() / "d.json");
+  ASSERT_EQ(back.materials.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(back.materials[k].name, s.materials[k].name);
+  EXPECT_EQ(dump_scene_json(back), dumped);
+  const auto r = test::run_rtvk({"scene", "dump", (dir.path() / "m.obj").string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("caf\xc3\xa9"), std::string::npos);
 }
 
 }  // namespace
