@@ -139,8 +139,10 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
 
 // Pretty-prints with anything that fits on one line kept on one line: a sphere or a vector
 // reads as one line rather than ten.
+// Strings that are not UTF-8 (a texture's file name in Latin-1) are written with U+FFFD in
+// place of their bad bytes rather than failing the dump (names are made UTF-8 when read).
 void write_json(const json& j, int indent, std::string& out) {
-  const std::string flat = j.dump();
+  const std::string flat = j.dump(-1, ' ', false, json::error_handler_t::replace);
   if (flat.size() + std::size_t(indent) <= 100 || !j.is_structured()) {
     out += flat;
     return;
@@ -151,7 +153,7 @@ void write_json(const json& j, int indent, std::string& out) {
   std::size_t i = 0;
   for (auto it = j.begin(); it != j.end(); ++it, ++i) {
     out += pad;
-    if (object) out += json(it.key()).dump() + ": ";
+    if (object) out += json(it.key()).dump(-1, ' ', false, json::error_handler_t::replace) + ": ";
     write_json(*it, indent + 2, out);
     out += i + 1 < j.size() ? ",\n" : "\n";
   }

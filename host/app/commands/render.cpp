@@ -322,6 +322,8 @@ int run_render(render_options o) {
   }
   scene s = load_scene(o.scene, o.flags.access());
   check_scene(s);
+  // What the loaders drew otherwise than the files ask (a missing MTL drawn gray), said once.
+  for (const std::string& w : s.warnings) std::fprintf(stderr, "rtvk: warning: %s\n", w.c_str());
   render_window win;
   const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags.overrides(), win);
   for (const render_job& j : jobs) check_output_size(j.output, win.width, win.height, "--output");

@@ -105,7 +105,7 @@ void scene_flags::add_lens_to(CLI::App& cmd) {
                                     "opencv or opencv-fisheye model, its intrinsics and image size")
                          ->group(lens);
   colmap_opt_ = cmd.add_option("--colmap", colmap_,
-                               "COLMAP text model folder (cameras.txt, images.txt): one camera "
+                               "COLMAP model folder (cameras.txt, images.txt, or .bin): one camera "
                                "per image, named after it, all rendered unless --camera picks")
                     ->group(lens);
   intrinsics_opt_ = cmd.add_option("--intrinsics", intrinsics_,

@@ -74,6 +74,8 @@ int run_view(view_options o) {
   const interrupt_guard signals;  // SIGINT, SIGTERM: close the window cleanly
   if (!o.screenshot.empty()) output_pattern(o.screenshot, "--screenshot");  // checked up front
   scene s = load_scene(o.scene, o.flags.access());
+  // What the loaders drew otherwise than the files ask (a missing MTL drawn gray), said once.
+  for (const std::string& w : s.warnings) std::fprintf(stderr, "rtvk: warning: %s\n", w.c_str());
   const scene_overrides overrides = o.flags.overrides();
   overrides.apply_cameras(s);  // --colmap's views (--camera picks one), a calibration's size
   overrides.apply(s);
