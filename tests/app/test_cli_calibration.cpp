@@ -124,7 +124,7 @@ TEST(CliCalibration, FlagsFilesAndSceneFieldsDrawTheSameLens) {
   const std::string cal = (dir.path() / "cal.yaml").string();
   write_text(cal, opencv_yaml("500., 0., 319.5"));
   const std::string scene = (dir.path() / "lens.json").string();
-  write_text(scene, R"({"render": {"width": 160, "aspect": "4:3", "spp": 2},)"
+  write_text(scene, R"({"render": {"gamma": 1, "width": 160, "aspect": "4:3", "spp": 2},)"
                     R"( "camera": {"projection": "opencv", "intrinsics": [500, 500, 319.5, 239.5],)"
                     R"( "distortion": [-0.1, 0.01], "calibration_size": [640, 480],)"
                     R"( "rolling_shutter": {"direction": "bottom-up", "readout": 0.01}},)"

@@ -125,11 +125,13 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
                                         job.camera_name,
                                         job.frame,
                                         version_string,
-                                        render_shader_identity()}),
+                                        render_shader_identity(),
+                                        run.s.render.transform,
+                                        run.s.render.exposure}),
                       job.output, aovs ? &*aovs : nullptr);
   } else {
     if (aovs) write_aov_files(run, job, *aovs);  // first: an image is never without its AOVs
-    write_image(quantize(fb, run.s.render.gamma), job.output, run.enc);
+    write_image(quantize(fb, run.s.render.encoding()), job.output, run.enc);
   }
   ++*run.written;
 }
@@ -207,8 +209,9 @@ bool check_against_cpu(const run_context& run, const render_job& job, const fram
   const framebuffer cpu_fb = draw_cpu(run, job);
   const double cpu_seconds = seconds_since(start);
   const agreement rule = agreement_for(run, job.cam);
-  const image_difference d = compare_images(quantize(gpu_fb, run.s.render.gamma),
-                                            quantize(cpu_fb, run.s.render.gamma), rule.tolerance);
+  const image_difference d =
+      compare_images(quantize(gpu_fb, run.s.render.encoding()),
+                     quantize(cpu_fb, run.s.render.encoding()), rule.tolerance);
   const bool ok = agrees(d, rule);
   std::fprintf(stderr,
                "rtvk: %sgpu vs cpu (%.3f s): %s -- PSNR %.1f dB, max %d levels, mean %.4f, %.4f%% "

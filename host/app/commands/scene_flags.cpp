@@ -93,6 +93,17 @@ void scene_flags::add_to(CLI::App& cmd) {
                                  "stratified pixels) or auto (default: lights where the scene has "
                                  "lights)")
                       ->group(group);
+  view_transform_opt_ =
+      cmd.add_option("--view-transform", view_transform_,
+                     "How 8-bit images (PNG, PPM, the viewer) encode the scene-linear light: "
+                     "standard (sRGB), filmic, agx (Blender 4's), linear or gamma (the scene's "
+                     "power law); default: the scene's (docs/color.md)")
+          ->group(group);
+  exposure_opt_ = cmd.add_option("--exposure", exposure_,
+                                 "Exposure in stops (EV), -16 to 16: the light times 2^EV before "
+                                 "the view transform; .exr keeps the unscaled light (default: the "
+                                 "scene's, 0)")
+                      ->group(group);
   add_lens_to(cmd);
   paths_.add_to(cmd);
 }
@@ -141,6 +152,8 @@ scene_overrides scene_flags::overrides() const {
           .shutter = if_given(shutter_opt_, shutter_),
           .orbit = if_given(orbit_opt_, orbit_),
           .sampling = if_given(sampling_opt_, sampling_),
+          .view_transform = if_given(view_transform_opt_, view_transform_),
+          .exposure = if_given(exposure_opt_, exposure_),
           .calibration = if_given(calibration_opt_, calibration_),
           .intrinsics = if_given(intrinsics_opt_, intrinsics_),
           .distortion = if_given(distortion_opt_, distortion_),

@@ -48,6 +48,8 @@ class scene_flags {
   std::string projection_;
   std::string shutter_;
   std::string sampling_;
+  std::string view_transform_;
+  double exposure_ = 0;
   std::string calibration_, intrinsics_, distortion_, rolling_shutter_, colmap_;
   CLI::Option* width_opt_ = nullptr;
   CLI::Option* aspect_opt_ = nullptr;
@@ -65,6 +67,8 @@ class scene_flags {
   CLI::Option* fisheye_fov_opt_ = nullptr;
   CLI::Option* shutter_opt_ = nullptr;
   CLI::Option* sampling_opt_ = nullptr;
+  CLI::Option* view_transform_opt_ = nullptr;
+  CLI::Option* exposure_opt_ = nullptr;
   CLI::Option* calibration_opt_ = nullptr;
   CLI::Option* intrinsics_opt_ = nullptr;
   CLI::Option* distortion_opt_ = nullptr;
