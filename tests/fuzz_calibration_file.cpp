@@ -1,11 +1,14 @@
 // libFuzzer target for the camera calibration readers: OpenCV's FileStorage YAML and JSON, and
-// COLMAP's text model. The first byte picks the reader ('y' or 'j': an OpenCV file, the reader
-// picking YAML or JSON by content as it does for files; 'c': COLMAP, the rest split at its
-// first '\0' into cameras.txt and images.txt; anything else: nothing). Any input may be
+// COLMAP's text and binary models. The first byte picks the reader ('y' or 'j': an OpenCV file,
+// the reader picking YAML or JSON by content as it does for files; 'c': COLMAP's text model, the
+// rest split at its first '\0' into cameras.txt and images.txt; 'b': COLMAP's binary model, a
+// 4-byte little-endian length of cameras.bin, its bytes, then images.bin's; anything else:
+// nothing). Any input may be
 // rejected, but only with usage_error; anything else -- a crash, another exception, undefined
 // behaviour, a read past a buffer -- is a bug. What is accepted must make a camera: sizes in
 // range, finite focal lengths > 0, finite coefficients, valid and unique names, and poses whose
 // geometry the camera class takes.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -31,8 +34,7 @@ void check_lens(rtvk::projection model, const rtvk::lens_intrinsics& lens) {
     if (!std::isfinite(k)) std::abort();
 }
 
-void check_colmap(const std::string& cameras, const std::string& images) {
-  const std::vector<rtvk::colmap_view> views = rtvk::parse_colmap_model(cameras, images, "fuzz");
+void check_colmap(const std::vector<rtvk::colmap_view>& views) {
   if (views.empty()) std::abort();
   std::set<std::string> names;
   for (const rtvk::colmap_view& v : views) {
@@ -67,8 +69,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           if (c.lens.k[i] != 0) std::abort();
     } else if (kind == 'c') {
       const std::size_t split = bytes.find('\0');
-      check_colmap(bytes.substr(0, split),
-                   split == std::string::npos ? std::string() : bytes.substr(split + 1));
+      check_colmap(rtvk::parse_colmap_model(
+          bytes.substr(0, split),
+          split == std::string::npos ? std::string() : bytes.substr(split + 1), "fuzz"));
+    } else if (kind == 'b' && bytes.size() >= 4) {
+      std::size_t length = 0;
+      for (int i = 3; i >= 0; --i) length = length << 8 | static_cast<unsigned char>(bytes[i]);
+      const std::string rest = bytes.substr(4);
+      const std::size_t split = std::min(length, rest.size());
+      check_colmap(rtvk::parse_colmap_binary(rest.substr(0, split), rest.substr(split), "fuzz"));
     }
   } catch (const rtvk::usage_error&) {
     return 0;

@@ -16,14 +16,14 @@ inline camera scene_camera(const scene& s) {
 }
 
 inline image_rgb8 cpu_image(const scene& s, const camera& cam) {
-  return quantize(render_cpu(cam, s, s.render), s.render.gamma);
+  return quantize(render_cpu(cam, s, s.render), s.render.encoding());
 }
 inline image_rgb8 cpu_image(const scene& s) {
   return cpu_image(s, scene_camera(s));
 }
 
 inline image_rgb8 gpu_image(gpu::gpu_context& ctx, const scene& s, const camera& cam) {
-  return quantize(gpu::render_gpu(ctx, cam, s, s.render), s.render.gamma);
+  return quantize(gpu::render_gpu(ctx, cam, s, s.render), s.render.encoding());
 }
 inline image_rgb8 gpu_image(gpu::gpu_context& ctx, const scene& s) {
   return gpu_image(ctx, s, scene_camera(s));

@@ -9,6 +9,36 @@
 
 namespace rtvk {
 
+// `bytes` as UTF-8: valid sequences kept, every other byte read as Latin-1 (0xE9 -> U+00E9, "é"),
+// which is what an OBJ exported on Windows holds. Scene files (JSON) can only hold UTF-8, so a
+// name that is not would make `rtvk scene dump` fail; read this way it dumps and reads back.
+inline std::string utf8_name(const std::string& bytes) {
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size();) {
+    const auto b = [&](std::size_t k) { return static_cast<unsigned char>(bytes[k]); };
+    const unsigned char c = b(i);
+    // The length of a well-formed sequence starting here (RFC 3629), 0 for none.
+    std::size_t n = c < 0x80                   ? 1
+                    : (c >= 0xC2 && c <= 0xDF) ? 2
+                    : (c >= 0xE0 && c <= 0xEF) ? 3
+                    : (c >= 0xF0 && c <= 0xF4) ? 4
+                                               : 0;
+    for (std::size_t k = 1; k < n; ++k)
+      if (i + k >= bytes.size() || (b(i + k) & 0xC0) != 0x80) n = 0;
+    if (n == 3 && ((c == 0xE0 && b(i + 1) < 0xA0) || (c == 0xED && b(i + 1) > 0x9F))) n = 0;
+    if (n == 4 && ((c == 0xF0 && b(i + 1) < 0x90) || (c == 0xF4 && b(i + 1) > 0x8F))) n = 0;
+    if (n > 0) {
+      out.append(bytes, i, n);
+      i += n;
+    } else {
+      out += char(0xC0 | (c >> 6));
+      out += char(0x80 | (c & 0x3F));
+      ++i;
+    }
+  }
+  return out;
+}
+
 // Appends one mesh file's faces to a scene, checking each as it comes: what both loaders
 // (mesh_obj.cpp, mesh_gltf.cpp) share. Messages read "<file>: <where>: <what>".
 class mesh_builder {
@@ -32,7 +62,7 @@ class mesh_builder {
   }
 
   // One face; `normals` are the file's (not yet placed), or none for a flat face; `colors` its
-  // vertex colors (linear RGBA), or none.
+  // corners' vertex colors (linear RGBA), or none.
   void add(const std::array<point3, 3>& p, int material,
            const std::optional<std::array<vec3, 3>>& normals, const std::array<glm::dvec2, 3>& uv,
            bool has_uv, const transform& node,
@@ -81,8 +111,9 @@ class mesh_builder {
   }
 
   // A material of the file's, appended to the scene under a name no other material has (a file
-  // may repeat names, or be placed twice); returns its index.
-  int add_material(const std::string& name, const material& m) {
+  // may repeat names, or be placed twice), made UTF-8 (utf8_name); returns its index.
+  int add_material(const std::string& file_name, const material& m) {
+    const std::string name = utf8_name(file_name);
     std::string unique = name;
     for (int k = 2; std::any_of(s_.materials.begin(), s_.materials.end(),
                                 [&](const named_material& n) { return n.name == unique; });

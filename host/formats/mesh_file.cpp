@@ -74,6 +74,7 @@ void load_mesh(scene& s, const std::filesystem::path& file, const mesh_placement
 scene mesh_scene(const std::filesystem::path& file, const file_access& access) {
   scene s;
   s.name = file.string();
+  s.render.transform = view_transform::standard;  // sRGB, as the model's own viewers show it
   const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
   load_mesh(s, file, {}, path_guard::of(access, folder));
   // A camera that frames the bounds: looking at their center from the front, a little above and

@@ -1,91 +1,177 @@
-// Wavefront OBJ, through Debian's tinyobjloader: polygons triangulated as fans, every index
-// checked against the arrays it points into, materials from the MTL the file names.
+// Wavefront OBJ, through Debian's tinyobjloader, read as viewers read it: faces of any number of
+// corners cut into triangles in their plane (obj_polygon.h), every index checked against the
+// arrays it points into, materials from every MTL the mtllib lines name (obj_material.h),
+// their maps as sRGB image textures, vertex colors. A file it names that is missing is a
+// warning and drawn gray; a file outside the allowed folder, or a non-finite number, is refused.
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <map>
-#include <sstream>
 
 #include <tiny_obj_loader.h>
 
 #include "input_file.h"
 #include "mesh_builder.h"
 #include "mesh_file.h"
+#include "obj_material.h"
+#include "obj_polygon.h"
 
 namespace rtvk {
 namespace {
 
-double unit(double x) {
-  return std::clamp(std::isfinite(x) ? x : 0.0, 0.0, 1.0);
+// A name as the OBJ or MTL writes it, with Windows' separators turned into '/' (".\tex.jpg").
+std::string portable(std::string name) {
+  std::replace(name.begin(), name.end(), '\\', '/');
+  return name;
 }
 
-// An MTL material as one of rtvk's (docs/geometry.md): transparent (d < 1, or an illumination
-// model with refraction) is glass of index Ni; metallic (Pm >= 0.5, or illum 3, reflection on) is
-// metal of Kd (Pm) or Ks (illum 3), blurred by the roughness Pr; anything else is diffuse Kd.
-material from_mtl(const tinyobj::material_t& m) {
-  material out;
-  const bool refracts =
-      m.dissolve < 1 || m.illum == 4 || m.illum == 6 || m.illum == 7 || m.illum == 9;
-  if (refracts) {
-    out.type = material_type::dielectric;
-    out.ir = m.ior > 1 && std::isfinite(m.ior) ? m.ior : 1.5;
-    return out;
+// What the OBJ's own lines say before tinyobjloader reads them: the MTL files of its mtllib
+// lines (several on a line, or several lines), whether any vertex has a color, and every number
+// of a `v` line checked finite (tinyobjloader would read "nan" and "1e999" on).
+struct obj_lines {
+  std::vector<std::string> mtllibs;  // as written, separators made portable
+  bool colors = false;               // some `v` line has x y z r g b
+};
+
+obj_lines scan_lines(const std::string& text, const std::string& name) {
+  obj_lines out;
+  std::size_t number = 0;
+  for (std::size_t start = 0; start < text.size();) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string_view line(text.data() + start, end - start);
+    start = end + 1;
+    ++number;
+    std::vector<std::string_view> fields;
+    for (std::size_t i = 0; i < line.size();) {
+      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      std::size_t j = i;
+      while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
+      if (j > i) fields.push_back(line.substr(i, j - i));
+      i = j;
+    }
+    if (fields.empty()) continue;
+    if (fields[0] == "mtllib") {
+      for (std::size_t k = 1; k < fields.size(); ++k)
+        out.mtllibs.push_back(portable(std::string(fields[k])));
+    } else if (fields[0] == "v") {
+      out.colors = out.colors || fields.size() >= 7;
+      for (std::size_t k = 1; k < fields.size() && k <= 7; ++k) {
+        std::string_view f = fields[k].substr(0, 1) == "+" ? fields[k].substr(1) : fields[k];
+        double x = 0;
+        const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), x);
+        const bool read = ptr != f.data();
+        if ((read && !std::isfinite(x)) || ec == std::errc::result_out_of_range)
+          throw usage_error(name + ":" + std::to_string(number) + ": v: number " +
+                            std::to_string(k) + " is not finite, got '" +
+                            std::string(fields[k].substr(0, 40)) + "'");
+      }
+    }
   }
-  if (m.metallic >= 0.5 || m.illum == 3) {
-    out.type = material_type::metal;
-    const tinyobj::real_t* c = m.metallic >= 0.5 ? m.diffuse : m.specular;
-    out.albedo = color(unit(c[0]), unit(c[1]), unit(c[2]));
-    out.fuzz = unit(m.roughness);
-    return out;
-  }
-  out.type = material_type::lambertian;
-  out.albedo = color(unit(m.diffuse[0]), unit(m.diffuse[1]), unit(m.diffuse[2]));
   return out;
 }
 
-// An MTL material's map_Kd as an image texture beside the OBJ (tinted by Kd, tiled as MTL
-// textures are), decoded once however many materials name it; the file is named absolute, so a
-// dumped scene finds it from anywhere. Returns the scene's texture index.
-int diffuse_texture(mesh_builder& b, const tinyobj::material_t& m,
-                    const std::filesystem::path& base, const std::string& name,
-                    const path_guard& guard, std::map<std::string, int>& textures) {
-  const auto known = textures.find(m.diffuse_texname);
-  if (known != textures.end()) return known->second;
-  if (base.empty())
-    throw usage_error(name + ": material " + m.name + ": map_Kd " + m.diffuse_texname +
-                      ": no folder to read it from");
-  guard.check(base / m.diffuse_texname, name + ": material " + m.name + ": map_Kd",
-              m.diffuse_texname);
-  std::error_code ec;
-  const std::filesystem::path file = std::filesystem::absolute(base / m.diffuse_texname, ec);
-  texture t;
-  t.type = texture_type::image;
-  t.file = (ec ? base / m.diffuse_texname : file.lexically_normal()).string();
-  t.image = load_texel_image(t.file, name + ": material " + m.name + ": map_Kd");
-  t.even = color(unit(m.diffuse[0]), unit(m.diffuse[1]), unit(m.diffuse[2]));
-  t.wrap_u = t.wrap_v = image_wrap::repeat;
-  const int index = b.add_texture(std::move(t));
-  textures[m.diffuse_texname] = index;
-  return index;
-}
-
-// The MTL file an OBJ names on its first mtllib line, read from `base` ("" when none).
-std::string mtl_text(const std::string& obj, const std::filesystem::path& base,
-                     const std::string& name, const path_guard& guard) {
-  std::istringstream lines(obj);
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (line.rfind("mtllib", 0) != 0) continue;
-    std::string file = line.substr(6);
-    file.erase(0, file.find_first_not_of(" \t"));
-    file.erase(file.find_last_not_of(" \t\r") + 1);
-    if (file.empty() || base.empty()) return "";
+// The MTL files' text, one after another (each newmtl starts a material); a missing one is a
+// warning, its materials then drawn gray.
+std::string mtl_text(scene& s, const std::vector<std::string>& files,
+                     const std::filesystem::path& base, const std::string& name,
+                     const path_guard& guard) {
+  std::string text;
+  if (base.empty()) return text;
+  for (const std::string& file : files) {
     const std::filesystem::path path = base / file;
     guard.check(path, name + ": mtllib", file);
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec))
-      throw usage_error(name + ": mtllib " + file + ": no such file beside the OBJ");
-    return read_regular_file(path, max_mesh_file_bytes, "material library");
+    if (!std::filesystem::exists(path, ec)) {
+      s.warnings.push_back(name + ": mtllib " + file +
+                           ": no such file beside the OBJ; its materials are drawn gray");
+      continue;
+    }
+    text += read_regular_file(path, max_mesh_file_bytes, "material library") + "\n";
   }
-  return "";
+  return text;
+}
+
+// The image maps of one OBJ: each file decoded once (as sRGB), each material's map a texture of
+// its own (its own tint), so that two materials on one image keep their two colors.
+class obj_maps {
+ public:
+  obj_maps(scene& s, mesh_builder& b, const std::filesystem::path& base, const path_guard& guard)
+      : s_(s), b_(b), base_(base), guard_(guard) {}
+
+  // The texture of map `kind` (map_Kd, map_Ke) `file` of material `m`, tinted by `tint`; -1
+  // where the file is missing (a warning).
+  int texture(const std::string& m, const char* kind, const std::string& file, const color& tint) {
+    const std::shared_ptr<const texel_image> decoded = image(m, kind, file);
+    if (!decoded) return -1;
+    rtvk::texture t;
+    t.type = texture_type::image;
+    t.file = resolved(file).string();
+    t.image = decoded;
+    t.even = tint;
+    t.wrap_u = t.wrap_v = image_wrap::repeat;  // MTL maps tile
+    return b_.add_texture(std::move(t));
+  }
+
+  std::filesystem::path resolved(const std::string& file) const {
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::absolute(base_ / portable(file), ec);
+    return ec ? base_ / portable(file) : p.lexically_normal();
+  }
+
+ private:
+  std::shared_ptr<const texel_image> image(const std::string& m, const char* kind,
+                                           const std::string& file) {
+    const std::string what = b_.name() + ": material " + m + ": " + kind;
+    if (base_.empty()) throw usage_error(what + " " + file + ": no folder to read it from");
+    guard_.check(base_ / portable(file), what, file);
+    const std::string key = resolved(file).string();
+    const auto known = images_.find(key);
+    if (known != images_.end()) return known->second;
+    std::error_code ec;
+    std::shared_ptr<const texel_image> decoded;
+    if (std::filesystem::exists(key, ec))
+      decoded = load_texel_image(key, what, texel_encoding::srgb);
+    else
+      s_.warnings.push_back(what + " " + file + ": no such file; drawn without it");
+    images_[key] = decoded;
+    return decoded;
+  }
+
+  scene& s_;
+  mesh_builder& b_;
+  std::filesystem::path base_;  // the OBJ's folder
+  const path_guard& guard_;
+  std::map<std::string, std::shared_ptr<const texel_image>> images_;  // file -> decoded
+};
+
+// The scene's material for each of the file's, with its maps.
+std::vector<int> add_materials(scene& s, mesh_builder& b, const tinyobj::ObjReader& reader,
+                               const std::filesystem::path& base, const path_guard& guard) {
+  std::vector<int> out;
+  obj_maps maps(s, b, base, guard);
+  for (const tinyobj::material_t& m : reader.GetMaterials()) {
+    material mat = mtl_material(m);
+    const color kd(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
+    if (!m.diffuse_texname.empty() && mat.type != material_type::dielectric)
+      mat.texture = maps.texture(m.name, "map_Kd", m.diffuse_texname, glm::clamp(kd, 0.0, 1.0));
+    if (!m.emissive_texname.empty()) {
+      // A map_Ke without Ke glows at the map's own color (as Blender reads it).
+      if (mat.emission == color(0)) mat.emission = color(1);
+      mat.emission_texture = maps.texture(m.name, "map_Ke", m.emissive_texname, color(1));
+    }
+    if (!m.alpha_texname.empty()) {
+      // The renderer reads opacity from the texture's alpha channel: a map_d that is map_Kd's
+      // own file (an RGBA image) is drawn; a separate opacity image is not.
+      if (mat.texture >= 0 && maps.resolved(m.alpha_texname) == maps.resolved(m.diffuse_texname))
+        mat.alpha = alpha_mode::blend;
+      else
+        s.warnings.push_back(b.name() + ": material " + m.name + ": map_d " + m.alpha_texname +
+                             ": not drawn (rtvk reads opacity from map_Kd's alpha channel)");
+    }
+    out.push_back(b.add_material(b.name() + ":" + m.name, mat));
+  }
+  return out;
 }
 
 // One corner of a face: its position, and its normal and texture coordinates where the file
@@ -124,16 +210,47 @@ void read_corner(const mesh_builder& b, const tinyobj::attrib_t& a, const tinyob
   }
 }
 
+// A vertex's color (tinyobjloader's, 1 where a `v` line has none), alpha 1.
+glm::vec4 vertex_color(const tinyobj::attrib_t& a, const tinyobj::index_t& i) {
+  const std::size_t v = std::size_t(i.vertex_index);
+  if (3 * v + 2 >= a.colors.size()) return glm::vec4(1);
+  return glm::vec4(float(a.colors[3 * v]), float(a.colors[3 * v + 1]), float(a.colors[3 * v + 2]),
+                   1.0f);
+}
+
+// One face of the file, cut into triangles.
+struct obj_face {
+  std::vector<point3> p;
+  std::vector<vec3> n;
+  std::vector<glm::dvec2> uv;
+  std::vector<glm::vec4> color;
+  bool smooth = true, has_uv = true;
+};
+
+void add_face(mesh_builder& b, const obj_face& f, int material, bool colors) {
+  const transform node;
+  for (const std::array<std::size_t, 3>& t : triangulate_polygon(f.p)) {
+    const std::array<point3, 3> p{f.p[t[0]], f.p[t[1]], f.p[t[2]]};
+    const std::array<vec3, 3> n{f.n[t[0]], f.n[t[1]], f.n[t[2]]};
+    const std::array<glm::dvec2, 3> uv{f.uv[t[0]], f.uv[t[1]], f.uv[t[2]]};
+    std::optional<std::array<glm::vec4, 3>> c;
+    if (colors) c = std::array<glm::vec4, 3>{f.color[t[0]], f.color[t[1]], f.color[t[2]]};
+    b.add(p, material, f.smooth ? std::optional(n) : std::nullopt, uv, f.has_uv, node, c);
+  }
+}
+
 }  // namespace
 
 void load_obj(scene& s, const std::string& text, const std::string& name,
               const std::filesystem::path& base, const mesh_placement& how,
               const path_guard& guard) {
+  const obj_lines lines = scan_lines(text, name);
   tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
+  config.triangulate = false;  // obj_polygon.h cuts faces in their plane
+  config.vertex_color = lines.colors;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(text, mtl_text(text, base, name, guard), config) || !reader.Valid()) {
+  if (!reader.ParseFromString(text, mtl_text(s, lines.mtllibs, base, name, guard), config) ||
+      !reader.Valid()) {
     std::string why = reader.Error();
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
     std::replace(why.begin(), why.end(), '\n', ' ');
@@ -141,33 +258,27 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
   }
   mesh_builder b(s, name, how.placement);
   const tinyobj::attrib_t& a = reader.GetAttrib();
-  std::vector<int> materials;  // the file's material k -> the scene's
-  if (how.material < 0) {
-    std::map<std::string, int> textures;  // map_Kd file -> the scene's texture
-    for (const tinyobj::material_t& m : reader.GetMaterials()) {
-      material out = from_mtl(m);
-      if (!m.diffuse_texname.empty() && out.type != material_type::dielectric)
-        out.texture = diffuse_texture(b, m, base, name, guard, textures);
-      materials.push_back(b.add_material(name + ":" + m.name, out));
-    }
-  }
+  // The file's material k -> the scene's.
+  const std::vector<int> materials =
+      how.material < 0 ? add_materials(s, b, reader, base, guard) : std::vector<int>{};
   int fallback = how.material;  // faces without a material: a gray diffuse one, made when needed
-  const transform node;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     const tinyobj::mesh_t& mesh = shape.mesh;
     std::size_t at = 0;
     for (std::size_t f = 0; f < mesh.num_face_vertices.size(); ++f) {
       const std::string where = "shape \"" + shape.name + "\" face " + std::to_string(f);
-      const unsigned corners = mesh.num_face_vertices[f];
-      if (corners != 3) b.fail(where, "has " + std::to_string(corners) + " vertices, not 3");
-      if (at + 3 > mesh.indices.size()) b.fail(where, "indices end early");
-      std::array<point3, 3> p;
-      std::array<vec3, 3> n;
-      std::array<glm::dvec2, 3> uv{};
-      bool smooth = true, has_uv = true;
-      for (std::size_t k = 0; k < 3; ++k)
-        read_corner(b, a, mesh.indices[at + k], where, p[k], n[k], uv[k], smooth, has_uv);
-      at += 3;
+      const std::size_t corners = mesh.num_face_vertices[f];
+      if (at + corners > mesh.indices.size()) b.fail(where, "indices end early");
+      obj_face face;
+      face.p.resize(corners);
+      face.n.resize(corners);
+      face.uv.resize(corners);
+      for (std::size_t k = 0; k < corners; ++k) {
+        const tinyobj::index_t& i = mesh.indices[at + k];
+        read_corner(b, a, i, where, face.p[k], face.n[k], face.uv[k], face.smooth, face.has_uv);
+        face.color.push_back(vertex_color(a, i));
+      }
+      at += corners;
       int material = how.material;
       if (material < 0) {
         const int id = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
@@ -180,7 +291,7 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
           material = fallback;
         }
       }
-      b.add(p, material, smooth ? std::optional(n) : std::nullopt, uv, has_uv, node);
+      add_face(b, face, material, lines.colors);
     }
   }
 }

@@ -17,11 +17,32 @@ namespace rtvk {
 namespace scene_json {
 namespace {
 
+// How the file's 8-bit images are encoded (docs/color.md): "view_transform" when given; else a
+// file that sets "gamma" keeps the power law it always had, and any other file, new ones, gets
+// standard (sRGB). A file without a "render" object gets standard too (read_settings).
+void read_view(const scene_reader& r, const json& j, render_settings& s) {
+  const std::string p = "/render";
+  if (j.contains("gamma")) s.gamma = r.number_in(j["gamma"], p + "/gamma", 0.1, 10);
+  s.transform = j.contains("gamma") ? view_transform::gamma : view_transform::standard;
+  if (j.contains("view_transform")) {
+    const json& v = j["view_transform"];
+    const auto t = view_transform_from_name(v.is_string() ? v.get<std::string>() : "");
+    if (!t)
+      r.fail(p + "/view_transform",
+             std::string("expected ") + view_transform_words + ", got " + v.dump());
+    s.transform = *t;
+  }
+  if (j.contains("exposure"))
+    s.exposure = r.number_in(j["exposure"], p + "/exposure", -max_exposure, max_exposure);
+}
+
 render_settings read_render(const scene_reader& r, const json& j) {
   const std::string p = "/render";
   r.only_fields(j, p,
-                {"width", "aspect", "spp", "max_depth", "seed", "gamma", "jitter", "sampling"});
+                {"width", "aspect", "spp", "max_depth", "seed", "gamma", "view_transform",
+                 "exposure", "jitter", "sampling"});
   render_settings s;
+  read_view(r, j, s);
   if (j.contains("width")) s.width = int(r.integer(j["width"], p + "/width", 1, max_image_side));
   if (j.contains("aspect")) {
     const json& a = j["aspect"];
@@ -37,7 +58,6 @@ render_settings read_render(const scene_reader& r, const json& j) {
     s.max_depth = int(r.integer(j["max_depth"], p + "/max_depth", 1, max_depth_limit));
   if (j.contains("seed"))
     s.seed = std::uint32_t(r.integer(j["seed"], p + "/seed", 0, 0xffffffffll));
-  if (j.contains("gamma")) s.gamma = r.number_in(j["gamma"], p + "/gamma", 0.1, 10);
   if (j.contains("jitter")) {
     if (!j["jitter"].is_boolean())
       r.fail(p + "/jitter", "expected true or false, got " + r.type_of(j["jitter"]));
@@ -59,14 +79,20 @@ render_settings read_render(const scene_reader& r, const json& j) {
 }
 
 void read_settings(const scene_reader& r, const json& root, scene& s) {
-  if (root.contains("render")) s.render = read_render(r, root["render"]);
+  s.render = read_render(r, root.contains("render") ? root["render"] : json::object());
 }
 
 void write_settings(const scene& s, json& root) {
   const render_settings& r = s.render;
-  root["render"] = {{"width", r.width},         {"aspect", r.aspect}, {"spp", r.spp},
-                    {"max_depth", r.max_depth}, {"seed", r.seed},     {"gamma", r.gamma},
+  root["render"] = {{"width", r.width},
+                    {"aspect", r.aspect},
+                    {"spp", r.spp},
+                    {"max_depth", r.max_depth},
+                    {"seed", r.seed},
+                    {"gamma", r.gamma},
+                    {"view_transform", view_transform_name(r.transform)},
                     {"jitter", r.jitter}};
+  if (r.exposure != 0) root["render"]["exposure"] = r.exposure;
   if (r.sampling != sampling_mode::automatic)
     root["render"]["sampling"] = sampling_name(r.sampling);
 }
@@ -139,8 +165,10 @@ scene read_scene(const scene_reader& r, const json& root, const std::string& nam
 
 // Pretty-prints with anything that fits on one line kept on one line: a sphere or a vector
 // reads as one line rather than ten.
+// Strings that are not UTF-8 (a texture's file name in Latin-1) are written with U+FFFD in
+// place of their bad bytes rather than failing the dump (names are made UTF-8 when read).
 void write_json(const json& j, int indent, std::string& out) {
-  const std::string flat = j.dump();
+  const std::string flat = j.dump(-1, ' ', false, json::error_handler_t::replace);
   if (flat.size() + std::size_t(indent) <= 100 || !j.is_structured()) {
     out += flat;
     return;
@@ -151,7 +179,7 @@ void write_json(const json& j, int indent, std::string& out) {
   std::size_t i = 0;
   for (auto it = j.begin(); it != j.end(); ++it, ++i) {
     out += pad;
-    if (object) out += json(it.key()).dump() + ": ";
+    if (object) out += json(it.key()).dump(-1, ' ', false, json::error_handler_t::replace) + ": ";
     write_json(*it, indent + 2, out);
     out += i + 1 < j.size() ? ",\n" : "\n";
   }

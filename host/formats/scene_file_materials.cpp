@@ -25,6 +25,28 @@ image_wrap read_wrap(const scene_reader& r, const json& j, const std::string& p)
                 (j.is_string() ? "\"" + j.get<std::string>() + "\"" : r.type_of(j)));
 }
 
+// An image file's color space, as "color_space" names it: the book's gamma 2.2 (the default, what
+// every scene file had), sRGB, or linear data.
+const char* space_name(const texture& t) {
+  switch (t.color_space) {
+    case texel_encoding::srgb:
+      return "srgb";
+    case texel_encoding::linear:
+      return "linear";
+    case texel_encoding::book:
+      break;
+  }
+  return "book";
+}
+
+texel_encoding read_color_space(const scene_reader& r, const json& j, const std::string& p) {
+  const std::string name = j.is_string() ? j.get<std::string>() : "";
+  if (name == "book") return texel_encoding::book;
+  if (name == "srgb") return texel_encoding::srgb;
+  if (name == "linear") return texel_encoding::linear;
+  r.fail(p, "expected \"book\", \"srgb\" or \"linear\", got " + j.dump());
+}
+
 // An image texture's "file" (at `p`): decoded once per file however many textures name it, rtvk's
 // own planet, or a glTF's embedded image (FILE#images/N, as rtvk scene dump names a mesh's base
 // color texture); every file in the folder the scene's files may use.
@@ -34,7 +56,10 @@ void read_image(const scene_reader& r, const json& f, const std::string& p, text
   tex.file = f.get<std::string>();
   const std::string field = r.file() + ": " + p;
   const std::size_t hash = tex.file.rfind("#images/");
-  std::shared_ptr<const texel_image>& cached = r.images[tex.file];
+  // Decoded once per file and color space (the book's keeps the file's name as its key).
+  const std::string key =
+      tex.color_space == texel_encoding::book ? tex.file : tex.file + "#" + space_name(tex);
+  std::shared_ptr<const texel_image>& cached = r.images[key];
   if (cached) {
     tex.image = cached;
   } else if (tex.file == builtin_planet) {
@@ -49,7 +74,7 @@ void read_image(const scene_reader& r, const json& f, const std::string& p, text
   } else {
     const std::filesystem::path file = r.base() / tex.file;
     r.guard().check(file, field, tex.file);
-    tex.image = load_texel_image(file, field);
+    tex.image = load_texel_image(file, field, tex.color_space);
   }
   cached = tex.image;
   std::uint64_t texels = 0;
@@ -92,8 +117,10 @@ void read_color_or_texture(const scene_reader& r, const json& j, const std::stri
     if (j.contains("style")) tex.style = read_style(r, j["style"], p + "/style");
     if (j.contains("color")) tex.even = color_at(j["color"], p + "/color");
   } else if (t == "image") {
-    r.only_fields(j, p, {"type", "file", "color", "wrap"});
+    r.only_fields(j, p, {"type", "file", "color", "wrap", "color_space"});
     tex.type = texture_type::image;
+    if (j.contains("color_space"))
+      tex.color_space = read_color_space(r, j["color_space"], p + "/color_space");
     if (j.contains("color")) tex.even = color_at(j["color"], p + "/color");
     if (j.contains("wrap")) {  // one mode for both axes, or [u's, v's]
       const json& w = j["wrap"];
@@ -163,6 +190,7 @@ json texture_json(const texture& t) {
       break;
     case texture_type::image:
       j["file"] = t.file;
+      if (t.color_space != texel_encoding::book) j["color_space"] = space_name(t);
       if (t.even != color(1)) j["color"] = vec_json(t.even);
       if (t.wrap_u != t.wrap_v)
         j["wrap"] = json::array({wrap_name(t.wrap_u), wrap_name(t.wrap_v)});

@@ -29,9 +29,9 @@ std::string build_of(const partial_image& p) {
 
 void render_merger::add(const std::string& file, const partial_image& p) {
   if (seen_.empty()) {
-    first_ =
-        partial_image{p.image_width, p.image_height, p.window, {},        p.gamma, p.fingerprint,
-                      p.scene,       p.camera,       p.frame,  p.version, p.shader};
+    first_ = partial_image{p.image_width, p.image_height, p.window,  {},      p.gamma,
+                           p.fingerprint, p.scene,        p.camera,  p.frame, p.version,
+                           p.shader,      p.transform,    p.exposure};
     first_file_ = file;
     const std::size_t pixels = std::size_t(p.image_width) * std::size_t(p.image_height);
     sum_.assign(pixels, color(0));
@@ -44,7 +44,7 @@ void render_merger::add(const std::string& file, const partial_image& p) {
                       std::to_string(p.image_height) + " but " + first_file_ + "'s is " +
                       std::to_string(first_.image_width) + "x" +
                       std::to_string(first_.image_height));
-  if (p.fingerprint != first_.fingerprint || p.gamma != first_.gamma)
+  if (p.fingerprint != first_.fingerprint || p.encoding() != first_.encoding())
     throw usage_error(file + ": rendered from a different scene, camera, frame or settings " +
                       "than " + first_file_ + " (fingerprint " + p.fingerprint + " vs " +
                       first_.fingerprint + ")");

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -132,6 +133,21 @@ std::string optional_string(const Imf::Header& h, const char* name) {
   return a ? a->value() : std::string();
 }
 
+// The piece's view transform and exposure, where it has them (gamma at 0 EV where not).
+void read_encoding(const Imf::Header& h, const std::string& file, partial_image& p) {
+  const std::string word = optional_string(h, "rtvk.view_transform");
+  if (!word.empty()) {
+    const auto t = view_transform_from_name(word);
+    if (!t) throw image_read_error(file + ": rtvk.view_transform is \"" + word + "\"");
+    p.transform = *t;
+  }
+  if (const auto* e = h.findTypedAttribute<Imf::DoubleAttribute>("rtvk.exposure")) {
+    if (!(std::abs(e->value()) <= max_exposure))
+      throw image_read_error(file + ": rtvk.exposure is " + std::to_string(e->value()));
+    p.exposure = e->value();
+  }
+}
+
 template <typename Attr>
 const Attr& attribute(const Imf::Header& h, const char* name, const std::string& file) {
   const Attr* a = h.findTypedAttribute<Attr>(name);
@@ -196,6 +212,9 @@ void write_partial_exr(const partial_image& p, const std::filesystem::path& path
   h.insert("rtvk.frame", Imf::IntAttribute(p.frame));
   h.insert("rtvk.version", Imf::StringAttribute(p.version));
   h.insert("rtvk.shader", Imf::StringAttribute(p.shader));
+  if (p.transform != view_transform::gamma)  // renders encoded as before keep their bytes
+    h.insert("rtvk.view_transform", Imf::StringAttribute(view_transform_name(p.transform)));
+  if (p.exposure != 0) h.insert("rtvk.exposure", Imf::DoubleAttribute(p.exposure));
   // Slices take non-const pointers for both directions; an OutputFile only reads them.
   Imf::FrameBuffer fb = slices(const_cast<float*>(p.rgb.data()), data);
   if (aovs) add_aov_channels(*aovs, aovs->which, data, h, fb);
@@ -241,6 +260,7 @@ partial_image read_partial_exr(const std::filesystem::path& path) {
     p.frame = attribute<Imf::IntAttribute>(h, "rtvk.frame", name).value();
     p.version = optional_string(h, "rtvk.version");  // pieces of earlier rtvk have none
     p.shader = optional_string(h, "rtvk.shader");
+    read_encoding(h, name, p);
     for (const char* c : {"R", "G", "B"})
       if (!h.channels().findChannel(c))
         throw image_read_error(name + ": no " + std::string(c) + " channel");

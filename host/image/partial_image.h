@@ -27,6 +27,12 @@ struct partial_image {
   std::string version;      // the rtvk that rendered it (version_string; empty in pieces of
                             // earlier rtvk): pieces of different versions do not merge unasked
   std::string shader;       // identity of the render shader (hash of its SPIR-V), likewise
+  // With gamma, how the merged image is encoded for PNG or PPM; the pixels above never have
+  // the exposure or the transform applied (scene-linear). Pieces of earlier rtvk: gamma, 0 EV.
+  view_transform transform = view_transform::gamma;
+  double exposure = 0;  // EV
+
+  display_encoding encoding() const { return {transform, gamma, exposure}; }
 };
 
 // `header` (every field but rgb) with the pixels of `fb`, which is header.window.width x

@@ -1,6 +1,8 @@
 #pragma once
 #include <cstdint>
 
+#include "byte_encoding.h"
+
 namespace rtvk {
 
 // How paths pick their directions at diffuse surfaces and in media (docs/sampling.md).
@@ -18,9 +20,15 @@ struct render_settings {
   int spp = 1;                 // samples per pixel
   int max_depth = 50;          // most scatter events a path may take
   std::uint32_t seed = 0;      // random number seed: same seed, same image
-  double gamma = 1;            // output encoding: 1 linear (the lesson), 2 the book's sqrt
-  bool jitter = false;         // random sample positions inside each pixel (antialiasing)
+  double gamma = 1;            // the power law's: 1 linear (the lesson), 2 the book's sqrt
+  // How 8-bit images encode the scene-linear means (docs/color.md): the built-in scenes keep
+  // the books' power law; mesh files and scene files without "gamma" get standard (sRGB).
+  view_transform transform = view_transform::gamma;
+  double exposure = 0;  // EV: means times 2^exposure before the transform (not in .exr)
+  bool jitter = false;  // random sample positions inside each pixel (antialiasing)
   sampling_mode sampling = sampling_mode::automatic;  // --sampling, "sampling"
+
+  display_encoding encoding() const { return {transform, gamma, exposure}; }
 };
 
 // The part of a render that one run draws: a rectangle of the image and a range of each pixel's

@@ -41,6 +41,8 @@ struct texel_image {
   std::vector<std::uint32_t> texels;  // width * height
 };
 
+enum class texel_encoding : std::uint32_t;  // below: how an image's bytes map to linear
+
 // One texture of a scene: plain data (shaders/shared/texture.h says what each kind draws).
 struct texture {
   texture_type type = texture_type::checker;
@@ -54,6 +56,9 @@ struct texture {
   std::shared_ptr<const texel_image> image;  // image: its texels (shared by copies of a scene)
   image_wrap wrap_u = image_wrap::clamp;     // image: outside [0, 1] along u
   image_wrap wrap_v = image_wrap::clamp;     // and along v
+  // image: how the file's bytes were decoded to linear (a scene file's "color_space");
+  // value-initialized: texel_encoding::book, the book's gamma 2.2
+  texel_encoding color_space{};
 };
 
 // The most texels an image texture may have across or down, and in all: 16384 is what most GPUs

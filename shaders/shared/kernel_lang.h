@@ -65,6 +65,8 @@ using std::atan2;
 using std::cos;
 using std::floor;
 using std::log;
+using std::log2;
+using std::pow;
 using std::sin;
 using std::sqrt;
 // Where one source cannot serve: GLSL has no cube root. pow(x, 1/3) there, cbrt here; the two

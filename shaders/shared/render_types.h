@@ -131,11 +131,15 @@ struct tonemap_push {
   uint pixels;           // pixel_sum entries to encode
   uint row_invocations;  // invocations in x of the whole dispatch (a tile's gl_NumWorkGroups is
                          // less)
+  uint transform;        // RTVK_VIEW_* (view_transform.h): AgX is computed, the rest thresholded
+  float mean_scale;      // AgX: 2^(exposure - F), a fixed-point mean's scene-linear light
 };
 #ifdef __cplusplus
 static_assert(offsetof(tonemap_push, pixels) == 4);
 static_assert(offsetof(tonemap_push, row_invocations) == 8);
-static_assert(sizeof(tonemap_push) == 12);
+static_assert(offsetof(tonemap_push, transform) == 12);
+static_assert(offsetof(tonemap_push, mean_scale) == 16);
+static_assert(sizeof(tonemap_push) == 20);
 #endif
 
 // std430 array element for aov.comp: what the ray through one pixel's center hits first

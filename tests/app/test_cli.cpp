@@ -49,6 +49,23 @@ TEST(Cli, RenderWritesTheLessonsImage) {
   }
 }
 
+// What a new user types first: the scene as the argument, without --scene. The same image as
+// --scene gives, and a second scene is refused.
+TEST(Cli, TheSceneMayBeGivenWithoutItsFlag) {
+  test::temp_dir dir;
+  const fs::path a = dir.path() / "a.ppm", b = dir.path() / "b.ppm";
+  const auto r = run_rtvk({"render", "materials", "--width", "48", "-o", a.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(run_rtvk({"render", "--scene", "materials", "--width", "48", "-o", b.string()}).status,
+            0);
+  EXPECT_EQ(test::slurp(a), test::slurp(b));
+  EXPECT_NE(test::slurp(a), lesson::render_seed_p3(16.0 / 9.0, 48));  // not the default scene
+  const auto twice =
+      run_rtvk({"render", "materials", "seed", "-o", (dir.path() / "c.ppm").string()});
+  EXPECT_EQ(twice.status, 2);
+  EXPECT_FALSE(fs::exists(dir.path() / "c.ppm"));
+}
+
 TEST(Cli, PngAndP6Outputs) {
   test::temp_dir dir;
   EXPECT_EQ(run_rtvk({"render", "-q", "-o", (dir.path() / "a.png").string()}).status, 0);

@@ -369,7 +369,7 @@ TEST(CliBadInput, AHundredThousandSphereFileRenders) {
   {
     // Rows of 317 spheres across x = -158..158, one row per unit of depth from z = -20 back.
     std::ofstream f(file);
-    f << R"({"materials":{"m":{"type":"normal"}},"spheres":[)";
+    f << R"({"render":{"gamma":1},"materials":{"m":{"type":"normal"}},"spheres":[)";
     for (int i = 0; i < 100000; ++i)
       f << (i ? "," : "") << R"({"center":[)" << (i % 317 - 158) << ",0," << (-20 - i / 317)
         << R"(],"radius":0.4,"material":"m"})";

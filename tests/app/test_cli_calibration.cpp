@@ -47,6 +47,12 @@ TEST(CliCalibration, BadLensInputExits2NamingTheFlagOrFieldAndValue) {
   write_text(fov / "images.txt", images_txt);
   write_text(short_row / "cameras.txt", "1 PINHOLE 640 480 500 500\n");
   write_text(short_row / "images.txt", images_txt);
+  // COLMAP's binary model of views of different sizes, and the same with images.bin cut short.
+  const fs::path sizes = fs::path(RTVK_TEST_DATA) / "colmap" / "binary", cut = dir.path() / "cut";
+  fs::create_directories(cut);
+  fs::copy_file(sizes / "cameras.bin", cut / "cameras.bin");
+  fs::copy_file(sizes / "images.bin", cut / "images.bin");
+  fs::resize_file(cut / "images.bin", 15);
   const std::string bad_scene = (dir.path() / "in" / "fx0.json").string();
   write_text(
       bad_scene,
@@ -73,6 +79,10 @@ TEST(CliCalibration, BadLensInputExits2NamingTheFlagOrFieldAndValue) {
       {{"--colmap=" + fov.string()}, {"cameras.txt:2", "camera model FOV is not supported"}},
       {{"--colmap=" + short_row.string()},
        {"cameras.txt:1", "PINHOLE takes 4 parameters", "got 2"}},
+      {{"--colmap=" + sizes.string()},
+       {"colmap/binary: image e.jpg is 10x20, f.jpg 100x100", "one size per run"}},
+      {{"--colmap=" + cut.string()},
+       {"cut/images.bin: image 1 of 7, at byte 8: QW: the file ends"}},
       {{"--rolling-shutter=sideways:1"},
        {"--rolling-shutter sideways:1", "expected [top-down:|bottom-up:]SECONDS"}},
       {{"--rolling-shutter=-1"}, {"--rolling-shutter -1", "must be >= 0 seconds"}},
@@ -114,7 +124,7 @@ TEST(CliCalibration, FlagsFilesAndSceneFieldsDrawTheSameLens) {
   const std::string cal = (dir.path() / "cal.yaml").string();
   write_text(cal, opencv_yaml("500., 0., 319.5"));
   const std::string scene = (dir.path() / "lens.json").string();
-  write_text(scene, R"({"render": {"width": 160, "aspect": "4:3", "spp": 2},)"
+  write_text(scene, R"({"render": {"gamma": 1, "width": 160, "aspect": "4:3", "spp": 2},)"
                     R"( "camera": {"projection": "opencv", "intrinsics": [500, 500, 319.5, 239.5],)"
                     R"( "distortion": [-0.1, 0.01], "calibration_size": [640, 480],)"
                     R"( "rolling_shutter": {"direction": "bottom-up", "readout": 0.01}},)"

@@ -9,9 +9,11 @@ set(may_use_base "base;shared")
 set(may_use_camera "camera;base;shared")
 set(may_use_shapes "shapes;base;shared")
 set(may_use_scene "scene;shapes;camera;base;shared")
-set(may_use_formats "formats;formats/gltf;scene;shapes;camera;base;shared")
+set(may_use_formats/obj "formats/obj;scene;shapes;camera;base;shared")
+set(may_use_formats "formats;formats/obj;formats/gltf;scene;shapes;camera;base;shared")
 # The glTF reader: part of the formats library, in a folder of its own for its size.
-set(may_use_formats/gltf "formats/gltf;formats;scene;shapes;camera;base;shared")
+set(may_use_formats/gltf "formats/gltf;formats;formats/obj;scene;shapes;camera;base;shared")
+set(may_use_formats/colmap "formats/colmap;camera;base;shared")
 set(may_use_accel "accel;scene;shapes;camera;base;shared")
 set(may_use_cpu "cpu;accel;scene;shapes;camera;base;shared")
 set(may_use_image "image;scene;shapes;camera;base;shared")
@@ -21,11 +23,11 @@ set(may_use_gpu/scene "gpu/scene;gpu/pipeline;gpu/vulkan;accel;scene;shapes;came
 set(gpu_layers "gpu/render;gpu/scene;gpu/pipeline;gpu/vulkan")
 set(may_use_gpu/render "${gpu_layers};accel;scene;shapes;camera;base;shared")
 set(may_use_view "view;cpu;${gpu_layers};accel;scene;shapes;camera;base;shared")
-set(may_use_app/jobs "app/jobs;cpu;image;${gpu_layers};accel;formats;scene;shapes;camera;base;shared")
+set(may_use_app/jobs "app/jobs;cpu;image;${gpu_layers};accel;formats;formats/colmap;scene;shapes;camera;base;shared")
 set(may_use_app/commands
-    "app/commands;app/jobs;view;cpu;image;${gpu_layers};accel;formats;scene;shapes;camera;base;shared")
+    "app/commands;app/jobs;view;cpu;image;${gpu_layers};accel;formats;formats/colmap;scene;shapes;camera;base;shared")
 set(may_use_app "app;app/commands;app/jobs;image;base;shared")
-set(layers base camera shapes scene formats formats/gltf accel cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
+set(layers base camera shapes scene formats/obj formats formats/gltf formats/colmap accel cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
            app/jobs app/commands app)
 
 # A new folder of sources must be given its place in the map above.

@@ -19,7 +19,7 @@ namespace {
 const char* const instances_json =
     R"({"materials":{"n":{"type":"normal"}},)"
     R"("camera":{"lookfrom":[0,1.5,4],"lookat":[0,0.3,0],"vfov":50},)"
-    R"("render":{"width":96,"aspect":"16:9","spp":1,"jitter":false},)"
+    R"("render":{"gamma":1,"width":96,"aspect":"16:9","spp":1,"jitter":false},)"
     R"("quads":[{"Q":[-5,0,-5],"u":[0,0,10],"v":[10,0,0],"material":"n"}],)"
     R"("groups":{"thing":{"spheres":[{"center":[0,0.6,0],"radius":0.3,"material":"n"}],)"
     R"("boxes":[{"a":[-0.25,0,-0.25],"b":[0.25,0.3,0.25],"material":"n"}],)"

@@ -69,7 +69,7 @@ TEST_F(GpuBook, BookFinalMatchesTheCpu) {
 // rounding), in every direction. The sky's blend of two equal colors rounds some by an ulp.
 TEST_F(GpuBook, ABackgroundIsExactlyItsColorWhereRaysMiss) {
   scene s = parse_scene_json(
-      R"({"background":[0.3,0.6,0.9],"render":{"width":64,"aspect":2,"spp":2,"jitter":true},)"
+      R"({"background":[0.3,0.6,0.9],"render":{"gamma":1,"width":64,"aspect":2,"spp":2,"jitter":true},)"
       R"("camera":{"lookfrom":[0,0,0],"lookat":[0,0,-1],"vfov":120},)"
       R"("materials":{"m":{"type":"flat","albedo":[1,0,0]}},)"
       R"("spheres":[{"center":[0,0,-2],"radius":0.5,"material":"m"}]})",

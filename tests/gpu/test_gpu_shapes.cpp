@@ -63,7 +63,7 @@ TEST_F(GpuShapes, InstancesOfGroupsMatchTheCpu) {
   const scene s = parse_scene_json(
       R"({"materials":{"n":{"type":"normal"}},)"
       R"("camera":{"lookfrom":[0,1.5,4],"lookat":[0,0.3,0],"vfov":50},)"
-      R"("render":{"width":160,"aspect":"16:9","spp":1,"jitter":false},)"
+      R"("render":{"gamma":1,"width":160,"aspect":"16:9","spp":1,"jitter":false},)"
       R"("quads":[{"Q":[-5,0,-5],"u":[0,0,10],"v":[10,0,0],"material":"n"}],)"
       R"("groups":{"thing":{"spheres":[{"center":[0,0.6,0],"radius":0.3,"material":"n"}],)"
       R"("boxes":[{"a":[-0.25,0,-0.25],"b":[0.25,0.3,0.25],"material":"n"}],)"
@@ -101,7 +101,7 @@ TEST_F(GpuShapes, EllipsoidsAndStretchedInstancesMatchTheCpu) {
   const scene s = parse_scene_json(
       R"({"materials":{"n":{"type":"normal"}},)"
       R"("camera":{"lookfrom":[0,1,5],"lookat":[0,0.5,0],"vfov":45},)"
-      R"("render":{"width":160,"aspect":"16:9","spp":1,"jitter":false},)"
+      R"("render":{"gamma":1,"width":160,"aspect":"16:9","spp":1,"jitter":false},)"
       R"("groups":{"ball":{"spheres":[{"center":[0,0,0],"radius":0.5,"material":"n"}]},)"
       R"("crate":{"boxes":[{"a":[0,0,0],"b":[1,1,1],"material":"n"}]}},)"
       R"("instances":[{"group":"ball","transform":{"scale":[3,1,1],"rotate":{"axis":[0,0,1],"degrees":30},"translate":[-0.5,1,0]}},)"
@@ -222,7 +222,8 @@ TEST_F(GpuShapes, DisksAndInstancedDisksMatchTheCpuAndTheScan) {
   g.disks = {{point3(0), vec3(0, 1, 0.3), 0.2, 0}, {point3(0.1, 0.05, 0), vec3(1, 0, 0), 0.15, 0}};
   s.groups.push_back(g);
   s.instances.push_back({0, make_transform(vec3(1), vec3(0, 1, 0), 0, vec3(-0.5, 0.3, -1))});
-  s.instances.push_back({0, make_transform(vec3(-1, 1.5, 1), vec3(1, 0, 0), 25, vec3(0.4, 0.3, -1.1))});
+  s.instances.push_back(
+      {0, make_transform(vec3(-1, 1.5, 1), vec3(1, 0, 0), 25, vec3(0.4, 0.3, -1.1))});
   s.render.width = 160;
   const image_difference d = gpu_vs_cpu(gpu(), s);
   EXPECT_LE(d.pixels_over, 160 * 90 / 500) << "of " << 160 * 90;

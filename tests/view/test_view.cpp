@@ -525,7 +525,7 @@ TEST_F(XvfbTest, FAndAClickFocusOnAMovingSphereWhereTheShutterSeesIt) {
   const test::temp_dir dir;
   const std::string file = (dir.path() / "moving.json").string();
   std::ofstream(file) << R"({"camera": {"vfov": 60, "shutter": [2, 3]},
-      "render": {"width": 200, "aspect": 1.5, "spp": 2},
+      "render": {"gamma": 1, "width": 200, "aspect": 1.5, "spp": 2},
       "materials": {"m": {"type": "normal"}},
       "spheres": [{"center": [-10, 0, -5], "center1": [-6, 0, -5], "radius": 1, "material": "m"}]})";
   double focus = 0;

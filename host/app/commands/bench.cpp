@@ -220,7 +220,9 @@ void write_json(const std::string& path, const std::vector<bench_record>& record
 int run_bench(bench_options& o) {
   const interrupt_guard signals;  // SIGINT, SIGTERM: stop at the next pass, exit 128 + signal
   if (!o.json.empty()) check_json_folder(o.json);
-  scene s = load_scene_saying_warnings(o.scene, o.flags.access());
+  scene s = load_scene(o.scene, o.flags.access());
+  // What the loaders drew otherwise than the files ask (a missing MTL drawn gray), said once.
+  for (const std::string& w : s.warnings) std::fprintf(stderr, "rtvk: warning: %s\n", w.c_str());
   check_scene(s);
   const scene_overrides overrides = o.flags.overrides();
   overrides.apply_cameras(s);  // --colmap's views, a calibration's size

@@ -31,7 +31,7 @@ image_rgb8 encoded(const partial_image& p) {
       const float* c = &p.rgb[(std::size_t(y) * std::size_t(p.window.width) + std::size_t(x)) * 3];
       fb.at(x, y) = color(c[0], c[1], c[2]);
     }
-  return quantize(fb, p.gamma);
+  return quantize(fb, p.encoding());
 }
 
 // Two renders' linear colors: the mean squared error over pixels and channels (the noise of a

@@ -36,7 +36,7 @@ int run_merge(const merge_options& o) {
   if (format_for_path(o.output, "--output") == file_format::exr) {
     write_partial_exr(make_partial(m.fb, m.summary), o.output);
   } else {
-    write_image(quantize(m.fb, m.summary.gamma), o.output,
+    write_image(quantize(m.fb, m.summary.encoding()), o.output,
                 o.ppm_format == "P6" ? ppm_encoding::binary_p6 : ppm_encoding::ascii_p3);
   }
   if (!o.quiet)

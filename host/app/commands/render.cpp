@@ -125,11 +125,13 @@ void write_job(const run_context& run, const render_job& job, const framebuffer&
                                         job.camera_name,
                                         job.frame,
                                         version_string,
-                                        render_shader_identity()}),
+                                        render_shader_identity(),
+                                        run.s.render.transform,
+                                        run.s.render.exposure}),
                       job.output, aovs ? &*aovs : nullptr);
   } else {
     if (aovs) write_aov_files(run, job, *aovs);  // first: an image is never without its AOVs
-    write_image(quantize(fb, run.s.render.gamma), job.output, run.enc);
+    write_image(quantize(fb, run.s.render.encoding()), job.output, run.enc);
   }
   ++*run.written;
 }
@@ -207,8 +209,9 @@ bool check_against_cpu(const run_context& run, const render_job& job, const fram
   const framebuffer cpu_fb = draw_cpu(run, job);
   const double cpu_seconds = seconds_since(start);
   const agreement rule = agreement_for(run, job.cam);
-  const image_difference d = compare_images(quantize(gpu_fb, run.s.render.gamma),
-                                            quantize(cpu_fb, run.s.render.gamma), rule.tolerance);
+  const image_difference d =
+      compare_images(quantize(gpu_fb, run.s.render.encoding()),
+                     quantize(cpu_fb, run.s.render.encoding()), rule.tolerance);
   const bool ok = agrees(d, rule);
   std::fprintf(stderr,
                "rtvk: %sgpu vs cpu (%.3f s): %s -- PSNR %.1f dB, max %d levels, mean %.4f, %.4f%% "
@@ -320,8 +323,10 @@ int run_render(render_options o) {
       throw usage_error("--aov " + o.aov + ": expected a comma-separated list of " + aov_names());
     aovs = *parsed;
   }
-  scene s = load_scene_saying_warnings(o.scene, o.flags.access());
+  scene s = load_scene(o.scene, o.flags.access());
   check_scene(s);
+  // What the loaders drew otherwise than the files ask (a missing MTL drawn gray), said once.
+  for (const std::string& w : s.warnings) std::fprintf(stderr, "rtvk: warning: %s\n", w.c_str());
   render_window win;
   const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags.overrides(), win);
   for (const render_job& j : jobs) check_output_size(j.output, win.width, win.height, "--output");
@@ -368,7 +373,7 @@ command_action add_render_command(CLI::App& app) {
   auto o = std::make_shared<render_options>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
   cmd->add_option(
-         "--scene", o->scene,
+         "--scene,scene", o->scene,
          "Built-in scene (see rtvk scene list), a .json scene file or a mesh (.obj, .gltf, .glb)")
       ->capture_default_str();
   cmd->add_option("--backend", o->backend,

@@ -21,8 +21,7 @@ command_action add_scene_command(CLI::App& app) {
   CLI::App* list = cmd->add_subcommand("list", "List the built-in scenes");
   return [name, dump, list, paths]() {
     if (dump->parsed()) {
-      std::fputs(dump_scene_json(load_scene_saying_warnings(*name, paths->access())).c_str(),
-                 stdout);
+      std::fputs(dump_scene_json(load_scene(*name, paths->access())).c_str(), stdout);
     } else if (list->parsed()) {
       for (const auto& n : builtin_scene_names()) std::printf("%s\n", n.c_str());
       std::printf("spheres:N (N from 1 to %u)\n", unsigned(max_scene_spheres));

@@ -1,21 +1,13 @@
 #include "scene_flags.h"
 
-#include <cstdio>
 #include <filesystem>
 #include <optional>
 
 #include "errors.h"
 #include "image_size.h"
 #include "render_settings.h"
-#include "scene_file.h"
 
 namespace rtvk {
-
-scene load_scene_saying_warnings(const std::string& name, const file_access& access) {
-  scene s = load_scene(name, access);
-  for (const std::string& w : s.warnings) std::fprintf(stderr, "rtvk: warning: %s\n", w.c_str());
-  return s;
-}
 namespace {
 
 // The value when its option was given on the command line.
@@ -101,6 +93,17 @@ void scene_flags::add_to(CLI::App& cmd) {
                                  "stratified pixels) or auto (default: lights where the scene has "
                                  "lights)")
                       ->group(group);
+  view_transform_opt_ =
+      cmd.add_option("--view-transform", view_transform_,
+                     "How 8-bit images (PNG, PPM, the viewer) encode the scene-linear light: "
+                     "standard (sRGB), filmic, agx (Blender 4's), linear or gamma (the scene's "
+                     "power law); default: the scene's (docs/color.md)")
+          ->group(group);
+  exposure_opt_ = cmd.add_option("--exposure", exposure_,
+                                 "Exposure in stops (EV), -16 to 16: the light times 2^EV before "
+                                 "the view transform; .exr keeps the unscaled light (default: the "
+                                 "scene's, 0)")
+                      ->group(group);
   add_lens_to(cmd);
   paths_.add_to(cmd);
 }
@@ -113,7 +116,7 @@ void scene_flags::add_lens_to(CLI::App& cmd) {
                                     "opencv or opencv-fisheye model, its intrinsics and image size")
                          ->group(lens);
   colmap_opt_ = cmd.add_option("--colmap", colmap_,
-                               "COLMAP text model folder (cameras.txt, images.txt): one camera "
+                               "COLMAP model folder (cameras.txt, images.txt, or .bin): one camera "
                                "per image, named after it, all rendered unless --camera picks")
                     ->group(lens);
   intrinsics_opt_ = cmd.add_option("--intrinsics", intrinsics_,
@@ -149,6 +152,8 @@ scene_overrides scene_flags::overrides() const {
           .shutter = if_given(shutter_opt_, shutter_),
           .orbit = if_given(orbit_opt_, orbit_),
           .sampling = if_given(sampling_opt_, sampling_),
+          .view_transform = if_given(view_transform_opt_, view_transform_),
+          .exposure = if_given(exposure_opt_, exposure_),
           .calibration = if_given(calibration_opt_, calibration_),
           .intrinsics = if_given(intrinsics_opt_, intrinsics_),
           .distortion = if_given(distortion_opt_, distortion_),

@@ -3,7 +3,6 @@
 #include <string>
 
 #include "confined_path.h"
-#include "scene.h"
 #include "scene_overrides.h"
 
 namespace rtvk {
@@ -21,11 +20,6 @@ class scene_path_flags {
   bool any_path_ = false;  // --allow-any-path
   std::string root_;       // --scene-root, "" when not given
 };
-
-// A scene by name (load_scene: built-in, scene file or mesh), its loaders' warnings (an optional
-// glTF extension ignored, ...) said once each on stderr: what every command that reads a scene
-// calls.
-scene load_scene_saying_warnings(const std::string& name, const file_access& access);
 
 // The command-line flags that override a scene's own settings (--width, --spp, --lookfrom, ...),
 // shared by `rtvk render` and `rtvk bench`: registered on a command, then read back as
@@ -54,6 +48,8 @@ class scene_flags {
   std::string projection_;
   std::string shutter_;
   std::string sampling_;
+  std::string view_transform_;
+  double exposure_ = 0;
   std::string calibration_, intrinsics_, distortion_, rolling_shutter_, colmap_;
   CLI::Option* width_opt_ = nullptr;
   CLI::Option* aspect_opt_ = nullptr;
@@ -71,6 +67,8 @@ class scene_flags {
   CLI::Option* fisheye_fov_opt_ = nullptr;
   CLI::Option* shutter_opt_ = nullptr;
   CLI::Option* sampling_opt_ = nullptr;
+  CLI::Option* view_transform_opt_ = nullptr;
+  CLI::Option* exposure_opt_ = nullptr;
   CLI::Option* calibration_opt_ = nullptr;
   CLI::Option* intrinsics_opt_ = nullptr;
   CLI::Option* distortion_opt_ = nullptr;

@@ -73,7 +73,9 @@ std::string render_flags(const std::string& scene_name, const view::viewer_resul
 int run_view(view_options o) {
   const interrupt_guard signals;  // SIGINT, SIGTERM: close the window cleanly
   if (!o.screenshot.empty()) output_pattern(o.screenshot, "--screenshot");  // checked up front
-  scene s = load_scene_saying_warnings(o.scene, o.flags.access());
+  scene s = load_scene(o.scene, o.flags.access());
+  // What the loaders drew otherwise than the files ask (a missing MTL drawn gray), said once.
+  for (const std::string& w : s.warnings) std::fprintf(stderr, "rtvk: warning: %s\n", w.c_str());
   const scene_overrides overrides = o.flags.overrides();
   overrides.apply_cameras(s);  // --colmap's views (--camera picks one), a calibration's size
   overrides.apply(s);
@@ -144,7 +146,7 @@ command_action add_view_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "view", "Open a window and render progressively on a Vulkan device (needs a display)");
   cmd->add_option(
-         "--scene", o->scene,
+         "--scene,scene", o->scene,
          "Built-in scene (also spheres:N), a .json scene file or a mesh (.obj, .gltf, .glb)")
       ->capture_default_str();
   cmd->add_option("--camera", o->camera, "Camera of the scene to start from; default: the first");

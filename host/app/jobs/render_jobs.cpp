@@ -61,6 +61,10 @@ std::string scene_identity(const scene& s) {
   std::string out = "rtvk scene identity 2|";
   const render_settings& r = s.render;
   append_bytes(out, r.width, r.aspect, r.max_depth, r.seed, r.gamma, r.jitter);
+  // The view transform and exposure after a marker, where they are not the books' power law at
+  // 0 EV: renders encoded as before keep their identity.
+  if (r.transform != view_transform::gamma || r.exposure != 0)
+    append_bytes(out, std::uint8_t(0x56), r.transform, r.exposure);
   append_bytes(out, s.sky.horizon, s.sky.zenith);
   for (const named_material& m : s.materials)
     append_bytes(out, m.m.type, m.m.albedo, m.m.fuzz, m.m.ir);
@@ -83,7 +87,8 @@ std::string scene_identity(const scene& s) {
   triangles(s.triangles, s.shading);
   // Disks after a marker of their own, the groups' with them: scenes without keep their identity.
   const auto disks = [&](const std::vector<disk>& list) {
-    for (const disk& d : list) append_bytes(out, std::uint8_t(0x44), d.center, d.normal, d.radius, d.material);
+    for (const disk& d : list)
+      append_bytes(out, std::uint8_t(0x44), d.center, d.normal, d.radius, d.material);
   };
   disks(s.disks);
   // Groups and their instances after markers of their own: scenes without keep their identity.

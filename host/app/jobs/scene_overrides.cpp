@@ -69,6 +69,16 @@ void apply_render(const scene_overrides& o, render_settings& r) {
     else
       throw usage_error("--sampling " + *o.sampling + ": expected plain, lights or auto");
   }
+  if (o.view_transform) {
+    const auto t = view_transform_from_name(*o.view_transform);
+    if (!t)
+      throw usage_error("--view-transform " + *o.view_transform + ": expected " +
+                        view_transform_words);
+    r.transform = *t;
+  }
+  if (o.exposure)
+    r.exposure = checked(*o.exposure, std::abs(*o.exposure) <= max_exposure, "--exposure",
+                         "in [-16, 16] EV");
 }
 
 void apply_pose(const scene_overrides& o, camera_pose& c) {

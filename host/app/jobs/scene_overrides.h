@@ -11,27 +11,29 @@ namespace rtvk {
 // `rtvk render` and `rtvk bench`. Each applies only when given; values are as typed, checked
 // when applied, and the messages name the flags. scene_flags fills it from the command line.
 struct scene_overrides {
-  std::optional<int> width;               // image width, pixels
-  std::optional<std::string> aspect;      // aspect ratio as typed, W:H or a decimal
-  std::optional<int> spp;                 // samples per pixel
-  std::optional<int> depth;               // most bounces per path
-  std::optional<long long> seed;          // random seed, 0 to 2^32 - 1
-  std::optional<std::string> lookfrom;    // camera position as typed, x,y,z
-  std::optional<std::string> lookat;      // point looked at as typed, x,y,z
-  std::optional<std::string> vup;         // up direction as typed, x,y,z
-  std::optional<double> vfov;             // vertical field of view, degrees
-  std::optional<double> aperture;         // lens diameter, scene units (0: pinhole)
-  std::optional<double> focus_dist;       // distance in focus, scene units
-  std::optional<std::string> projection;  // camera model, by name (projection_from_name)
-  std::optional<double> fisheye_fov;      // fisheye field of view, degrees
-  std::optional<std::string> shutter;     // OPEN:CLOSE as typed, seconds after the frame's time
-  std::optional<double> orbit;            // seconds per turn of the built-in orbit path
-  std::optional<std::string> sampling;    // plain, lights or auto (sampling_mode)
-  std::optional<std::string> calibration;  // OpenCV calibration file (calibration_file.h)
-  std::optional<std::string> intrinsics;   // fx,fy,cx,cy as typed, pixels
-  std::optional<std::string> distortion;   // the model's coefficients as typed, comma-separated
+  std::optional<int> width;                   // image width, pixels
+  std::optional<std::string> aspect;          // aspect ratio as typed, W:H or a decimal
+  std::optional<int> spp;                     // samples per pixel
+  std::optional<int> depth;                   // most bounces per path
+  std::optional<long long> seed;              // random seed, 0 to 2^32 - 1
+  std::optional<std::string> lookfrom;        // camera position as typed, x,y,z
+  std::optional<std::string> lookat;          // point looked at as typed, x,y,z
+  std::optional<std::string> vup;             // up direction as typed, x,y,z
+  std::optional<double> vfov;                 // vertical field of view, degrees
+  std::optional<double> aperture;             // lens diameter, scene units (0: pinhole)
+  std::optional<double> focus_dist;           // distance in focus, scene units
+  std::optional<std::string> projection;      // camera model, by name (projection_from_name)
+  std::optional<double> fisheye_fov;          // fisheye field of view, degrees
+  std::optional<std::string> shutter;         // OPEN:CLOSE as typed, seconds after the frame's time
+  std::optional<double> orbit;                // seconds per turn of the built-in orbit path
+  std::optional<std::string> sampling;        // plain, lights or auto (sampling_mode)
+  std::optional<std::string> view_transform;  // standard, filmic, agx, linear or gamma
+  std::optional<double> exposure;             // EV, -16 to 16
+  std::optional<std::string> calibration;     // OpenCV calibration file (calibration_file.h)
+  std::optional<std::string> intrinsics;      // fx,fy,cx,cy as typed, pixels
+  std::optional<std::string> distortion;      // the model's coefficients as typed, comma-separated
   std::optional<std::string> rolling_shutter;  // DIRECTION:SECONDS as typed
-  std::optional<std::string> colmap;       // a COLMAP text model's folder: one camera per view
+  std::optional<std::string> colmap;           // a COLMAP text model's folder: one camera per view
 
   // Replaces the scene's cameras with a COLMAP model's views (--colmap), and sets the image size
   // from the calibration or the views when no --width is given. Before the cameras are chosen.

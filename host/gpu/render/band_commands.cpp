@@ -17,13 +17,15 @@ void barrier(VkCommandBuffer cb, VkPipelineStageFlags src_stage, VkAccessFlags s
 }
 
 void record_tonemap(VkCommandBuffer cb, const compute_pipeline& tonemap, VkDeviceSize first,
-                    VkDeviceSize pixels, const device_info& dev) {
+                    VkDeviceSize pixels, const device_info& dev, tonemap_push style) {
   const VkDeviceSize groups = (pixels + 63) / 64;
   if (groups == 0) return;
   const VkDeviceSize row = std::min<VkDeviceSize>(groups, dev.limits.maxComputeWorkGroupCount[0]);
   tonemap.bind(cb);
-  const tonemap_push tp{std::uint32_t(first), std::uint32_t(pixels), std::uint32_t(row * 64)};
-  tonemap.push(cb, &tp, sizeof tp);
+  style.first = std::uint32_t(first);
+  style.pixels = std::uint32_t(pixels);
+  style.row_invocations = std::uint32_t(row * 64);
+  tonemap.push(cb, &style, sizeof style);
   tonemap.dispatch(cb, {std::uint32_t(row), std::uint32_t((groups + row - 1) / row), 1});
 }
 
@@ -84,7 +86,7 @@ void band_commands::record_readback(VkCommandBuffer cb, const band_pass& b) cons
   barrier(cb, compute_stage_, VK_ACCESS_SHADER_WRITE_BIT, compute_stage_ | transfer_stage,
           VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
   if (kept_) {  // encoded into the image's bytes, which stay for the viewer to show
-    record_tonemap(cb, *tonemap_, VkDeviceSize(width_) * b.y0, pixels, dev);
+    record_tonemap(cb, *tonemap_, VkDeviceSize(width_) * b.y0, pixels, dev, d_.tonemap_style);
     barrier(cb, compute_stage_, VK_ACCESS_SHADER_WRITE_BIT, compute_stage_ | transfer_stage,
             VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
     return;
@@ -92,7 +94,7 @@ void band_commands::record_readback(VkCommandBuffer cb, const band_pass& b) cons
   VkBufferCopy copy{0, 0, pixels * sizeof(pixel_sum)};
   VkBuffer from = d_.targets.sums.get();
   if (tonemap_) {
-    record_tonemap(cb, *tonemap_, 0, pixels, dev);
+    record_tonemap(cb, *tonemap_, 0, pixels, dev, d_.tonemap_style);
     barrier(cb, compute_stage_, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
             VK_ACCESS_TRANSFER_READ_BIT);
     copy.size = pixels * 4;

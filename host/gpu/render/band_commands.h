@@ -27,8 +27,9 @@ void barrier(VkCommandBuffer cb, VkPipelineStageFlags src_stage, VkAccessFlags s
 // tonemap.comp over `pixels` sums from pixel `first`: 64 a workgroup, in rows of workgroups
 // within the device's workgroup count limit (and tiles of those rows, by
 // compute_pipeline::dispatch).
+// `style` holds the encoding's transform and mean scale (its other fields are set here).
 void record_tonemap(VkCommandBuffer cb, const compute_pipeline& tonemap, VkDeviceSize first,
-                    VkDeviceSize pixels, const device_info& dev);
+                    VkDeviceSize pixels, const device_info& dev, tonemap_push style);
 
 // What band_commands uses of its engine. `drawn` (some band was drawn before) carries over from
 // one render to the next.
@@ -38,6 +39,7 @@ struct band_device {
   const device_timer& timer;
   std::array<std::uint32_t, 2> wg;  // workgroup size
   bool& drawn;
+  tonemap_push tonemap_style = {};  // the encoding's transform and mean scale
 };
 
 // The engine's band_queue. The last submission of a band ends with its readback (sums, or

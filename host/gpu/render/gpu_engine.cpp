@@ -108,7 +108,7 @@ render_targets& gpu_engine::targets_for(VkDeviceSize pixels) {
   check_device_fits(ctx_, wanted, "--scene " + scene_name_);
   targets_.reset();  // no submission is in flight; the old ones go first to make room
   ray_times_.reset();
-  thresholds_gamma_ = 0;
+  thresholds_for_.reset();
   try {
     targets_ = std::make_unique<render_targets>(ctx_, pixels);
     if (times) ray_times_ = make_ray_times(ctx_, pixels);
@@ -175,9 +175,12 @@ const compute_pipeline& gpu_engine::tonemap_pipeline() {
   return *tonemap_;
 }
 
-void gpu_engine::write_thresholds(double gamma) {
-  if (thresholds_gamma_ == gamma) return;
-  const byte_thresholds t = make_byte_thresholds(gamma, exponent_);
+void gpu_engine::write_thresholds(const display_encoding& e) {
+  tonemap_style_.transform = std::uint32_t(e.transform);
+  tonemap_style_.mean_scale = float(std::exp2(e.exposure - exponent_));
+  // AgX reads no thresholds; the others' tables depend on the curve, its gamma and exposure.
+  if (!e.per_channel() || thresholds_for_ == e) return;
+  const byte_thresholds t = make_byte_thresholds(e, exponent_);
   std::vector<uvec2> words(t.size());
   for (std::size_t k = 0; k < t.size(); ++k)
     words[k] = uvec2(std::uint32_t(t[k]), std::uint32_t(t[k] >> 32));
@@ -187,15 +190,15 @@ void gpu_engine::write_thresholds(double gamma) {
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage,
             VK_ACCESS_SHADER_READ_BIT);
   });
-  thresholds_gamma_ = gamma;
+  thresholds_for_ = e;
 }
 
 std::vector<std::uint32_t> gpu_engine::encode_sums(const std::vector<pixel_sum>& sums,
-                                                   double gamma) {
+                                                   const display_encoding& e) {
   if (sums.empty()) return {};
   render_targets& t = targets_for(sums.size());
   const compute_pipeline& tonemap = tonemap_pipeline();
-  write_thresholds(gamma);
+  write_thresholds(e);
   const VkDeviceSize bytes = sums.size() * sizeof(pixel_sum);
   gpu_buffer staging(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, memory_use::staging);
   staging.write(sums.data(), bytes);
@@ -207,7 +210,7 @@ std::vector<std::uint32_t> gpu_engine::encode_sums(const std::vector<pixel_sum>&
     const VkBufferCopy in{0, 0, bytes};
     vkCmdCopyBuffer(cb, staging.get(), t.sums.get(), 1, &in);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, compute_stage, shader_rw);
-    record_tonemap(cb, tonemap, 0, sums.size(), ctx_.device());
+    record_tonemap(cb, tonemap, 0, sums.size(), ctx_.device(), tonemap_style_);
     barrier(cb, compute_stage, VK_ACCESS_SHADER_WRITE_BIT, transfer_stage,
             VK_ACCESS_TRANSFER_READ_BIT);
     const VkBufferCopy out{0, 0, sums.size() * 4};
@@ -242,7 +245,7 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
   const compute_pipeline* tonemap = nullptr;
   if (kind != readback_kind::sums) {
     tonemap = &tonemap_pipeline();
-    write_thresholds(rs.gamma);
+    write_thresholds(rs.encoding());
   }
   render_push push = make_push(sky_, rs, win, scene_, exponent_);
   if (kept) push.sample_begin = 0;  // a kept pixel's count of samples is its next sample's index
@@ -254,7 +257,7 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
     return is_calibrated(c.projection()) || c.frame().readout != 0;
   });
   band_commands commands(
-      {ctx_, targets, timer_, wg_, drawn_},
+      {ctx_, targets, timer_, wg_, drawn_, tonemap_style_},
       pipeline_for(rs.jitter, lens, count_rays, push.light_count > 0, calibrated), tonemap, push,
       std::uint32_t(win.width), kept, kept ? std::uint32_t(win.sample_begin) : 0);
   band_scheduler bands(commands, {pacer_, trace_cost_, simulated_cuts_}, win, push.sample_limit,

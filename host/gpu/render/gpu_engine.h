@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,7 +57,7 @@ class gpu_engine {
                                         const render_window& win,
                                         const sample_progress& progress = {},
                                         render_stats* stats = nullptr);
-  // The same render encoded to 8 bits on the device (tonemap.comp, with rs.gamma): bit for bit
+  // The same render encoded to 8 bits on the device (tonemap.comp, with rs.encoding()): bit for bit
   // encode_sum of render_sums' sums, and 4 bytes a pixel read back instead of 48.
   std::vector<image_rgb8> render_encoded(const std::vector<camera>& views,
                                          const render_settings& rs, const render_window& win,
@@ -71,7 +72,7 @@ class gpu_engine {
   // win.sample_end) of `cam` to rows [win.y, win.y + win.height) of the image, whose sums stay in
   // the engine between calls (no readback, no clear; a call from sample 0 starts its rows afresh,
   // and every pixel of the rows must hold exactly win.sample_begin samples), then encodes those
-  // rows with rs.gamma into accumulated_bytes(). The window spans the image's width. The bytes
+  // rows with rs.encoding() into accumulated_bytes(). The window spans the image's width. The bytes
   // are bit for bit render_encoded's for the same samples, however the calls split them.
   // Throws usage_error when the image's sums do not fit one storage buffer (see
   // accumulation_fits).
@@ -88,9 +89,13 @@ class gpu_engine {
   // Those bytes copied back, as RGB (screenshots).
   image_rgb8 read_accumulation(int width, int height);
 
-  // tonemap.comp run on the given sums with this gamma: RGBA8 per pixel (red in the low byte).
-  // For tests of the encoding at its edges, where a render's sums rarely fall.
-  std::vector<std::uint32_t> encode_sums(const std::vector<pixel_sum>& sums, double gamma);
+  // tonemap.comp run on the given sums with this gamma (or encoding): RGBA8 per pixel (red in
+  // the low byte). For tests of the encoding at its edges, where a render's sums rarely fall.
+  std::vector<std::uint32_t> encode_sums(const std::vector<pixel_sum>& sums, double gamma) {
+    return encode_sums(sums, display_encoding{view_transform::gamma, gamma, 0});
+  }
+  std::vector<std::uint32_t> encode_sums(const std::vector<pixel_sum>& sums,
+                                         const display_encoding& e);
 
   int sum_exponent() const { return exponent_; }           // F of every render of this scene
   double setup_seconds() const { return setup_seconds_; }  // the constructor, wall clock
@@ -134,7 +139,8 @@ class gpu_engine {
                                      bool calibrated);
   const compute_pipeline& tonemap_pipeline();
   void rebind_all();
-  void write_thresholds(double gamma);
+  // The thresholds of `e` into their buffer (when not there already), and tonemap_style_.
+  void write_thresholds(const display_encoding& e);
 
   std::chrono::steady_clock::time_point start_;  // construction began
   gpu_context& ctx_;
@@ -162,8 +168,9 @@ class gpu_engine {
   std::unique_ptr<compute_pipeline> tonemap_;  // made on first use
   device_timer timer_;                         // device time of each submission
   int exponent_;                               // F of the sums (sample_sum.h)
-  double thresholds_gamma_ = 0;                // the thresholds buffer holds this gamma's; 0: none
-  bool drawn_ = false;                         // some band was drawn before
+  std::optional<display_encoding> thresholds_for_;  // what the thresholds buffer holds, if any
+  tonemap_push tonemap_style_ = {};                 // tonemap.comp's transform and mean scale
+  bool drawn_ = false;                              // some band was drawn before
   pacer pacer_;               // samples per dispatch and per submission, from measured times
   double setup_seconds_ = 0;  // the constructor took
 };

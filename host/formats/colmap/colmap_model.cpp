@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "colmap_views.h"
 #include "errors.h"
 #include "format.h"
 #include "image_size.h"
@@ -23,49 +24,6 @@ namespace {
 constexpr std::uint64_t max_cameras_bytes = std::uint64_t(16) << 20;
 // images.txt holds every image's 2D points too: large models reach hundreds of MiB.
 constexpr std::uint64_t max_images_bytes = std::uint64_t(256) << 20;
-
-// Where a parameter of a COLMAP camera model goes in lens_intrinsics: a slot below 0 is a focal
-// length or the principal point, 0 and up the index in k (OpenCV's order).
-enum param_slot : int { focal = -1, focal_x = -2, focal_y = -3, center_x = -4, center_y = -5 };
-
-struct camera_model {
-  std::string_view name;     // as cameras.txt writes it
-  rtvk::projection model;    // what rtvk renders it with
-  std::string_view params;   // the parameters' names, for messages
-  std::array<int, 12> slot;  // where each parameter goes
-  int count;                 // how many parameters
-};
-
-// COLMAP's SIMPLE_RADIAL and RADIAL are OpenCV's k1 (and k2) with p1 = p2 = 0; OPENCV and
-// FULL_OPENCV are OpenCV's k1 k2 p1 p2 [k3 k4 k5 k6]; OPENCV_FISHEYE is OpenCV's fisheye.
-constexpr camera_model camera_models[] = {
-    {"SIMPLE_PINHOLE", projection::opencv, "f cx cy", {focal, center_x, center_y}, 3},
-    {"PINHOLE", projection::opencv, "fx fy cx cy", {focal_x, focal_y, center_x, center_y}, 4},
-    {"SIMPLE_RADIAL", projection::opencv, "f cx cy k", {focal, center_x, center_y, 0}, 4},
-    {"RADIAL", projection::opencv, "f cx cy k1 k2", {focal, center_x, center_y, 0, 1}, 5},
-    {"OPENCV",
-     projection::opencv,
-     "fx fy cx cy k1 k2 p1 p2",
-     {focal_x, focal_y, center_x, center_y, 0, 1, 2, 3},
-     8},
-    {"FULL_OPENCV",
-     projection::opencv,
-     "fx fy cx cy k1 k2 p1 p2 k3 k4 k5 k6",
-     {focal_x, focal_y, center_x, center_y, 0, 1, 2, 3, 4, 5, 6, 7},
-     12},
-    {"OPENCV_FISHEYE",
-     projection::opencv_fisheye,
-     "fx fy cx cy k1 k2 k3 k4",
-     {focal_x, focal_y, center_x, center_y, 0, 1, 2, 3},
-     8},
-};
-
-std::string supported_models() {
-  std::string out;
-  for (const camera_model& m : camera_models)
-    out += (out.empty() ? "" : ", ") + std::string(m.name);
-  return out;
-}
 
 [[noreturn]] void fail(const std::string& file, int line, const std::string& what) {
   throw usage_error(file + ":" + std::to_string(line) + ": " + what);
@@ -163,12 +121,11 @@ std::pair<std::uint64_t, colmap_camera> read_camera(const text_line& l, const st
   if (f.size() < 4)
     fail(file, l.number, "expected CAMERA_ID MODEL WIDTH HEIGHT PARAMS[], got " + quote(l.text));
   const std::uint64_t camera_id = id(f[0], file, l.number, "CAMERA_ID");
-  const auto spec = std::find_if(std::begin(camera_models), std::end(camera_models),
-                                 [&](const camera_model& m) { return m.name == f[1]; });
-  if (spec == std::end(camera_models))
+  const colmap_camera_model* spec = colmap_model_named(f[1]);
+  if (!spec)
     fail(file, l.number,
          "camera model " + std::string(f[1].substr(0, 40)) +
-             " is not supported; supported: " + supported_models());
+             " is not supported; supported: " + colmap_supported_models());
   colmap_camera c{spec->model, {}, l.number};
   c.lens.width = image_side(f[2], file, l.number, "WIDTH");
   c.lens.height = image_side(f[3], file, l.number, "HEIGHT");
@@ -179,16 +136,8 @@ std::pair<std::uint64_t, colmap_camera> read_camera(const text_line& l, const st
              std::to_string(f.size() - 4));
   for (int i = 0; i < spec->count; ++i) {
     const double x = number(f[4 + i], file, l.number, "parameter " + std::to_string(i + 1));
-    const int s = spec->slot[i];
-    if ((s == focal || s == focal_x || s == focal_y) && !(x > 0))
+    if (!put_colmap_param(*spec, i, x, c.lens))
       fail(file, l.number, "focal length must be > 0, got " + quote(f[4 + i]));
-    if (s == focal || s == focal_x) c.lens.fx = x;
-    if (s == focal || s == focal_y) c.lens.fy = x;
-    // COLMAP's (0, 0) is the image's top-left corner, rtvk's (and OpenCV's) the center of the
-    // first pixel, half a pixel right of and below that corner.
-    if (s == center_x) c.lens.cx = x - 0.5;
-    if (s == center_y) c.lens.cy = x - 0.5;
-    if (s >= 0) c.lens.k[std::size_t(s)] = x;
   }
   return {camera_id, c};
 }
@@ -207,74 +156,6 @@ std::map<std::uint64_t, colmap_camera> read_cameras(std::string_view text,
   }
   return cameras;
 }
-
-// The pose of a camera that maps world points p to R p + t (R from the unit quaternion q, as
-// COLMAP's world-to-camera pose): its center is -R^T t and its axes in the world are R's rows,
-// x right, y down, z forward (OpenCV's frame). rtvk's camera then gets u = x, v = -y, w = -z.
-camera_pose pose_of(std::array<double, 4> q, const vec3& t, const std::string& file, int line) {
-  // Scaled before it is squared, so that neither tiny nor huge numbers lose the rotation.
-  const double largest = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
-  if (largest == 0) fail(file, line, "the rotation quaternion is zero");
-  for (double& c : q) c /= largest;
-  const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  const double w = q[0] / norm, x = q[1] / norm, y = q[2] / norm, z = q[3] / norm;
-  const vec3 row_x(1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y));
-  const vec3 row_y(2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x));
-  const vec3 row_z(2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y));
-  // -R^T t: the rows weighted by t's components.
-  const point3 center = -(t.x * row_x + t.y * row_y + t.z * row_z);
-  if (!std::isfinite(center.x) || !std::isfinite(center.y) || !std::isfinite(center.z))
-    fail(file, line, "the camera's center -R^T t is not finite");
-  camera_pose pose;
-  pose.lookfrom = center;
-  pose.lookat = center + row_z;
-  pose.vup = -row_y;
-  // So far from the origin that a unit step is rounded away, the view direction would be lost.
-  if (glm::length((pose.lookat - pose.lookfrom) - row_z) > 1e-6)
-    fail(file, line, "the camera's center is too far from the origin to keep its direction");
-  return pose;
-}
-
-// "cam0/IMG 1.jpg" -> "cam0_IMG_1" (see the header), before it is made unique.
-std::string base_name(std::string_view image_name) {
-  const std::size_t folder = image_name.find_last_of("/\\");
-  const std::size_t file_start = folder == std::string_view::npos ? 0 : folder + 1;
-  const std::size_t dot = image_name.rfind('.');
-  if (dot != std::string_view::npos && dot > file_start) image_name = image_name.substr(0, dot);
-  std::string out;
-  for (char c : image_name.substr(0, 64)) {
-    const bool keep =
-        std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_';
-    out += keep ? c : '_';
-  }
-  if (!out.empty() && out[0] == '.') out[0] = '_';
-  if (out.empty()) return "image";
-  if (out == "all") return "all_";
-  return out;
-}
-
-std::string lower(std::string s) {
-  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-// Hands out names no other view has, ignoring case.
-class name_pool {
- public:
-  std::string take(const std::string& base) {
-    if (used_.insert(lower(base)).second) return base;
-    int& n = next_[lower(base)];  // each base's counter only moves forward: linear overall
-    for (n = std::max(n, 2);; ++n) {
-      const std::string suffix = "-" + std::to_string(n);
-      const std::string name = base.substr(0, 64 - suffix.size()) + suffix;
-      if (used_.insert(lower(name)).second) return name;
-    }
-  }
-
- private:
-  std::unordered_set<std::string> used_;       // the names handed out, lower case
-  std::unordered_map<std::string, int> next_;  // a base's next suffix to try
-};
 
 // The second line of an image: X Y POINT3D_ID triples. Checked, so that a missing line (the
 // next image's line read in its place) is caught rather than skipping every other image.
@@ -309,7 +190,7 @@ std::vector<colmap_view> parse_colmap_model(const std::string& cameras_txt,
   while (!lines.empty() && trim(lines.back().text).empty()) lines.pop_back();  // the file's end
   std::vector<colmap_view> views;
   std::unordered_map<std::uint64_t, int> image_lines;  // image ID -> its line
-  name_pool names;
+  colmap_names names;
   // Strictly by pairs: the image's line, then its 2D points (blank when it has none; the last
   // image's may be missing).
   for (std::size_t i = 0; i < lines.size(); i += 2) {
@@ -342,8 +223,8 @@ std::vector<colmap_view> parse_colmap_model(const std::string& cameras_txt,
 
     colmap_view view;
     view.image_name = std::string(image_name);
-    view.name = names.take(base_name(image_name));
-    view.pose = pose_of(q, t, images_file, l.number);
+    view.name = names.take(image_name);
+    view.pose = colmap_pose(q, t, images_file + ":" + std::to_string(l.number));
     view.pose.projection = camera->second.model;
     view.pose.intrinsics = camera->second.lens;
     views.push_back(std::move(view));
@@ -357,13 +238,14 @@ std::vector<colmap_view> read_colmap_model(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir, ec))
     throw usage_error(dir.string() +
                       ": is not a folder (a COLMAP model is a folder holding "
-                      "cameras.txt and images.txt)");
-  for (const char* part : {"cameras", "images"}) {
-    const std::string txt = std::string(part) + ".txt", bin = std::string(part) + ".bin";
-    if (!std::filesystem::exists(dir / txt, ec) && std::filesystem::exists(dir / bin, ec))
-      throw usage_error(dir.string() + ": holds COLMAP's binary model (" + bin + ") but no " + txt +
-                        "; convert it with `colmap model_converter --input_path " + dir.string() +
-                        " --output_path " + dir.string() + " --output_type TXT`");
+                      "cameras.txt and images.txt, or cameras.bin and images.bin)");
+  if (!std::filesystem::exists(dir / "cameras.txt", ec) &&
+      std::filesystem::exists(dir / "cameras.bin", ec)) {
+    const std::string cameras =
+        read_regular_file(dir / "cameras.bin", max_cameras_bytes, "COLMAP cameras file");
+    const std::string images =
+        read_regular_file(dir / "images.bin", max_images_bytes, "COLMAP images file");
+    return parse_colmap_binary(cameras, images, dir.string());
   }
   const std::string cameras =
       read_regular_file(dir / "cameras.txt", max_cameras_bytes, "COLMAP cameras file");

@@ -1,6 +1,7 @@
 #pragma once
-// COLMAP's text model (cameras.txt and images.txt, as `colmap model_converter --output_type TXT`
-// writes them): one rtvk camera per registered image, placed and calibrated as COLMAP solved it.
+// COLMAP's models, text (cameras.txt and images.txt, as `colmap model_converter --output_type TXT`
+// writes them) or binary (cameras.bin and images.bin, what COLMAP writes by default): one rtvk
+// camera per registered image, placed and calibrated as COLMAP solved it.
 //
 // Camera models: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV and FULL_OPENCV become
 // opencv (coefficients in OpenCV's order k1 k2 p1 p2 k3 k4 k5 k6, the missing ones 0);
@@ -29,9 +30,9 @@ struct colmap_view {
                            // +z, vup its -y; projection opencv or opencv_fisheye, intrinsics
 };
 
-// Reads DIR/cameras.txt and DIR/images.txt: one view per image, in images.txt's order. A folder
-// with the binary model (cameras.bin) but no cameras.txt is refused with the command that converts
-// it. Throws usage_error.
+// Reads DIR/cameras.txt and DIR/images.txt, or where there is no cameras.txt but a cameras.bin,
+// DIR/cameras.bin and DIR/images.bin: one view per image, in the images file's order. Throws
+// usage_error.
 std::vector<colmap_view> read_colmap_model(const std::filesystem::path& dir);
 
 // The same from the two files' text; `dir_name` is the folder, for messages, which read
@@ -39,5 +40,12 @@ std::vector<colmap_view> read_colmap_model(const std::filesystem::path& dir);
 std::vector<colmap_view> parse_colmap_model(const std::string& cameras_txt,
                                             const std::string& images_txt,
                                             const std::string& dir_name);
+
+// The same from the binary files' bytes (colmap_binary.cpp says their layout); messages read
+// "DIR/images.bin: image 2 of 5, at byte 130: QW: what". Throws usage_error; at least one image
+// is returned.
+std::vector<colmap_view> parse_colmap_binary(const std::string& cameras_bin,
+                                             const std::string& images_bin,
+                                             const std::string& dir_name);
 
 }  // namespace rtvk
