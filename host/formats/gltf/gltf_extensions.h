@@ -14,10 +14,11 @@ namespace rtvk {
 // KHR_draco_mesh_compression and EXT_meshopt_compression.
 bool gltfx_honours(const std::string& ext);
 
-// A glTF's bytes (.glb when `binary`) with each EXT_meshopt_compression fallback buffer that has
-// no uri given a stand-in of 4 bytes, so that tinygltf parses the file: such a buffer holds
-// nothing until the views that point into it are decoded (gltfx_decompress). Bytes without the
-// extension come back unchanged.
+// A glTF's bytes (.glb when `binary`) as tinygltf can parse them: each EXT_meshopt_compression
+// fallback buffer that has no uri given a stand-in of 4 bytes (it holds nothing until the views
+// that point into it are decoded), each KHR_draco_mesh_compression primitive's indices accessor
+// (which has no view) dropped for the decoded faces. Bytes without either extension come back
+// unchanged.
 std::string gltfx_prepare(const std::string& bytes, bool binary);
 
 // Decodes every EXT_meshopt_compression buffer view into a buffer of its own, then every

@@ -5,7 +5,6 @@
 #include <cstring>
 
 #include <meshoptimizer.h>
-#include <nlohmann/json.hpp>
 
 #include "errors.h"
 #include "gltf_extensions.h"
@@ -100,55 +99,7 @@ void decode_view(tinygltf::Model& m, std::size_t index, const tinygltf::Value& e
   m.buffers.push_back(std::move(decoded));
 }
 
-// The stand-in for a fallback buffer without data: tinygltf refuses a buffer without uri (a
-// .gltf) or reads the .glb's own chunk into it; 4 zero bytes parse everywhere.
-void stand_in_fallbacks(nlohmann::json& doc) {
-  if (!doc.is_object() || !doc.contains("buffers") || !doc["buffers"].is_array()) return;
-  for (nlohmann::json& b : doc["buffers"]) {
-    if (!b.is_object() || b.contains("uri")) continue;
-    const nlohmann::json* ext = b.contains("extensions") && b["extensions"].is_object() &&
-                                        b["extensions"].contains(meshopt_ext)
-                                    ? &b["extensions"][meshopt_ext]
-                                    : nullptr;
-    if (!ext || !ext->is_object() || ext->value("fallback", false) != true) continue;
-    b["uri"] = "data:application/octet-stream;base64,AAAAAA==";
-    b["byteLength"] = 4;
-  }
-}
-
-std::uint32_t le32(const std::string& s, std::size_t at) {
-  std::uint32_t v;
-  std::memcpy(&v, s.data() + at, 4);
-  return v;
-}
-void put_le32(std::string& s, std::size_t at, std::uint32_t v) {
-  std::memcpy(s.data() + at, &v, 4);
-}
-
 }  // namespace
-
-std::string gltfx_prepare(const std::string& bytes, bool binary) {
-  if (bytes.find(meshopt_ext) == std::string::npos) return bytes;
-  if (!binary) {
-    nlohmann::json doc = nlohmann::json::parse(bytes, nullptr, false);
-    if (doc.is_discarded()) return bytes;  // tinygltf says what is wrong
-    stand_in_fallbacks(doc);
-    return doc.dump();
-  }
-  // .glb: a 12-byte header (magic, version, length), then the JSON chunk (length, type, text).
-  if (bytes.size() < 20 || le32(bytes, 16) != 0x4E4F534Au) return bytes;
-  const std::uint64_t json_length = le32(bytes, 12);
-  if (json_length > bytes.size() - 20) return bytes;
-  nlohmann::json doc = nlohmann::json::parse(bytes.substr(20, json_length), nullptr, false);
-  if (doc.is_discarded()) return bytes;
-  stand_in_fallbacks(doc);
-  std::string json = doc.dump();
-  json.append((4 - json.size() % 4) % 4, ' ');  // chunks stay 4-byte aligned
-  std::string out = bytes.substr(0, 20) + json + bytes.substr(20 + json_length);
-  put_le32(out, 8, std::uint32_t(out.size()));
-  put_le32(out, 12, std::uint32_t(json.size()));
-  return out;
-}
 
 void decode_meshopt_views(tinygltf::Model& m, const std::string& name) {
   for (std::size_t i = 0; i < m.bufferViews.size(); ++i) {
@@ -156,6 +107,23 @@ void decode_meshopt_views(tinygltf::Model& m, const std::string& name) {
     if (ext == m.bufferViews[i].extensions.end()) continue;
     decode_view(m, i, ext->second,
                 name + ": bufferViews " + std::to_string(i) + ": " + meshopt_ext);
+  }
+}
+
+// The stand-in for a fallback buffer without data: tinygltf refuses a buffer without uri (a
+// .gltf) or reads the .glb's own chunk into it; 4 zero bytes parse everywhere.
+void stand_in_fallbacks(nlohmann::json& doc) {
+  const auto buffers = doc.find("buffers");
+  if (buffers == doc.end() || !buffers->is_array()) return;
+  for (nlohmann::json& b : *buffers) {
+    if (!b.is_object() || b.contains("uri")) continue;
+    const nlohmann::json fallback = nlohmann::json::object({{meshopt_ext, {{"fallback", true}}}});
+    const auto ext = b.find("extensions");
+    if (ext == b.end() || !ext->is_object() || !ext->contains(meshopt_ext) ||
+        (*ext)[meshopt_ext] != fallback[meshopt_ext])
+      continue;
+    b["uri"] = "data:application/octet-stream;base64,AAAAAA==";
+    b["byteLength"] = 4;
   }
 }
 

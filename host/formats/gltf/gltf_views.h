@@ -5,6 +5,7 @@
 #include <string>
 
 #include <tiny_gltf.h>
+#include <nlohmann/json.hpp>
 
 namespace rtvk {
 
@@ -30,5 +31,9 @@ view_span view_bytes(const tinygltf::Model& m, int index, Fail fail) {
 
 // Decodes each EXT_meshopt_compression view of `m` into a buffer of its own (gltf_meshopt.cpp).
 void decode_meshopt_views(tinygltf::Model& m, const std::string& name);
+
+// Gives each EXT_meshopt_compression fallback buffer without uri 4 bytes of data URI, so that
+// tinygltf parses the file (gltf_meshopt.cpp; gltfx_prepare calls it).
+void stand_in_fallbacks(nlohmann::json& doc);
 
 }  // namespace rtvk
