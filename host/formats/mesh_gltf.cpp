@@ -377,8 +377,8 @@ std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file,
   const std::string bytes =
       read_regular_file(file, max_mesh_file_bytes, "glTF file (" + name + ")");
   const std::filesystem::path base = file.parent_path();
-  const tinygltf::Model model =
-      parse_gltf(bytes, kind == "glb", file.string(), base.empty() ? "." : base, guard);
+  const tinygltf::Model model = parse_gltf(gltfx_prepare(bytes, kind == "glb"), kind == "glb",
+                                           file.string(), base.empty() ? "." : base, guard);
   if (index >= model.images.size() || model.images[index].image.empty())
     throw usage_error(name + ": " + file.string() + " has no image " + std::to_string(index));
   const std::vector<unsigned char>& img = model.images[index].image;

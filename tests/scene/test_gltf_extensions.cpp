@@ -10,6 +10,7 @@
 #include "errors.h"
 #include "gltfx_helpers.h"
 #include "mesh_file.h"
+#include "scene_file.h"
 #include "temp_dir.h"
 
 namespace rtvk {
@@ -131,6 +132,18 @@ TEST(GltfDraco, AStreamThatDoesNotDecodeIsRefusedByFileAndPrimitive) {
   cut.replace(bin_start, 5, "DRACX");
   EXPECT_NE(gltfx_refusal(cut, "glb").find("the Draco stream does not decode"), std::string::npos)
       << gltfx_refusal(cut, "glb");
+}
+
+// A dumped scene names the Draco Duck's texture as "DuckDraco.gltf#images/0": reading it back
+// parses the Draco file again, for the image alone.
+TEST(GltfDraco, ADumpedDracoSceneReadsItsImageBack) {
+  const test::temp_dir dir;
+  for (const char* f : {"DuckDraco.gltf", "Duck.bin", "DuckCM.png"})
+    std::filesystem::copy_file(data_dir / "DuckDraco" / f, dir.path() / f);
+  const std::string dumped = dump_scene_json(mesh_scene(dir.path() / "DuckDraco.gltf"));
+  EXPECT_NE(dumped.find("DuckDraco.gltf#images/0"), std::string::npos);
+  write_bytes(dir.path() / "d.json", dumped);
+  EXPECT_EQ(dump_scene_json(load_scene_file(dir.path() / "d.json")), dumped);
 }
 
 // The plain Duck re-encoded with EXT_meshopt_compression: positions with the EXPONENTIAL
