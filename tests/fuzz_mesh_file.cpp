@@ -3,7 +3,7 @@
 // anything else: .glb); the rest is the file. Any input may be rejected, but only with
 // usage_error; anything else -- a crash, another exception, undefined behaviour, a read past a
 // buffer -- is a bug. Every triangle accepted has finite vertices and a material that exists,
-// and every camera a glTF gives (formats/gltf/, as mesh_scene asks for them) a usable name and
+// and every camera a glTF gives (formats/gltf_ext/, as mesh_scene asks for them) a usable name and
 // path. Draco and meshopt streams are decoded on the way (seeds "draco", "meshopt").
 #include <cmath>
 #include <cstddef>

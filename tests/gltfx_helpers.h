@@ -1,5 +1,5 @@
 #pragma once
-// glTF files in the compressed forms formats/gltf/ decodes, made by the tests with the encoders
+// glTF files in the compressed forms formats/gltf_ext/ decodes, made by the tests with the encoders
 // of the same libraries: Draco (libdraco's encoder) and meshopt (meshoptimizer's), so that no
 // such file need be shipped; and a .glb packer for any JSON and binary chunk.
 #include <cstdint>

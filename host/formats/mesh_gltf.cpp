@@ -11,7 +11,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gltf_accessor.h"
-#include "gltf_extensions.h"
+#include "gltf_ext.h"
 #include "input_file.h"
 #include "mesh_builder.h"
 #include "mesh_file.h"
@@ -360,7 +360,7 @@ tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::str
 void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
                const std::filesystem::path& base, const mesh_placement& how,
                const path_guard& guard) {
-  // formats/gltf: meshopt fallback buffers stood in for, Draco and meshopt streams decoded into
+  // formats/gltf_ext: meshopt fallback buffers stood in for, Draco and meshopt streams decoded into
   // plain accessors before the walk, and the file's cameras after it.
   tinygltf::Model model = parse_gltf(gltfx_prepare(bytes, binary), binary, name, base, guard);
   gltfx_decompress(model, name);

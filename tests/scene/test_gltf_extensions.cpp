@@ -1,4 +1,4 @@
-// glTF's compression extensions and cameras (host/formats/gltf/): the Draco Duck is the plain
+// glTF's compression extensions and cameras (host/formats/gltf_ext/): the Draco Duck is the plain
 // Duck within its quantization, a meshopt Duck made here from the plain one is the same
 // triangles, corrupt streams are refused by file and primitive, and a file's cameras become the
 // scene's, posed as glTF poses them.

@@ -4,7 +4,7 @@
 // the decoded faces stand in for it, gltf_draco.cpp).
 #include <cstring>
 
-#include "gltf_extensions.h"
+#include "gltf_ext.h"
 #include "gltf_views.h"
 
 namespace rtvk {

@@ -1,5 +1,5 @@
 #pragma once
-// Internal to formats/gltf/: a buffer view's bytes, checked inside its buffer, and the meshopt
+// Internal to formats/gltf_ext/: a buffer view's bytes, checked inside its buffer, and the meshopt
 // pass that gltfx_decompress runs first.
 #include <cstddef>
 #include <string>

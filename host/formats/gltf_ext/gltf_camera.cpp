@@ -11,7 +11,7 @@
 
 #include "camera_path.h"
 #include "errors.h"
-#include "gltf_extensions.h"
+#include "gltf_ext.h"
 
 namespace rtvk {
 namespace {

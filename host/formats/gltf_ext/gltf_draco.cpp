@@ -7,7 +7,7 @@
 #include <draco/compression/decode.h>
 
 #include "errors.h"
-#include "gltf_extensions.h"
+#include "gltf_ext.h"
 #include "gltf_views.h"
 
 namespace rtvk {

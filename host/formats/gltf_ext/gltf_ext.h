@@ -1,5 +1,5 @@
 #pragma once
-// The glTF extensions formats/gltf/ reads for the glTF loader (formats/mesh_gltf.cpp): Draco
+// The glTF extensions formats/gltf_ext/ reads for the glTF loader (formats/mesh_gltf.cpp): Draco
 // and meshopt compression, decoded into the plain buffers, views and accessors the loader reads,
 // and the file's cameras. Every message reads "<file>: <where>: <what>" (usage_error, exit 2).
 #include <string>
