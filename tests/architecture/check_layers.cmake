@@ -10,8 +10,9 @@ set(may_use_camera "camera;base;shared")
 set(may_use_shapes "shapes;base;shared")
 set(may_use_scene "scene;shapes;camera;base;shared")
 set(may_use_formats/obj "formats/obj;scene;shapes;camera;base;shared")
-set(may_use_formats "formats;formats/obj;scene;shapes;camera;base;shared")
+set(may_use_formats "formats;formats/obj;formats/gltf_ext;scene;shapes;camera;base;shared")
 set(may_use_formats/colmap "formats/colmap;camera;base;shared")
+set(may_use_formats/gltf_ext "formats/gltf_ext;scene;shapes;camera;base;shared")
 set(may_use_accel "accel;scene;shapes;camera;base;shared")
 set(may_use_cpu "cpu;accel;scene;shapes;camera;base;shared")
 set(may_use_image "image;scene;shapes;camera;base;shared")
@@ -25,7 +26,7 @@ set(may_use_app/jobs "app/jobs;cpu;image;${gpu_layers};accel;formats;formats/col
 set(may_use_app/commands
     "app/commands;app/jobs;view;cpu;image;${gpu_layers};accel;formats;formats/colmap;scene;shapes;camera;base;shared")
 set(may_use_app "app;app/commands;app/jobs;image;base;shared")
-set(layers base camera shapes scene formats/obj formats formats/colmap accel cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
+set(layers base camera shapes scene formats/obj formats/gltf_ext formats formats/colmap accel cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
            app/jobs app/commands app)
 
 # A new folder of sources must be given its place in the map above.
