@@ -18,6 +18,7 @@ packages=(
   mesa-vulkan-drivers vulkan-validationlayers
   clang libclang-rt-14-dev
   libopenexr-dev libtinyobjloader-dev libtinygltf-dev libembree-dev
+  libdraco-dev libmeshoptimizer-dev
   help2man dpkg-dev file
 )
 if [ "${1:-}" = "--test" ]; then

@@ -2,13 +2,16 @@
 // tinygltf, and rtvk's checks of what they return). The first byte picks the format ('o', 'g' or
 // anything else: .glb); the rest is the file. Any input may be rejected, but only with
 // usage_error; anything else -- a crash, another exception, undefined behaviour, a read past a
-// buffer -- is a bug. Every triangle accepted has finite vertices and a material that exists.
+// buffer -- is a bug. Every triangle accepted has finite vertices and a material that exists,
+// and every camera a glTF gives (formats/gltf_ext/, as mesh_scene asks for them) a usable name and
+// path. Draco and meshopt streams are decoded on the way (seeds "draco", "meshopt").
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
+#include "camera_path.h"
 #include "errors.h"
 #include "mesh_file.h"
 
@@ -19,7 +22,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   rtvk::scene s;
   try {
     // No folder: an OBJ's mtllib and a glTF's external buffers are not looked for.
-    rtvk::load_mesh_bytes(s, bytes, kind, "fuzz." + kind, "", {});
+    rtvk::mesh_placement how;
+    how.cameras = true;
+    rtvk::load_mesh_bytes(s, bytes, kind, "fuzz." + kind, "", how);
   } catch (const rtvk::usage_error&) {
     return 0;
   }
@@ -28,6 +33,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const rtvk::point3& p : t.p)
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) std::abort();
     if (t.shading >= 0 && std::size_t(t.shading) >= s.shading.size()) std::abort();
+  }
+  for (const rtvk::named_camera& c : s.cameras) {
+    if (!rtvk::valid_camera_name(c.name)) std::abort();
+    try {
+      rtvk::check_camera_path(c.path);
+    } catch (const std::invalid_argument&) {
+      std::abort();
+    }
   }
   return 0;
 }

@@ -76,7 +76,9 @@ scene mesh_scene(const std::filesystem::path& file, const file_access& access) {
   s.name = file.string();
   s.render.transform = view_transform::standard;  // sRGB, as the model's own viewers show it
   const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
-  load_mesh(s, file, {}, path_guard::of(access, folder));
+  mesh_placement how;
+  how.cameras = true;
+  load_mesh(s, file, how, path_guard::of(access, folder));
   // A camera that frames the bounds: looking at their center from the front, a little above and
   // to the right, far enough that the bounding sphere fills the view.
   point3 lo(INFINITY), hi(-INFINITY);
@@ -93,6 +95,8 @@ scene mesh_scene(const std::filesystem::path& file, const file_access& access) {
   const double distance = 1.1 * radius / std::sin(0.5 * c.vfov * M_PI / 180);
   c.lookfrom = center + distance * glm::normalize(vec3(0.4, 0.3, 1.0));
   c.focus_dist = distance;
+  // A file's own cameras (glTF) come first, the first the default; the framing one stays last.
+  std::rotate(s.cameras.begin(), s.cameras.begin() + 1, s.cameras.end());
   return s;
 }
 

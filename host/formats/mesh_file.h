@@ -18,6 +18,7 @@ inline constexpr std::uint64_t max_mesh_file_bytes = 2ull << 30;  // 2 GiB
 struct mesh_placement {
   int material = -1;      // index into the scene's materials; -1: the file's
   transform placement{};  // applied after the file's own node transforms
+  bool cameras = false;   // a glTF's cameras appended to s.cameras too (the first sets the aspect)
 };
 
 // Appends the triangles of a Wavefront OBJ (with its MTL, when it names one) or glTF 2.0 file

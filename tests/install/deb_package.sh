@@ -23,7 +23,7 @@ entries() { field "$1" | tr ',' '\n' | sed -E 's/\(.*\)//; s/^ +//; s/ +$//'; }
 grep -qx libvulkan1 <<<"$(entries Depends)" || fail "Depends lacks libvulkan1"
 # dpkg-shlibdeps ran: the libraries rtvk links (libc, libstdc++, OpenEXR, the mesh loaders) are
 # in Depends.
-for lib in libc6 'libstdc\+\+6' 'libopenexr.*' 'libtinyobjloader.*' 'libtinygltf.*'; do
+for lib in libc6 'libstdc\+\+6' 'libopenexr.*' 'libtinyobjloader.*' 'libtinygltf.*' 'libmeshoptimizer.*'; do
   grep -Eqx "$lib" <<<"$(entries Depends)" || fail "Depends lacks $lib (dpkg-shlibdeps did not run?)"
 done
 grep -qx mesa-vulkan-drivers <<<"$(entries Recommends)" || fail "Recommends lacks mesa-vulkan-drivers"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string_view>
 
+#include "gltf_ext.h"
 #include "gltf_reader.h"
 
 namespace rtvk {
@@ -19,13 +20,13 @@ constexpr honoured_extension honoured[] = {
     {"KHR_materials_emissive_strength", "scales the material's emission"},
     {"KHR_materials_transmission", "factor >= 0.5: glass (approximated)"},
     {"KHR_materials_ior", "the glass's index"},
-    // Decoded by the compression readers (helper gltfx): they turn these entries on.
-    // {"KHR_draco_mesh_compression", "decoded before the walk"},
-    // {"EXT_meshopt_compression", "decoded before the walk"},
 };
 
+// The table's, and those formats/gltf_ext decodes before the walk (KHR_draco_mesh_compression,
+// EXT_meshopt_compression: gltfx_honours).
 bool is_honoured(const std::string& name) {
-  return std::any_of(std::begin(honoured), std::end(honoured),
+  return gltfx_honours(name) ||
+         std::any_of(std::begin(honoured), std::end(honoured),
                      [&](const honoured_extension& e) { return e.name == name; });
 }
 

@@ -3,6 +3,7 @@
 // primitives), gltf_primitive.cpp (a primitive's attributes and morph targets),
 // gltf_material.cpp (materials and their textures), gltf_accessor.cpp (every accessor checked
 // against its buffer before it is read), gltf_extensions.cpp (the extensions honoured).
+#include "gltf_ext.h"
 #include "gltf_reader.h"
 #include "input_file.h"
 
@@ -11,10 +12,14 @@ namespace rtvk {
 void load_gltf(scene& s, const std::string& bytes, bool binary, const std::string& name,
                const std::filesystem::path& base, const mesh_placement& how,
                const path_guard& guard) {
-  tinygltf::Model model = parse_gltf(bytes, binary, name, base, guard);
+  // formats/gltf_ext: meshopt fallback buffers stood in for, Draco and meshopt streams decoded into
+  // plain accessors before the walk, and the file's cameras after it.
+  tinygltf::Model model = parse_gltf(gltfx_prepare(bytes, binary), binary, name, base, guard);
   check_extensions(model, name, s.warnings);
+  gltfx_decompress(model, name);
   mesh_builder b(s, name, how.placement);
   gltf_walker(model, b, how).walk_scene();
+  if (how.cameras) add_gltf_cameras(s, model, name, how.placement, true);
 }
 
 std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file, std::size_t index,
@@ -25,8 +30,8 @@ std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file,
   const std::string bytes =
       read_regular_file(file, max_mesh_file_bytes, "glTF file (" + name + ")");
   const std::filesystem::path base = file.parent_path();
-  const tinygltf::Model model =
-      parse_gltf(bytes, kind == "glb", file.string(), base.empty() ? "." : base, guard);
+  const tinygltf::Model model = parse_gltf(gltfx_prepare(bytes, kind == "glb"), kind == "glb",
+                                           file.string(), base.empty() ? "." : base, guard);
   if (index >= model.images.size() || model.images[index].image.empty())
     throw usage_error(name + ": " + file.string() + " has no image " + std::to_string(index));
   const std::vector<unsigned char>& img = model.images[index].image;
