@@ -1,6 +1,7 @@
 #pragma once
 // Internal to the glTF reader (formats/gltf/, part of rtvk_formats): what its sources give each
-// other. load_gltf (mesh_gltf.cpp) parses the file, then walks its default scene.
+// other. load_gltf (mesh_gltf.cpp) parses the file, checks its extensions, has formats/gltf_ext
+// decode its compressed data, walks its default scene, then adds its cameras.
 #include <filesystem>
 #include <map>
 #include <optional>
