@@ -12,7 +12,6 @@
 #include "hit_sphere.h"
 #include "hit_triangle.h"
 #include "instance_space.h"
-#include "scan_order.h"
 
 // Whether some sphere moves: without, the velocities (`velocities`, vec4[] in the spheres' order)
 // are never read. The host sets it for

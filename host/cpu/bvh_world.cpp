@@ -147,7 +147,7 @@ struct bvh_world::nearest {
   std::uint32_t current = RTVK_OWN_OBJECTS;   // the instance + 1 the walk is in now
 
   // Keeps a hit at t on object `i` (reference `r`) of the instance walked now when it is
-  // nearer, or as near and later in the scan (scan_order.h, the GPU's rule too), so the order
+  // nearer, or as near and later in the scan (instance_space.h, the GPU's rule too), so the order
   // of the tests never matters.
   void offer(double t_hit, std::uint32_t i, std::uint32_t r) {
     if (t_hit < t || later_in_scan(current, int(i), instance, index)) {

@@ -8,7 +8,7 @@
 #include "hit_quad.h"
 #include "hit_triangle.h"
 #include "hittable.h"
-#include "scan_order.h"
+#include "instance_space.h"
 #include "scene.h"
 #include "scene_tree.h"
 #include "sphere.h"

@@ -1,13 +1,31 @@
 // An instance's way into its group's space and back, for both backends: the ray carried in by
 // the inverse placement (its direction not renormalized, so the same t reaches the same point),
 // and a hit found there carried back (the point on the scene's ray, the normal by the inverse
-// transpose, which keeps the side a ray comes from, the offset grown by the placement's stretch).
+// transpose, which keeps the side a ray comes from, the offset grown by the placement's stretch);
+// and the scan order every search keeps, instances after the scene's own objects.
 #ifndef RTVK_INSTANCE_SPACE_H
 #define RTVK_INSTANCE_SPACE_H
 #include "kernel_lang.h"
 #include "ray.h"
 
 RTVK_KERNELS_BEGIN
+
+// The order of the lesson's linear scan, which every search of rtvk reproduces: the scene's own
+// objects in scene order, then each instance's in its group's order. An exact tie between two
+// hits goes to the later one, so a BVH, the driver's acceleration structure and the scan find
+// the same object whatever order they test in. Both backends' searches keep their nearest hit
+// with this one rule (host/cpu/bvh_world.cpp, shaders/world.glsl).
+
+// "No instance": a hit on the scene's own objects is reached through instance 0; instance k of
+// the scene's list is k + 1. Both backends count so.
+#define RTVK_OWN_OBJECTS 0u
+
+// Whether a hit at the nearest distance so far, on object `index` (its place in its list's scan
+// order) reached through `inst`, replaces the nearest hit (`best_index` through `best_inst`;
+// best_index -1: none yet): it does when it comes later in the scan.
+inline bool later_in_scan(uint inst, int index, uint best_inst, int best_index) {
+  return inst > best_inst || (inst == best_inst && index > best_index);
+}
 
 // A placement as the two functions below read it, by rows.
 struct instance_frame {
