@@ -75,6 +75,11 @@ scene mesh_scene(const std::filesystem::path& file, const file_access& access) {
   scene s;
   s.name = file.string();
   s.render.transform = view_transform::standard;  // sRGB, as the model's own viewers show it
+  // A picture rather than the lesson's one noisy sample: jittered (antialiased) samples, enough
+  // that a textured model reads at a glance; depth enough for glass and interreflection.
+  s.render.spp = 32;
+  s.render.jitter = true;
+  s.render.max_depth = 16;
   const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
   mesh_placement how;
   how.cameras = true;

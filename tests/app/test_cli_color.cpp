@@ -127,6 +127,10 @@ TEST(CliColor, DumpsKeepTheTransformAndMeshFilesAreSrgb) {
   const auto mesh = run_rtvk({"scene", "dump", obj.string()});
   ASSERT_EQ(mesh.status, 0) << mesh.err;
   EXPECT_NE(mesh.out.find("\"view_transform\": \"standard\""), std::string::npos) << mesh.out;
+  // And a picture, not the lesson's one sample: jittered, 32 samples, 16 bounces.
+  EXPECT_NE(mesh.out.find("\"spp\": 32"), std::string::npos) << mesh.out;
+  EXPECT_NE(mesh.out.find("\"jitter\": true"), std::string::npos) << mesh.out;
+  EXPECT_NE(mesh.out.find("\"max_depth\": 16"), std::string::npos) << mesh.out;
 }
 
 TEST(CliColor, ImageTexturesDecodeByTheirColorSpace) {
