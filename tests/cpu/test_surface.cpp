@@ -79,7 +79,7 @@ TEST(Surface, AMaskShowsWhatIsBehindWhereTheTexturesAlphaIsBelowTheCutoff) {
   front.alpha_cutoff = 0.5;
   front.texture = 0;
   scene s = test::surface_scene(front, test::flat_material(color(0, 0, 1)));
-  s.textures.push_back(test::row_texture({0x00ff0000u, 0xff00ff00u}));  // clear blue, opaque green
+  s.textures.push_back(test::row_texture({0x000000ffu, 0xff00ff00u}));  // clear red, opaque green
   const framebuffer f = render_surface(s);
   int wrong = 0;
   for (int y = 0; y < f.height(); ++y)
@@ -130,7 +130,7 @@ TEST(Surface, TheAovsSeeTheFirstSurfaceThatCounts) {
   front.alpha = alpha_mode::mask;
   front.texture = 0;
   scene s = test::surface_scene(front, test::flat_material(color(0, 0, 1)));
-  s.textures.push_back(test::row_texture({0x00ff0000u, 0xff00ff00u}));
+  s.textures.push_back(test::row_texture({0x000000ffu, 0xff00ff00u}));
   const camera cam = test::scene_camera(s);
   const std::vector<gpu::gpu_aov> a = render_aov_cpu(cam, s, {0, 0, 16, 16, 0, 1}, 1);
   EXPECT_EQ(a[8 * 16 + 2].object, 1u);

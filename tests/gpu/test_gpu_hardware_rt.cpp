@@ -173,7 +173,7 @@ TEST_F(GpuHardwareRt, EmissionVertexColorsAlphaAndCullingGiveTheComputeBvhsExact
   material mask = test::flat_material(color(1));
   mask.alpha = alpha_mode::mask;
   mask.texture = 0;
-  s.textures.push_back(test::row_texture({0x00ff0000u, 0xff00ff00u}));
+  s.textures.push_back(test::row_texture({0x000000ffu, 0xff00ff00u}));
   material culled = test::flat_material(color(1, 0, 0));
   culled.cull_back = true;
   s.materials.push_back({"mask", mask});

@@ -50,7 +50,7 @@ TEST_F(GpuSurface, EmissionVertexColorsAlphaAndCullingMatchTheCpu) {
   mask.alpha = alpha_mode::mask;
   mask.texture = 0;
   scene masked = test::surface_scene(mask, test::flat_material(color(0, 0, 1)));
-  masked.textures.push_back(test::row_texture({0x00ff0000u, 0xff00ff00u}));
+  masked.textures.push_back(test::row_texture({0x000000ffu, 0xff00ff00u}));
   expect_agreement(masked, "mask");
 
   material blend = test::flat_material(color(1, 0, 0));
