@@ -6,7 +6,7 @@
 #include "appearance_types.h"
 #include "kernel_lang.h"
 #include "ray.h"
-#include "surface.h"
+#include "scatter.h"
 
 RTVK_KERNELS_BEGIN
 

@@ -10,7 +10,6 @@
 #include "random.h"
 #include "ray.h"
 #include "scatter.h"
-#include "surface.h"
 
 RTVK_KERNELS_BEGIN
 

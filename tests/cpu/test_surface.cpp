@@ -7,7 +7,7 @@
 
 #include "render_aov.h"
 #include "render_helpers.h"
-#include "surface.h"
+#include "scatter.h"
 #include "surface_scenes.h"
 
 namespace rtvk {
