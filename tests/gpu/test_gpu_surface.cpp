@@ -7,7 +7,9 @@
 
 #include <cmath>
 
+#include "aov_pass.h"
 #include "gpu_fixture.h"
+#include "render_aov.h"
 #include "render_gpu.h"
 #include "render_helpers.h"
 #include "surface_scenes.h"
@@ -64,6 +66,27 @@ TEST_F(GpuSurface, EmissionVertexColorsAlphaAndCullingMatchTheCpu) {
   culled.cull_back = true;
   expect_agreement(test::surface_scene(culled, test::flat_material(color(0, 0, 1)), true),
                    "cull_back");
+}
+
+// The device's AOVs see the first surface that counts as the CPU's do: through a mask's clear
+// half the back quad (object 1), through its opaque half the front (object 0), the same depths.
+TEST_F(GpuSurface, TheAovsSeeTheFirstSurfaceThatCountsAsOnTheCpu) {
+  material mask = test::flat_material(color(1));
+  mask.alpha = alpha_mode::mask;
+  mask.texture = 0;
+  scene s = test::surface_scene(mask, test::flat_material(color(0, 0, 1)));
+  s.textures.push_back(test::row_texture({0x000000ffu, 0xff00ff00u}));
+  const camera cam = test::scene_camera(s);
+  const render_window win{0, 0, 16, 16, 0, 1};
+  const std::vector<gpu::gpu_aov> cpu = render_aov_cpu(cam, s, win);
+  const std::vector<gpu::gpu_aov> dev = gpu::run_aov_pass(gpu(), s, true, cam, win);
+  ASSERT_EQ(dev.size(), cpu.size());
+  int differ = 0;
+  for (std::size_t i = 0; i < cpu.size(); ++i)
+    differ += dev[i].object != cpu[i].object || std::abs(dev[i].depth - cpu[i].depth) > 1e-5f;
+  EXPECT_EQ(differ, 0);
+  EXPECT_EQ(dev[8 * 16 + 2].object, 1u);
+  EXPECT_EQ(dev[8 * 16 + 13].object, 0u);
 }
 
 }  // namespace
