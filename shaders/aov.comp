@@ -52,7 +52,8 @@ void main() {
   for (uint k = 0u; k <= max_passes && !zero; ++k) {
     if (!hit_world(walk, 0.001, 3.402823466e+38, rec, iterations)) break;
     gpu_material m = materials[rec.material];
-    float alpha = any_textures ? surface_alpha(m.opacity, m.texture, rec) : m.opacity * rec.color.w;
+    precise float alpha =
+        any_textures ? surface_alpha(m.opacity, m.texture, rec) : m.opacity * rec.color.w;
     found = k == max_passes || aov_counts(m.type, m.flags, rec, alpha, m.alpha_cutoff);
     if (found) break;
     passed += aov_distance(walk, rec);
@@ -60,8 +61,8 @@ void main() {
   }
   if (found) {
     gpu_material m = materials[rec.material];
-    vec3 color = (any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo) *
-                 rec.color.xyz;
+    precise vec3 color =
+        (any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo) * rec.color.xyz;
     a.normal = rec.normal;
     a.albedo = aov_albedo(m.type, color, rec);
     a.distance = passed + aov_distance(walk, rec);

@@ -171,8 +171,10 @@ inline precise real texture_alpha(TABLES_PARAM uint index, real2 uv) {
   precise real u = wrap_coordinate(uv.x, TEXTURE_AT(index).style & 3u);
   precise real v = real(1.0) - wrap_coordinate(uv.y, (TEXTURE_AT(index).style >> 2u) & 3u);
   uint width = TEXTURE_AT(index).width, height = TEXTURE_AT(index).height;
-  uint i = min(uint(u * real(width)), width - 1u);
-  uint j = min(uint(v * real(height)), height - 1u);
+  precise real x = u * real(width);  // as image_value finds the texel
+  precise real y = v * real(height);
+  uint i = min(uint(x), width - 1u);
+  uint j = min(uint(y), height - 1u);
   return real(TEXEL_AT(TEXTURE_AT(index).first + j * width + i) >> 24u) * real(1.0 / 255.0);
 }
 
