@@ -45,12 +45,27 @@ void main() {
   hit_record rec;
   uint iterations = 0u;
   bool zero = r.direction == vec3(0.0);  // outside a fisheye's field: nothing seen
-  if (!zero && hit_world(r, 0.001, 3.402823466e+38, rec, iterations)) {
+  // The first surface that counts (aov_counts), as host/cpu/render_aov.cpp walks to it.
+  ray walk = r;
+  precise float passed = 0.0;
+  bool found = false;
+  for (uint k = 0u; k <= max_passes && !zero; ++k) {
+    if (!hit_world(walk, 0.001, 3.402823466e+38, rec, iterations)) break;
     gpu_material m = materials[rec.material];
-    vec3 color = any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo;
+    precise float alpha =
+        any_textures ? surface_alpha(m.opacity, m.texture, rec) : m.opacity * rec.color.w;
+    found = k == max_passes || aov_counts(m.type, m.flags, rec, alpha, m.alpha_cutoff);
+    if (found) break;
+    passed += aov_distance(walk, rec);
+    walk.origin = scatter_origin(rec, walk.direction);
+  }
+  if (found) {
+    gpu_material m = materials[rec.material];
+    precise vec3 color =
+        (any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo) * rec.color.xyz;
     a.normal = rec.normal;
     a.albedo = aov_albedo(m.type, color, rec);
-    a.distance = aov_distance(r, rec);
+    a.distance = passed + aov_distance(walk, rec);
     a.depth = aov_depth(cam.origin, cam.axis_w, rec);
     a.object = hit_object;
     a.instance = hit_instance;

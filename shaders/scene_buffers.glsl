@@ -31,4 +31,14 @@ layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_no
   bvh_wide_node bvh_nodes[];
 };
 
+#include "hit_triangle.h"
+// A triangle hit's vertex colors, blended into rec.color, where its shading entry `normals` has
+// some: the third normal's w is their entry (three vec4 at 3 * w in vertex_normals), 0 for none.
+void record_vertex_colors(uint normals, vec3 weights, precise inout hit_record rec) {
+  uint colors = normals == RTVK_FLAT ? 0u : uint(vertex_normals[3u * normals + 2u].w);
+  if (colors != 0u)
+    rec.color = blend_colors(vertex_normals[3u * colors], vertex_normals[3u * colors + 1u],
+                             vertex_normals[3u * colors + 2u], weights);
+}
+
 #endif

@@ -43,7 +43,10 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   // all the same: the loops rtvk does not count, such as the samples' own, then weigh more).
   iterations += pc.trace_cost;
   if (iterations > pc.loop_budget) return true;
-  if (path_ends_unlit(p, pc.max_depth)) return true;
+  if (path_ends_unlit(p, pc.max_depth)) {
+    c = p.radiance;
+    return true;
+  }
   ++rays;
   hit_record rec;
   bool hit = hit_world(p.r, t_min, max_float, rec, iterations);
@@ -61,7 +64,22 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
     return true;
   }
   gpu_material m = materials[rec.material];
-  vec3 albedo = any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo;
+  // A surface that lets this ray through: the path goes on beyond it, no bounce counted (as
+  // host/cpu/shading.cpp's ray_color).
+  if ((m.flags & RTVK_MATERIAL_SEE_THROUGH) != 0u) {
+    precise float alpha = any_textures ? surface_alpha(m.opacity, m.texture, rec)
+                                       : m.opacity * rec.color.w;
+    if (path_passes(p, rec, m.type, m.flags, alpha, m.alpha_cutoff)) return false;
+  }
+  if ((m.flags & RTVK_MATERIAL_EMISSIVE) != 0u) {
+    precise vec3 emitted =
+        m.emission *
+        (any_textures ? material_color(vec3(1.0), m.emission_texture, rec) : vec3(1.0));
+    path_emits(p, emitted);
+  }
+  // Every multiply precise (ShaderPrecision): times 1 where the hit has no vertex colors, exact.
+  precise vec3 albedo =
+      (any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo) * rec.color.xyz;
   // The lights' densities loop over every light (pdf.h): lavapipe counts those trips too.
   iterations += light_count();
   return path_hit(p, rec, m.type, m.flags, albedo, m.fuzz, m.ir, c);

@@ -115,7 +115,6 @@ void test_object(uint ref, ray r, sheared_ray sr, float t_min, precise inout flo
   }
 }
 
-
 // The record of a hit at t on the object of leaf reference `ref` (host/cpu/bvh_world.cpp's
 // bvh_world::record).
 void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_record rec) {
@@ -152,6 +151,7 @@ void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_r
     precise vec3 shading = shading_normal(tri.a, tri.b, tri.c, blended, n0, n1, n2, weights);
     precise vec2 uv = triangle_uv(has_uv, uv0, uv1, uv2, weights);
     record_triangle_hit(tri.a, tri.b, tri.c, shading, uv, tri.material, r, t, rec);
+    record_vertex_colors(tri.normals, weights, rec);
   }
 }
 

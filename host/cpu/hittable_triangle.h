@@ -28,6 +28,7 @@ inline void record_triangle(const std::array<point3, 3>& p, const triangle_attri
   const glm::dvec2 uv = triangle_uv(has_uv, has_uv ? a->uv[0] : zero, has_uv ? a->uv[1] : zero,
                                     has_uv ? a->uv[2] : zero, weights);
   record_triangle_hit(p[0], p[1], p[2], shading, uv, material, r, t, rec);
+  if (a && a->has_color) rec.color = blend_colors(a->color[0], a->color[1], a->color[2], weights);
 }
 
 // A scene triangle as a hittable, for the lesson's hittable_list.

@@ -30,15 +30,30 @@ std::vector<gpu::gpu_aov> render_aov_cpu(const camera& cam, const scene& s,
         a.distance = a.depth = std::numeric_limits<float>::infinity();
         hit_record rec{};
         std::uint32_t object = 0, instance = 0;
-        if (r.direction == vec3(0) ||
-            !world.hit_which(r, 0.001, std::numeric_limits<double>::infinity(), rec, object,
-                             instance))
-          continue;
+        // The first surface that counts (aov.h's aov_counts): those a ray passes are walked
+        // through, their lengths summed.
+        ray walk = r;
+        double passed = 0;
+        bool found = false;
+        for (uint k = 0; k <= max_passes && r.direction != vec3(0); ++k) {
+          if (!world.hit_which(walk, 0.001, std::numeric_limits<double>::infinity(), rec, object,
+                               instance))
+            break;
+          const material& m = shading.materials[rec.material];
+          found =
+              k == max_passes ||
+              aov_counts(uint(m.type), material_flags(m), rec,
+                         surface_alpha(tables, m.opacity, uint(m.texture), rec), m.alpha_cutoff);
+          if (found) break;
+          passed += aov_distance(walk, rec);
+          walk.origin = scatter_origin(rec, walk.direction);
+        }
+        if (!found) continue;
         const material& m = shading.materials[rec.material];
-        const color c = material_color(tables, m.albedo, uint(m.texture), rec);
+        const color c = material_color(tables, m.albedo, uint(m.texture), rec) * color(rec.color);
         a.normal = glm::vec3(rec.normal);
         a.albedo = glm::vec3(aov_albedo(uint(m.type), c, rec));
-        a.distance = float(aov_distance(r, rec));
+        a.distance = float(passed + aov_distance(walk, rec));
         a.depth = float(aov_depth(f.origin, f.axis_w, rec));
         a.object = object;
         a.instance = instance;

@@ -33,13 +33,18 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
     }
     if (!hit) return path_missed(p, background.horizon, background.zenith);
     const material& m = shading.materials[rec.material];
-    const color albedo = material_color(tables, m.albedo, uint(m.texture), rec);
+    const uint flags = material_flags(m);
+    if ((flags & RTVK_MATERIAL_SEE_THROUGH) != 0u &&
+        path_passes(p, rec, uint(m.type), flags,
+                    surface_alpha(tables, m.opacity, uint(m.texture), rec), m.alpha_cutoff))
+      continue;
+    if ((flags & RTVK_MATERIAL_EMISSIVE) != 0u)
+      path_emits(p, m.emission * material_color(tables, color(1), uint(m.emission_texture), rec));
+    const color albedo = material_color(tables, m.albedo, uint(m.texture), rec) * color(rec.color);
     color c;
-    if (path_hit(lights, p, rec, uint(m.type), m.one_sided ? RTVK_MATERIAL_ONE_SIDED : 0u, albedo,
-                 m.fuzz, m.ir, c))
-      return c;
+    if (path_hit(lights, p, rec, uint(m.type), flags, albedo, m.fuzz, m.ir, c)) return c;
   }
-  return color(0, 0, 0);  // out of bounces, or no ray: no light gathered
+  return p.radiance;  // out of bounces, or no ray: the light gathered on the way
 }
 
 color ray_color(const ray& r, const hittable& world) {

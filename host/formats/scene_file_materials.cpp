@@ -144,6 +144,59 @@ void read_color_or_texture(const scene_reader& r, const json& j, const std::stri
   s.textures.push_back(std::move(tex));
 }
 
+// An alpha mode's name, as glTF spells it in lower case.
+const char* alpha_name(alpha_mode a) {
+  return a == alpha_mode::mask ? "mask" : a == alpha_mode::blend ? "blend" : "opaque";
+}
+
+// The fields every kind of material takes beyond the books' (material.h; glTF's and MTL's):
+// emission and its texture, alpha mode, opacity and cutoff, back-face culling.
+const std::initializer_list<const char*> surface_fields = {
+    "emission", "emission_texture", "alpha_mode", "opacity", "alpha_cutoff", "cull_back"};
+
+void read_surface(const scene_reader& r, const json& j, const std::string& p, scene& s,
+                  material& m) {
+  if (j.contains("emission")) m.emission = r.radiance(j["emission"], p + "/emission");
+  if (j.contains("emission_texture")) {
+    const json& t = j["emission_texture"];
+    if (!t.is_object() || (t.contains("type") && t["type"] == "solid"))
+      r.fail(p + "/emission_texture", "expected a texture object, got " + r.type_of(t));
+    material e;
+    read_color_or_texture(r, t, p + "/emission_texture", true, s, e);
+    m.emission_texture = e.texture;
+    if (!j.contains("emission")) m.emission = color(1);  // the texture alone is the radiance
+  }
+  if (j.contains("alpha_mode")) {
+    const json& a = j["alpha_mode"];
+    bool known = false;
+    for (alpha_mode mode : {alpha_mode::opaque, alpha_mode::mask, alpha_mode::blend})
+      if (a.is_string() && a.get<std::string>() == alpha_name(mode)) {
+        m.alpha = mode;
+        known = true;
+      }
+    if (!known)
+      r.fail(p + "/alpha_mode",
+             "expected \"opaque\", \"mask\" or \"blend\", got " +
+                 (a.is_string() ? "\"" + a.get<std::string>() + "\"" : r.type_of(a)));
+  }
+  if (j.contains("opacity")) m.opacity = r.number_in(j["opacity"], p + "/opacity", 0, 1);
+  if (j.contains("alpha_cutoff"))
+    m.alpha_cutoff = r.number_in(j["alpha_cutoff"], p + "/alpha_cutoff", 0, 1);
+  m.cull_back = r.flag(j, p, "cull_back");
+}
+
+json texture_json(const texture& t);
+
+void write_surface(const scene& s, const material& m, json& j) {
+  if (m.emission != color(0)) j["emission"] = vec_json(m.emission);
+  if (m.emission_texture >= 0)
+    j["emission_texture"] = texture_json(s.textures[std::size_t(m.emission_texture)]);
+  if (m.alpha != alpha_mode::opaque) j["alpha_mode"] = alpha_name(m.alpha);
+  if (m.opacity != 1) j["opacity"] = m.opacity;
+  if (m.alpha_cutoff != 0.5) j["alpha_cutoff"] = m.alpha_cutoff;
+  if (m.cull_back) j["cull_back"] = true;
+}
+
 material read_material(const scene_reader& r, const json& j, const std::string& p, scene& s) {
   if (!j.is_object()) r.fail(p, "expected an object, got " + r.type_of(j));
   const json& type = r.required(j, p, "type");
@@ -160,6 +213,7 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
   if (kind->fuzz) fields.insert("fuzz");
   if (kind->ir) fields.insert("ir");
   if (lamp) fields.insert("one_sided");
+  fields.insert(surface_fields.begin(), surface_fields.end());
   r.only_fields(j, p, fields);
   material m;
   m.type = kind->type;
@@ -172,6 +226,7 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
     if (m.ir <= 0)
       r.fail(p + "/ir", "expected an index of refraction > 0, got " + format_number(m.ir));
   }
+  read_surface(r, j, p, s, m);
   return m;
 }
 
@@ -231,6 +286,7 @@ void write_materials(const scene& s, json& root) {
     if (kind.fuzz) j["fuzz"] = m.fuzz;
     if (kind.ir) j["ir"] = m.ir;
     if (m.one_sided) j["one_sided"] = true;
+    write_surface(s, m, j);
     mats[name] = j;
   }
   root["materials"] = mats;

@@ -49,6 +49,17 @@ struct material {
   bool cull_back = false;     // rays that hit its back pass through (glTF doubleSided: false)
 };
 
+// The material's flags as the shared kernels read them (gpu_material::flags): what of its
+// emission, alpha and culling is in use. A material with none of them is drawn as the books draw.
+inline std::uint32_t material_flags(const material& m) {
+  std::uint32_t f = m.one_sided ? RTVK_MATERIAL_ONE_SIDED : 0u;
+  if (m.emission != color(0, 0, 0)) f |= RTVK_MATERIAL_EMISSIVE;
+  if (m.cull_back) f |= RTVK_MATERIAL_CULL_BACK;
+  if (m.alpha == alpha_mode::mask) f |= RTVK_MATERIAL_ALPHA_MASK;
+  if (m.alpha == alpha_mode::blend) f |= RTVK_MATERIAL_ALPHA_BLEND;
+  return f;
+}
+
 // What a kind is called in scene files and which of material's parameters it reads: the one
 // place the host lists the kinds (material.cpp).
 struct material_kind {

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "vec3.h"
 
@@ -50,10 +51,12 @@ struct triangle_shading {
 
 // A triangle's shading as both backends' searches keep it: normals normalized once.
 struct triangle_attributes {
-  std::array<vec3, 3> normal{};    // unit vertex normals, when smooth
-  std::array<glm::dvec2, 3> uv{};  // texture coordinates, when has_uv
-  bool smooth = false;             // shaded by the blended normals, else flat
-  bool has_uv = false;             // uv given by the mesh
+  std::array<vec3, 3> normal{};       // unit vertex normals, when smooth
+  std::array<glm::dvec2, 3> uv{};     // texture coordinates, when has_uv
+  std::array<glm::dvec4, 3> color{};  // vertex colors (linear RGBA), when has_color
+  bool smooth = false;                // shaded by the blended normals, else flat
+  bool has_uv = false;                // uv given by the mesh
+  bool has_color = false;             // vertex colors given by the mesh
 };
 inline triangle_attributes attributes_of(const triangle_shading& sh) {
   triangle_attributes a;
@@ -62,6 +65,8 @@ inline triangle_attributes attributes_of(const triangle_shading& sh) {
     for (std::size_t k = 0; k < 3; ++k) a.normal[k] = glm::normalize(sh.normal[k]);
   a.has_uv = sh.has_uv;
   a.uv = sh.uv;
+  a.has_color = sh.has_color;
+  for (std::size_t k = 0; k < 3; ++k) a.color[k] = glm::dvec4(sh.color[k]);
   return a;
 }
 

@@ -6,6 +6,7 @@
 #include "appearance_types.h"
 #include "kernel_lang.h"
 #include "ray.h"
+#include "scatter.h"
 
 RTVK_KERNELS_BEGIN
 
@@ -25,6 +26,14 @@ inline precise real aov_distance(ray r, hit_record rec) {
 }
 inline precise real aov_depth(real3 eye, real3 axis_w, hit_record rec) {
   return -dot3(rec.p - eye, axis_w);
+}
+
+// Whether the AOVs show a hit on a surface with these material flags and this alpha: as the
+// renderers count it (ray_color.h's surface_counts), a blend where its alpha is over 1/2 (the
+// AOVs draw no random numbers).
+inline bool aov_counts(uint type, uint flags, hit_record rec, real alpha, real cutoff) {
+  if ((flags & RTVK_MATERIAL_SEE_THROUGH) == 0u) return true;
+  return surface_counts(type, flags, rec.front_face, alpha, cutoff, real(0.5));
 }
 
 RTVK_KERNELS_END

@@ -19,6 +19,12 @@
 // gpu_material::flags.
 // diffuse_light: emits from its front side only (the third book's)
 #define RTVK_MATERIAL_ONE_SIDED 1u
+#define RTVK_MATERIAL_EMISSIVE 2u      // adds `emission` (times its texture) where hit
+#define RTVK_MATERIAL_CULL_BACK 4u     // rays that hit its back pass through
+#define RTVK_MATERIAL_ALPHA_MASK 8u    // rays pass through where alpha < alpha_cutoff
+#define RTVK_MATERIAL_ALPHA_BLEND 16u  // rays pass through with probability 1 - alpha
+// Any of the flags that let a ray through the surface.
+#define RTVK_MATERIAL_SEE_THROUGH 28u
 
 // What a light is (gpu_light::kind): a shape lights sampling aims directions at.
 #define RTVK_LIGHT_SPHERE 0    // by the cone it fills, seen from the point (the book's)
@@ -47,14 +53,21 @@
 
 RTVK_GPU_TYPES_BEGIN
 
-// std430 array element: 32 bytes.
+// std430 array element: 64 bytes.
 struct gpu_material {
-  vec3 albedo;   // fraction of light kept per channel; diffuse_light: the radiance it emits
-  uint type;     // RTVK_MATERIAL_*
-  float fuzz;    // metal: blur radius
-  float ir;      // dielectric: index of refraction
-  uint texture;  // its color's texture (gpu_texture index), or RTVK_NO_TEXTURE: albedo
-  uint flags;    // RTVK_MATERIAL_ONE_SIDED or 0
+  vec3 albedo;            // fraction of light kept per channel; diffuse_light: the radiance it
+                          // emits
+  uint type;              // RTVK_MATERIAL_*
+  float fuzz;             // metal: blur radius
+  float ir;               // dielectric: index of refraction
+  uint texture;           // its color's texture (gpu_texture index), or RTVK_NO_TEXTURE: albedo
+  uint flags;             // RTVK_MATERIAL_ONE_SIDED, _EMISSIVE, _CULL_BACK, _ALPHA_*, or 0
+  vec3 emission;          // radiance emitted besides what it reflects (with _EMISSIVE)
+  uint emission_texture;  // multiplies emission (gpu_texture index), or RTVK_NO_TEXTURE
+  float opacity;          // base alpha, 0 to 1 (with _ALPHA_*)
+  float alpha_cutoff;     // _ALPHA_MASK: a hit counts where the alpha is at least this
+  uint pad0;              // unused
+  uint pad1;              // unused
 };
 #ifdef __cplusplus
 static_assert(offsetof(gpu_material, albedo) == 0);
@@ -63,7 +76,13 @@ static_assert(offsetof(gpu_material, fuzz) == 16);
 static_assert(offsetof(gpu_material, ir) == 20);
 static_assert(offsetof(gpu_material, texture) == 24);
 static_assert(offsetof(gpu_material, flags) == 28);
-static_assert(sizeof(gpu_material) == 32);
+static_assert(offsetof(gpu_material, emission) == 32);
+static_assert(offsetof(gpu_material, emission_texture) == 44);
+static_assert(offsetof(gpu_material, opacity) == 48);
+static_assert(offsetof(gpu_material, alpha_cutoff) == 52);
+static_assert(offsetof(gpu_material, pad0) == 56);
+static_assert(offsetof(gpu_material, pad1) == 60);
+static_assert(sizeof(gpu_material) == 64);
 #endif
 
 // std430 array element: one texture, 48 bytes (shaders/shared/texture.h reads it).

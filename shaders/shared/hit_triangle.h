@@ -80,6 +80,7 @@ inline void record_triangle_hit(real3 a, real3 b, real3 c, real3 shading, real2 
                                 ray r, real t, precise INOUT(hit_record) rec) {
   rec.t = t;
   rec.uv = uv;
+  rec.color = real4(1.0);  // the vertex colors, where the triangle has some, are set after
   rec.p = ray_at(r, t);
   precise real3 geometric = unit_vector(cross3(b - a, c - a));
   set_face_normal(rec, r, geometric);
@@ -107,6 +108,12 @@ inline precise real3 shading_normal(real3 a, real3 b, real3 c, bool blended, rea
 inline precise real2 triangle_uv(bool given, real2 uv0, real2 uv1, real2 uv2, real3 weights) {
   if (!given) return real2(weights.y, weights.z);
   return weights.x * uv0 + weights.y * uv1 + weights.z * uv2;
+}
+
+// A triangle's vertex colors c0, c1, c2 (linear RGBA) blended by barycentric weights: the color
+// at the hit, which multiplies the material's color and alpha.
+inline precise real4 blend_colors(real4 c0, real4 c1, real4 c2, real3 weights) {
+  return weights.x * c0 + weights.y * c1 + weights.z * c2;
 }
 
 RTVK_KERNELS_END

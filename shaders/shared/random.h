@@ -23,6 +23,9 @@ const uint dim_mixture = 5u;     // bounce >= 1: the lights' density or the mate
 const uint dim_light_pick = 6u;  // bounce >= 1: which light
 const uint dim_light_a = 7u;     // bounce >= 1: the point or direction on it
 const uint dim_light_b = 8u;     //
+// bounce >= 1: whether a blended surface lets the ray through (ray_color.h's path_passes); its
+// bounce field holds the surfaces passed before, above bit 16, so each draws its own number
+const uint dim_alpha = 9u;
 
 // A 32-bit integer hash with good avalanche ("lowbias32", Chris Wellons).
 inline uint hash32(uint x) {

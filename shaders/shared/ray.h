@@ -52,6 +52,8 @@ struct hit_record {
   uint material;         // index into the scene's materials
   precise real offset;   // how far a ray leaving p starts off the surface, scene units
   precise real2 uv;      // texture coordinates of p on the object (image textures read them)
+  precise real4 color;   // the vertex colors blended at p (linear RGBA), 1 where none: multiply
+                         // the material's color and alpha
 };
 
 // Where a ray leaving the hit along `direction` starts: lifted off the surface to the side it

@@ -31,7 +31,9 @@ inline precise real3 sky_color(real3 d, real3 horizon, real3 zenith) {
 struct path_state {
   ray r;                     // the ray about to be traced
   precise real3 throughput;  // product of the attenuations so far
+  precise real3 radiance;    // light gathered so far from emissive surfaces along the path
   uint depth;                // bounces so far
+  uint passes;               // surfaces passed through so far (path_passes)
   random_stream s;           // the path's random numbers (pixel, sample)
 };
 
@@ -39,33 +41,63 @@ inline path_state start_path(ray r, random_stream s) {
   path_state p;
   p.r = r;
   p.throughput = real3(1.0);
+  p.radiance = real3(0.0);
   p.depth = 0u;
+  p.passes = 0u;
   p.s = s;
   return p;
 }
 
-// Before tracing p.r: true when the path ends black without it, out of bounces or without a ray
-// (a camera gives a zero direction where its model sees nothing).
+// The path's random number for a blend at the surface it hit now: a dimension of its own at the
+// bounce about to be made, the surfaces passed before telling each draw apart.
+inline precise real alpha_random(path_state p) {
+  return real(rnd(random_stream(p.s.key, (p.depth + 1u) | (p.passes << 16u)), dim_alpha));
+}
+
+// p.r hit `rec` on a surface with these flags and this alpha (surface_alpha): true, with p.r
+// continued from just beyond the surface in the same direction, when the hit does not count.
+// No bounce is counted; past max_passes every surface counts.
+inline bool path_passes(precise INOUT(path_state) p, hit_record rec, uint type, uint flags,
+                        real alpha, real cutoff) {
+  if (p.passes >= max_passes) return false;
+  real u = (flags & RTVK_MATERIAL_ALPHA_BLEND) != 0u ? alpha_random(p) : real(0.0);
+  if (surface_counts(type, flags, rec.front_face, alpha, cutoff, u)) return false;
+  p.r.origin = scatter_origin(rec, p.r.direction);
+  ++p.passes;
+  return true;
+}
+
+// A hit on an emissive surface (RTVK_MATERIAL_EMISSIVE) adds what it emits there, seen through
+// the path's attenuations; the material then scatters as usual (glTF's emissive surfaces reflect).
+inline void path_emits(precise INOUT(path_state) p, real3 emitted) {
+  p.radiance += p.throughput * emitted;
+}
+
+// Before tracing p.r: true when the path ends without it (with the light it gathered so far), out
+// of bounces or without a ray (a camera gives a zero direction where its model sees nothing).
 inline bool path_ends_unlit(path_state p, uint max_depth) {
   return p.depth >= max_depth || p.r.direction == real3(0.0);
 }
 
 // p.r escaped: the color the path gathers from the sky.
 inline precise real3 path_missed(path_state p, real3 horizon, real3 zenith) {
-  return p.throughput * sky_color(p.r.direction, horizon, zenith);
+  return p.radiance + p.throughput * sky_color(p.r.direction, horizon, zenith);
 }
 
 // p.r hit `rec`, whose material is of `type` with these parameters (scatter's; albedo is the
 // material's color at the hit, its texture's value there when it has one; flags
 // RTVK_MATERIAL_*). Either ends the path, its color in `c` (the lesson's normal shading; a flat
-// material's albedo, unlit; a lamp's emitted color; black when absorbed), or scatters it for the
+// material's albedo, unlit; a lamp's emitted color; black when absorbed; each after the light the
+// path gathered from emissive surfaces on its way, p.radiance), or scatters it for the
 // next trip (false). With lights to sample (LIGHT_COUNT > 0), lambertian and isotropic scatter
 // by the mixture of their density and the lights' (pdf.h); without, as the first two books do.
 inline bool path_hit(LIGHTS_PARAM precise INOUT(path_state) p, hit_record rec, uint type,
                      uint flags, real3 albedo, real fuzz, real ir, precise OUT(real3) c) {
-  c = real3(0.0);
+  // The light emitted along the way comes first: 0 + x is x exactly, so a path that met no
+  // emissive surface ends with the same bits as before emission existed.
+  c = p.radiance;
   if (type == RTVK_MATERIAL_NORMAL) {
-    c = p.throughput * (real(0.5) * (rec.normal + real3(1.0, 1.0, 1.0)));
+    c = p.radiance + p.throughput * (real(0.5) * (rec.normal + real3(1.0, 1.0, 1.0)));
     return true;
   }
   // The book's diffuse_light emits on both sides and reflects nothing: its emitted color, seen
@@ -73,7 +105,7 @@ inline bool path_hit(LIGHTS_PARAM precise INOUT(path_state) p, hit_record rec, u
   // The third book's lamps emit from their front only: seen from behind, black.
   if (type == RTVK_MATERIAL_FLAT || type == RTVK_MATERIAL_DIFFUSE_LIGHT) {
     bool dark = (flags & RTVK_MATERIAL_ONE_SIDED) != 0u && !rec.front_face;
-    c = dark ? real3(0.0) : p.throughput * albedo;
+    c = dark ? p.radiance : p.radiance + p.throughput * albedo;
     return true;
   }
   // The scattered ray goes straight into p.r (scatter takes the incoming ray by value): no copy

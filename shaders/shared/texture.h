@@ -165,6 +165,25 @@ inline precise real3 material_color(TABLES_PARAM real3 albedo, uint texture, hit
   return texture_value(TABLES texture, rec.uv, rec.p);
 }
 
+// The alpha texture `index` has at uv: an image's texel's top byte / 255 (its alpha), else 1.
+inline precise real texture_alpha(TABLES_PARAM uint index, real2 uv) {
+  if (index == RTVK_NO_TEXTURE || TEXTURE_AT(index).type != RTVK_TEXTURE_IMAGE) return real(1.0);
+  precise real u = wrap_coordinate(uv.x, TEXTURE_AT(index).style & 3u);
+  precise real v = real(1.0) - wrap_coordinate(uv.y, (TEXTURE_AT(index).style >> 2u) & 3u);
+  uint width = TEXTURE_AT(index).width, height = TEXTURE_AT(index).height;
+  precise real x = u * real(width);  // as image_value finds the texel
+  precise real y = v * real(height);
+  uint i = min(uint(x), width - 1u);
+  uint j = min(uint(y), height - 1u);
+  return real(TEXEL_AT(TEXTURE_AT(index).first + j * width + i) >> 24u) * real(1.0 / 255.0);
+}
+
+// A surface's alpha at a hit (0 transparent to 1 opaque): its material's opacity, times its
+// color texture's alpha there (an image's), times the hit's vertex alpha.
+inline precise real surface_alpha(TABLES_PARAM real opacity, uint texture, hit_record rec) {
+  return opacity * texture_alpha(TABLES texture, rec.uv) * rec.color.w;
+}
+
 RTVK_KERNELS_END
 
 #endif  // RTVK_TEXTURE_H

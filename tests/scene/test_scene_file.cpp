@@ -269,6 +269,59 @@ TEST(SceneFile, SamplingFieldsRoundTrip) {
   EXPECT_EQ(dump_scene_json(plain).find("sampling"), std::string::npos);
 }
 
+// Emission, its texture, alpha and culling on any kind of material: read as written, dumped
+// the same, the defaults unsaid; bad values name the field.
+TEST(SceneFile, SurfaceFieldsRoundTripAndBadValuesNameTheField) {
+  const std::string text = R"({"materials":{
+    "leaf":{"type":"lambertian","albedo":[0.2,0.6,0.1],"emission":[1,2,3],
+            "emission_texture":{"type":"checker","scale":0.5,"even":[1,1,1],"odd":[0,0,0]},
+            "alpha_mode":"mask","opacity":0.75,"alpha_cutoff":0.25,"cull_back":true},
+    "veil":{"type":"flat","albedo":[1,1,1],"alpha_mode":"blend","opacity":0.5},
+    "plain":{"type":"metal","albedo":[1,1,1]}},"spheres":[]})";
+  const scene s = parse_scene_json(text, "s.json");
+  const material& leaf = s.materials[0].m;
+  EXPECT_EQ(leaf.emission, color(1, 2, 3));
+  EXPECT_EQ(leaf.emission_texture, 0);
+  EXPECT_EQ(leaf.alpha, alpha_mode::mask);
+  EXPECT_EQ(leaf.opacity, 0.75);
+  EXPECT_EQ(leaf.alpha_cutoff, 0.25);
+  EXPECT_TRUE(leaf.cull_back);
+  EXPECT_EQ(s.materials[1].m.alpha, alpha_mode::blend);
+  EXPECT_EQ(material_flags(s.materials[2].m), 0u);
+  const std::string dumped = dump_scene_json(s);
+  EXPECT_EQ(dump_scene_json(parse_scene_json(dumped, "s.json")), dumped);
+  EXPECT_NE(dumped.find("\"mask\""), std::string::npos) << dumped;
+  // The defaults unsaid: the metal's opacity, the flat one's cutoff.
+  std::size_t opacities = 0;
+  for (std::size_t at = dumped.find("opacity"); at != std::string::npos;
+       at = dumped.find("opacity", at + 1))
+    ++opacities;
+  EXPECT_EQ(opacities, 2u) << dumped;
+  const struct {
+    std::string field, expect;
+  } cases[] = {
+      {R"("emission":[-1,0,0])", "/materials/m/emission"},
+      {R"("emission_texture":[1,1,1])", "/materials/m/emission_texture: expected a texture"},
+      {R"("alpha_mode":"clip")",
+       "/materials/m/alpha_mode: expected \"opaque\", \"mask\" or "
+       "\"blend\", got \"clip\""},
+      {R"("opacity":1.5)", "/materials/m/opacity"},
+      {R"("alpha_cutoff":-0.1)", "/materials/m/alpha_cutoff"},
+      {R"("cull_back":1)", "/materials/m/cull_back: expected true or false"},
+  };
+  for (const auto& c : cases) {
+    const std::string json =
+        R"({"materials":{"m":{"type":"flat","albedo":[1,1,1],)" + c.field + R"(}},"spheres":[]})";
+    std::string e;
+    try {
+      parse_scene_json(json, "bad.json");
+    } catch (const usage_error& x) {
+      e = x.what();
+    }
+    EXPECT_NE(e.find(c.expect), std::string::npos) << json << "\n  gave: " << e;
+  }
+}
+
 // The book's byte rule after stb_image's gamma 2.2: mid grey 128 is (128/255)^2.2 = 0.2195,
 // floor(256 * 0.2195) = 56.
 TEST(SceneFile, ImageTexturesAreLinearBytesAsTheBookMakesThem) {

@@ -194,12 +194,14 @@ gpu_group draw_gpu(const run_context& run, gpu::gpu_context& ctx, gpu::gpu_engin
   return out;
 }
 
-// Deterministic renders (one sample, no jitter, no lens, no material that draws random numbers)
+// Deterministic renders (one sample, no jitter, no lens, no material that draws random numbers,
+// alpha blend included)
 // must agree to a level;
 // Monte Carlo ones to the noise rule.
 agreement agreement_for(const run_context& run, const camera& cam) {
   bool deterministic = run.win.samples() == 1 && !run.s.render.jitter && cam.lens_radius() == 0;
-  for (const auto& m : run.s.materials) deterministic &= !kind_of(m.m.type).random;
+  for (const auto& m : run.s.materials)  // a blend's passes draw random numbers too
+    deterministic &= !kind_of(m.m.type).random && m.m.alpha != alpha_mode::blend;
   return deterministic ? agreement{} : monte_carlo_agreement;
 }
 

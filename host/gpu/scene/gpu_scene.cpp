@@ -129,9 +129,11 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       medium_count_(std::uint32_t(a.media.size())),
       light_count_(std::uint32_t(a.lights.size())),
       with_uv_(a.with_uv),
-      any_textures_(
-          std::any_of(a.materials.begin(), a.materials.end(),
-                      [](const gpu_material& m) { return m.texture != RTVK_NO_TEXTURE; })),
+      any_textures_(std::any_of(a.materials.begin(), a.materials.end(),
+                                [](const gpu_material& m) {
+                                  return m.texture != RTVK_NO_TEXTURE ||
+                                         m.emission_texture != RTVK_NO_TEXTURE;
+                                })),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
       specs_(specs_of(arrays_of(a))),

@@ -1,5 +1,7 @@
 #include "packing.h"
 
+#include <stdexcept>
+
 namespace rtvk::gpu {
 
 camera_ubo to_ubo(const camera& cam) {
@@ -60,6 +62,8 @@ std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const objec
   out.reserve(slots.size());
   normals.clear();
   uvs.clear();
+  std::vector<vec4> colors;          // vertex colors, three each, stored after all the normals
+  std::vector<std::size_t> colored;  // the normals' entries whose colors those are, in order
   for (const object_slot o : slots) {
     const shape_lists& l = list_of(s, o);
     const triangle& t = l.triangles[o.index];
@@ -73,10 +77,24 @@ std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const objec
         normals.push_back(vec4(vec3(a.smooth ? a.normal[k] : rtvk::vec3(0)), flag));
         uvs.push_back(glm::vec2(a.uv[k]));
       }
+      if (a.has_color) {
+        colored.push_back(smooth);
+        for (std::size_t k = 0; k < 3; ++k) colors.push_back(vec4(a.color[k]));
+      }
     }
     const uint first = uint(l.spheres.size() + l.quads.size());
     out.push_back(
         {vec3(t.p[0]), uint(t.material), vec3(t.p[1]), first + o.index, vec3(t.p[2]), smooth});
+  }
+  // The third normal's w: the colors' entry (3 * w), exact in a float below 2^24; 0 for none
+  // (entry 0 is always some triangle's normals).
+  for (std::size_t k = 0; k < colored.size(); ++k) {
+    const std::size_t entry = normals.size() / 3;
+    if (entry >= (std::size_t(1) << 24))
+      throw std::runtime_error("more than 2^24 shaded triangles with vertex colors");
+    normals[3 * colored[k] + 2].w = float(entry);
+    normals.insert(normals.end(), colors.begin() + std::ptrdiff_t(3 * k),
+                   colors.begin() + std::ptrdiff_t(3 * k + 3));
   }
   return out;
 }
@@ -126,10 +144,11 @@ std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group
 std::vector<gpu_material> to_gpu_materials(const scene& s) {
   std::vector<gpu_material> out;
   out.reserve(s.materials.size());
+  const auto texture_of = [](int t) { return t < 0 ? RTVK_NO_TEXTURE : uint(t); };
   for (const auto& [name, m] : s.materials)
-    out.push_back({vec3(m.albedo), uint(m.type), float(m.fuzz), float(m.ir),
-                   m.texture < 0 ? RTVK_NO_TEXTURE : uint(m.texture),
-                   m.one_sided ? RTVK_MATERIAL_ONE_SIDED : 0u});
+    out.push_back({vec3(m.albedo), uint(m.type), float(m.fuzz), float(m.ir), texture_of(m.texture),
+                   material_flags(m), vec3(m.emission), texture_of(m.emission_texture),
+                   float(m.opacity), float(m.alpha_cutoff), 0, 0});
   return out;
 }
 
