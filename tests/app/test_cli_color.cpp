@@ -131,6 +131,9 @@ TEST(CliColor, DumpsKeepTheTransformAndMeshFilesAreSrgb) {
   EXPECT_NE(mesh.out.find("\"spp\": 32"), std::string::npos) << mesh.out;
   EXPECT_NE(mesh.out.find("\"jitter\": true"), std::string::npos) << mesh.out;
   EXPECT_NE(mesh.out.find("\"max_depth\": 16"), std::string::npos) << mesh.out;
+  EXPECT_NE(mesh.out.find("\"sky\": {\"horizon\":[0.3,0.3,0.3],\"zenith\":[0.7,0.7,0.7]}"),
+            std::string::npos)
+      << mesh.out;
 }
 
 TEST(CliColor, ImageTexturesDecodeByTheirColorSpace) {
