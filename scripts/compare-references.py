@@ -13,7 +13,9 @@ unsaturated (the model is gray, the grass and sky are not).
 usage: compare-references.py RTVK SAMPLES_DIR OUT_DIR [MODEL ...] [-- extra rtvk flags]
   SAMPLES_DIR holds <Model>/glTF-Binary/<Model>.glb or <Model>/glTF/<Model>.gltf and
   <Model>/screenshot/screenshot.{png,jpg} (the layout of KhronosGroup/glTF-Sample-Models).
-Writes OUT_DIR/<Model>.png, a side-by-side OUT_DIR/<Model>-side.png, prints a Markdown table.
+Writes OUT_DIR/<Model>.png, a side-by-side OUT_DIR/<Model>-side.png (rtvk's render cropped to
+the object, then the screenshot, both 200 pixels high), OUT_DIR/sheet.png with every pair two to a
+row (the README's picture), and prints a Markdown table.
 """
 import importlib.util
 import os
@@ -71,6 +73,38 @@ def mean_rgb(img, mask):
     return img[mask][:, ::-1].astype(np.float64).mean(axis=0) / 255.0  # BGR -> RGB, 0..1
 
 
+HEIGHT = 200  # pixels of each picture in the side-by-sides
+
+
+def crop(img, mask):
+    """The object's bounding box in the image, grown by a tenth a side, squared where it fits."""
+    ys, xs = np.nonzero(mask)
+    y0, y1, x0, x1 = ys.min(), ys.max() + 1, xs.min(), xs.max() + 1
+    m = int(0.1 * max(y1 - y0, x1 - x0))
+    return img[max(y0 - m, 0):y1 + m, max(x0 - m, 0):x1 + m]
+
+
+def fit(img):
+    w = max(1, round(img.shape[1] * HEIGHT / img.shape[0]))
+    return cv2.resize(img, (w, HEIGHT), interpolation=cv2.INTER_AREA)
+
+
+def sheet(pairs):
+    """The pairs two to a row, 8 white pixels between them."""
+    gap = 8
+    rows = [pairs[i:i + 2] for i in range(0, len(pairs), 2)]
+    width = max(sum(p.shape[1] for p in r) + gap * (len(r) - 1) for r in rows)
+    out = []
+    for r in rows:
+        line = np.full((HEIGHT, width, 3), 255, np.uint8)
+        x = 0
+        for p in r:
+            line[:, x:x + p.shape[1]] = p
+            x += p.shape[1] + gap
+        out += [line, np.full((gap, width, 3), 255, np.uint8)]
+    return np.vstack(out[:-1])
+
+
 def luminance(rgb):
     return float(np.dot(rgb, [0.2126, 0.7152, 0.0722]))
 
@@ -85,6 +119,7 @@ def main(argv):
     rtvk, samples, out = argv[1], argv[2], argv[3]
     names = argv[4:] or list(MODELS)
     os.makedirs(out, exist_ok=True)
+    pairs = []
     print("| model | rtvk mean RGB | screenshot mean RGB | largest channel difference | "
           "luminance ratio |")
     print("|---|---|---|---|---|")
@@ -99,13 +134,13 @@ def main(argv):
         ref = screenshot(samples, name)
         ref_mask = screenshot_mask(ref, MODELS.get(name, {"mask": "border"}))
         a, b = mean_rgb(mine, mask), mean_rgb(ref, ref_mask)
-        scale = mine.shape[0] / ref.shape[0]
-        side = np.hstack([mine, cv2.resize(ref, (int(ref.shape[1] * scale), mine.shape[0]),
-                                           interpolation=cv2.INTER_NEAREST)])
+        side = np.hstack([fit(crop(mine, mask)), fit(ref)])
         cv2.imwrite(os.path.join(out, name + "-side.png"), side)
+        pairs.append(side)
         fmt = lambda v: "(" + ", ".join(f"{x:.2f}" for x in v) + ")"
         print(f"| {name} | {fmt(a)} | {fmt(b)} | {np.abs(a - b).max():.2f} | "
               f"{luminance(a) / max(luminance(b), 1e-6):.2f} |")
+    cv2.imwrite(os.path.join(out, "sheet.png"), sheet(pairs))
 
 
 if __name__ == "__main__":
