@@ -1,31 +1,9 @@
 // The glTF reader's walk: the default scene's node tree with each node's transform, and each
 // mesh's triangle primitives with their positions, normals, texture coordinates and materials.
-#include <glm/gtc/quaternion.hpp>
-
 #include "gltf_primitive.h"
 #include "gltf_reader.h"
 
 namespace rtvk {
-
-// A node's own transform: its matrix, or translation * rotation * scale.
-transform node_transform(const tinygltf::Node& n) {
-  transform t;
-  if (n.matrix.size() == 16) {
-    for (int c = 0; c < 3; ++c)
-      for (int r = 0; r < 3; ++r) t.linear[c][r] = n.matrix[std::size_t(4 * c + r)];
-    t.offset = vec3(n.matrix[12], n.matrix[13], n.matrix[14]);
-    return t;
-  }
-  glm::dmat3 scale(1.0), rotation(1.0);
-  if (n.scale.size() == 3) scale = glm::dmat3(n.scale[0], 0, 0, 0, n.scale[1], 0, 0, 0, n.scale[2]);
-  if (n.rotation.size() == 4)  // x, y, z, w
-    rotation =
-        glm::mat3_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
-  t.linear = rotation * scale;
-  if (n.translation.size() == 3)
-    t.offset = vec3(n.translation[0], n.translation[1], n.translation[2]);
-  return t;
-}
 
 gltf_walker::gltf_walker(const tinygltf::Model& m, mesh_builder& b, const mesh_placement& how)
     : m_(m), b_(b), how_(how) {

@@ -13,6 +13,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "confined_path.h"
+#include "gltf_ext.h"
 #include "mesh_builder.h"
 #include "mesh_file.h"
 
@@ -35,9 +36,6 @@ struct uv_mapping {
   int set = 0;             // which TEXCOORD_n
   glm::dmat3 matrix{1.0};  // offset * rotation * scale, applied to (u, v, 1)
 };
-
-// gltf_nodes.cpp: a node's own transform: its matrix, or translation * rotation * scale.
-transform node_transform(const tinygltf::Node& n);
 
 // gltf_material.cpp: the file's materials, appended to the scene once each, with the textures
 // they use.

@@ -14,11 +14,8 @@
 #include "gltf_ext.h"
 
 namespace rtvk {
-namespace {
 
-// A node's own transform: its matrix, or translation * rotation * scale (as mesh_gltf.cpp's
-// walker places meshes).
-transform local_transform(const tinygltf::Node& n) {
+transform node_transform(const tinygltf::Node& n) {
   transform t;
   if (n.matrix.size() == 16) {
     for (int c = 0; c < 3; ++c)
@@ -36,6 +33,8 @@ transform local_transform(const tinygltf::Node& n) {
     t.offset = vec3(n.translation[0], n.translation[1], n.translation[2]);
   return t;
 }
+
+namespace {
 
 // A camera name --camera accepts (valid_camera_name): other characters become '_'.
 std::string usable_name(const std::string& raw) {
@@ -56,7 +55,7 @@ class camera_collector {
     // mesh_gltf.cpp's walker has checked the tree (indices, depth, no node twice) already.
     if (index < 0 || std::size_t(index) >= m_.nodes.size() || depth > 64) return;
     const tinygltf::Node& n = m_.nodes[std::size_t(index)];
-    const transform world = compose(parent, local_transform(n));
+    const transform world = compose(parent, node_transform(n));
     if (n.camera >= 0) add(n, index, world);
     for (const int c : n.children) walk(c, world, depth + 1);
   }

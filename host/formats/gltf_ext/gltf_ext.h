@@ -10,6 +10,10 @@
 
 namespace rtvk {
 
+// A node's own transform: its matrix, or translation * rotation * scale. What the glTF reader
+// places meshes and skins by, and add_gltf_cameras poses cameras by.
+transform node_transform(const tinygltf::Node& n);
+
 // Whether rtvk reads extension `ext` when a file requires it (extensionsRequired):
 // KHR_draco_mesh_compression and EXT_meshopt_compression.
 bool gltfx_honours(const std::string& ext);
