@@ -88,9 +88,7 @@ std::string texture_transforms(const sample_view& v, const framebuffer& fb) {
   out += at_least(count(fb, strongly_blue, bi, bj, 6), 60, "blue V");
   out += at_least(count(fb, strongly_cyan, ci, cj, 6), 60, "cyan UV");
   // Each arrow's tip: where it ends in a correct render (measured; the markers sit 0.1 to 0.2
-  // beyond), a little back along the arrow, dark; where the arrow points without the transform
-  // (at its yellow marker), or with the rotation backwards (red), light.
-  const double r = 1 / std::sqrt(2.0);
+  // beyond), a little back along the arrow, dark.
   const std::pair<glm::dvec2, const char*> tips[] = {
       {{-1.1 - 0.16, -0.55 - 0.30}, "rotation's arrow toward its green marker"},
       {{0.0 - 0.13, -0.55 + 0.10}, "scale's arrow toward its green marker"},
@@ -99,13 +97,13 @@ std::string texture_transforms(const sample_view& v, const framebuffer& fb) {
     const auto [i, j] = at(p.x, p.y);
     out += at_least(count(fb, dark, i, j, 2), 3, what);
   }
-  const std::pair<glm::dvec2, const char*> wrong[] = {
-      {{-1.1 + 0.278 - 0.1 * r, -0.55 - 0.278 + 0.1 * r}, "rotation's arrow at its yellow marker"},
-      {{-1.1 + 0.516 - 0.1, -0.55 + 0.079}, "rotation's arrow at its red marker"},
-      {{0.278 - 0.1 * r, -0.55 - 0.278 + 0.1 * r}, "scale's arrow at its yellow marker"}};
-  for (const auto& [p, what] : wrong) {
-    const auto [i, j] = at(p.x, p.y);
-    out += at_most(count(fb, dark, i, j, 1), 0, what);
+  // Where the arrow ends untransformed (measured: the same spot of each quad, whose markers
+  // the README calls yellow), light in each quad.
+  for (const auto& [x, what] : {std::pair(-1.1, "rotation's arrow untransformed"),
+                                std::pair(0.0, "scale's arrow untransformed"),
+                                std::pair(1.1, "all's arrow untransformed")}) {
+    const auto [i, j] = at(x + 0.12, -0.55 - 0.145);
+    out += at_most(count(fb, dark, i, j, 2), 0, what);
   }
   return out;
 }
