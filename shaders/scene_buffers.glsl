@@ -32,13 +32,21 @@ layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_no
 };
 
 #include "hit_triangle.h"
-// A triangle hit's vertex colors, blended into rec.color, where its shading entry `normals` has
-// some: the third normal's w is their entry (three vec4 at 3 * w in vertex_normals), 0 for none.
-void record_vertex_colors(uint normals, vec3 weights, precise inout hit_record rec) {
-  uint colors = normals == RTVK_FLAT ? 0u : uint(vertex_normals[3u * normals + 2u].w);
+// What a triangle hit's shading entry `normals` has beyond normals and uv, set into the record:
+// its vertex colors, blended into rec.color, where the third normal's w is their entry (three
+// vec4 at 3 * w in vertex_normals; 0 for none); its second texture coordinates, blended into
+// rec.uv1, where the second normal's w, read as a uint, has an entry above its bit 0 (three vec2
+// at 3 * (w >> 1) in vertex_uvs; 0 for none).
+void record_vertex_extras(uint normals, vec3 weights, precise inout hit_record rec) {
+  if (normals == RTVK_FLAT) return;
+  uint colors = uint(vertex_normals[3u * normals + 2u].w);
   if (colors != 0u)
     rec.color = blend_colors(vertex_normals[3u * colors], vertex_normals[3u * colors + 1u],
                              vertex_normals[3u * colors + 2u], weights);
+  uint second = uint(vertex_normals[3u * normals + 1u].w) >> 1u;
+  if (second != 0u)
+    rec.uv1 = triangle_uv(true, vertex_uvs[3u * second], vertex_uvs[3u * second + 1u],
+                          vertex_uvs[3u * second + 2u], weights);
 }
 
 #endif

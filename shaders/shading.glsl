@@ -74,7 +74,7 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   if ((m.flags & RTVK_MATERIAL_EMISSIVE) != 0u) {
     precise vec3 emitted =
         m.emission *
-        (any_textures ? material_color(vec3(1.0), m.emission_texture, rec) : vec3(1.0));
+        (any_textures ? emission_color(m.emission_texture, rec) : vec3(1.0));
     path_emits(p, emitted);
   }
   // Every multiply precise (ShaderPrecision): times 1 where the hit has no vertex colors, exact.

@@ -135,7 +135,7 @@ void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_r
                               weights);
     bool shaded = tri.normals != RTVK_FLAT;
     bool blended = found && shaded && vertex_normals[3u * tri.normals].w != 0.0;
-    bool has_uv = shaded && vertex_normals[3u * tri.normals + 1u].w != 0.0;
+    bool has_uv = shaded && (uint(vertex_normals[3u * tri.normals + 1u].w) & 1u) != 0u;
     vec3 n0 = vec3(0.0), n1 = vec3(0.0), n2 = vec3(0.0);  // read only where they exist
     if (blended) {
       n0 = vertex_normals[3u * tri.normals].xyz;
@@ -151,7 +151,7 @@ void record_object(uint ref, ray r, sheared_ray sr, float t, precise inout hit_r
     precise vec3 shading = shading_normal(tri.a, tri.b, tri.c, blended, n0, n1, n2, weights);
     precise vec2 uv = triangle_uv(has_uv, uv0, uv1, uv2, weights);
     record_triangle_hit(tri.a, tri.b, tri.c, shading, uv, tri.material, r, t, rec);
-    record_vertex_colors(tri.normals, weights, rec);
+    record_vertex_extras(tri.normals, weights, rec);
   }
 }
 

@@ -39,7 +39,7 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
                     surface_alpha(tables, m.opacity, uint(m.texture), rec), m.alpha_cutoff))
       continue;
     if ((flags & RTVK_MATERIAL_EMISSIVE) != 0u)
-      path_emits(p, m.emission * material_color(tables, color(1), uint(m.emission_texture), rec));
+      path_emits(p, m.emission * emission_color(tables, uint(m.emission_texture), rec));
     const color albedo = material_color(tables, m.albedo, uint(m.texture), rec) * color(rec.color);
     color c;
     if (path_hit(lights, p, rec, uint(m.type), flags, albedo, m.fuzz, m.ir, c)) return c;

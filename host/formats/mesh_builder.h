@@ -62,11 +62,13 @@ class mesh_builder {
   }
 
   // One face; `normals` are the file's (not yet placed), or none for a flat face; `colors` its
-  // corners' vertex colors (linear RGBA), or none.
+  // corners' vertex colors (linear RGBA), or none; `uv1` its second texture coordinates (the
+  // emission texture's, triangle_shading::uv1), or none.
   void add(const std::array<point3, 3>& p, int material,
            const std::optional<std::array<vec3, 3>>& normals, const std::array<glm::dvec2, 3>& uv,
            bool has_uv, const transform& node,
-           const std::optional<std::array<glm::vec4, 3>>& colors = std::nullopt) {
+           const std::optional<std::array<glm::vec4, 3>>& colors = std::nullopt,
+           const std::optional<std::array<glm::dvec2, 3>>& uv1 = std::nullopt) {
     if (object_count(s_) >= max_scene_objects)
       fail("faces", "more than " + std::to_string(max_scene_objects) + " objects in one scene");
     triangle t;
@@ -101,7 +103,12 @@ class mesh_builder {
       sh.has_color = true;
       if (mirrored) std::swap(sh.color[1], sh.color[2]);
     }
-    if (smooth || has_uv || colors) {
+    if (uv1) {
+      sh.uv1 = *uv1;
+      sh.has_uv1 = true;
+      if (mirrored) std::swap(sh.uv1[1], sh.uv1[2]);
+    }
+    if (smooth || has_uv || colors || uv1) {
       sh.uv = corners;
       sh.has_uv = has_uv;
       t.shading = std::int32_t(s_.shading.size());

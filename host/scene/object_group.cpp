@@ -52,6 +52,8 @@ triangle_shading placed(const triangle_shading& sh, const transform& t) {
   if (t.determinant() < 0) {  // as the triangle's vertices
     std::swap(out.normal[1], out.normal[2]);
     std::swap(out.uv[1], out.uv[2]);
+    std::swap(out.uv1[1], out.uv1[2]);
+    std::swap(out.color[1], out.color[2]);
   }
   return out;
 }

@@ -46,6 +46,11 @@ struct triangle_shading {
   std::array<glm::vec4, 3> color{};  // vertex colors (glTF COLOR_0, OBJ "v x y z r g b"): linear
                                      // RGBA, multiplying the material's color and alpha
   bool has_color = false;            // color came from the mesh
+  // A second set of texture coordinates, which the material's emission texture reads where the
+  // triangle has it (glTF's emissiveTexture on another TEXCOORD_n or transform than the base
+  // color's, that transform baked in); where it has not, the emission texture reads uv.
+  std::array<glm::dvec2, 3> uv1{};
+  bool has_uv1 = false;  // uv1 came from the mesh
   bool has_normals() const { return normal[0] != vec3(0); }
 };
 
@@ -54,9 +59,11 @@ struct triangle_attributes {
   std::array<vec3, 3> normal{};       // unit vertex normals, when smooth
   std::array<glm::dvec2, 3> uv{};     // texture coordinates, when has_uv
   std::array<glm::dvec4, 3> color{};  // vertex colors (linear RGBA), when has_color
+  std::array<glm::dvec2, 3> uv1{};    // the emission texture's coordinates, when has_uv1
   bool smooth = false;                // shaded by the blended normals, else flat
   bool has_uv = false;                // uv given by the mesh
   bool has_color = false;             // vertex colors given by the mesh
+  bool has_uv1 = false;               // a second set given by the mesh
 };
 inline triangle_attributes attributes_of(const triangle_shading& sh) {
   triangle_attributes a;
@@ -67,6 +74,8 @@ inline triangle_attributes attributes_of(const triangle_shading& sh) {
   a.uv = sh.uv;
   a.has_color = sh.has_color;
   for (std::size_t k = 0; k < 3; ++k) a.color[k] = glm::dvec4(sh.color[k]);
+  a.has_uv1 = sh.has_uv1;
+  a.uv1 = sh.uv1;
   return a;
 }
 

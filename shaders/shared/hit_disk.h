@@ -64,6 +64,7 @@ inline void record_disk_hit(disk_geometry d, uint material, ray r, real t,
   precise real scale = real(0.5) / d.radius;
   rec.uv = real2(real(0.5) + dot3(planar, d.u) * scale, real(0.5) + dot3(planar, d.v) * scale);
   rec.color = real4(1.0);
+  rec.uv1 = rec.uv;
   set_face_normal(rec, r, d.normal);
   rec.material = material;
   rec.offset = flat_offset(rec.p, r);

@@ -81,6 +81,7 @@ inline void record_triangle_hit(real3 a, real3 b, real3 c, real3 shading, real2 
   rec.t = t;
   rec.uv = uv;
   rec.color = real4(1.0);  // the vertex colors, where the triangle has some, are set after
+  rec.uv1 = uv;            // and so is a second set of texture coordinates
   rec.p = ray_at(r, t);
   precise real3 geometric = unit_vector(cross3(b - a, c - a));
   set_face_normal(rec, r, geometric);

@@ -101,6 +101,7 @@ inline bool hit_medium(medium_geometry m, ray r, real t_min, real t_max, real u,
   rec.offset = real(0.0);
   rec.uv = real2(0.0);
   rec.color = real4(1.0);
+  rec.uv1 = rec.uv;
   return true;
 }
 

@@ -54,6 +54,8 @@ struct hit_record {
   precise real2 uv;      // texture coordinates of p on the object (image textures read them)
   precise real4 color;   // the vertex colors blended at p (linear RGBA), 1 where none: multiply
                          // the material's color and alpha
+  precise real2 uv1;     // the second texture coordinates of p, which the emission texture
+                         // reads: uv where the object has no second set
 };
 
 // Where a ray leaving the hit along `direction` starts: lifted off the surface to the side it

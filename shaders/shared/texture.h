@@ -165,6 +165,13 @@ inline precise real3 material_color(TABLES_PARAM real3 albedo, uint texture, hit
   return texture_value(TABLES texture, rec.uv, rec.p);
 }
 
+// What a material's emission is multiplied by at a hit: its emission texture's value at the hit's
+// second texture coordinates (uv1: the first where the object has no second set), else 1.
+inline precise real3 emission_color(TABLES_PARAM uint texture, hit_record rec) {
+  if (texture == RTVK_NO_TEXTURE) return real3(1.0);
+  return texture_value(TABLES texture, rec.uv1, rec.p);
+}
+
 // The alpha texture `index` has at uv: an image's texel's top byte / 255 (its alpha), else 1.
 inline precise real texture_alpha(TABLES_PARAM uint index, real2 uv) {
   if (index == RTVK_NO_TEXTURE || TEXTURE_AT(index).type != RTVK_TEXTURE_IMAGE) return real(1.0);

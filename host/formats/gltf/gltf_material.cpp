@@ -62,9 +62,15 @@ gltf_materials::gltf_materials(const tinygltf::Model& m, mesh_builder& b) : m_(m
     materials_.push_back(b.add_material(b.name() + ":" + (mat.name.empty() ? k : mat.name),
                                         make(mat, "materials " + k)));
     const bool base = mat.pbrMetallicRoughness.baseColorTexture.index >= 0;
-    mappings_.push_back(mapping_of(base || mat.emissiveTexture.index < 0
-                                       ? mat.pbrMetallicRoughness.baseColorTexture
-                                       : mat.emissiveTexture));
+    const bool emissive = mat.emissiveTexture.index >= 0;
+    mappings_.push_back(mapping_of(base || !emissive ? mat.pbrMetallicRoughness.baseColorTexture
+                                                     : mat.emissiveTexture));
+    // The emissive texture's own set, where it reads other coordinates than the first set's.
+    const uv_mapping second = mapping_of(mat.emissiveTexture);
+    const bool differs = second.set != mappings_.back().set ||
+                         second.matrix != mappings_.back().matrix;
+    second_mappings_.push_back(base && emissive && differs ? std::optional(second)
+                                                           : std::nullopt);
   }
 }
 

@@ -65,7 +65,8 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vect
                                 const std::string& where) {
   if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1)
     b_.fail(where, "mode " + std::to_string(prim.mode) + " is not triangles (4)");
-  const primitive_vertices v(m_, prim, mapping_of(prim), weights, b_, where);
+  const primitive_vertices v(m_, prim, mapping_of(prim), second_mapping_of(prim), weights, b_,
+                             where);
   std::optional<accessor_reader> idx;
   if (prim.indices >= 0) {
     idx.emplace(m_, prim.indices, b_, where + " indices");
@@ -84,7 +85,7 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vect
     const std::string face = where + " triangle " + std::to_string(f);
     std::array<point3, 3> p;
     std::array<vec3, 3> n;
-    std::array<glm::dvec2, 3> uv{};
+    std::array<glm::dvec2, 3> uv{}, uv1{};
     std::array<glm::vec4, 3> color{};
     for (std::size_t k = 0; k < 3; ++k) {
       const std::uint64_t i = idx ? idx->index(3 * f + k) : 3 * f + k;
@@ -100,14 +101,12 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vect
       }
       p[k] = b_.position(q, t, face);
       if (v.has_color()) color[k] = v.color(std::size_t(i));
-      if (v.has_uv()) {
-        uv[k] = v.uv(std::size_t(i));
-        if (!(std::abs(uv[k].x) <= 1e6 && std::abs(uv[k].y) <= 1e6))
-          b_.fail(face + " " + v.texcoord(), "is not finite or beyond +-1e6");
-      }
+      if (v.has_uv()) uv[k] = checked_uv(v.uv(std::size_t(i)), face + " " + v.texcoord(0));
+      if (v.has_uv1()) uv1[k] = checked_uv(v.uv1(std::size_t(i)), face + " " + v.texcoord(1));
     }
     b_.add(p, material, v.has_normals() ? std::optional(n) : std::nullopt, uv, v.has_uv(), t,
-           v.has_color() ? std::optional(color) : std::nullopt);
+           v.has_color() ? std::optional(color) : std::nullopt,
+           v.has_uv1() ? std::optional(uv1) : std::nullopt);
   }
 }
 
@@ -116,6 +115,19 @@ uv_mapping gltf_walker::mapping_of(const tinygltf::Primitive& prim) const {
       std::size_t(prim.material) >= m_.materials.size())
     return {};
   return materials_->mapping(prim.material);
+}
+
+std::optional<uv_mapping> gltf_walker::second_mapping_of(const tinygltf::Primitive& prim) const {
+  if (how_.material >= 0 || prim.material < 0 || !materials_ ||
+      std::size_t(prim.material) >= m_.materials.size())
+    return std::nullopt;
+  return materials_->second_mapping(prim.material);
+}
+
+glm::dvec2 gltf_walker::checked_uv(glm::dvec2 uv, const std::string& where) const {
+  if (!(std::abs(uv.x) <= 1e6 && std::abs(uv.y) <= 1e6))
+    b_.fail(where, "is not finite or beyond +-1e6");
+  return uv;
 }
 
 int gltf_walker::material_of(const tinygltf::Primitive& prim, const std::string& where) {

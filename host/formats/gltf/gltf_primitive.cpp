@@ -10,19 +10,26 @@ using namespace tinygltf_types;
 
 primitive_vertices::primitive_vertices(const tinygltf::Model& m, const tinygltf::Primitive& prim,
                                        const uv_mapping& mapping,
+                                       const std::optional<uv_mapping>& second,
                                        const std::vector<double>& weights, const mesh_builder& b,
                                        const std::string& where)
-    : m_(m), b_(b), where_(where), mapping_(mapping) {
+    : m_(m), b_(b), where_(where), mapping_(mapping), second_(second) {
   pos_ = attribute(prim.attributes, "POSITION");
   if (!pos_) b_.fail(where, "has no POSITION");
   pos_->require({TINYGLTF_TYPE_VEC3}, {i8, u8, i16, u16}, 0, "is not VEC3 of floats or integers");
   const std::size_t n = pos_->count();
   nrm_ = attribute(prim.attributes, "NORMAL");
   if (nrm_) nrm_->require({TINYGLTF_TYPE_VEC3}, {i8, i16}, n, "is not one VEC3 per position");
-  texcoord_ = "TEXCOORD_" + std::to_string(mapping.set);
-  tex_ = attribute(prim.attributes, texcoord_);
+  texcoord_[0] = "TEXCOORD_" + std::to_string(mapping.set);
+  tex_ = attribute(prim.attributes, texcoord_[0]);
   if (tex_)
     tex_->require({TINYGLTF_TYPE_VEC2}, {i8, u8, i16, u16}, n, "is not one VEC2 per position");
+  if (second) {
+    texcoord_[1] = "TEXCOORD_" + std::to_string(second->set);
+    tex1_ = attribute(prim.attributes, texcoord_[1]);
+    if (tex1_)
+      tex1_->require({TINYGLTF_TYPE_VEC2}, {i8, u8, i16, u16}, n, "is not one VEC2 per position");
+  }
   col_ = attribute(prim.attributes, "COLOR_0");
   if (col_)
     col_->require({TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, {u8, u16}, n,
@@ -72,8 +79,9 @@ vec3 primitive_vertices::normal(std::size_t i) const {
 
 // Mapped by the texture transform in glTF's uv, whose v runs down the image from its top; then
 // flipped to rtvk's (the book's, OBJ's) v, up from its bottom.
-glm::dvec2 primitive_vertices::uv(std::size_t i) const {
-  const glm::dvec3 t = mapping_.matrix * glm::dvec3(tex_->get(i, 0), tex_->get(i, 1), 1);
+glm::dvec2 primitive_vertices::mapped(const accessor_reader& tex, const uv_mapping& mapping,
+                                      std::size_t i) {
+  const glm::dvec3 t = mapping.matrix * glm::dvec3(tex.get(i, 0), tex.get(i, 1), 1);
   return glm::dvec2(t.x, 1 - t.y);
 }
 

@@ -45,8 +45,13 @@ class gltf_materials {
   // The scene's material for the file's material k; fails naming `where` if there is none.
   int scene_material(int k, const std::string& where) const;
   // The texture coordinates the file's material k reads (its base color texture's; else its
-  // emissive texture's): rtvk's triangles carry one set.
+  // emissive texture's): a triangle's uv.
   const uv_mapping& mapping(int k) const { return mappings_[std::size_t(k)]; }
+  // Its emissive texture's, where it has both textures and they read different sets or
+  // transforms: a triangle's second set (triangle_shading::uv1); else none.
+  const std::optional<uv_mapping>& second_mapping(int k) const {
+    return second_mappings_[std::size_t(k)];
+  }
 
  private:
   material make(const tinygltf::Material& mat, const std::string& where);
@@ -60,6 +65,7 @@ class gltf_materials {
   mesh_builder& b_;
   std::vector<int> materials_;        // the file's material k -> the scene's
   std::vector<uv_mapping> mappings_;  // the file's material k's texture coordinates
+  std::vector<std::optional<uv_mapping>> second_mappings_;  // and its emissive texture's
   // The file's image k decoded in one color space, shared by every texture that uses it.
   std::map<std::pair<int, texel_encoding>, std::shared_ptr<const texel_image>> images_;
 };
@@ -81,6 +87,9 @@ class gltf_walker {
   const std::vector<glm::dmat4>& joint_matrices(int skin, const std::string& node);
   int material_of(const tinygltf::Primitive& prim, const std::string& where);
   uv_mapping mapping_of(const tinygltf::Primitive& prim) const;
+  std::optional<uv_mapping> second_mapping_of(const tinygltf::Primitive& prim) const;
+  // A vertex's texture coordinates, failing naming `where` unless finite and within +-1e6.
+  glm::dvec2 checked_uv(glm::dvec2 uv, const std::string& where) const;
 
   const tinygltf::Model& m_;
   mesh_builder& b_;

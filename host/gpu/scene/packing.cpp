@@ -1,6 +1,7 @@
 #include "packing.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace rtvk::gpu {
 
@@ -18,6 +19,20 @@ namespace {
 // The lists a slot refers to: the scene's own, or its group's.
 const shape_lists& list_of(const scene& s, object_slot o) {
   return o.group == world_objects ? static_cast<const shape_lists&>(s) : s.groups[o.group];
+}
+
+// Appends `extras` (three items a triangle) after every triangle's own entry in `buffer` (three
+// items each) and returns the first one's entry there; throws where the last one's is not below
+// 2^bits (what a float's w can hold exactly).
+template <class T>
+std::size_t append_triples(std::vector<T>& buffer, const std::vector<T>& extras, int bits,
+                           const std::string& what) {
+  const std::size_t first = buffer.size() / 3;
+  if (first + extras.size() / 3 > (std::size_t(1) << bits))
+    throw std::runtime_error("more than 2^" + std::to_string(bits) + " shaded triangles with " +
+                             what);
+  buffer.insert(buffer.end(), extras.begin(), extras.end());
+  return first;
 }
 
 }  // namespace
@@ -64,6 +79,8 @@ std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const objec
   uvs.clear();
   std::vector<vec4> colors;          // vertex colors, three each, stored after all the normals
   std::vector<std::size_t> colored;  // the normals' entries whose colors those are, in order
+  std::vector<glm::vec2> seconds;    // second texture coordinates, three each, after all the uvs
+  std::vector<std::size_t> mapped;   // the entries whose second sets those are, in order
   for (const object_slot o : slots) {
     const shape_lists& l = list_of(s, o);
     const triangle& t = l.triangles[o.index];
@@ -72,7 +89,8 @@ std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const objec
       const triangle_attributes a = attributes_of(l.shading[std::size_t(t.shading)]);
       smooth = uint(normals.size() / 3);
       for (std::size_t k = 0; k < 3; ++k) {
-        // w flags (shared_types.h, gpu_triangle::normals): blended on the first, uv on the second.
+        // w flags (geometry_types.h, gpu_triangle::normals): blended on the first, uv on the
+        // second (its bit 0; the entries are set below).
         const float flag = k == 0 ? float(a.smooth) : k == 1 ? float(a.has_uv) : 0.0f;
         normals.push_back(vec4(vec3(a.smooth ? a.normal[k] : rtvk::vec3(0)), flag));
         uvs.push_back(glm::vec2(a.uv[k]));
@@ -81,21 +99,24 @@ std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const objec
         colored.push_back(smooth);
         for (std::size_t k = 0; k < 3; ++k) colors.push_back(vec4(a.color[k]));
       }
+      if (a.has_uv1) {
+        mapped.push_back(smooth);
+        for (std::size_t k = 0; k < 3; ++k) seconds.push_back(glm::vec2(a.uv1[k]));
+      }
     }
     const uint first = uint(l.spheres.size() + l.quads.size());
     out.push_back(
         {vec3(t.p[0]), uint(t.material), vec3(t.p[1]), first + o.index, vec3(t.p[2]), smooth});
   }
-  // The third normal's w: the colors' entry (3 * w), exact in a float below 2^24; 0 for none
-  // (entry 0 is always some triangle's normals).
-  for (std::size_t k = 0; k < colored.size(); ++k) {
-    const std::size_t entry = normals.size() / 3;
-    if (entry >= (std::size_t(1) << 24))
-      throw std::runtime_error("more than 2^24 shaded triangles with vertex colors");
-    normals[3 * colored[k] + 2].w = float(entry);
-    normals.insert(normals.end(), colors.begin() + std::ptrdiff_t(3 * k),
-                   colors.begin() + std::ptrdiff_t(3 * k + 3));
-  }
+  // The third normal's w: the colors' entry (3 * w; 0 for none, entry 0 being some triangle's
+  // normals). The second normal's w: bit 0 the uv flag, the bits above it the second set's entry
+  // in the uvs (3 * (w >> 1); 0 for none). Both exact in a float below 2^24.
+  const std::size_t color_entry = append_triples(normals, colors, 24, "vertex colors");
+  for (std::size_t k = 0; k < colored.size(); ++k)
+    normals[3 * colored[k] + 2].w = float(color_entry + k);
+  const std::size_t second_entry = append_triples(uvs, seconds, 23, "a second texture set");
+  for (std::size_t k = 0; k < mapped.size(); ++k)
+    normals[3 * mapped[k] + 1].w += float(2 * (second_entry + k));
   return out;
 }
 
