@@ -75,4 +75,33 @@ inline color vertex_color_at(double x, double y) {
   return (1 - t) * color(1, 0, 0) + s * color(0, 0, 1) + (t - s) * color(1, 1, 1);
 }
 
+// Two triangles covering the view at z = -1 (x and y in [-1, 1]), flat, their color and their
+// emission (1) both from one image of two texels, red then green: the color reads the first
+// texture coordinates, which put every point on the red texel (u in [0.05, 0.45]); the emission
+// reads the second set, on the green texel (u in [0.55, 0.95]), where a triangle has it. The first
+// triangle (x >= y) has it and shows red + green; the second has none, its emission reading the
+// first set, and shows 2 * red.
+inline scene second_uv_scene() {
+  scene s = surface_scene(flat_material(color(0)), flat_material(color(0)));
+  s.quads.clear();
+  s.textures.push_back(row_texture({0xff0000ffu, 0xff00ff00u}));
+  s.materials[0].m.texture = 0;
+  s.materials[0].m.emission = color(1);
+  s.materials[0].m.emission_texture = 0;
+  const point3 a(-1, -1, -1), b(1, -1, -1), c(1, 1, -1), d(-1, 1, -1);
+  const auto u = [](double lo, double hi, const point3& p) {  // x = -1..1 to u = lo..hi
+    return glm::dvec2(lo + (hi - lo) * (p.x + 1) / 2, 0.5);
+  };
+  triangle_shading first, second;
+  first.uv = {u(0.05, 0.45, a), u(0.05, 0.45, b), u(0.05, 0.45, c)};
+  first.uv1 = {u(0.55, 0.95, a), u(0.55, 0.95, b), u(0.55, 0.95, c)};
+  first.has_uv = first.has_uv1 = true;
+  second.uv = {u(0.05, 0.45, a), u(0.05, 0.45, c), u(0.05, 0.45, d)};
+  second.has_uv = true;
+  s.shading = {first, second};
+  s.triangles.push_back({{a, b, c}, 0, 0});
+  s.triangles.push_back({{a, c, d}, 0, 1});
+  return s;
+}
+
 }  // namespace rtvk::test

@@ -71,6 +71,24 @@ TEST(Surface, VertexColorsInterpolateAcrossTheTriangles) {
   EXPECT_EQ(f.at(0, 0), color(1, 1, 1));          // top left: white
 }
 
+// The emission texture reads the second texture coordinates where a triangle has them, the color
+// the first: red + green where it has them, 2 * red where it has not (tests/surface_scenes.h).
+// Off the diagonal, where the two triangles meet, every pixel is exact.
+TEST(Surface, TheEmissionTextureReadsTheSecondTextureCoordinates) {
+  const framebuffer f = render_surface(test::second_uv_scene());
+  const int n = f.width();
+  int wrong = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      if (x + y == n - 1) continue;      // on the diagonal: either triangle
+      const bool first = x + y > n - 1;  // x >= y in the plane (row 0 at the top)
+      wrong += f.at(x, y) != (first ? color(1, 1, 0) : color(2, 0, 0));
+    }
+  EXPECT_EQ(wrong, 0) << "e.g. bottom right " << f.at(n - 1, n - 1).x << ", "
+                      << f.at(n - 1, n - 1).y << "; top left " << f.at(0, 0).x << ", "
+                      << f.at(0, 0).y;
+}
+
 // A mask whose texture's alpha is 0 on its left half and 255 on its right shows the back quad on
 // the left and its own texel on the right, exactly.
 TEST(Surface, AMaskShowsWhatIsBehindWhereTheTexturesAlphaIsBelowTheCutoff) {

@@ -1,5 +1,6 @@
 // The surface features beyond the books on the GPU (compute BVH and --accel none) against the
-// CPU reference: emission, vertex colors, alpha mask and blend, back-face culling
+// CPU reference: emission (its texture on a second uv set), vertex colors, alpha mask and blend,
+// back-face culling
 // (tests/surface_scenes.h; their known answers are tests/cpu/test_surface.cpp's). Both backends
 // draw the same random numbers, so even the blend's stochastic passes agree pixel for pixel; the
 // bound (1e-5) is float's rounding of the colors and the vertex colors' blend.
@@ -47,6 +48,7 @@ TEST_F(GpuSurface, EmissionVertexColorsAlphaAndCullingMatchTheCpu) {
   expect_agreement(textured, "emission");
 
   expect_agreement(test::vertex_color_scene(), "vertex colors");
+  expect_agreement(test::second_uv_scene(), "second texture coordinates");
 
   material mask = test::flat_material(color(1));
   mask.alpha = alpha_mode::mask;

@@ -67,10 +67,9 @@ gltf_materials::gltf_materials(const tinygltf::Model& m, mesh_builder& b) : m_(m
                                                      : mat.emissiveTexture));
     // The emissive texture's own set, where it reads other coordinates than the first set's.
     const uv_mapping second = mapping_of(mat.emissiveTexture);
-    const bool differs = second.set != mappings_.back().set ||
-                         second.matrix != mappings_.back().matrix;
-    second_mappings_.push_back(base && emissive && differs ? std::optional(second)
-                                                           : std::nullopt);
+    const bool differs =
+        second.set != mappings_.back().set || second.matrix != mappings_.back().matrix;
+    second_mappings_.push_back(base && emissive && differs ? std::optional(second) : std::nullopt);
   }
 }
 

@@ -18,8 +18,8 @@ class primitive_vertices {
   // `weights`: the morph targets' weights (the node's, else the mesh's; missing ones 0).
   primitive_vertices(const tinygltf::Model& m, const tinygltf::Primitive& prim,
                      const uv_mapping& mapping, const std::optional<uv_mapping>& second,
-                     const std::vector<double>& weights,
-                     const mesh_builder& b, const std::string& where);
+                     const std::vector<double>& weights, const mesh_builder& b,
+                     const std::string& where);
 
   std::size_t count() const { return pos_->count(); }
   bool has_normals() const { return nrm_.has_value(); }
@@ -53,7 +53,7 @@ class primitive_vertices {
   const mesh_builder& b_;
   std::string where_;
   uv_mapping mapping_;
-  std::optional<uv_mapping> second_;  // the second set's, when the material reads one
+  std::optional<uv_mapping> second_;     // the second set's, when the material reads one
   std::array<std::string, 2> texcoord_;  // the attributes the two sets come from
   std::optional<accessor_reader> pos_, nrm_, tex_, tex1_, col_, joints_, weights_;
   // Morph targets with a weight that is not 0: the weight and the target's displacements.
