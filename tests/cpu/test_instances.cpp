@@ -7,6 +7,7 @@
 
 #include "bvh_world.h"
 #include "image_compare.h"
+#include "object_group.h"
 #include "quantize.h"
 #include "render_cpu.h"
 #include "render_helpers.h"
@@ -116,6 +117,28 @@ TEST(Instances, ExactTiesGoToTheLaterInstanceAsInTheScan) {
 // A group nothing places draws nothing, on the BVH as on the list: with no objects of the
 // scene's own, its tree once sat at node 0 where the scene's should be, and the CPU's BVH drew it
 // (found in review).
+// A mirroring placement swaps a triangle's second and third corners (its front kept where its
+// normals point): every per-corner value of its shading goes with its corner, the second
+// texture coordinates and the vertex colors as the normals and uv (the colors were left behind).
+TEST(Instances, AMirroredCopyKeepsEachCornersShading) {
+  triangle_shading sh;
+  for (std::size_t k = 0; k < 3; ++k) {
+    sh.normal[k] = vec3(0, 0, 1 + double(k));
+    sh.uv[k] = glm::dvec2(double(k), 0);
+    sh.uv1[k] = glm::dvec2(0, double(k));
+    sh.color[k] = glm::vec4(float(k), 0, 0, 1);
+  }
+  sh.has_uv = sh.has_uv1 = sh.has_color = true;
+  const triangle_shading out =
+      placed(sh, make_transform(vec3(-1, 1, 1), vec3(0, 1, 0), 0, vec3(0)));
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t from = k == 0 ? 0 : 3 - k;
+    EXPECT_EQ(out.uv[k], sh.uv[from]) << k;
+    EXPECT_EQ(out.uv1[k], sh.uv1[from]) << k;
+    EXPECT_EQ(out.color[k], sh.color[from]) << k;
+  }
+}
+
 TEST(Instances, AGroupNoInstancePlacesIsNotDrawn) {
   const scene s = parse_scene_json(
       R"({"materials":{"n":{"type":"normal"}},"spheres":[],)"

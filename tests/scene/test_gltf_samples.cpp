@@ -115,6 +115,17 @@ std::string two_sided(const sample_view& v, const framebuffer& fb) {
   return at_least(count(fb, wood, x, y, 30), 61 * 61 * 9 / 10, "wood in the middle");
 }
 
+// MultiUVTest: its emissive texture reads TEXCOORD_1, which puts the glTF logo (green on black)
+// on every face over its base color; the first set would put "Multiple UVs not supported" there
+// in white, which added to any base color leaves no channel below 1.
+std::string multi_uv(const sample_view& v, const framebuffer& fb) {
+  const auto white = [](const color& c) { return std::min({c.r, c.g, c.b}) > 1.0; };
+  const auto logo = [](const color& c) { return c.g > 1.1 && c.g > c.r + 0.15 && c.b < 0.95; };
+  const auto [x, y] = pixel_of(v, v.center);
+  return at_most(count(fb, white), 3, "white (the first set's text)") +
+         at_least(count(fb, logo, x, y, 40), 100, "the logo's green");
+}
+
 }  // namespace
 
 std::vector<sample_case> sample_cases() {
@@ -136,6 +147,9 @@ std::vector<sample_case> sample_cases() {
        {sample_scene("TwoSidedPlane/TwoSidedPlane.gltf", up, vec3(0, 0, -1), 96),
         sample_scene("TwoSidedPlane/TwoSidedPlane.gltf", -up, vec3(0, 0, 1), 96)},
        two_sided},
+      {"MultiUVTest",
+       {sample_scene("MultiUVTest/MultiUVTest.glb", vec3(1, 1, 2), up, 96)},
+       multi_uv},
   };
 }
 

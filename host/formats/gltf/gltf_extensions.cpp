@@ -16,7 +16,7 @@ struct honoured_extension {
 };
 constexpr honoured_extension honoured[] = {
     {"KHR_mesh_quantization", "integer attributes (gltf_accessor.cpp)"},
-    {"KHR_texture_transform", "baked into the triangles' uv (gltf_material.cpp)"},
+    {"KHR_texture_transform", "baked into the triangles' uv and uv1 (gltf_material.cpp)"},
     {"KHR_materials_emissive_strength", "scales the material's emission"},
     {"KHR_materials_transmission", "factor >= 0.5: glass (approximated)"},
     {"KHR_materials_ior", "the glass's index"},
