@@ -168,6 +168,30 @@ TEST(GltfSamples, EachFeatureTestModelRendersAsItsReadmeSaysAPassLooks) {
     }
 }
 
+// MultiUVTest's material reads TEXCOORD_0 for its base color and TEXCOORD_1 for its emissive
+// texture: every triangle carries both, the second set in the logo's corner of the image (glTF's
+// [0, 0.25] square, v flipped to rtvk's), the first spread over the image. A model of one set
+// (TextureCoordinateTest) carries no second one.
+TEST(GltfSamples, TheEmissiveTexturesOwnSetIsEachTrianglesSecondSet) {
+  const scene multi = mesh_scene(gltf_samples / "MultiUVTest/MultiUVTest.glb");
+  int without = 0, outside = 0;
+  double widest = 0;
+  for (const triangle& t : multi.triangles) {
+    const triangle_shading& sh = multi.shading.at(std::size_t(t.shading));
+    without += !sh.has_uv1 || !sh.has_uv;
+    for (std::size_t k = 0; k < 3; ++k) {
+      outside += sh.uv1[k].x < 0 || sh.uv1[k].x > 0.25 || sh.uv1[k].y < 0.75 || sh.uv1[k].y > 1;
+      widest = std::max(widest, sh.uv[k].x);
+    }
+  }
+  EXPECT_EQ(multi.triangles.size(), 12u);
+  EXPECT_EQ(without, 0);
+  EXPECT_EQ(outside, 0);
+  EXPECT_GT(widest, 0.7);  // the first set reaches the image's third column
+  const scene one = mesh_scene(gltf_samples / "TextureCoordinateTest/TextureCoordinateTest.glb");
+  for (const triangle_shading& sh : one.shading) EXPECT_FALSE(sh.has_uv1);
+}
+
 void dump(const std::string& name, std::size_t k, const sample_view& v, const framebuffer& fb) {
   const char* folder = std::getenv("RTVK_SAMPLES_DUMP");
   if (!folder) return;
