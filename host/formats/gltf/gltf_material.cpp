@@ -65,11 +65,15 @@ gltf_materials::gltf_materials(const tinygltf::Model& m, mesh_builder& b) : m_(m
     const bool emissive = mat.emissiveTexture.index >= 0;
     mappings_.push_back(mapping_of(base || !emissive ? mat.pbrMetallicRoughness.baseColorTexture
                                                      : mat.emissiveTexture));
-    // The emissive texture's own set, where it reads other coordinates than the first set's.
+    // The emissive texture's own set, where its factor does not zero it and it reads other
+    // coordinates than the first set's.
     const uv_mapping second = mapping_of(mat.emissiveTexture);
+    const bool drawn = std::any_of(mat.emissiveFactor.begin(), mat.emissiveFactor.end(),
+                                   [](double f) { return unit(f) > 0; });
     const bool differs =
         second.set != mappings_.back().set || second.matrix != mappings_.back().matrix;
-    second_mappings_.push_back(base && emissive && differs ? std::optional(second) : std::nullopt);
+    second_mappings_.push_back(base && emissive && drawn && differs ? std::optional(second)
+                                                                    : std::nullopt);
   }
 }
 
