@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <vector>
 
 #include "gltf_samples.h"
@@ -60,6 +61,9 @@ orientation_file read_orientation_file() {
       f.cube_half =
           j["accessors"][mesh["primitives"][0]["attributes"]["POSITION"].get<int>()]["max"][0];
     if (name.rfind("Target", 0) != 0) continue;
+    for (const char* key : {"matrix", "rotation", "translation", "scale", "children"})
+      if (n.contains(key))  // then its vertices are not where it is drawn
+        throw std::runtime_error(name + " has a " + key + ": its place is not baked");
     const auto factor = j["materials"][mesh["primitives"][0]["material"].get<int>()]
                          ["pbrMetallicRoughness"]["baseColorFactor"];
     f.targets.push_back({name, glm::dvec3(factor[0], factor[1], factor[2]), positions(mesh)});
