@@ -136,6 +136,8 @@ std::vector<sample_case> sample_cases() {
        {sample_scene("TwoSidedPlane/TwoSidedPlane.gltf", up, vec3(0, 0, -1), 96),
         sample_scene("TwoSidedPlane/TwoSidedPlane.gltf", -up, vec3(0, 0, 1), 96)},
        two_sided},
+      {"OrientationTest", orientation_views(), orientation},
+      {"AlphaModes", {alpha_modes_view()}, alpha_modes},
   };
 }
 
