@@ -63,6 +63,23 @@ inline std::array<int, 2> pixel_of(const sample_view& v, const point3& p) {
   return {int(std::floor(0.5 * w * (1 + x))), int(std::floor(0.5 * w * (1 - y)))};
 }
 
+// The direction the camera looks from (unit, from `center` toward the eye).
+inline vec3 toward_eye(const sample_view& v) {
+  return glm::cross(v.right, v.up);
+}
+
+// The pixel (column, row, fractional) any point in front of the camera falls on, in perspective:
+// pixel_of for points off the plane through `center`.
+inline glm::dvec2 pixel_at(const sample_view& v, const point3& p) {
+  const point3 eye = main_camera(v.s).pose.lookfrom;
+  const double distance = glm::length(eye - v.center);
+  const vec3 from_eye = p - eye;
+  const double scale = distance / -glm::dot(from_eye, toward_eye(v)) / v.half;
+  const double w = v.s.render.width;
+  return {0.5 * w * (1 + glm::dot(from_eye, v.right) * scale),
+          0.5 * w * (1 - glm::dot(from_eye, v.up) * scale)};
+}
+
 using color_test = std::function<bool(const color&)>;
 
 // Pixels of `fb` within `r` pixels (a square) of (x, y) that pass `test`; the whole image when r <
@@ -107,5 +124,13 @@ struct sample_case {
 };
 
 std::vector<sample_case> sample_cases();  // tests/scene/test_gltf_samples.cpp
+
+// tests/scene/gltf_sample_checks.cpp: OrientationTest's views (one square onto each face of its
+// cube) and their check; AlphaModes (tests/data/gltf/AlphaModes, a small stand-in for Khronos'
+// AlphaBlendModeTest) and its check.
+std::vector<sample_view> orientation_views();
+std::string orientation(const sample_view& v, const framebuffer& fb);
+sample_view alpha_modes_view();
+std::string alpha_modes(const sample_view& v, const framebuffer& fb);
 
 }  // namespace rtvk::test

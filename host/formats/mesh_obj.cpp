@@ -107,6 +107,7 @@ class obj_maps {
     rtvk::texture t;
     t.type = texture_type::image;
     t.file = resolved(file).string();
+    t.color_space = texel_encoding::srgb;  // as decoded: a dump says so, and reads back alike
     t.image = decoded;
     t.even = tint;
     t.wrap_u = t.wrap_v = image_wrap::repeat;  // MTL maps tile

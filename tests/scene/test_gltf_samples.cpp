@@ -147,6 +147,8 @@ std::vector<sample_case> sample_cases() {
        {sample_scene("TwoSidedPlane/TwoSidedPlane.gltf", up, vec3(0, 0, -1), 96),
         sample_scene("TwoSidedPlane/TwoSidedPlane.gltf", -up, vec3(0, 0, 1), 96)},
        two_sided},
+      {"OrientationTest", orientation_views(), orientation},
+      {"AlphaModes", {alpha_modes_view()}, alpha_modes},
       {"MultiUVTest",
        {sample_scene("MultiUVTest/MultiUVTest.glb", vec3(1, 1, 2), up, 96)},
        multi_uv},

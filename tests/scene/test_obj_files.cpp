@@ -241,5 +241,28 @@ TEST(ObjFiles, AnyBytesInANameSurviveSceneDump) {
   EXPECT_NE(r.out.find("caf\xc3\xa9"), std::string::npos);
 }
 
+// An MTL map is decoded as sRGB (viewers' reading); a dumped scene must say so, or reading it back
+// decodes the same file by the book's gamma 2.2 (the dump wrote no "color_space": texel 56, not
+// 55, for a gray 128).
+TEST(ObjFiles, ADumpedSceneReadsItsMapsBackAsSrgb) {
+  const test::temp_dir dir;
+  image_rgb8 gray;
+  gray.width = gray.height = 2;
+  gray.rgb.assign(12, 128);
+  write(dir.path() / "t.png", encode_png(gray));
+  write(dir.path() / "t.mtl", "newmtl a\nKd 1 1 1\nmap_Kd t.png\n");
+  write(dir.path() / "t.obj",
+        "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\n"
+        "f 1/1 2/2 3/3\n");
+  const scene s = mesh_scene(dir.path() / "t.obj");
+  ASSERT_EQ(s.textures.size(), 1u);
+  EXPECT_EQ(s.textures[0].image->texels[0] & 255u, 55u);  // sRGB: 0.2158 -> floor(256 v)
+  write(dir.path() / "d.json", dump_scene_json(s));
+  const scene back = load_scene_file(dir.path() / "d.json");
+  ASSERT_EQ(back.textures.size(), 1u);
+  EXPECT_EQ(back.textures[0].color_space, texel_encoding::srgb);
+  EXPECT_EQ(back.textures[0].image->texels, s.textures[0].image->texels);
+}
+
 }  // namespace
 }  // namespace rtvk
