@@ -18,24 +18,6 @@
 
 namespace rtvk::test {
 
-// A .glb of a JSON document and its BIN chunk (the buffer without uri).
-inline std::string glb_of(std::string json, std::string bin) {
-  while (json.size() % 4) json += ' ';
-  while (bin.size() % 4) bin += '\0';
-  std::string out;
-  const auto u32 = [&](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-  u32(0x46546C67);  // "glTF"
-  u32(2);
-  u32(std::uint32_t(12 + 8 + json.size() + 8 + bin.size()));
-  u32(std::uint32_t(json.size()));
-  u32(0x4E4F534A);  // "JSON"
-  out += json;
-  u32(std::uint32_t(bin.size()));
-  u32(0x004E4942);  // "BIN\0"
-  out += bin;
-  return out;
-}
-
 // The Draco stream of a mesh's positions (quantized to `bits`), and the Draco id of POSITION.
 inline std::string draco_stream(const indexed_mesh& m, int bits, int& position_id) {
   draco::TriangleSoupMeshBuilder builder;

@@ -165,14 +165,9 @@ inline std::string gltf_json(const indexed_mesh& m, const std::string& uri = "",
          std::to_string(3 * m.faces.size()) + ",\"type\":\"SCALAR\"}]}";
 }
 
-// A .glb: the JSON chunk (its buffer the BIN chunk) and the BIN chunk.
-inline std::string glb_bytes(const indexed_mesh& m) {
-  std::string json = gltf_json(m, "x");
-  // The BIN chunk's buffer has no uri.
-  const std::string with_uri = "{\"uri\":\"x\",";
-  json.replace(json.find(with_uri), with_uri.size(), "{");
+// A .glb of a JSON document and its BIN chunk (the buffer without uri).
+inline std::string glb_of(std::string json, std::string bin) {
   while (json.size() % 4) json += ' ';
-  std::string bin = gltf_buffer(m);
   while (bin.size() % 4) bin += '\0';
   std::string out;
   const auto u32 = [&](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
@@ -186,6 +181,15 @@ inline std::string glb_bytes(const indexed_mesh& m) {
   u32(0x004E4942);  // "BIN\0"
   out += bin;
   return out;
+}
+
+// A .glb: the JSON chunk (its buffer the BIN chunk) and the BIN chunk.
+inline std::string glb_bytes(const indexed_mesh& m) {
+  std::string json = gltf_json(m, "x");
+  // The BIN chunk's buffer has no uri.
+  const std::string with_uri = "{\"uri\":\"x\",";
+  json.replace(json.find(with_uri), with_uri.size(), "{");
+  return glb_of(json, gltf_buffer(m));
 }
 
 // The mesh's faces as scene triangles of material `material`.
