@@ -4,6 +4,7 @@
 #include <string>
 #include <string_view>
 
+#include "pbr_material.h"
 #include "shared_types.h"
 #include "vec3.h"
 
@@ -18,6 +19,7 @@ enum class material_type : std::uint32_t {
   flat = RTVK_MATERIAL_FLAT,              // its albedo, unlit; no bounce (geometry and colors)
   diffuse_light = RTVK_MATERIAL_DIFFUSE_LIGHT,  // a lamp: emits its color, both sides; no bounce
   isotropic = RTVK_MATERIAL_ISOTROPIC,          // a medium's phase function: scatters every way
+  pbr = RTVK_MATERIAL_PBR,  // glTF's metallic-roughness model and its extensions (`pbr`)
 };
 
 // How a material's alpha (its opacity, 0 to 1) decides which hits count (glTF's alphaMode).
@@ -47,6 +49,8 @@ struct material {
   double opacity = 1;         // base alpha, 0 to 1: times the texture's alpha and the vertex alpha
   double alpha_cutoff = 0.5;  // mask: a hit counts where the alpha is at least this
   bool cull_back = false;     // rays that hit its back pass through (glTF doubleSided: false)
+  pbr_material pbr{};         // material_type::pbr: its parameters beyond albedo (base color),
+                              // texture (base color texture), emission and alpha
 };
 
 // The material's flags as the shared kernels read them (gpu_material::flags): what of its

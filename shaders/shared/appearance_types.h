@@ -16,6 +16,9 @@
 #define RTVK_MATERIAL_FLAT 4
 #define RTVK_MATERIAL_DIFFUSE_LIGHT 5  // emits its color (any strength); no bounce
 #define RTVK_MATERIAL_ISOTROPIC 6      // scatters every way alike: a medium's phase function
+// glTF 2.0's metallic-roughness model and its KHR_materials_* extensions (pbr.h); its parameters
+// beyond the base color are gpu_pbr[gpu_material::pbr]
+#define RTVK_MATERIAL_PBR 7
 // gpu_material::flags.
 // diffuse_light: emits from its front side only (the third book's)
 #define RTVK_MATERIAL_ONE_SIDED 1u
@@ -66,7 +69,7 @@ struct gpu_material {
   uint emission_texture;  // multiplies emission (gpu_texture index), or RTVK_NO_TEXTURE
   float opacity;          // base alpha, 0 to 1 (with _ALPHA_*)
   float alpha_cutoff;     // _ALPHA_MASK: a hit counts where the alpha is at least this
-  uint pad0;              // unused
+  uint pbr;               // RTVK_MATERIAL_PBR: its parameters, an index into gpu_pbr[]
   uint pad1;              // unused
 };
 #ifdef __cplusplus
@@ -80,9 +83,71 @@ static_assert(offsetof(gpu_material, emission) == 32);
 static_assert(offsetof(gpu_material, emission_texture) == 44);
 static_assert(offsetof(gpu_material, opacity) == 48);
 static_assert(offsetof(gpu_material, alpha_cutoff) == 52);
-static_assert(offsetof(gpu_material, pad0) == 56);
+static_assert(offsetof(gpu_material, pbr) == 56);
 static_assert(offsetof(gpu_material, pad1) == 60);
 static_assert(sizeof(gpu_material) == 64);
+#endif
+
+// std430 array element: a PBR material's parameters beyond gpu_material's (whose albedo and
+// texture are its base color and base color texture, whose emission, alpha and flags serve it as
+// any material), 128 bytes. Each texture is a gpu_texture index or RTVK_NO_TEXTURE; the channel it
+// reads is glTF's, and it multiplies its factor. host/scene/pbr_material.h holds the meanings.
+struct gpu_pbr {
+  vec3 specular_color;           // KHR_materials_specular: F0 tint of the dielectric, linear
+  float metallic;                // 0 dielectric to 1 metal
+  vec3 sheen_color;              // KHR_materials_sheen: linear; 0: no sheen
+  float roughness;               // perceptual roughness, 0 to 1 (GGX alpha = roughness^2)
+  vec3 attenuation_color;        // KHR_materials_volume: color white light has after
+                                 // attenuation_distance inside, linear
+  float attenuation_distance;    // scene units; 0 stands for infinity (no attenuation)
+  float ior;                     // KHR_materials_ior: index of refraction, 1.5
+  float specular;                // KHR_materials_specular: strength, 1
+  float transmission;            // KHR_materials_transmission: 0 to 1
+  float thickness;               // KHR_materials_volume: 0 thin-walled, else a closed volume
+  float clearcoat;               // KHR_materials_clearcoat: 0 to 1
+  float clearcoat_roughness;     // perceptual, 0 to 1
+  float sheen_roughness;         // perceptual, 0 to 1
+  float normal_scale;            // the normal map's xy scale
+  uint metallic_roughness_texture;   // G: roughness, B: metallic
+  uint normal_texture;               // tangent-space normal map, linear
+  uint specular_texture;             // A: specular
+  uint specular_color_texture;       // RGB: specular_color (sRGB)
+  uint transmission_texture;         // R: transmission
+  uint thickness_texture;            // G: thickness
+  uint clearcoat_texture;            // R: clearcoat
+  uint clearcoat_roughness_texture;  // G: clearcoat_roughness
+  uint clearcoat_normal_texture;     // the coat's normal map
+  uint sheen_color_texture;          // RGB: sheen_color (sRGB)
+  uint sheen_roughness_texture;      // A: sheen_roughness
+  float clearcoat_normal_scale;      // the coat's normal map's xy scale
+};
+#ifdef __cplusplus
+static_assert(offsetof(gpu_pbr, metallic) == 12);
+static_assert(offsetof(gpu_pbr, sheen_color) == 16);
+static_assert(offsetof(gpu_pbr, roughness) == 28);
+static_assert(offsetof(gpu_pbr, attenuation_color) == 32);
+static_assert(offsetof(gpu_pbr, attenuation_distance) == 44);
+static_assert(offsetof(gpu_pbr, ior) == 48);
+static_assert(offsetof(gpu_pbr, specular) == 52);
+static_assert(offsetof(gpu_pbr, transmission) == 56);
+static_assert(offsetof(gpu_pbr, thickness) == 60);
+static_assert(offsetof(gpu_pbr, clearcoat) == 64);
+static_assert(offsetof(gpu_pbr, clearcoat_roughness) == 68);
+static_assert(offsetof(gpu_pbr, sheen_roughness) == 72);
+static_assert(offsetof(gpu_pbr, normal_scale) == 76);
+static_assert(offsetof(gpu_pbr, metallic_roughness_texture) == 80);
+static_assert(offsetof(gpu_pbr, normal_texture) == 84);
+static_assert(offsetof(gpu_pbr, specular_texture) == 88);
+static_assert(offsetof(gpu_pbr, specular_color_texture) == 92);
+static_assert(offsetof(gpu_pbr, transmission_texture) == 96);
+static_assert(offsetof(gpu_pbr, thickness_texture) == 100);
+static_assert(offsetof(gpu_pbr, clearcoat_texture) == 104);
+static_assert(offsetof(gpu_pbr, clearcoat_roughness_texture) == 108);
+static_assert(offsetof(gpu_pbr, clearcoat_normal_texture) == 112);
+static_assert(offsetof(gpu_pbr, sheen_color_texture) == 116);
+static_assert(offsetof(gpu_pbr, sheen_roughness_texture) == 120);
+static_assert(offsetof(gpu_pbr, clearcoat_normal_scale) == 124);
+static_assert(sizeof(gpu_pbr) == 128);
 #endif
 
 // std430 array element: one texture, 48 bytes (shaders/shared/texture.h reads it).

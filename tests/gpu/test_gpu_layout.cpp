@@ -74,7 +74,7 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
          RTVK_MEMBER(gpu_material, texture), RTVK_MEMBER(gpu_material, flags),
          RTVK_MEMBER(gpu_material, emission), RTVK_MEMBER(gpu_material, emission_texture),
          RTVK_MEMBER(gpu_material, opacity), RTVK_MEMBER(gpu_material, alpha_cutoff),
-         RTVK_MEMBER(gpu_material, pad0), RTVK_MEMBER(gpu_material, pad1)}}},
+         RTVK_MEMBER(gpu_material, pbr), RTVK_MEMBER(gpu_material, pad1)}}},
       {"gpu_texture",
        {sizeof(gpu::gpu_texture),
         {RTVK_MEMBER(gpu_texture, even), RTVK_MEMBER(gpu_texture, type),
