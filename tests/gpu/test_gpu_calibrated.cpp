@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <map>
 #include <string>
 
@@ -81,12 +80,20 @@ TEST_F(GpuCalibrated, APosedMonteCarloViewMatchesTheCpuUnderEveryCalibratedModel
   scene s = test::small_scene("book-final", 96, 4);
   s.render.aspect = aspect_of(96, 48);
   s.render.max_depth = 10;
-  // Measured on lavapipe (Mesa 22.3.6), per model: PSNR dB, share of pixels over 2 levels.
+  // Measured on lavapipe (Mesa 22.3.6), per model: PSNR dB, share of pixels over 2 levels, the
+  // worst of each under seeds 0 to 7 (this test draws seed 0). The GPU's rays are the CPU's in
+  // float, not double (every operation precise; sin and cos the device's, which Vulkan only
+  // bounds), and a path that rounding sends another way changes a pixel's noise: which pixels,
+  // and how much, is luck, another device's rounding or another seed. At seed 0 alone lavapipe
+  // drew the cylindrical view as the CPU's exactly (inf dB: a floor of 70 dB, which one channel
+  // of one pixel 10 levels off fails) and an NVIDIA H200 (driver 580.159.04) one pixel over,
+  // 69.5 dB; under seeds 2 and 3 lavapipe itself measured 64.5 and 61.4 dB there, and under
+  // seed 5 58.7 dB for the fisheye-polynomial view (71.0 at seed 0).
   const std::map<projection, std::pair<double, double>> measured{
-      {projection::opencv, {57.0, 0.0011}},
-      {projection::opencv_fisheye, {54.8, 0.00065}},
-      {projection::fisheye_polynomial, {71.0, 0.00043}},
-      {projection::cylindrical, {std::numeric_limits<double>::infinity(), 0}}};
+      {projection::opencv, {54.7, 0.0017}},
+      {projection::opencv_fisheye, {54.8, 0.0011}},
+      {projection::fisheye_polynomial, {58.7, 0.00065}},
+      {projection::cylindrical, {61.4, 0.00065}}};
   for (projection p : calibrated_models) {
     SCOPED_TRACE(std::string(projection_name(p)));
     camera_pose pose = main_camera(s).pose;
