@@ -26,8 +26,8 @@ RTVK_KERNELS_BEGIN
 // the two directions' (1 - albedo), as KHR_materials_sheen writes it; reciprocal, and never more
 // than wo's, so that no layer adds energy.
 inline precise real pbr_under_coat(pbr_surface m, pbr_lobes l, real3 wi) {
-  precise real c_i = coat_albedo(m, dot3(wi, m.clearcoat_normal));
-  return l.coat_e_o > real(0.0) ? real(1.0) - max(l.coat_e_o, c_i) : real(1.0);
+  precise real c_i = coat_albedo(m, dot3(wi, l.coat_n));
+  return real(1.0) - max(l.coat_e_o, c_i);
 }
 inline precise real pbr_under_sheen(pbr_surface m, pbr_lobes l, real3 wi) {
   return real(1.0) -
@@ -63,8 +63,8 @@ inline precise real3 pbr_eval_base_reflection(pbr_surface m, pbr_lobes l, real3 
     f += l.spec_ms * ((real(1.0) - l.e_o) * (real(1.0) - e_i) * l.ms_norm * wi.z);
     // What the refraction's microfacets reflect totally (leaving a denser medium).
     precise real tir = pbr_total_reflection(m, dot3(wo, h)) ? real(1.0) : real(0.0);
-    f += l.trans * ((real(1.0) - l.s_o) * tir * ggx_d(h, l.alpha) * ggx_g2(wo, wi, l.alpha) /
-                    (real(4.0) * wo.z));
+    f += l.trans * (min(real(1.0) - l.s_o, real(1.0) - s_i) * tir * ggx_d(h, l.alpha) *
+                    ggx_g2(wo, wi, l.alpha) / (real(4.0) * wo.z));
   }
   return f;
 }
@@ -76,7 +76,11 @@ inline precise real3 pbr_eval_base_transmission(pbr_surface m, pbr_lobes l, real
   precise real3 h = pbr_trans_half(m, wo, wi);
   precise real oh = dot3(wo, h);
   precise real ih = dot3(wi, h);
-  precise real3 t = l.trans * (real(1.0) - l.s_o);
+  // What the reflection leaves, the smaller of the two directions' share: reciprocal (S is the
+  // same at eta and 1 / eta), and never more than wo's.
+  table_pos pi_ = table_pos_of(-wi.z, m.roughness);
+  precise real s_i = dielectric_albedo(l, read_ggx_e(pi_), read_ggx_es(pi_), l.e_avg, -wi.z);
+  precise real3 t = l.trans * min(real(1.0) - l.s_o, real(1.0) - s_i);
   if (m.thin) {
     precise real3 wr = real3(wi.x, wi.y, -wi.z);
     return t * (ggx_d(h, l.alpha) * ggx_g2(wo, wr, l.alpha) / (real(4.0) * wo.z));
@@ -87,16 +91,17 @@ inline precise real3 pbr_eval_base_transmission(pbr_surface m, pbr_lobes l, real
               (den * den * wo.z));
 }
 
-// The coat's rough reflection, its cosine taken against its own normal (so that a tilted coat
-// reflects no more than it receives).
-inline precise real pbr_eval_coat(pbr_surface m, pbr_lobes l, real3 wi) {
-  precise real3 ic = onb_to_inner(m.clearcoat_normal, wi);
-  if (l.coat_e_o <= real(0.0) || l.coat_smooth || ic.z <= real(0.0) || wi.z <= real(0.0))
-    return real(0.0);
+// The coat's rough reflection, F D G2 |wi.z| / (4 max(wo.nc wi.z, wi.nc wo.z)): with the coat's
+// normal nc the base's, the microfacet BRDF; tilted, symmetric in wo and wi (reciprocal) and never
+// more than F D G2 / (4 wo.nc), whose integral is the coat's albedo (so it adds no energy).
+inline precise real pbr_eval_coat(pbr_surface m, pbr_lobes l, real3 wo, real3 wi) {
+  precise real3 ic = onb_to_inner(l.coat_n, wi);
+  if (!l.coat_on || l.coat_smooth || ic.z <= real(0.0) || wi.z <= real(0.0)) return real(0.0);
   precise real3 h = unit_vector(l.coat_wo + ic);
   precise real f = real(0.04) + real(0.96) * schlick_weight(dot3(l.coat_wo, h));
-  return m.clearcoat * f * ggx_d(h, l.coat_alpha) * ggx_g2(l.coat_wo, ic, l.coat_alpha) /
-         (real(4.0) * l.coat_wo.z);
+  precise real cosines = max(l.coat_wo.z * wi.z, ic.z * wo.z);
+  return m.clearcoat * f * ggx_d(h, l.coat_alpha) * ggx_g2(l.coat_wo, ic, l.coat_alpha) * wi.z /
+         (real(4.0) * cosines);
 }
 
 inline precise real3 pbr_eval_lobes(pbr_surface m, pbr_lobes l, real3 wo, real3 wi) {
@@ -110,13 +115,13 @@ inline precise real3 pbr_eval_lobes(pbr_surface m, pbr_lobes l, real3 wo, real3 
   } else {
     f = pbr_under_sheen(m, l, wi) * pbr_eval_base_transmission(m, l, wo, wi);
   }
-  return pbr_under_coat(m, l, wi) * f + real3(pbr_eval_coat(m, l, wi));
+  return pbr_under_coat(m, l, wi) * f + real3(pbr_eval_coat(m, l, wo, wi));
 }
 
 inline precise real pbr_pdf_lobes(pbr_surface m, pbr_lobes l, real3 wo, real3 wi) {
   if (wo.z <= real(0.0) || wi.z == real(0.0)) return real(0.0);
   precise real p = real(0.0);
-  precise real3 ic = onb_to_inner(m.clearcoat_normal, wi);
+  precise real3 ic = onb_to_inner(l.coat_n, wi);
   if (l.p_coat > real(0.0) && !l.coat_smooth && ic.z > real(0.0) && wi.z > real(0.0)) {
     precise real3 h = unit_vector(l.coat_wo + ic);
     p += l.p_coat * ggx_pdf_vndf(l.coat_wo, h, l.coat_alpha) / (real(4.0) * dot3(l.coat_wo, h));
@@ -193,7 +198,7 @@ inline bool pbr_sample(pbr_surface m, real3 wo, real3 u, precise OUT(real3) wi,
     precise real3 ic = l.coat_smooth
                            ? real3(-l.coat_wo.x, -l.coat_wo.y, l.coat_wo.z)
                            : reflect_about(l.coat_wo, ggx_sample_vndf(l.coat_wo, l.coat_alpha, v));
-    wi = onb_to_outer(m.clearcoat_normal, ic);
+    wi = onb_to_outer(l.coat_n, ic);
     if (ic.z <= real(0.0)) return false;
   } else if (lobe == 1) {
     wi = l.base_smooth ? real3(-wo.x, -wo.y, wo.z)

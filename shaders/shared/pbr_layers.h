@@ -96,8 +96,12 @@ struct pbr_lobes {
   real sheen_e_o;     // the sheen lobe's albedo toward wo, sheen color 1
   real coat_alpha;    // the coat's GGX alpha
   bool coat_smooth;   // the coat is a delta mirror
-  real3 coat_wo;      // wo in the coat's frame (z = clearcoat_normal)
-  real coat_e_o;      // clearcoat times the coat's albedo toward wo
+  real3 coat_n;       // clearcoat_normal normalized again (a float normal is unit only to 1e-7,
+                      // and its frame's directions must agree with each other to 1e-9 and better)
+  real3 coat_wo;      // wo in the coat's frame (z = coat_n)
+  real coat_e_o;      // clearcoat times the coat's albedo toward wo (|wo.nc|: what the layers
+                      // below lose to it, even where wo is below the coat and sees none of it)
+  bool coat_on;       // clearcoat > 0 and wo above the coat: its lobe reflects
   real p_coat;        // pbr_sample's lobe choice: coat, reflection, transmission, and the
   real p_spec;        //   cosine lobe that carries the diffuse, sheen and multiple-scattering
   real p_trans;       //   lobes; they sum to 1 (or all 0: the surface is black)
@@ -165,9 +169,10 @@ inline precise pbr_lobes pbr_lobes_of(pbr_surface m, real3 wo) {
   // Clearcoat, in its own frame.
   l.coat_alpha = m.clearcoat_roughness * m.clearcoat_roughness;
   l.coat_smooth = l.coat_alpha < ggx_alpha_delta;
-  l.coat_wo = onb_to_inner(m.clearcoat_normal, wo);
-  bool coat_on = m.clearcoat > real(0.0) && l.coat_wo.z > real(0.0);
-  l.coat_e_o = coat_on ? coat_albedo(m, l.coat_wo.z) : real(0.0);
+  l.coat_n = unit_vector(m.clearcoat_normal);
+  l.coat_wo = onb_to_inner(l.coat_n, wo);
+  l.coat_on = m.clearcoat > real(0.0) && l.coat_wo.z > real(0.0);
+  l.coat_e_o = coat_albedo(m, l.coat_wo.z);
   // Lobe choice, each lobe by its estimated albedo toward wo (a floor keeps a lobe that is on
   // but estimated at 0 reachable).
   precise real under_coat = real(1.0) - l.coat_e_o;
@@ -176,7 +181,7 @@ inline precise pbr_lobes pbr_lobes_of(pbr_surface m, real3 wo) {
   precise real spec_w = max3(l.spec_f0 * (l.e_o - es) + l.spec_f90 * es);
   precise real base_w = real(1.0) - l.s_o;
   precise real ms_w = l.base_smooth ? real(0.0) : max3(l.spec_ms) * (real(1.0) - e);
-  l.p_coat = coat_on ? max(l.coat_e_o, real(0.01) * m.clearcoat) : real(0.0);
+  l.p_coat = l.coat_on ? max(l.coat_e_o, real(0.01) * m.clearcoat) : real(0.0);
   l.p_spec =
       under_sheen *
       (l.base_smooth ? max3(l.spec_f0 + (l.spec_f90 - l.spec_f0) * schlick_weight(wo.z)) : spec_w);
