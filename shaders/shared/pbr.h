@@ -167,33 +167,12 @@ inline precise real3 pbr_delta_value(pbr_surface m, pbr_lobes l, real3 wo, real3
   return lobe == 0 ? real3(coat) : under;
 }
 
-// Draws wi given wo from three uniform numbers u in [0, 1): weight is f |wi.z| / pdf, the factor
-// a path's throughput takes. delta: wi came from a delta lobe (pdf is then that lobe's choice
-// probability, and no other density may be mixed with it). False: no direction (absorbed).
-// u.x chooses the lobe (coat, reflection, transmission, cosine) in proportion to their albedo
-// estimates; u.y and u.z draw the direction within it.
-inline bool pbr_sample(pbr_surface m, real3 wo, real3 u, precise OUT(real3) wi,
-                       precise OUT(real3) weight, precise OUT(real) pdf, OUT(bool) delta) {
-  wi = real3(0.0, 0.0, 1.0);
-  weight = real3(0.0);
-  pdf = real(0.0);
-  delta = false;
-  if (wo.z <= real(0.0)) return false;
-  pbr_lobes l = pbr_lobes_of(m, wo);
+// A direction from one lobe (0 coat, 1 reflection, 2 transmission, 3 cosine) with u.y and u.z.
+// False where it has none (below the surface, or a thin wall's reflection below it).
+inline bool pbr_draw(pbr_surface m, pbr_lobes l, real3 wo, int lobe, real3 u,
+                     precise OUT(real3) wi) {
   real2 v = real2(u.y, u.z);
-  int lobe = u.x < l.p_coat                          ? 0
-             : u.x < l.p_coat + l.p_spec             ? 1
-             : u.x < l.p_coat + l.p_spec + l.p_trans ? 2
-             : l.p_cos > real(0.0)                   ? 3
-             : l.p_trans > real(0.0)                 ? 2
-             : l.p_spec > real(0.0)                  ? 1
-                                                     : 0;
-  precise real p_lobe = lobe == 0   ? l.p_coat
-                        : lobe == 1 ? l.p_spec
-                        : lobe == 2 ? l.p_trans
-                                    : l.p_cos;
-  if (p_lobe <= real(0.0)) return false;
-  delta = (lobe == 0 && l.coat_smooth) || ((lobe == 1 || lobe == 2) && l.base_smooth);
+  wi = real3(0.0, 0.0, 1.0);
   if (lobe == 0) {
     precise real3 ic = l.coat_smooth
                            ? real3(-l.coat_wo.x, -l.coat_wo.y, l.coat_wo.z)
@@ -221,6 +200,36 @@ inline bool pbr_sample(pbr_surface m, real3 wo, real3 u, precise OUT(real3) wi,
     precise real phi = real(2.0) * pi * u.z;
     wi = real3(r * cos(phi), r * sin(phi), sqrt(max(real(0.0), real(1.0) - u.y)));
   }
+  return true;
+}
+
+// Draws wi given wo from three uniform numbers u in [0, 1): weight is f |wi.z| / pdf, the factor
+// a path's throughput takes. delta: wi came from a delta lobe (pdf is then that lobe's choice
+// probability, and no other density may be mixed with it). False: no direction (absorbed).
+// u.x chooses the lobe (coat, reflection, transmission, cosine) in proportion to their albedo
+// estimates; u.y and u.z draw the direction within it.
+inline bool pbr_sample(pbr_surface m, real3 wo, real3 u, precise OUT(real3) wi,
+                       precise OUT(real3) weight, precise OUT(real) pdf, OUT(bool) delta) {
+  wi = real3(0.0, 0.0, 1.0);
+  weight = real3(0.0);
+  pdf = real(0.0);
+  delta = false;
+  if (wo.z <= real(0.0)) return false;
+  pbr_lobes l = pbr_lobes_of(m, wo);
+  int lobe = u.x < l.p_coat                          ? 0
+             : u.x < l.p_coat + l.p_spec             ? 1
+             : u.x < l.p_coat + l.p_spec + l.p_trans ? 2
+             : l.p_cos > real(0.0)                   ? 3
+             : l.p_trans > real(0.0)                 ? 2
+             : l.p_spec > real(0.0)                  ? 1
+                                                     : 0;
+  precise real p_lobe = lobe == 0   ? l.p_coat
+                        : lobe == 1 ? l.p_spec
+                        : lobe == 2 ? l.p_trans
+                                    : l.p_cos;
+  if (p_lobe <= real(0.0)) return false;
+  delta = (lobe == 0 && l.coat_smooth) || ((lobe == 1 || lobe == 2) && l.base_smooth);
+  if (!pbr_draw(m, l, wo, lobe, u, wi)) return false;
   if (delta) {
     if (wi.z == real(0.0) || (lobe == 0 && wi.z < real(0.0))) return false;
     pdf = p_lobe;

@@ -127,6 +127,31 @@ inline precise real sheen_albedo(pbr_lobes l, pbr_surface m, real cos_w) {
   return l.sheen_max * read_sheen_e(table_pos_of(abs(cos_w), m.sheen_roughness));
 }
 
+// pbr_sample's lobe choice, each lobe in proportion to its estimated albedo toward wo (a floor
+// keeps a lobe that is on but estimated at 0 reachable); e and es: the tables at wo.
+inline precise pbr_lobes pbr_choose_lobes(pbr_surface m, pbr_lobes l, real3 wo, real e, real es) {
+  precise real under_coat = real(1.0) - l.coat_e_o;
+  precise real sheen_w = l.sheen_max * max(l.sheen_e_o, real(0.01));
+  precise real under_sheen = under_coat * (real(1.0) - l.sheen_max * l.sheen_e_o);
+  precise real spec_w = max3(l.spec_f0 * (l.e_o - es) + l.spec_f90 * es);
+  precise real base_w = real(1.0) - l.s_o;
+  precise real ms_w = l.base_smooth ? real(0.0) : max3(l.spec_ms) * (real(1.0) - e);
+  l.p_coat = l.coat_on ? max(l.coat_e_o, real(0.01) * m.clearcoat) : real(0.0);
+  l.p_spec =
+      under_sheen *
+      (l.base_smooth ? max3(l.spec_f0 + (l.spec_f90 - l.spec_f0) * schlick_weight(wo.z)) : spec_w);
+  l.p_trans = under_sheen * max3(l.trans) * base_w;
+  l.p_cos = under_coat * sheen_w + under_sheen * (max3(l.diffuse) * base_w + ms_w);
+  precise real total = l.p_coat + l.p_spec + l.p_trans + l.p_cos;
+  // Divided, not multiplied by 1 / total: a single lobe's probability is then exactly 1.
+  precise real d = total > real(0.0) ? total : real(1.0);
+  l.p_coat = l.p_coat / d;
+  l.p_spec = l.p_spec / d;
+  l.p_trans = l.p_trans / d;
+  l.p_cos = l.p_cos / d;
+  return l;
+}
+
 // The lobes of m seen from wo (wo.z > 0).
 inline precise pbr_lobes pbr_lobes_of(pbr_surface m, real3 wo) {
   pbr_lobes l;
@@ -173,28 +198,7 @@ inline precise pbr_lobes pbr_lobes_of(pbr_surface m, real3 wo) {
   l.coat_wo = onb_to_inner(l.coat_n, wo);
   l.coat_on = m.clearcoat > real(0.0) && l.coat_wo.z > real(0.0);
   l.coat_e_o = coat_albedo(m, l.coat_wo.z);
-  // Lobe choice, each lobe by its estimated albedo toward wo (a floor keeps a lobe that is on
-  // but estimated at 0 reachable).
-  precise real under_coat = real(1.0) - l.coat_e_o;
-  precise real sheen_w = l.sheen_max * max(l.sheen_e_o, real(0.01));
-  precise real under_sheen = under_coat * (real(1.0) - l.sheen_max * l.sheen_e_o);
-  precise real spec_w = max3(l.spec_f0 * (l.e_o - es) + l.spec_f90 * es);
-  precise real base_w = real(1.0) - l.s_o;
-  precise real ms_w = l.base_smooth ? real(0.0) : max3(l.spec_ms) * (real(1.0) - e);
-  l.p_coat = l.coat_on ? max(l.coat_e_o, real(0.01) * m.clearcoat) : real(0.0);
-  l.p_spec =
-      under_sheen *
-      (l.base_smooth ? max3(l.spec_f0 + (l.spec_f90 - l.spec_f0) * schlick_weight(wo.z)) : spec_w);
-  l.p_trans = under_sheen * max3(l.trans) * base_w;
-  l.p_cos = under_coat * sheen_w + under_sheen * (max3(l.diffuse) * base_w + ms_w);
-  precise real total = l.p_coat + l.p_spec + l.p_trans + l.p_cos;
-  // Divided, not multiplied by 1 / total: a single lobe's probability is then exactly 1.
-  precise real d = total > real(0.0) ? total : real(1.0);
-  l.p_coat = l.p_coat / d;
-  l.p_spec = l.p_spec / d;
-  l.p_trans = l.p_trans / d;
-  l.p_cos = l.p_cos / d;
-  return l;
+  return pbr_choose_lobes(m, l, wo, e, es);
 }
 
 RTVK_KERNELS_END
