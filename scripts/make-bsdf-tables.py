@@ -142,7 +142,7 @@ def write(tables, avgs):
         "#define RTVK_TABLE(name, n) inline constexpr float name[n] = {",
         "#define RTVK_TABLE_END };",
         "#else",
-        "#define RTVK_TABLE(name, n) const float name[n] = float[n](",
+        "#define RTVK_TABLE(name, n) float name[n] = float[n](",
         "#define RTVK_TABLE_END );",
         "#endif",
         "",

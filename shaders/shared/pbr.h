@@ -44,8 +44,8 @@ inline precise real3 pbr_trans_half(pbr_surface m, real3 wo, real3 wi) {
 
 // Whether a microfacet with cosine c to wo reflects all the refraction would take: the exact
 // Fresnel's total internal reflection (not Schlick's), for a ray leaving a denser medium.
-inline bool pbr_total_reflection(pbr_surface m, real c) {
-  return !m.thin && real(1.0) - c * c >= m.eta * m.eta;
+inline bool pbr_total_reflection(pbr_surface m, pbr_lobes l, real c) {
+  return !l.trans_delta && !m.thin && real(1.0) - c * c >= m.eta * m.eta;
 }
 
 // The base's reflection (single and multiple scattering, and the refraction's total internal
@@ -62,7 +62,7 @@ inline precise real3 pbr_eval_base_reflection(pbr_surface m, pbr_lobes l, real3 
     f += fr * (ggx_d(h, l.alpha) * ggx_g2(wo, wi, l.alpha) / (real(4.0) * wo.z));
     f += l.spec_ms * ((real(1.0) - l.e_o) * (real(1.0) - e_i) * l.ms_norm * wi.z);
     // What the refraction's microfacets reflect totally (leaving a denser medium).
-    precise real tir = pbr_total_reflection(m, dot3(wo, h)) ? real(1.0) : real(0.0);
+    precise real tir = pbr_total_reflection(m, l, dot3(wo, h)) ? real(1.0) : real(0.0);
     f += l.trans * (min(real(1.0) - l.s_o, real(1.0) - s_i) * tir * ggx_d(h, l.alpha) *
                     ggx_g2(wo, wi, l.alpha) / (real(4.0) * wo.z));
   }
@@ -72,7 +72,7 @@ inline precise real3 pbr_eval_base_reflection(pbr_surface m, pbr_lobes l, real3 
 // The base's rough transmission, wi.z < 0: Walter et al. 2007 (without the 1 / eta^2 of
 // radiance, as the book's dielectric), or for thin walls the reflection lobe mirrored below.
 inline precise real3 pbr_eval_base_transmission(pbr_surface m, pbr_lobes l, real3 wo, real3 wi) {
-  if (l.base_smooth) return real3(0.0);
+  if (l.trans_delta) return real3(0.0);
   precise real3 h = pbr_trans_half(m, wo, wi);
   precise real oh = dot3(wo, h);
   precise real ih = dot3(wi, h);
@@ -130,10 +130,10 @@ inline precise real pbr_pdf_lobes(pbr_surface m, pbr_lobes l, real3 wo, real3 wi
     p += l.p_cos * wi.z / pi;
     if (!l.base_smooth) {
       precise real3 h = unit_vector(wo + wi);
-      precise real tir = pbr_total_reflection(m, dot3(wo, h)) ? l.p_trans : real(0.0);
+      precise real tir = pbr_total_reflection(m, l, dot3(wo, h)) ? l.p_trans : real(0.0);
       p += (l.p_spec + tir) * ggx_pdf_vndf(wo, h, l.alpha) / (real(4.0) * dot3(wo, h));
     }
-  } else if (!l.base_smooth && l.p_trans > real(0.0)) {
+  } else if (!l.trans_delta && l.p_trans > real(0.0)) {
     precise real3 h = pbr_trans_half(m, wo, wi);
     precise real oh = dot3(wo, h);
     precise real ih = dot3(wi, h);
@@ -183,11 +183,11 @@ inline bool pbr_draw(pbr_surface m, pbr_lobes l, real3 wo, int lobe, real3 u,
     wi = l.base_smooth ? real3(-wo.x, -wo.y, wo.z)
                        : reflect_about(wo, ggx_sample_vndf(wo, l.alpha, v));
   } else if (lobe == 2) {
-    precise real3 h = l.base_smooth ? real3(0.0, 0.0, 1.0) : ggx_sample_vndf(wo, l.alpha, v);
-    if (m.thin || (l.base_smooth && m.eta == real(1.0))) {
+    precise real3 h = l.trans_delta ? real3(0.0, 0.0, 1.0) : ggx_sample_vndf(wo, l.alpha, v);
+    if (m.thin || (l.trans_delta && abs(m.eta - real(1.0)) < pbr_eta_one)) {
       precise real3 r = reflect_about(wo, h);
       wi = real3(r.x, r.y, -r.z);   // thin: the light goes through without bending
-      if (l.base_smooth) wi = -wo;  // exactly
+      if (l.trans_delta) wi = -wo;  // exactly
       if (r.z <= real(0.0)) return false;
     } else if (refract_through(wo, h, m.eta, wi)) {
       if (wi.z >= real(0.0)) return false;
@@ -228,7 +228,8 @@ inline bool pbr_sample(pbr_surface m, real3 wo, real3 u, precise OUT(real3) wi,
                         : lobe == 2 ? l.p_trans
                                     : l.p_cos;
   if (p_lobe <= real(0.0)) return false;
-  delta = (lobe == 0 && l.coat_smooth) || ((lobe == 1 || lobe == 2) && l.base_smooth);
+  delta =
+      (lobe == 0 && l.coat_smooth) || (lobe == 1 && l.base_smooth) || (lobe == 2 && l.trans_delta);
   if (!pbr_draw(m, l, wo, lobe, u, wi)) return false;
   if (delta) {
     if (wi.z == real(0.0) || (lobe == 0 && wi.z < real(0.0))) return false;

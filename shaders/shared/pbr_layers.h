@@ -10,6 +10,11 @@
 
 RTVK_KERNELS_BEGIN
 
+// |eta - 1| below this refracts nothing: a refracting wall of (nearly) equal indices passes the
+// light straight through however rough it is (Walter's half vector o + eta i vanishes there), so
+// its transmission is a delta lobe along -wo.
+const real pbr_eta_one = real(1e-3);
+
 // The sheen distribution's smallest alpha (bsdf_tables.h is integrated with the same bound).
 const real sheen_alpha_min = real(1e-2);
 
@@ -78,6 +83,7 @@ inline precise real ggx_albedo(real e, real es, real e_avg, real f0, real f90) {
 struct pbr_lobes {
   real alpha;         // the base's GGX alpha
   bool base_smooth;   // alpha < ggx_alpha_delta: the reflection and transmission are deltas
+  bool trans_delta;   // the transmission is a delta: smooth, or refracting at eta ~ 1
   real3 spec_f0;      // the reflection lobe's Fresnel at normal incidence: the metal's and the
   real3 spec_f90;     //   dielectric's mixed by metallic (Schlick is linear in F0 and F90)
   real3 spec_ms;      // the reflection's multiple-scattering lobe's color (Kulla-Conty)
@@ -157,6 +163,7 @@ inline precise pbr_lobes pbr_lobes_of(pbr_surface m, real3 wo) {
   pbr_lobes l;
   l.alpha = m.roughness * m.roughness;
   l.base_smooth = l.alpha < ggx_alpha_delta;
+  l.trans_delta = l.base_smooth || (!m.thin && abs(m.eta - real(1.0)) < pbr_eta_one);
   // The dielectric's F0 from its ior and KHR_materials_specular; the metal's is its base color.
   precise real r0 = (m.eta - real(1.0)) / (m.eta + real(1.0));
   precise real3 d_f0 = min(r0 * r0 * m.specular_color, real3(1.0));  // before specular's weight
