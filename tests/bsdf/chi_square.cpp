@@ -25,7 +25,9 @@ double phi_of(glm::dvec3 w) {
 }
 
 // Adaptive Simpson's rule on [a, b] (Lyness): halves a panel until its two halves agree with the
-// whole to 15 eps, or the depth runs out (a peak narrower than doubles can resolve).
+// whole to 15 eps, or to a millionth of it (the float compilation's rounding, about 1e-7 of a
+// value, would otherwise keep every panel of a peak splitting down to the depth limit), or the
+// depth runs out (a peak narrower than doubles can resolve).
 template <typename F>
 double adapt(const F& f, double a, double b, double fa, double fm, double fb, double whole,
              double eps, int depth) {
@@ -34,7 +36,8 @@ double adapt(const F& f, double a, double b, double fa, double fm, double fb, do
   const double left = (m - a) / 6 * (fa + 4 * flm + fm);
   const double right = (b - m) / 6 * (fm + 4 * frm + fb);
   const double delta = left + right - whole;
-  if (depth <= 0 || std::abs(delta) <= 15 * eps) return left + right + delta / 15;
+  if (depth <= 0 || std::abs(delta) <= std::max(15 * eps, 1e-6 * std::abs(left + right)))
+    return left + right + delta / 15;
   return adapt(f, a, m, fa, flm, fm, left, 0.5 * eps, depth - 1) +
          adapt(f, m, b, fm, frm, fb, right, 0.5 * eps, depth - 1);
 }
