@@ -48,13 +48,16 @@ class float_bsdf final : public bsdf_under_test {
  public:
   explicit float_bsdf(const gpu::pbr_probe_entry& e) : e_(e) {}
   bsdf_sample sample(glm::dvec3 wo, glm::dvec3 u) const override {
-    gpu::pbr_probe_entry e = e_;
-    e.wo = glm::vec3(wo);
     const float below_one = std::nextafter(1.0f, 0.0f);
-    e.u = glm::min(glm::vec3(u), glm::vec3(below_one));
-    e.wi_query = e.wo;
-    f32::run_pbr_probe(e);
-    return {e.sampled != 0, glm::dvec3(e.wi), glm::dvec3(e.weight), e.pdf, e.delta != 0};
+    glm::vec3 wi, weight;
+    float pdf;
+    bsdf_sample s;
+    s.sampled = f32::pbr_sample(e_, glm::vec3(wo), glm::min(glm::vec3(u), glm::vec3(below_one)), wi,
+                                weight, pdf, s.delta);
+    s.wi = wi;
+    s.weight = weight;
+    s.pdf = pdf;
+    return s;
   }
   double pdf(glm::dvec3 wo, glm::dvec3 wi) const override {
     return f32::pbr_pdf(e_, glm::vec3(wo), glm::vec3(wi));

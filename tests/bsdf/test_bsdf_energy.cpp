@@ -73,7 +73,7 @@ TEST_P(BsdfEnergy, AWhiteMaterialReflectsAndTransmitsAtMostWhatArrives) {
   const bsdf_point& p = point();
   const auto bsdf = bsdf_of(compilation::double_precision, white(p.material));
   const albedo a = sampled_albedo(*bsdf, p.wo, 0xa1bed0 + GetParam());
-  const sphere_grid grid{10, 20};
+  const sphere_grid grid{4, 8};  // only the sum counts: few bins, fewer integrations
   const std::vector<glm::dvec3> peaks = peaks_of(p);
   for (int c = 0; c < 3; ++c) {
     const std::vector<double> bins = integrate_bins(
@@ -88,20 +88,24 @@ TEST_P(BsdfEnergy, AWhiteMaterialReflectsAndTransmitsAtMostWhatArrives) {
 }
 
 // Reciprocity of the reflection: f(wo, wi) = f(wi, wo), where f = pbr_eval / |wi.z|, at 2,000
-// pairs of directions above the surface, to 1e-9 relative (double). And of the transmission:
-// pbr.h's BTDF leaves out radiance's 1 / eta^2 (docs/materials.md: as the book's dielectric, so
-// that its weight never exceeds 1), which makes it the adjoint (importance) BTDF of Veach's
-// thesis, 5.2: f(wo, wi) eta_o^2 = f(wi, wo) eta_i^2, with eta_o, eta_i the indices on wo's and
-// wi's sides. Seen from wi's side the frame's z turns over and the material's eta is 1 / eta, so
-// with wi below: f(wo, wi; eta) / eta^2 = f(flip wi, flip wo; 1 / eta). A thin wall has the same
-// medium on both sides: f(wo, wi) = f(flip wi, flip wo) at the same eta.
+// pairs of directions above the surface, to 1e-9 relative (double). And of the transmission,
+// generalized: pbr.h's BTDF is Walter et al.'s without radiance's 1 / eta^2 (the book's
+// dielectric weighs a refraction 1), whose rule is f(wo, wi) / eta_i^2 = f(wi, wo) / eta_o^2,
+// with eta_o, eta_i the indices on wo's and wi's sides (radiance's would be f(wo, wi) / eta_o^2
+// = f(wi, wo) / eta_i^2, Veach's thesis 5.2). Seen from wi's side the frame's z turns over and
+// the material's eta is 1 / eta, so with wi below: f(wo, wi; eta) / eta^2 = f(flip wi, flip wo;
+// 1 / eta). A thin wall has the same medium on both sides: f(wo, wi) = f(flip wi, flip wo) at
+// the same eta. A clearcoat whose normal leans away from the shading normal is a shading normal
+// of its own, which no BSDF keeps reciprocal (Veach 5.3): those points check the transmission
+// only.
 TEST_P(BsdfEnergy, TheBsdfIsReciprocal) {
   const bsdf_point& p = point();
   const auto bsdf = bsdf_of(compilation::double_precision, p.material);
   gpu::pbr_probe_entry other_side = p.material;
   if (!p.material.thin) other_side.eta = 1.0f / p.material.eta;
   const auto seen_from_below = bsdf_of(compilation::double_precision, other_side);
-  const double eta = p.material.eta, scale = p.material.thin ? 1.0 : 1.0 / (eta * eta);
+  const double eta = p.material.eta, scale = p.material.thin ? 1.0 : 1 / (eta * eta);
+  const bool coat_leans = p.material.clearcoat > 0 && p.material.clearcoat_normal.z < 1.0f;
   std::mt19937_64 rng(0x7ec1 + GetParam());
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   const auto upper = [&] {  // uniform over the upper hemisphere
@@ -110,10 +114,6 @@ TEST_P(BsdfEnergy, TheBsdfIsReciprocal) {
     return glm::dvec3(s * std::cos(phi), s * std::sin(phi), z);
   };
   const auto flip = [](glm::dvec3 w) { return glm::dvec3(w.x, w.y, -w.z); };
-  // The other side's eta is 1 / eta rounded to float (pbr_probe_entry holds floats), not 1 / eta:
-  // through a refracting wall that moves f by up to 1.1e-4 relative near grazing (eta 1.5; with
-  // eta 2 and 0.5, exact in float, the double compilation agrees to 1e-15).
-  const double t_tolerance = p.material.thin ? 1e-9 : 1e-3;
   int wrong = 0;
   std::string first;
   for (int k = 0; k < 2000; ++k) {
@@ -123,8 +123,9 @@ TEST_P(BsdfEnergy, TheBsdfIsReciprocal) {
     const glm::dvec3 t = bsdf->eval(a, flip(b)) / b.z * scale;
     const glm::dvec3 t_back = seen_from_below->eval(b, flip(a)) / a.z;
     for (int c = 0; c < 3; ++c) {
-      const bool bad = std::abs(ab[c] - ba[c]) > 1e-9 * std::max(ab[c], ba[c]) + 1e-12 ||
-                       std::abs(t[c] - t_back[c]) > t_tolerance * std::max(t[c], t_back[c]) + 1e-12;
+      const bool bad =
+          (!coat_leans && std::abs(ab[c] - ba[c]) > 1e-9 * std::max(ab[c], ba[c]) + 1e-12) ||
+          std::abs(t[c] - t_back[c]) > 1e-9 * std::max(t[c], t_back[c]) + 1e-12;
       if (bad && first.empty())
         first = "reflection " + std::to_string(ab[c]) + " vs " + std::to_string(ba[c]) +
                 ", transmission " + std::to_string(t[c]) + " vs " + std::to_string(t_back[c]) +

@@ -62,6 +62,11 @@ void run_pbr_probe(gpu::pbr_probe_entry& e) {
   k::run_pbr_probe(e);
 }
 
+bool pbr_sample(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 u, glm::vec3& wi,
+                glm::vec3& weight, float& pdf, bool& delta) {
+  return k::pbr_sample(k::pbr_probe_surface(e), wo, u, wi, weight, pdf, delta);
+}
+
 float pbr_pdf(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi) {
   return k::pbr_pdf(k::pbr_probe_surface(e), wo, wi);
 }

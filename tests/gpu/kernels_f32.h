@@ -44,8 +44,10 @@ void run_light_probe(gpu::light_probe_entry& e);
 
 // run_pbr_probe (tests/gpu/probes/pbr_probe.h) in float: what pbr_probe.comp computes. And pbr.h's
 // density and evaluation alone, on the entry's material (pbr_probe_surface), for the statistical
-// tests' integrals over the sphere (tests/bsdf), which ask them far more often than they sample.
+// statistical tests (tests/bsdf), which ask for millions of samples.
 void run_pbr_probe(gpu::pbr_probe_entry& e);
+bool pbr_sample(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 u, glm::vec3& wi,
+                glm::vec3& weight, float& pdf, bool& delta);
 float pbr_pdf(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi);
 glm::vec3 pbr_eval(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi);
 
