@@ -114,6 +114,10 @@ TEST_P(BsdfEnergy, TheBsdfIsReciprocal) {
     return glm::dvec3(s * std::cos(phi), s * std::sin(phi), z);
   };
   const auto flip = [](glm::dvec3 w) { return glm::dvec3(w.x, w.y, -w.z); };
+  // The other side's eta is 1 / eta rounded to float (pbr_probe_entry holds floats), not 1 / eta:
+  // through a refracting wall that moves f by up to 1.1e-4 relative near grazing (eta 1.5; with
+  // eta 2 and 0.5, exact in float, the double compilation agrees to 1e-15).
+  const double t_tolerance = p.material.thin ? 1e-9 : 1e-3;
   int wrong = 0;
   std::string first;
   for (int k = 0; k < 2000; ++k) {
@@ -125,7 +129,7 @@ TEST_P(BsdfEnergy, TheBsdfIsReciprocal) {
     for (int c = 0; c < 3; ++c) {
       const bool bad =
           (!coat_leans && std::abs(ab[c] - ba[c]) > 1e-9 * std::max(ab[c], ba[c]) + 1e-12) ||
-          std::abs(t[c] - t_back[c]) > 1e-9 * std::max(t[c], t_back[c]) + 1e-12;
+          std::abs(t[c] - t_back[c]) > t_tolerance * std::max(t[c], t_back[c]) + 1e-12;
       if (bad && first.empty())
         first = "reflection " + std::to_string(ab[c]) + " vs " + std::to_string(ba[c]) +
                 ", transmission " + std::to_string(t[c]) + " vs " + std::to_string(t_back[c]) +
