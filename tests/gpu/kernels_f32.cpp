@@ -9,6 +9,11 @@
 #include "hit_sphere.h"
 #include "kernel_probe.h"
 #include "light_probe.h"
+// pbr.h's stand-in Lambertian leaves its material unused in pbr_pdf (-Wunused-parameter).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#include "pbr_probe.h"
+#pragma GCC diagnostic pop
 #include "random.h"
 
 namespace rtvk::f32 {
@@ -51,6 +56,23 @@ void run_kernel_probe(gpu::kernel_probe_entry& e) {
 
 void run_light_probe(gpu::light_probe_entry& e) {
   k::run_light_probe(e);
+}
+
+void run_pbr_probe(gpu::pbr_probe_entry& e) {
+  k::run_pbr_probe(e);
+}
+
+bool pbr_sample(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 u, glm::vec3& wi,
+                glm::vec3& weight, float& pdf, bool& delta) {
+  return k::pbr_sample(k::pbr_probe_surface(e), wo, u, wi, weight, pdf, delta);
+}
+
+float pbr_pdf(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi) {
+  return k::pbr_pdf(k::pbr_probe_surface(e), wo, wi);
+}
+
+glm::vec3 pbr_eval(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi) {
+  return k::pbr_eval(k::pbr_probe_surface(e), wo, wi);
 }
 
 }  // namespace rtvk::f32

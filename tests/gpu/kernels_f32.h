@@ -42,4 +42,13 @@ void run_kernel_probe(gpu::kernel_probe_entry& e);
 // run_light_probe (tests/gpu/probes/light_probe.h) in float: what light_probe.comp computes.
 void run_light_probe(gpu::light_probe_entry& e);
 
+// run_pbr_probe (tests/gpu/probes/pbr_probe.h) in float: what pbr_probe.comp computes. And pbr.h's
+// density and evaluation alone, on the entry's material (pbr_probe_surface), for the statistical
+// statistical tests (tests/bsdf), which ask for millions of samples.
+void run_pbr_probe(gpu::pbr_probe_entry& e);
+bool pbr_sample(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 u, glm::vec3& wi,
+                glm::vec3& weight, float& pdf, bool& delta);
+float pbr_pdf(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi);
+glm::vec3 pbr_eval(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi);
+
 }  // namespace rtvk::f32

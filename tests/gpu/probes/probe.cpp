@@ -73,6 +73,12 @@ std::vector<light_probe_entry> run_light_probe(gpu_context& ctx,
   return entries;
 }
 
+std::vector<pbr_probe_entry> run_pbr_probe(gpu_context& ctx, std::vector<pbr_probe_entry> entries) {
+  run_in_place(ctx, pbr_probe_shader(), entries.data(), entries.size() * sizeof(pbr_probe_entry),
+               std::uint32_t((entries.size() + 63) / 64), nullptr);
+  return entries;
+}
+
 std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s, bool use_bvh,
                                                std::vector<world_probe_entry> entries) {
   const gpu_scene g(ctx, s, use_bvh);

@@ -33,6 +33,10 @@ std::vector<kernel_probe_entry> run_kernel_probe(gpu_context& ctx,
 std::vector<light_probe_entry> run_light_probe(gpu_context& ctx,
                                                std::vector<light_probe_entry> entries);
 
+// Runs pbr_probe.comp: fills the outputs of each entry with pbr.h's sample, evaluation and
+// density (run_pbr_probe in pbr_probe.h).
+std::vector<pbr_probe_entry> run_pbr_probe(gpu_context& ctx, std::vector<pbr_probe_entry> entries);
+
 // Runs world_probe.comp over the scene's spheres (through the BVH, or every sphere in turn): fills
 // `t`, `hit`, `normal` and `material` of each entry with what hit_world finds along its ray.
 std::vector<world_probe_entry> run_world_probe(gpu_context& ctx, const scene& s, bool use_bvh,

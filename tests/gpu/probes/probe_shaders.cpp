@@ -6,6 +6,7 @@
 #include "hit_probe_spv.h"
 #include "kernel_probe_spv.h"
 #include "light_probe_spv.h"
+#include "pbr_probe_spv.h"
 #include "probe_spv.h"
 #include "rng_probe_spv.h"
 #include "world_probe_spv.h"
@@ -29,6 +30,9 @@ std::span<const std::uint32_t> kernel_probe_shader() {
 }
 std::span<const std::uint32_t> light_probe_shader() {
   return light_probe_spv;
+}
+std::span<const std::uint32_t> pbr_probe_shader() {
+  return pbr_probe_spv;
 }
 
 }  // namespace rtvk::gpu

@@ -12,5 +12,6 @@ std::span<const std::uint32_t> hit_probe_shader();     // hit_probe.comp
 std::span<const std::uint32_t> world_probe_shader();   // world_probe.comp
 std::span<const std::uint32_t> kernel_probe_shader();  // kernel_probe.comp
 std::span<const std::uint32_t> light_probe_shader();   // light_probe.comp
+std::span<const std::uint32_t> pbr_probe_shader();     // pbr_probe.comp
 
 }  // namespace rtvk::gpu

@@ -187,6 +187,59 @@ static_assert(offsetof(light_probe_entry, sampled_pdf) == 144);
 static_assert(sizeof(light_probe_entry) == 160);
 #endif
 
+// std430 array element for pbr_probe.comp (pbr_probe.h): a pbr_surface (shaders/shared/pbr.h), an
+// outgoing direction and three uniform numbers; the shader samples pbr_sample with them and asks
+// pbr_eval and pbr_pdf of the sampled direction and of a direction the host names.
+struct pbr_probe_entry {
+  vec3 base_color;            // in: pbr_surface::base_color, linear
+  float metallic;             // in: 0 to 1
+  vec3 specular_color;        // in: linear
+  float roughness;            // in: perceptual
+  vec3 clearcoat_normal;      // in: unit, in the shading frame
+  float eta;                  // in: below over above, as the ray sees it
+  vec3 sheen_color;           // in: linear
+  float specular;             // in: 0 to 1
+  float transmission;         // in: 0 to 1
+  uint thin;                  // in: 1 thin-walled
+  float clearcoat;            // in: 0 to 1
+  float clearcoat_roughness;  // in: perceptual
+  float sheen_roughness;      // in: perceptual
+  uint sampled;               // out: 1 when pbr_sample returned a direction
+  uint delta;                 // out: 1 when it came from a delta lobe
+  float pdf;                  // out: pbr_sample's pdf
+  vec3 wo;                    // in: the outgoing direction, unit, wo.z > 0
+  float pdf_query;            // out: pbr_pdf(wo, wi_query)
+  vec3 u;                     // in: pbr_sample's uniform numbers in [0, 1)
+  float pdf_sampled;          // out: pbr_pdf(wo, wi)
+  vec3 wi_query;              // in: a unit direction whose eval and pdf are asked
+  uint pad0;                  // unused
+  vec3 wi;                    // out: pbr_sample's direction
+  uint pad1;                  // unused
+  vec3 weight;                // out: pbr_sample's weight
+  uint pad2;                  // unused
+  vec3 eval_query;            // out: pbr_eval(wo, wi_query)
+  uint pad3;                  // unused
+  vec3 eval_sampled;          // out: pbr_eval(wo, wi)
+  uint pad4;                  // unused
+};
+#ifdef __cplusplus
+static_assert(offsetof(pbr_probe_entry, specular_color) == 16);
+static_assert(offsetof(pbr_probe_entry, clearcoat_normal) == 32);
+static_assert(offsetof(pbr_probe_entry, sheen_color) == 48);
+static_assert(offsetof(pbr_probe_entry, specular) == 60);
+static_assert(offsetof(pbr_probe_entry, transmission) == 64);
+static_assert(offsetof(pbr_probe_entry, sheen_roughness) == 80);
+static_assert(offsetof(pbr_probe_entry, pdf) == 92);
+static_assert(offsetof(pbr_probe_entry, wo) == 96);
+static_assert(offsetof(pbr_probe_entry, u) == 112);
+static_assert(offsetof(pbr_probe_entry, wi_query) == 128);
+static_assert(offsetof(pbr_probe_entry, wi) == 144);
+static_assert(offsetof(pbr_probe_entry, weight) == 160);
+static_assert(offsetof(pbr_probe_entry, eval_query) == 176);
+static_assert(offsetof(pbr_probe_entry, eval_sampled) == 192);
+static_assert(sizeof(pbr_probe_entry) == 208);
+#endif
+
 RTVK_GPU_TYPES_END
 
 #endif  // RTVK_PROBE_TYPES_H
