@@ -14,6 +14,7 @@
 #include "mesh_file.h"
 #include "mesh_helpers.h"
 #include "process.h"
+#include "scene_file.h"
 #include "temp_dir.h"
 
 namespace rtvk {
@@ -339,6 +340,25 @@ TEST(GltfPbr, ParameterTexturesOnOtherCoordinatesAreWarned) {
   const triangle_shading& sh = u.shading.at(std::size_t(u.triangles.at(0).shading));
   EXPECT_EQ(sh.uv[0], glm::dvec2(0.5, 0.5));
   EXPECT_EQ(sh.uv[1], glm::dvec2(1, 0.5));
+}
+
+// A data texture is marked linear, so that a dump names it FILE#images/N with "color_space":
+// "linear" and a scene file reads it back as data: the same bytes, not the sRGB curve's (it read
+// every glTF image back as sRGB before).
+TEST(GltfPbr, AGltfImageNamedLinearInASceneFileIsReadAsData) {
+  const test::temp_dir dir;
+  write(dir.path() / "m.gltf", pbr_gltf(json::object()));
+  const auto texel = [&](const char* space) {
+    write(dir.path() / "s.json",
+          std::string(R"({"materials":{"m":{"type":"lambertian","albedo":{"type":"image",)") +
+              R"("file":"m.gltf#images/0","color_space":")" + space +
+              R"("}}},"spheres":[{"center":[0,0,0],"radius":1,"material":"m"}]})");
+    const scene s = load_scene_file(dir.path() / "s.json");
+    return s.textures.at(0).image->texels.at(0) & 0xffu;
+  };
+  EXPECT_EQ(texel("linear"), 188u);
+  EXPECT_EQ(texel("srgb"),
+            std::uint32_t(std::floor(256 * std::pow((188 / 255.0 + 0.055) / 1.055, 2.4))));
 }
 
 }  // namespace
