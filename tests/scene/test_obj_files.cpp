@@ -304,7 +304,11 @@ TEST(ObjFiles, MtlStatementsMapToThePbrMaterialAsTheTableSays) {
   EXPECT_NEAR(at(1).pbr.roughness, 0.5, 1e-7);
   EXPECT_NEAR(at(1).pbr.ior, 1.45, 1e-6);
   EXPECT_EQ(at(1).pbr.metallic, 0);
-  EXPECT_EQ(at(2).pbr.specular, 1);  // illum 2 without Ks: full specular, without Ns: smooth
+  // illum 2 without Ks: level 1, twice glTF's neutral (specular 1, the rest in its color, as
+  // Blender's glTF exporter writes it); without Ns: smooth.
+  EXPECT_EQ(at(2).pbr.specular, 1);
+  EXPECT_EQ(at(2).pbr.specular_color, color(2));
+  EXPECT_EQ(at(1).pbr.specular_color, color(1));
   EXPECT_EQ(at(2).pbr.roughness, 0);
   EXPECT_NEAR(at(3).pbr.metallic, 0.5, 1e-7);  // illum 3: mean(Ka)
   EXPECT_EQ(at(3).pbr.roughness, 1);

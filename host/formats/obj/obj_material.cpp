@@ -71,7 +71,11 @@ material mtl_material(const tinyobj::material_t& m, const std::set<std::string>&
   // tinyobjloader reads Tr as 1 - d when the material has no d.
   out.opacity = unit(m.dissolve);
   if (out.opacity < 1) out.alpha = alpha_mode::blend;
-  p.specular = std::min(1.0, 2 * unit(has("Ks") ? mean(m.specular) : mode.highlight ? 1 : 0));
+  // Blender's Specular IOR Level, which its glTF exporter writes as KHR_materials_specular: twice
+  // the level, the part above 1 in specularColorFactor (io_scene_gltf2 .../extensions/specular.py).
+  const double level = 2 * unit(has("Ks") ? mean(m.specular) : mode.highlight ? 1 : 0);
+  p.specular = std::min(1.0, level);
+  p.specular_color = color(std::max(1.0, level));
   p.roughness =
       has("Ns")
           ? 1 - std::sqrt(std::clamp(std::isfinite(m.shininess) ? m.shininess : 0, 0.0f, 1000.0f) /

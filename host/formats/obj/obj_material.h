@@ -4,8 +4,9 @@
 // (source/blender/io/wavefront_obj/importer/obj_import_mtl.cc, Blender 4.x). The whole table is
 // docs/mesh-formats.md's "OBJ and MTL":
 //   Kd             base color (0.8, Blender's default, where absent; 1 for glass)
-//   Ks             specular = 2 mean(Ks), at most 1 (Blender's Specular IOR Level, which its glTF
-//                  I/O doubles); absent: 1 with illum 2, else 0
+//   Ks             level = 2 mean(Ks) (Blender's Specular IOR Level = mean(Ks), which its glTF
+//                  exporter doubles): specular = min(1, level), specular_color = max(1, level);
+//                  mean(Ks) absent: 1 with illum 2, else 0
 //   Ns             roughness = 1 - sqrt(Ns / 1000) (Ns clamped to [0, 1000]); absent: 0 with
 //                  illum 2, else 1
 //   Pr, Pm         roughness, metallic, over what Ns and illum say
