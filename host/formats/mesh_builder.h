@@ -50,6 +50,13 @@ class mesh_builder {
     throw usage_error(name_ + ": " + where + ": " + what);
   }
 
+  // One line in the scene's warnings naming the file, once however many times it is placed.
+  void warn(const std::string& what) {
+    const std::string line = name_ + ": " + what;
+    if (std::find(s_.warnings.begin(), s_.warnings.end(), line) == s_.warnings.end())
+      s_.warnings.push_back(line);
+  }
+
   // A position of the file, checked finite and placed.
   point3 position(const vec3& p, const transform& node, const std::string& where) const {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))

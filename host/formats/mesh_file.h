@@ -44,11 +44,13 @@ void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind
 // The kind of mesh file a path names by its extension ("obj", "gltf", "glb"), or "" for none.
 std::string mesh_kind(const std::filesystem::path& file);
 
-// Image `index` of a glTF file, decoded as an sRGB image texture (what a dumped scene names as
-// "FILE#images/N"); throws usage_error naming `name`, the file and the image. The files the glTF
-// names must lie where `guard` allows (the caller checks `file` itself).
+// Image `index` of a glTF file, decoded as an image texture in `encoding` (what a dumped scene
+// names as "FILE#images/N": sRGB for a color texture, linear for a data texture such as a
+// metallicRoughnessTexture); throws usage_error naming `name`, the file and the image. The files
+// the glTF names must lie where `guard` allows (the caller checks `file` itself).
 std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file, std::size_t index,
-                                              const std::string& name, const path_guard& guard);
+                                              const std::string& name, const path_guard& guard,
+                                              texel_encoding encoding = texel_encoding::srgb);
 
 // A scene of one mesh file, with its own materials, and a camera that frames its bounds; the
 // files it names confined as `access` says (by default to the mesh file's folder).

@@ -99,15 +99,16 @@ class obj_maps {
   obj_maps(scene& s, mesh_builder& b, const std::filesystem::path& base, const path_guard& guard)
       : s_(s), b_(b), base_(base), guard_(guard) {}
 
-  // The texture of map `kind` (map_Kd, map_Ke) `file` of material `m`, tinted by `tint`; -1
-  // where the file is missing (a warning).
-  int texture(const std::string& m, const char* kind, const std::string& file, const color& tint) {
-    const std::shared_ptr<const texel_image> decoded = image(m, kind, file);
+  // The texture of map `kind` (map_Kd, map_Ke...) `file` of material `m`, tinted by `tint`,
+  // decoded as `encoding` (colors sRGB, data linear); -1 where the file is missing (a warning).
+  int texture(const std::string& m, const char* kind, const std::string& file, const color& tint,
+              texel_encoding encoding = texel_encoding::srgb) {
+    const std::shared_ptr<const texel_image> decoded = image(m, kind, file, encoding);
     if (!decoded) return -1;
     rtvk::texture t;
     t.type = texture_type::image;
     t.file = resolved(file).string();
-    t.color_space = texel_encoding::srgb;  // as decoded: a dump says so, and reads back alike
+    t.color_space = encoding;  // as decoded: a dump says so, and reads back alike
     t.image = decoded;
     t.even = tint;
     t.wrap_u = t.wrap_v = image_wrap::repeat;  // MTL maps tile
@@ -122,17 +123,18 @@ class obj_maps {
 
  private:
   std::shared_ptr<const texel_image> image(const std::string& m, const char* kind,
-                                           const std::string& file) {
+                                           const std::string& file, texel_encoding encoding) {
     const std::string what = b_.name() + ": material " + m + ": " + kind;
     if (base_.empty()) throw usage_error(what + " " + file + ": no folder to read it from");
     guard_.check(base_ / portable(file), what, file);
-    const std::string key = resolved(file).string();
+    const std::string path = resolved(file).string();
+    const std::pair key(path, encoding);
     const auto known = images_.find(key);
     if (known != images_.end()) return known->second;
     std::error_code ec;
     std::shared_ptr<const texel_image> decoded;
-    if (std::filesystem::exists(key, ec))
-      decoded = load_texel_image(key, what, texel_encoding::srgb);
+    if (std::filesystem::exists(path, ec))
+      decoded = load_texel_image(path, what, encoding);
     else
       s_.warnings.push_back(what + " " + file + ": no such file; drawn without it");
     images_[key] = decoded;
@@ -143,19 +145,53 @@ class obj_maps {
   mesh_builder& b_;
   std::filesystem::path base_;  // the OBJ's folder
   const path_guard& guard_;
-  std::map<std::string, std::shared_ptr<const texel_image>> images_;  // file -> decoded
+  // (file, color space) -> decoded
+  std::map<std::pair<std::string, texel_encoding>, std::shared_ptr<const texel_image>> images_;
 };
+
+// The maps of a material's PBR parameters (docs/mesh-formats.md's MTL table), decoded as data
+// (linear) but for none: map_Pr and map_Pm are one metallic-roughness texture (green roughness,
+// blue metallic, as glTF packs them) where they name one file, or where map_Pr stands alone and
+// the metallic is 0 (the blue it reads as metallic is then multiplied by 0); other pairs are a
+// warning. map_Ps: the sheen color's texture (a weight, gray). norm (else map_Bump or bump): the
+// normal map, its -bm the normal scale, as Blender reads them.
+void add_pbr_maps(scene& s, const mesh_builder& b, obj_maps& maps, const tinyobj::material_t& m,
+                  pbr_material& p) {
+  const texel_encoding linear = texel_encoding::linear;
+  const std::string& pr = m.roughness_texname;
+  const std::string& pm = m.metallic_texname;
+  if (!pr.empty() && (pr == pm || (pm.empty() && p.metallic == 0)))
+    p.metallic_roughness_texture = maps.texture(m.name, "map_Pr", pr, color(1), linear);
+  else if (!pr.empty() || !pm.empty())
+    s.warnings.push_back(b.name() + ": material " + m.name + ": " +
+                         (pr.empty() ? "map_Pm " + pm : "map_Pr " + pr) +
+                         ": not drawn (rtvk reads metallic and roughness from one texture, blue "
+                         "and green: map_Pr and map_Pm must name one file, or map_Pr stand alone "
+                         "with the metallic 0)");
+  if (!m.sheen_texname.empty())
+    p.sheen_color_texture = maps.texture(m.name, "map_Ps", m.sheen_texname, color(1), linear);
+  const bool norm = !m.normal_texname.empty();
+  const std::string& normal = norm ? m.normal_texname : m.bump_texname;
+  if (!normal.empty()) {
+    p.normal_texture = maps.texture(m.name, norm ? "norm" : "map_Bump", normal, color(1), linear);
+    const double scale = (norm ? m.normal_texopt : m.bump_texopt).bump_multiplier;
+    p.normal_scale = std::isfinite(scale) ? std::max(0.0, scale) : 1.0;
+  }
+}
 
 // The scene's material for each of the file's, with its maps.
 std::vector<int> add_materials(scene& s, mesh_builder& b, const tinyobj::ObjReader& reader,
-                               const std::filesystem::path& base, const path_guard& guard) {
+                               const mtl_statements& statements, const std::filesystem::path& base,
+                               const path_guard& guard) {
   std::vector<int> out;
   obj_maps maps(s, b, base, guard);
   for (const tinyobj::material_t& m : reader.GetMaterials()) {
-    material mat = mtl_material(m);
-    const color kd(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
-    if (!m.diffuse_texname.empty() && mat.type != material_type::dielectric)
-      mat.texture = maps.texture(m.name, "map_Kd", m.diffuse_texname, glm::clamp(kd, 0.0, 1.0));
+    const auto given = statements.find(m.name);
+    material mat =
+        mtl_material(m, given == statements.end() ? std::set<std::string>{} : given->second);
+    if (!m.diffuse_texname.empty())
+      mat.texture = maps.texture(m.name, "map_Kd", m.diffuse_texname, mat.albedo);
+    add_pbr_maps(s, b, maps, m, mat.pbr);
     if (!m.emissive_texname.empty()) {
       // A map_Ke without Ke glows at the map's own color (as Blender reads it).
       if (mat.emission == color(0)) mat.emission = color(1);
@@ -250,8 +286,8 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
   config.triangulate = false;  // obj_polygon.h cuts faces in their plane
   config.vertex_color = lines.colors;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(text, mtl_text(s, lines.mtllibs, base, name, guard), config) ||
-      !reader.Valid()) {
+  const std::string mtl = mtl_text(s, lines.mtllibs, base, name, guard);
+  if (!reader.ParseFromString(text, mtl, config) || !reader.Valid()) {
     std::string why = reader.Error();
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
     std::replace(why.begin(), why.end(), '\n', ' ');
@@ -261,7 +297,8 @@ void load_obj(scene& s, const std::string& text, const std::string& name,
   const tinyobj::attrib_t& a = reader.GetAttrib();
   // The file's material k -> the scene's.
   const std::vector<int> materials =
-      how.material < 0 ? add_materials(s, b, reader, base, guard) : std::vector<int>{};
+      how.material < 0 ? add_materials(s, b, reader, statements_of(mtl), base, guard)
+                       : std::vector<int>{};
   int fallback = how.material;  // faces without a material: a gray diffuse one, made when needed
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     const tinyobj::mesh_t& mesh = shape.mesh;

@@ -70,7 +70,9 @@ void read_image(const scene_reader& r, const json& f, const std::string& p, text
       r.fail(p, "expected FILE#images/N, got \"" + tex.file + "\"");
     const std::filesystem::path file = r.base() / tex.file.substr(0, hash);
     r.guard().check(file, field, tex.file);
-    tex.image = gltf_image(file, std::stoul(n), field, r.guard());
+    tex.image = gltf_image(
+        file, std::stoul(n), field, r.guard(),
+        tex.color_space == texel_encoding::linear ? texel_encoding::linear : texel_encoding::srgb);
   } else {
     const std::filesystem::path file = r.base() / tex.file;
     r.guard().check(file, field, tex.file);

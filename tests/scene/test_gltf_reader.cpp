@@ -202,8 +202,9 @@ TEST(GltfReader, TextureTransformsAndCoordinateSetsMapTheUv) {
 
 // A glTF material's fields as rtvk's (the renderer's side of them is not tested here): base color
 // texture decoded as sRGB, alpha, cutoff, culling, emission times strength with its texture, and
-// a metallicRoughnessTexture whose mean keeps the default metallicFactor 1 from making metal; the
-// vertex colors of COLOR_0 (normalized UNSIGNED_BYTE VEC4).
+// a metallicRoughnessTexture kept as a texture beside the factors (tests/scene/test_gltf_pbr.cpp
+// holds the rest of the PBR parameters); the vertex colors of COLOR_0 (normalized UNSIGNED_BYTE
+// VEC4).
 TEST(GltfReader, MaterialsAndVertexColorsAreFilledIn) {
   std::string bin;
   put<float>(bin, {0, 0, 0, 1, 0, 0, 0, 1, 0});
@@ -226,7 +227,14 @@ TEST(GltfReader, MaterialsAndVertexColorsAreFilledIn) {
   load_mesh_bytes(s, doc, "gltf", "m.gltf", "", {});
   ASSERT_EQ(s.materials.size(), 2u);
   const material& m = s.materials[0].m;
-  EXPECT_EQ(m.type, material_type::lambertian);  // metallic 1 x the texture's mean blue, 0
+  // Issue 45: the PBR material, metallicFactor 1 (its default) per texel times the texture's blue
+  // (glTF 2.0, 3.9.2: "the metalness values are sampled from the B channel"), no longer the
+  // texture's mean deciding between rtvk's diffuse and metal kinds.
+  EXPECT_EQ(m.type, material_type::pbr);
+  EXPECT_EQ(m.pbr.metallic, 1);
+  ASSERT_GE(m.pbr.metallic_roughness_texture, 0);
+  EXPECT_EQ(s.textures[std::size_t(m.pbr.metallic_roughness_texture)].color_space,
+            texel_encoding::linear);
   EXPECT_EQ(m.opacity, 0.25);
   EXPECT_EQ(m.alpha, alpha_mode::mask);
   EXPECT_EQ(m.alpha_cutoff, 0.3);
@@ -242,7 +250,10 @@ TEST(GltfReader, MaterialsAndVertexColorsAreFilledIn) {
   EXPECT_EQ(s.textures[std::size_t(m.emission_texture)].image, base.image);  // both sRGB
   EXPECT_EQ(s.materials[1].m.alpha, alpha_mode::blend);
   EXPECT_FALSE(s.materials[1].m.cull_back);
-  EXPECT_EQ(s.materials[1].m.type, material_type::metal);  // glTF's defaults: metallic 1
+  // glTF's defaults: metallicFactor 1, roughnessFactor 1 (a rough metal, as the spec says).
+  EXPECT_EQ(s.materials[1].m.type, material_type::pbr);
+  EXPECT_EQ(s.materials[1].m.pbr.metallic, 1);
+  EXPECT_EQ(s.materials[1].m.pbr.roughness, 1);
   const triangle_shading& sh = s.shading.at(std::size_t(s.triangles.at(0).shading));
   ASSERT_TRUE(sh.has_color);
   EXPECT_EQ(sh.color[0], glm::vec4(1, 0, 0, 1));
@@ -271,7 +282,7 @@ TEST(GltfReader, RequiredExtensionsAreRefusedByNameAndIgnoredOnesWarnedOnce) {
   write(dir.path() / "ok.gltf",
         with(R"("extensionsRequired":["KHR_mesh_quantization","KHR_texture_transform"],)"
              R"("extensionsUsed":["KHR_mesh_quantization","KHR_texture_transform",)"
-             R"("KHR_materials_sheen","KHR_lights_punctual"],"animations":[{"channels":[],)"
+             R"("KHR_materials_anisotropy","KHR_lights_punctual"],"animations":[{"channels":[],)"
              R"("samplers":[]}])"));
   write(dir.path() / "s.json", R"({"meshes":[{"file":"ok.gltf"},{"file":"ok.gltf"}]})");
   const std::string out = (dir.path() / "o.png").string();
@@ -285,10 +296,11 @@ TEST(GltfReader, RequiredExtensionsAreRefusedByNameAndIgnoredOnesWarnedOnce) {
   const auto drawn = test::run_rtvk({"render", "--scene", (dir.path() / "s.json").string(), "-o",
                                      out, "--width", "8", "--spp", "1"});
   EXPECT_EQ(drawn.status, 0) << drawn.err;
-  const std::string warning = "rtvk: warning: " + (dir.path() / "ok.gltf").string() +
-                              ": drawn without what rtvk does not read: the extensions "
-                              "KHR_materials_sheen, KHR_lights_punctual; 1 animation (drawn at "
-                              "rest)\n";
+  const std::string warning =
+      "rtvk: warning: " + (dir.path() / "ok.gltf").string() +
+      ": drawn without what rtvk does not read: the extensions "
+      "KHR_materials_anisotropy, KHR_lights_punctual; 1 animation (drawn at "
+      "rest)\n";
   EXPECT_EQ(drawn.err.find(warning), 0u) << drawn.err;
   EXPECT_EQ(drawn.err.rfind("warning"), drawn.err.find("warning")) << drawn.err;  // once
 }

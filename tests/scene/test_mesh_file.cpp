@@ -75,9 +75,11 @@ TEST(MeshFile, GltfNodeMatricesAndMaterialsAreApplied) {
   ASSERT_EQ(s.triangles.size(), m.faces.size());
   EXPECT_EQ(s.triangles[0].p[0], 2.0 * m.positions[m.faces[0][0]] + vec3(10, 0, 0));
   ASSERT_EQ(s.materials.size(), 1u);
-  EXPECT_EQ(s.materials[0].m.type, material_type::metal);
+  // Issue 45: glTF's own parameters, exactly (no longer a fuzz-0.3 metal because 0.9 >= 0.5).
+  EXPECT_EQ(s.materials[0].m.type, material_type::pbr);
   EXPECT_EQ(s.materials[0].m.albedo, color(0.5, 0.25, 1));
-  EXPECT_EQ(s.materials[0].m.fuzz, 0.3);
+  EXPECT_EQ(s.materials[0].m.pbr.metallic, 0.9);
+  EXPECT_EQ(s.materials[0].m.pbr.roughness, 0.3);
 }
 
 // A glTF square of two triangles with texture coordinates, its first material's base color an
@@ -111,7 +113,8 @@ TEST(MeshFile, GltfBaseColorTexturesAndEmissiveMaterialsAreDrawn) {
   write(dir.path() / "s.json", R"({"meshes":[{"file":"sq.gltf"}]})");
   const scene s = load_scene_file(dir.path() / "s.json");
   ASSERT_EQ(s.materials.size(), 2u);
-  EXPECT_EQ(s.materials[0].m.type, material_type::lambertian);
+  EXPECT_EQ(s.materials[0].m.type, material_type::pbr);  // a dielectric: metallicFactor 0
+  EXPECT_EQ(s.materials[0].m.pbr.metallic, 0);
   ASSERT_EQ(s.materials[0].m.texture, 0);
   ASSERT_EQ(s.textures.size(), 1u);
   ASSERT_EQ(s.textures[0].image->width, 2);
@@ -119,8 +122,9 @@ TEST(MeshFile, GltfBaseColorTexturesAndEmissiveMaterialsAreDrawn) {
   EXPECT_EQ(s.textures[0].wrap_u, image_wrap::repeat);  // glTF's default sampler
   EXPECT_EQ(s.textures[0].even, color(1));              // the base color factor's default
   // Emission beside what the surface reflects (issue 44: no longer a lamp that reflects nothing);
-  // the rest of the material is glTF's default, metal.
-  EXPECT_EQ(s.materials[1].m.type, material_type::metal);
+  // the rest of the material is glTF's default, a rough metal.
+  EXPECT_EQ(s.materials[1].m.type, material_type::pbr);
+  EXPECT_EQ(s.materials[1].m.pbr.metallic, 1);
   EXPECT_EQ(s.materials[1].m.emission, color(4, 2, 1));
   // v flipped to rtvk's (the book's) up-from-the-bottom: the first vertex's (0, 1) is (0, 0).
   ASSERT_GE(s.triangles[0].shading, 0);
@@ -181,7 +185,7 @@ TEST(MeshFile, ObjDiffuseMapsAreImageTexturesTintedByKd) {
   doc.replace(doc.find(R"("emissiveFactor")"), 0, R"("emissiveTexture":{"index":0},)");
   scene g;
   load_mesh_bytes(g, doc, "gltf", "sq.gltf", "", {});
-  EXPECT_NE(g.materials[1].m.type, material_type::diffuse_light);  // metal: glTF's default
+  EXPECT_EQ(g.materials[1].m.type, material_type::pbr);  // glTF's default metal, emissive
 }
 
 TEST(MeshFile, ObjNormalsShadeSmoothAndMtlMaterialsMap) {
@@ -195,10 +199,17 @@ TEST(MeshFile, ObjNormalsShadeSmoothAndMtlMaterialsMap) {
   load_mesh(s, dir.path() / "m.obj", {});
   ASSERT_EQ(s.triangles.size(), 2u);
   ASSERT_EQ(s.materials.size(), 2u);
-  EXPECT_EQ(s.materials[std::size_t(s.triangles[0].material)].m.type, material_type::lambertian);
-  EXPECT_EQ(s.materials[std::size_t(s.triangles[0].material)].m.albedo, color(0.9f, 0.1f, 0.1f));
-  EXPECT_EQ(s.materials[std::size_t(s.triangles[1].material)].m.type, material_type::dielectric);
-  EXPECT_NEAR(s.materials[std::size_t(s.triangles[1].material)].m.ir, 1.33, 1e-6);
+  // Issue 45: MTL as Blender maps it to its Principled BSDF (docs/mesh-formats.md): illum 2 a
+  // dielectric, illum 7 glass (transmission 1 of index Ni).
+  const material& red = s.materials[std::size_t(s.triangles[0].material)].m;
+  EXPECT_EQ(red.type, material_type::pbr);
+  EXPECT_EQ(red.albedo, color(0.9f, 0.1f, 0.1f));
+  EXPECT_EQ(red.pbr.metallic, 0);
+  EXPECT_EQ(red.pbr.transmission, 0);
+  const material& glass = s.materials[std::size_t(s.triangles[1].material)].m;
+  EXPECT_EQ(glass.type, material_type::pbr);
+  EXPECT_EQ(glass.pbr.transmission, 1);
+  EXPECT_NEAR(glass.pbr.ior, 1.33, 1e-6);
   ASSERT_GE(s.triangles[0].shading, 0);
   EXPECT_TRUE(s.shading[std::size_t(s.triangles[0].shading)].has_normals());
   EXPECT_EQ(s.shading[std::size_t(s.triangles[0].shading)].uv[1], glm::dvec2(1, 0));

@@ -264,5 +264,95 @@ TEST(ObjFiles, ADumpedSceneReadsItsMapsBackAsSrgb) {
   EXPECT_EQ(back.textures[0].image->texels, s.textures[0].image->texels);
 }
 
+// Each row of docs/mesh-formats.md's MTL table, as Blender's importer maps MTL to its Principled
+// BSDF: one material per row (or a few rows), each parameter asserted exactly.
+TEST(ObjFiles, MtlStatementsMapToThePbrMaterialAsTheTableSays) {
+  const test::temp_dir dir;
+  write_image(image_rgb8{1, 1, {188, 188, 188}}, dir.path() / "g.png");
+  write(dir.path() / "m.mtl",
+        "newmtl bare\n"  // nothing said: defaults
+        "newmtl plastic\nKd 0.5 0.25 1\nKs 0.2 0.2 0.2\nNs 250\nillum 2\nNi 1.45\n"
+        "newmtl shiny\nillum 2\n"                                   // illum 2 without Ks, Ns
+        "newmtl mirror\nKd 0.9 0.9 0.9\nKa 0.5 0.5 0.5\nillum 3\n"  // metallic mean(Ka)
+        "newmtl chrome\nillum 5\nNs 1000\n"                         // no Ka: metallic 1
+        "newmtl pbr\nKd 1 1 1\nPr 0.3\nPm 0.7\nNs 1000\nillum 3\nKa 0 0 0\n"
+        "newmtl glass\nKd 0.9 1 0.9\nNi 1.33\nd 0.5\nillum 7\n"
+        "newmtl water\nillum 4\nNi 0\n"  // Ni <= 0: 1.5
+        "newmtl veil\nKd 1 0 0\nd 0.25\nKe 1 2 3\n"
+        "newmtl velvet\nPs 0.6\nPc 0.8\nPcr 0.1\naniso 0.5\nTf 1 1 1\n"
+        "newmtl coat\nPc 1\n"
+        "newmtl maps\nPm 0\nmap_Pr g.png\nmap_Ps g.png\nnorm -bm 0.5 g.png\n"
+        "newmtl bumpy\nmap_Bump g.png\nmap_Pm g.png\n");
+  std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (const char* m : {"bare", "plastic", "shiny", "mirror", "chrome", "pbr", "glass", "water",
+                        "veil", "velvet", "coat", "maps", "bumpy"})
+    obj += std::string("usemtl ") + m + "\nf 1 2 3\n";
+  write(dir.path() / "m.obj", obj);
+  const scene s = mesh_scene(dir.path() / "m.obj");
+  ASSERT_EQ(s.materials.size(), 13u);
+  const auto at = [&](std::size_t k) -> const material& { return s.materials[k].m; };
+  for (std::size_t k = 0; k < 13; ++k) EXPECT_EQ(at(k).type, material_type::pbr) << k;
+  // bare: Blender's defaults (base 0.8), no highlight: specular 0, roughness 1, dielectric.
+  EXPECT_EQ(at(0).albedo, color(0.8));
+  EXPECT_EQ(at(0).pbr.specular, 0);
+  EXPECT_EQ(at(0).pbr.roughness, 1);
+  EXPECT_EQ(at(0).pbr.metallic, 0);
+  EXPECT_EQ(at(0).pbr.ior, 1.5);
+  // plastic: specular 2 mean(Ks), roughness 1 - sqrt(Ns / 1000), ior Ni.
+  EXPECT_NEAR(at(1).albedo.g, 0.25, 1e-7);
+  EXPECT_NEAR(at(1).pbr.specular, 0.4, 1e-7);
+  EXPECT_NEAR(at(1).pbr.roughness, 0.5, 1e-7);
+  EXPECT_NEAR(at(1).pbr.ior, 1.45, 1e-6);
+  EXPECT_EQ(at(1).pbr.metallic, 0);
+  // illum 2 without Ks: level 1, twice glTF's neutral (specular 1, the rest in its color, as
+  // Blender's glTF exporter writes it); without Ns: smooth.
+  EXPECT_EQ(at(2).pbr.specular, 1);
+  EXPECT_EQ(at(2).pbr.specular_color, color(2));
+  EXPECT_EQ(at(1).pbr.specular_color, color(1));
+  EXPECT_EQ(at(2).pbr.roughness, 0);
+  EXPECT_NEAR(at(3).pbr.metallic, 0.5, 1e-7);  // illum 3: mean(Ka)
+  EXPECT_EQ(at(3).pbr.roughness, 1);
+  EXPECT_EQ(at(4).pbr.metallic, 1);  // illum 5, no Ka
+  EXPECT_EQ(at(4).pbr.roughness, 0);
+  EXPECT_NEAR(at(5).pbr.roughness, 0.3, 1e-7);  // Pr and Pm over Ns and illum
+  EXPECT_NEAR(at(5).pbr.metallic, 0.7, 1e-7);
+  // glass: transmission 1 of index Ni, metallic 0, d not drawn again; no Ni: 1.5.
+  EXPECT_EQ(at(6).pbr.transmission, 1);
+  EXPECT_NEAR(at(6).pbr.ior, 1.33, 1e-6);
+  EXPECT_EQ(at(6).pbr.metallic, 0);
+  EXPECT_EQ(at(6).opacity, 1);
+  EXPECT_EQ(at(6).alpha, alpha_mode::opaque);
+  EXPECT_EQ(at(7).pbr.ior, 1.5);
+  EXPECT_EQ(at(7).albedo, color(1));  // glass without Kd: untinted
+  EXPECT_EQ(at(8).opacity, 0.25);     // d: alpha-blended
+  EXPECT_EQ(at(8).alpha, alpha_mode::blend);
+  EXPECT_EQ(at(8).emission, color(1, 2, 3));
+  // velvet: sheen (Ps, Ps, Ps) at roughness 0.5, clearcoat 0.25 Pc of roughness Pcr; aniso and
+  // Tf not read (no transmission).
+  EXPECT_NEAR(at(9).pbr.sheen_color.r, 0.6, 1e-7);
+  EXPECT_EQ(at(9).pbr.sheen_roughness, 0.5);
+  EXPECT_NEAR(at(9).pbr.clearcoat, 0.2, 1e-7);
+  EXPECT_NEAR(at(9).pbr.clearcoat_roughness, 0.1, 1e-7);
+  EXPECT_EQ(at(9).pbr.transmission, 0);
+  EXPECT_EQ(at(10).pbr.clearcoat, 0.25);
+  EXPECT_NEAR(at(10).pbr.clearcoat_roughness, 0.03, 1e-12);  // Blender's default coat roughness
+  // maps: map_Pr alone with metallic 0 is the metallic-roughness texture, map_Ps the sheen's,
+  // norm the normal map with -bm its scale; all decoded as data (188 stays 188).
+  const pbr_material& p = at(11).pbr;
+  for (int t : {p.metallic_roughness_texture, p.sheen_color_texture, p.normal_texture}) {
+    ASSERT_GE(t, 0);
+    EXPECT_EQ(s.textures[std::size_t(t)].color_space, texel_encoding::linear);
+    EXPECT_EQ(s.textures[std::size_t(t)].image->texels[0] & 255u, 188u);
+  }
+  EXPECT_EQ(p.normal_scale, 0.5);
+  // bumpy: map_Bump is the normal map (Blender's reading); a lone map_Pm cannot be one texture
+  // with a roughness: a warning names it.
+  EXPECT_GE(at(12).pbr.normal_texture, 0);
+  EXPECT_EQ(at(12).pbr.metallic_roughness_texture, -1);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("material bumpy: map_Pm g.png: not drawn"), std::string::npos)
+      << s.warnings[0];
+}
+
 }  // namespace
 }  // namespace rtvk

@@ -18,8 +18,15 @@ constexpr honoured_extension honoured[] = {
     {"KHR_mesh_quantization", "integer attributes (gltf_accessor.cpp)"},
     {"KHR_texture_transform", "baked into the triangles' uv and uv1 (gltf_material.cpp)"},
     {"KHR_materials_emissive_strength", "scales the material's emission"},
-    {"KHR_materials_transmission", "factor >= 0.5: glass (approximated)"},
-    {"KHR_materials_ior", "the glass's index"},
+    // The PBR material's parameters (gltf_pbr.cpp). KHR_materials_iridescence, _anisotropy and
+    // _dispersion are not among them: refused where required, listed where used.
+    {"KHR_materials_ior", "pbr_material::ior"},
+    {"KHR_materials_specular", "pbr_material::specular, specular_color"},
+    {"KHR_materials_transmission", "pbr_material::transmission"},
+    {"KHR_materials_volume", "pbr_material::thickness, attenuation_*"},
+    {"KHR_materials_clearcoat", "pbr_material::clearcoat*"},
+    {"KHR_materials_sheen", "pbr_material::sheen_*"},
+    {"KHR_materials_unlit", "the flat kind of the base color (gltf_material.cpp)"},
 };
 
 // The table's, and those formats/gltf_ext decodes before the walk (KHR_draco_mesh_compression,

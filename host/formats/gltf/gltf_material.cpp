@@ -58,13 +58,12 @@ uv_mapping mapping_of(const tinygltf::TextureInfo& info) {
 
 gltf_materials::gltf_materials(const tinygltf::Model& m, mesh_builder& b) : m_(m), b_(b) {
   for (const tinygltf::Material& mat : m.materials) {
-    const std::string k = std::to_string(materials_.size());
-    materials_.push_back(b.add_material(b.name() + ":" + (mat.name.empty() ? k : mat.name),
-                                        make(mat, "materials " + k)));
+    const std::size_t k = materials_.size();
     const bool base = mat.pbrMetallicRoughness.baseColorTexture.index >= 0;
     const bool emissive = mat.emissiveTexture.index >= 0;
     mappings_.push_back(mapping_of(base || !emissive ? mat.pbrMetallicRoughness.baseColorTexture
                                                      : mat.emissiveTexture));
+    mapped_.push_back(base || emissive);
     // The emissive texture's own set, where its factor does not zero it and it reads other
     // coordinates than the first set's.
     const uv_mapping second = mapping_of(mat.emissiveTexture);
@@ -74,23 +73,24 @@ gltf_materials::gltf_materials(const tinygltf::Model& m, mesh_builder& b) : m_(m
         second.set != mappings_.back().set || second.matrix != mappings_.back().matrix;
     second_mappings_.push_back(base && emissive && drawn && differs ? std::optional(second)
                                                                     : std::nullopt);
+    const std::string n = std::to_string(k);
+    materials_.push_back(b.add_material(b.name() + ":" + (mat.name.empty() ? n : mat.name),
+                                        make(mat, k, "materials " + n)));
   }
 }
 
-// A glTF material as rtvk's (docs/mesh-formats.md), until issue 45's PBR: the base color (its
+// A glTF material as rtvk's pbr material (docs/mesh-formats.md's table): the base color (its
 // texture decoded as sRGB and tinted by the factor) and its alpha as opacity, alphaMode and
 // alphaCutoff, doubleSided false as back-face culling, and the emissive factor times
 // KHR_materials_emissive_strength (times the emissive texture, sRGB) as emission beside what the
-// surface reflects. Its kind: KHR_materials_transmission's factor >= 0.5 is glass of
-// KHR_materials_ior's index (1.5 by default); else a metallic value >= 0.5 is metal blurred by the
-// roughness; else diffuse. With a metallicRoughnessTexture, the metallic and roughness values are
-// the factors times the texture's mean (blue and green): a texture that marks a few metal parts
-// no longer makes the whole material metal because metallicFactor defaults to 1.
-material gltf_materials::make(const tinygltf::Material& mat, const std::string& where) {
+// surface reflects; the metallic-roughness parameters and the extensions are read_pbr's.
+// KHR_materials_unlit makes it rtvk's unlit kind (flat) of the same base color.
+material gltf_materials::make(const tinygltf::Material& mat, std::size_t k,
+                              const std::string& where) {
   material out;
   const tinygltf::PbrMetallicRoughness& pbr = mat.pbrMetallicRoughness;
   const std::vector<double>& f = pbr.baseColorFactor;
-  for (std::size_t k = 0; k < 3 && k < f.size(); ++k) out.albedo[int(k)] = unit(f[k]);
+  for (std::size_t c = 0; c < 3 && c < f.size(); ++c) out.albedo[int(c)] = unit(f[c]);
   out.opacity = f.size() == 4 ? unit(f[3]) : 1;
   if (pbr.baseColorTexture.index >= 0)
     out.texture = image_texture(pbr.baseColorTexture.index, texel_encoding::srgb, out.albedo,
@@ -101,39 +101,43 @@ material gltf_materials::make(const tinygltf::Material& mat, const std::string& 
   out.cull_back = !mat.doubleSided;
   const double strength =
       number_or(extension(mat, "KHR_materials_emissive_strength"), "emissiveStrength", 1);
-  for (std::size_t k = 0; k < 3 && k < mat.emissiveFactor.size(); ++k)
-    out.emission[int(k)] =
-        unit(mat.emissiveFactor[k]) *
+  for (std::size_t c = 0; c < 3 && c < mat.emissiveFactor.size(); ++c)
+    out.emission[int(c)] =
+        unit(mat.emissiveFactor[c]) *
         (strength >= 0 && std::isfinite(strength) && strength < 1e6 ? strength : 1.0);
   if (mat.emissiveTexture.index >= 0 && out.emission != color(0))
     out.emission_texture = image_texture(mat.emissiveTexture.index, texel_encoding::srgb, color(1),
                                          where + " emissiveTexture");
-  if (number_or(extension(mat, "KHR_materials_transmission"), "transmissionFactor", 0) >= 0.5) {
-    out.type = material_type::dielectric;
-    const double ior = number_or(extension(mat, "KHR_materials_ior"), "ior", 1.5);
-    out.ir = ior > 0 && std::isfinite(ior) ? ior : 1.5;
+  if (mat.extensions.count("KHR_materials_unlit") != 0) {
+    out.type = material_type::flat;  // the base color, as the extension's shading says
     return out;
   }
-  double metallic = unit(pbr.metallicFactor), roughness = unit(pbr.roughnessFactor);
-  if (pbr.metallicRoughnessTexture.index >= 0) {
-    const glm::dvec2 mean =
-        channel_means(pbr.metallicRoughnessTexture.index, where + " metallicRoughnessTexture");
-    metallic *= mean.x;
-    roughness *= mean.y;
-  }
-  out.type = metallic >= 0.5 ? material_type::metal : material_type::lambertian;
-  if (out.type == material_type::metal) out.fuzz = roughness;
+  out.type = material_type::pbr;
+  read_pbr(mat, k, out.pbr, where);
   return out;
 }
 
-// The mean metallic (blue) and roughness (green) of a metallicRoughnessTexture's image, decoded
-// as data (linear).
-glm::dvec2 gltf_materials::channel_means(int t, const std::string& where) {
-  const texel_image& image = *decoded(source_of(t, where), texel_encoding::linear, where);
-  glm::dvec2 sum(0);
-  for (std::uint32_t texel : image.texels)
-    sum += glm::dvec2((texel >> 16) & 0xff, (texel >> 8) & 0xff);
-  return image.texels.empty() ? glm::dvec2(1) : sum / (255.0 * double(image.texels.size()));
+// A texture giving one of material k's parameters: the textureInfo's texture decoded in
+// `encoding`, untinted (its factor is the parameter's own). The triangles carry one set of
+// texture coordinates for every texture of a material but the emissive one (mapping(k)): a
+// texture that reads another TEXCOORD_n or another KHR_texture_transform is drawn with those,
+// and the scene's warnings say so, once per file, material and texture.
+int gltf_materials::parameter_texture(const tinygltf::TextureInfo& info, texel_encoding encoding,
+                                      std::size_t k, const std::string& where) {
+  if (info.index < 0) return -1;
+  const uv_mapping own = mapping_of(info);
+  if (!mapped_[k]) {  // the material's first texture: the triangles carry its coordinates
+    mappings_[k] = own;
+    mapped_[k] = true;
+  }
+  if (own.set != mappings_[k].set || own.matrix != mappings_[k].matrix)
+    b_.warn(where + ": reads TEXCOORD_" + std::to_string(own.set) +
+            (own.matrix != glm::dmat3(1.0) ? " through its KHR_texture_transform" : "") +
+            ", not the coordinates the triangles carry (TEXCOORD_" +
+            std::to_string(mappings_[k].set) +
+            " of the base color texture, as transformed "
+            "there); drawn with those");
+  return image_texture(info.index, encoding, color(1), where);
 }
 
 int gltf_materials::scene_material(int k, const std::string& where) const {
@@ -163,6 +167,9 @@ int gltf_materials::image_texture(int t, texel_encoding encoding, const color& t
     tex.wrap_u = tex.wrap_v = image_wrap::repeat;  // glTF's default sampler
   }
   tex.image = decoded(source, encoding, where);
+  // Data textures say so, that a dump reads them back as they were decoded; color ones keep the
+  // default, in which a glTF's image (FILE#images/N) is read back: sRGB.
+  if (encoding == texel_encoding::linear) tex.color_space = texel_encoding::linear;
   return b_.add_texture(std::move(tex));
 }
 

@@ -38,14 +38,14 @@ struct uv_mapping {
 };
 
 // gltf_material.cpp: the file's materials, appended to the scene once each, with the textures
-// they use.
+// they use; gltf_pbr.cpp: their metallic-roughness parameters and KHR_materials_* extensions.
 class gltf_materials {
  public:
   gltf_materials(const tinygltf::Model& m, mesh_builder& b);
   // The scene's material for the file's material k; fails naming `where` if there is none.
   int scene_material(int k, const std::string& where) const;
   // The texture coordinates the file's material k reads (its base color texture's; else its
-  // emissive texture's): a triangle's uv.
+  // emissive texture's; else its first other texture's): a triangle's uv.
   const uv_mapping& mapping(int k) const { return mappings_[std::size_t(k)]; }
   // Its emissive texture's, where it has both textures and they read different sets or
   // transforms: a triangle's second set (triangle_shading::uv1); else none.
@@ -54,8 +54,16 @@ class gltf_materials {
   }
 
  private:
-  material make(const tinygltf::Material& mat, const std::string& where);
-  glm::dvec2 channel_means(int t, const std::string& where);
+  material make(const tinygltf::Material& mat, std::size_t k, const std::string& where);
+  // gltf_pbr.cpp: pbrMetallicRoughness, normalTexture and the KHR_materials_* extensions.
+  void read_pbr(const tinygltf::Material& mat, std::size_t k, pbr_material& p,
+                const std::string& where);
+  void read_extensions(const tinygltf::Material& mat, std::size_t k, pbr_material& p,
+                       const std::string& where);
+  // A parameter texture of material k (-1 where info names none), decoded in `encoding`; a
+  // warning where it reads other texture coordinates than the triangles carry.
+  int parameter_texture(const tinygltf::TextureInfo& info, texel_encoding encoding, std::size_t k,
+                        const std::string& where);
   int source_of(int t, const std::string& where) const;
   std::shared_ptr<const texel_image> decoded(int source, texel_encoding encoding,
                                              const std::string& where);
@@ -65,6 +73,7 @@ class gltf_materials {
   mesh_builder& b_;
   std::vector<int> materials_;        // the file's material k -> the scene's
   std::vector<uv_mapping> mappings_;  // the file's material k's texture coordinates
+  std::vector<bool> mapped_;  // mappings_[k] is a texture's (else the first texture read sets it)
   std::vector<std::optional<uv_mapping>> second_mappings_;  // and its emissive texture's
   // The file's image k decoded in one color space, shared by every texture that uses it.
   std::map<std::pair<int, texel_encoding>, std::shared_ptr<const texel_image>> images_;

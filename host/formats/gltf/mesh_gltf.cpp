@@ -23,7 +23,8 @@ void load_gltf(scene& s, const std::string& bytes, bool binary, const std::strin
 }
 
 std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file, std::size_t index,
-                                              const std::string& name, const path_guard& guard) {
+                                              const std::string& name, const path_guard& guard,
+                                              texel_encoding encoding) {
   const std::string kind = mesh_kind(file);
   if (kind != "gltf" && kind != "glb")
     throw usage_error(name + ": " + file.string() + " is not .gltf or .glb");
@@ -35,10 +36,9 @@ std::shared_ptr<const texel_image> gltf_image(const std::filesystem::path& file,
   if (index >= model.images.size() || model.images[index].image.empty())
     throw usage_error(name + ": " + file.string() + " has no image " + std::to_string(index));
   const std::vector<unsigned char>& img = model.images[index].image;
-  // Every image a glTF's materials name this way is a color (base color, emissive): sRGB.
   return decode_texel_image(std::string(img.begin(), img.end()),
                             name + ": " + file.string() + "#images/" + std::to_string(index),
-                            texel_encoding::srgb);
+                            encoding);
 }
 
 }  // namespace rtvk
