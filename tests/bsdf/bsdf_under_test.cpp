@@ -6,11 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "gpu/kernels_f32.h"
-// pbr.h's stand-in Lambertian leaves its material unused in pbr_pdf (-Wunused-parameter).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "pbr.h"  // the double compilation, in namespace rtvk
-#pragma GCC diagnostic pop
 
 namespace rtvk::bsdf_test {
 namespace {

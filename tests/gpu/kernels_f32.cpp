@@ -9,11 +9,7 @@
 #include "hit_sphere.h"
 #include "kernel_probe.h"
 #include "light_probe.h"
-// pbr.h's stand-in Lambertian leaves its material unused in pbr_pdf (-Wunused-parameter).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "pbr_probe.h"
-#pragma GCC diagnostic pop
 #include "random.h"
 
 namespace rtvk::f32 {
