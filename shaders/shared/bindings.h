@@ -36,7 +36,9 @@
 #define RTVK_BINDING_TLAS 22        // acceleration structure: the scene's top level (--accel rt-*)
 #define RTVK_BINDING_RAY_TIMES 23   // storage buffer: float[], each launch's ray time (rt-pipeline)
 #define RTVK_BINDING_DISKS 24       // storage buffer: gpu_disk[], in the BVH's leaf order
-#define RTVK_SCENE_BINDINGS_END 25  // past the list: a pipeline that adds to it starts here
+// storage buffer: float[bsdf_table_count], pbr.h's energy-compensation tables (bsdf_tables.h)
+#define RTVK_BINDING_BSDF_TABLES 27
+#define RTVK_SCENE_BINDINGS_END 28  // past the list: a pipeline that adds to it starts here
 
 // tonemap.comp: a band's sums in, its RGBA8 bytes out.
 #define RTVK_TONEMAP_SUMS 2         // storage buffer: pixel_sum[], the render's RTVK_BINDING_IMAGE

@@ -4,24 +4,38 @@
 // read bilinearly in (sqrt(cosine), roughness) (table_pos_of in pbr_layers.h); each 1-D
 // one holds a row's cosine-weighted average. The script's docstring says how they are
 // integrated.
+//
+// The tables are one array, each at its offset below, read through BSDF_TABLE(i): C++ reads
+// bsdf_table_data here, GLSL the storage buffer bsdf_table[] that the including shader
+// declares (RTVK_BINDING_BSDF_TABLES), which the host fills from bsdf_table_data. A GLSL
+// array initialised in the shader would live in each invocation's private memory: lavapipe
+// compiled a shader reading these tables for over 17 minutes, and ran out of memory.
 // clang-format off
 #ifndef RTVK_BSDF_TABLES_H
 #define RTVK_BSDF_TABLES_H
 #include "kernel_lang.h"
 
 #ifdef __cplusplus
-#define RTVK_TABLE(name, n) inline constexpr float name[n] = {
-#define RTVK_TABLE_END };
+#define BSDF_TABLE(i) bsdf_table_data[i]
 #else
-#define RTVK_TABLE(name, n) float name[n] = float[n](
-#define RTVK_TABLE_END );
+#define BSDF_TABLE(i) bsdf_table[i]
 #endif
 
 RTVK_KERNELS_BEGIN
 
 const int bsdf_table_size = 32;
+const int bsdf_ggx_e = 0;  // offset of table ggx_e
+const int bsdf_ggx_es = 1024;  // offset of table ggx_es
+const int bsdf_sheen_e = 2048;  // offset of table sheen_e
+const int bsdf_ggx_e_avg = 3072;  // offset of table ggx_e_avg
+const int bsdf_ggx_es_avg = 3104;  // offset of table ggx_es_avg
+const int bsdf_sheen_e_avg = 3136;  // offset of table sheen_e_avg
+const int bsdf_sheen_norm = 3168;  // offset of table sheen_norm
+const int bsdf_table_count = 3200;  // floats in all
 
-RTVK_TABLE(ggx_e, 1024)
+#ifdef __cplusplus
+inline constexpr float bsdf_table_data[3200] = {
+    // ggx_e
     0.9796383f, 0.8916773f, 0.9668916f, 0.9933170f, 0.9979995f, 0.9992044f, 0.9996197f, 0.9997933f,
     0.9998766f, 0.9999202f, 0.9999448f, 0.9999599f, 0.9999693f, 0.9999754f, 0.9999798f, 0.9999826f,
     0.9999848f, 0.9999864f, 0.9999875f, 0.9999883f, 0.9999889f, 0.9999895f, 0.9999899f, 0.9999902f,
@@ -149,10 +163,8 @@ RTVK_TABLE(ggx_e, 1024)
     0.9990712f, 0.9928449f, 0.9771591f, 0.9561608f, 0.9315304f, 0.9043955f, 0.8755734f, 0.8457081f,
     0.8152825f, 0.7846862f, 0.7542292f, 0.7241531f, 0.6946433f, 0.6658488f, 0.6378771f, 0.6108129f,
     0.5846939f, 0.5595694f, 0.5354686f, 0.5123927f, 0.4902916f, 0.4692232f, 0.4491162f, 0.4299454f,
-    0.4117103f, 0.3943613f, 0.3778537f, 0.3621398f, 0.3472357f, 0.3330682f, 0.3195970f, 0.3068369f
-RTVK_TABLE_END
-
-RTVK_TABLE(ggx_es, 1024)
+    0.4117103f, 0.3943613f, 0.3778537f, 0.3621398f, 0.3472357f, 0.3330682f, 0.3195970f, 0.3068369f,
+    // ggx_es
     0.9539172f, 0.8741417f, 0.9423047f, 0.9454475f, 0.9163691f, 0.8750198f, 0.8253598f, 0.7692311f,
     0.7081579f, 0.6436282f, 0.5771307f, 0.5101310f, 0.4440337f, 0.3801437f, 0.3196265f, 0.2634731f,
     0.2124728f, 0.1671915f, 0.1279601f, 0.0948732f, 0.0677972f, 0.0463901f, 0.0301311f, 0.0183593f,
@@ -280,10 +292,8 @@ RTVK_TABLE(ggx_es, 1024)
     0.0475210f, 0.0468610f, 0.0452105f, 0.0430208f, 0.0404796f, 0.0377162f, 0.0348269f, 0.0318895f,
     0.0289637f, 0.0260983f, 0.0233319f, 0.0206945f, 0.0182079f, 0.0158886f, 0.0137465f, 0.0117874f,
     0.0100113f, 0.0084172f, 0.0070007f, 0.0057540f, 0.0046655f, 0.0037289f, 0.0029300f, 0.0022573f,
-    0.0016998f, 0.0012446f, 0.0008798f, 0.0005937f, 0.0003764f, 0.0002168f, 0.0001054f, 0.0000336f
-RTVK_TABLE_END
-
-RTVK_TABLE(sheen_e, 1024)
+    0.0016998f, 0.0012446f, 0.0008798f, 0.0005937f, 0.0003764f, 0.0002168f, 0.0001054f, 0.0000336f,
+    // sheen_e
     1.0000000f, 0.9710641f, 0.8926559f, 0.8060845f, 0.7098516f, 0.6122232f, 0.5175990f, 0.4287120f,
     0.3475536f, 0.2753204f, 0.2127913f, 0.1600264f, 0.1168184f, 0.0825082f, 0.0561580f, 0.0366759f,
     0.0228590f, 0.0135113f, 0.0075189f, 0.0039028f, 0.0018682f, 0.0008136f, 0.0003168f, 0.0001077f,
@@ -411,36 +421,29 @@ RTVK_TABLE(sheen_e, 1024)
     0.6362261f, 0.6323877f, 0.6217076f, 0.6090709f, 0.5942586f, 0.5781850f, 0.5613145f, 0.5439276f,
     0.5262371f, 0.5083855f, 0.4904959f, 0.4726353f, 0.4548689f, 0.4372340f, 0.4197532f, 0.4024444f,
     0.3853135f, 0.3683615f, 0.3515852f, 0.3349750f, 0.3185183f, 0.3022000f, 0.2860030f, 0.2699062f,
-    0.2538856f, 0.2379184f, 0.2219745f, 0.2060242f, 0.1900334f, 0.1739647f, 0.1577766f, 0.1414228f
-RTVK_TABLE_END
-
-RTVK_TABLE(ggx_e_avg, 32)
+    0.2538856f, 0.2379184f, 0.2219745f, 0.2060242f, 0.1900334f, 0.1739647f, 0.1577766f, 0.1414228f,
+    // ggx_e_avg
     0.9999850f, 0.9999845f, 0.9998890f, 0.9995399f, 0.9987216f, 0.9971915f, 0.9946954f, 0.9909788f,
     0.9857971f, 0.9789226f, 0.9701523f, 0.9593136f, 0.9462707f, 0.9309290f, 0.9132388f, 0.8932013f,
     0.8708664f, 0.8463371f, 0.8197661f, 0.7913522f, 0.7613364f, 0.7299932f, 0.6976219f, 0.6645377f,
-    0.6310593f, 0.5974993f, 0.5641554f, 0.5313010f, 0.4991796f, 0.4680003f, 0.4379367f, 0.4091188f
-RTVK_TABLE_END
-
-RTVK_TABLE(ggx_es_avg, 32)
+    0.6310593f, 0.5974993f, 0.5641554f, 0.5313010f, 0.4991796f, 0.4680003f, 0.4379367f, 0.4091188f,
+    // ggx_es_avg
     0.0476086f, 0.0476079f, 0.0474929f, 0.0471246f, 0.0463752f, 0.0451707f, 0.0434985f, 0.0413986f,
     0.0389489f, 0.0362478f, 0.0333989f, 0.0305000f, 0.0276348f, 0.0248701f, 0.0222547f, 0.0198208f,
     0.0175864f, 0.0155579f, 0.0137332f, 0.0121042f, 0.0106585f, 0.0093816f, 0.0082582f, 0.0072725f,
-    0.0064094f, 0.0056547f, 0.0049953f, 0.0044194f, 0.0039164f, 0.0034768f, 0.0030923f, 0.0027557f
-RTVK_TABLE_END
-
-RTVK_TABLE(sheen_e_avg, 32)
+    0.0064094f, 0.0056547f, 0.0049953f, 0.0044194f, 0.0039164f, 0.0034768f, 0.0030923f, 0.0027557f,
+    // sheen_e_avg
     0.0092454f, 0.0092454f, 0.0092454f, 0.0092454f, 0.0154243f, 0.0240596f, 0.0344404f, 0.0464043f,
     0.0597552f, 0.0742745f, 0.0897321f, 0.1058969f, 0.1225468f, 0.1394752f, 0.1564963f, 0.1663878f,
     0.1741549f, 0.1813912f, 0.1881201f, 0.1943681f, 0.2001638f, 0.2055363f, 0.2105149f, 0.2151282f,
-    0.2194035f, 0.2233669f, 0.2270430f, 0.2304546f, 0.2336230f, 0.2365679f, 0.2393074f, 0.2418581f
-RTVK_TABLE_END
-
-RTVK_TABLE(sheen_norm, 32)
+    0.2194035f, 0.2233669f, 0.2270430f, 0.2304546f, 0.2336230f, 0.2365679f, 0.2393074f, 0.2418581f,
+    // sheen_norm
     0.2495865f, 0.2495865f, 0.2495865f, 0.2495865f, 0.3202801f, 0.3974531f, 0.4728916f, 0.5463301f,
     0.6175394f, 0.6863293f, 0.7525488f, 0.8160863f, 0.8768674f, 0.9348527f, 0.9900342f, 1.0000000f,
     1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f,
     1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f, 1.0000000f
-RTVK_TABLE_END
+};
+#endif
 
 RTVK_KERNELS_END
 

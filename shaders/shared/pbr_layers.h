@@ -40,25 +40,26 @@ inline precise table_pos table_pos_of(real mu, real roughness) {
   return p;
 }
 
-// One bilinear read per table: GLSL passes no array by reference, so a macro writes each.
-#define RTVK_TABLE_READ(fn, t)                                                          \
-  inline precise real fn(table_pos p) {                                                 \
-    precise real a = real(t[p.at]) + (real(t[p.at + 1]) - real(t[p.at])) * p.fx;        \
-    precise real b =                                                                    \
-        real(t[p.at + bsdf_table_size]) +                                               \
-        (real(t[p.at + bsdf_table_size + 1]) - real(t[p.at + bsdf_table_size])) * p.fx; \
-    return a + (b - a) * p.fy;                                                          \
+// One bilinear read per table, the table at offset `t` of bsdf_tables.h's one array.
+#define RTVK_TABLE_READ(fn, t)                                                                     \
+  inline precise real fn(table_pos p) {                                                            \
+    int i = t + p.at;                                                                              \
+    precise real a = real(BSDF_TABLE(i)) + (real(BSDF_TABLE(i + 1)) - real(BSDF_TABLE(i))) * p.fx; \
+    int j = i + bsdf_table_size;                                                                   \
+    precise real b = real(BSDF_TABLE(j)) + (real(BSDF_TABLE(j + 1)) - real(BSDF_TABLE(j))) * p.fx; \
+    return a + (b - a) * p.fy;                                                                     \
   }
-#define RTVK_ROW_READ(fn, t)                                              \
-  inline precise real fn(table_pos p) {                                   \
-    return real(t[p.row]) + (real(t[p.row + 1]) - real(t[p.row])) * p.fy; \
+#define RTVK_ROW_READ(fn, t)                                                             \
+  inline precise real fn(table_pos p) {                                                  \
+    int i = t + p.row;                                                                   \
+    return real(BSDF_TABLE(i)) + (real(BSDF_TABLE(i + 1)) - real(BSDF_TABLE(i))) * p.fy; \
   }
-RTVK_TABLE_READ(read_ggx_e, ggx_e)
-RTVK_TABLE_READ(read_ggx_es, ggx_es)
-RTVK_TABLE_READ(read_sheen_e, sheen_e)
-RTVK_ROW_READ(read_ggx_e_avg, ggx_e_avg)
-RTVK_ROW_READ(read_ggx_es_avg, ggx_es_avg)
-RTVK_ROW_READ(read_sheen_norm, sheen_norm)
+RTVK_TABLE_READ(read_ggx_e, bsdf_ggx_e)
+RTVK_TABLE_READ(read_ggx_es, bsdf_ggx_es)
+RTVK_TABLE_READ(read_sheen_e, bsdf_sheen_e)
+RTVK_ROW_READ(read_ggx_e_avg, bsdf_ggx_e_avg)
+RTVK_ROW_READ(read_ggx_es_avg, bsdf_ggx_es_avg)
+RTVK_ROW_READ(read_sheen_norm, bsdf_sheen_norm)
 
 inline precise real max3(real3 v) {
   return max(v.x, max(v.y, v.z));

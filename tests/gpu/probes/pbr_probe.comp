@@ -11,6 +11,11 @@ layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block {
   pbr_probe_entry entries[];
 };
 
+// pbr.h's tables (bsdf_tables.h reads them as bsdf_table[]).
+layout(std430, set = 0, binding = RTVK_BINDING_BSDF_TABLES) readonly buffer bsdf_table_block {
+  float bsdf_table[];
+};
+
 #include "pbr_probe.h"
 
 void main() {

@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "bsdf_tables.h"
 #include "buffer.h"
 #include "compute_pipeline.h"
 #include "gpu_scene.h"
@@ -13,12 +14,16 @@ namespace {
 
 // Runs a probe shader once over a host-visible buffer it reads and writes in place.
 void run_in_place(gpu_context& ctx, std::span<const std::uint32_t> spirv, void* data,
-                  std::size_t bytes, std::uint32_t groups, const gpu_buffer* ubo) {
+                  std::size_t bytes, std::uint32_t groups, const gpu_buffer* ubo,
+                  const gpu_buffer* tables = nullptr) {
   gpu_buffer buf(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::upload);
   buf.write(data, bytes);
   std::vector<buffer_binding> bindings{
       {RTVK_BINDING_PROBE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buf.get()}};
   if (ubo) bindings.push_back({RTVK_BINDING_CAMERA, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, ubo->get()});
+  if (tables)
+    bindings.push_back(
+        {RTVK_BINDING_BSDF_TABLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tables->get()});
   const compute_pipeline pipeline(ctx, spirv, bindings, 0);
   ctx.submit_and_wait([&](VkCommandBuffer cb) {
     pipeline.bind(cb);
@@ -74,8 +79,11 @@ std::vector<light_probe_entry> run_light_probe(gpu_context& ctx,
 }
 
 std::vector<pbr_probe_entry> run_pbr_probe(gpu_context& ctx, std::vector<pbr_probe_entry> entries) {
+  gpu_buffer tables(ctx, sizeof bsdf_table_data, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                    memory_use::upload);
+  tables.write(bsdf_table_data, sizeof bsdf_table_data);
   run_in_place(ctx, pbr_probe_shader(), entries.data(), entries.size() * sizeof(pbr_probe_entry),
-               std::uint32_t((entries.size() + 63) / 64), nullptr);
+               std::uint32_t((entries.size() + 63) / 64), nullptr, &tables);
   return entries;
 }
 
