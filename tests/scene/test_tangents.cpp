@@ -118,6 +118,34 @@ TEST(Tangents, AGltfFilesTangentsAreReadAndPlaced) {
   for (const glm::vec4& t : sh.tangent) EXPECT_EQ(t.w, 1.0f);
 }
 
+// An OBJ with uv and normals gets tangents where its faces take a normal-mapped material (here
+// the scene's, by the placement), generated in scene space: a mirroring placement turns the uv
+// frame over (w = -1); with the file's own material (no normal map) it gets none.
+TEST(Tangents, AnObjsNormalMappedFacesGetGeneratedTangentsAfterPlacement) {
+  const std::string obj =
+      "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n"
+      "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
+  for (const double mirror : {1.0, -1.0}) {
+    scene s;
+    s.materials.push_back({"mapped", test::normal_mapped_pbr()});
+    mesh_placement how;
+    how.material = 0;
+    how.placement = make_transform(vec3(mirror, 1, 1), vec3(0, 0, 1), 0, vec3(0));
+    load_mesh_bytes(s, obj, "obj", "q.obj", "", how);
+    ASSERT_EQ(s.triangles.size(), 2u);
+    for (const triangle_shading& sh : s.shading) {
+      ASSERT_TRUE(sh.has_tangent);
+      for (const glm::vec4& t : sh.tangent) {
+        expect_tangent_near(vec3(t), vec3(mirror, 0, 0), 1e-6);
+        EXPECT_EQ(t.w, float(mirror));
+      }
+    }
+  }
+  scene plain;
+  load_mesh_bytes(plain, obj, "obj", "q.obj", "", {});
+  for (const triangle_shading& sh : plain.shading) EXPECT_FALSE(sh.has_tangent);
+}
+
 // A ray's hit on the grid carries the vertex tangents blended (U made unit, w = +1 from the
 // front, -1 from behind where the record's normal is turned over); through an instance that
 // rotates and stretches, M U made unit; through a mirroring one, w flips again.
