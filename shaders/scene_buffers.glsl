@@ -24,6 +24,9 @@ layout(std430, set = 0, binding = RTVK_BINDING_NORMALS) readonly buffer normal_b
 layout(std430, set = 0, binding = RTVK_BINDING_TEXCOORDS) readonly buffer texcoord_block {
   vec2 vertex_uvs[];
 };
+layout(std430, set = 0, binding = RTVK_BINDING_TANGENTS) readonly buffer tangent_block {
+  vec4 vertex_tangents[];
+};
 layout(std430, set = 0, binding = RTVK_BINDING_INSTANCES) readonly buffer instance_block {
   gpu_instance instances[];
 };
@@ -36,9 +39,17 @@ layout(std430, set = 0, binding = RTVK_BINDING_BVH_NODES) readonly buffer bvh_no
 // its vertex colors, blended into rec.color, where the third normal's w is their entry (three
 // vec4 at 3 * w in vertex_normals; 0 for none); its second texture coordinates, blended into
 // rec.uv1, where the second normal's w, read as a uint, has an entry above its bit 0 (three vec2
-// at 3 * (w >> 1) in vertex_uvs; 0 for none).
+// at 3 * (w >> 1) in vertex_uvs; 0 for none); its tangents, blended into rec.tangent, where the
+// first normal's w has an entry e above its bit 0 (three vec4 at 3 * (e - 1) in
+// vertex_tangents; 0 for none).
 void record_vertex_extras(uint normals, vec3 weights, precise inout hit_record rec) {
   if (normals == RTVK_FLAT) return;
+  uint tangents = uint(vertex_normals[3u * normals].w) >> 1u;
+  if (tangents != 0u) {
+    uint e = 3u * (tangents - 1u);
+    rec.tangent = blend_tangents(vertex_tangents[e], vertex_tangents[e + 1u],
+                                 vertex_tangents[e + 2u], weights, rec);
+  }
   uint colors = uint(vertex_normals[3u * normals + 2u].w);
   if (colors != 0u)
     rec.color = blend_colors(vertex_normals[3u * colors], vertex_normals[3u * colors + 1u],

@@ -30,6 +30,8 @@ inline void record_triangle(const std::array<point3, 3>& p, const triangle_attri
   record_triangle_hit(p[0], p[1], p[2], shading, uv, material, r, t, rec);
   if (a && a->has_color) rec.color = blend_colors(a->color[0], a->color[1], a->color[2], weights);
   if (a && a->has_uv1) rec.uv1 = triangle_uv(true, a->uv1[0], a->uv1[1], a->uv1[2], weights);
+  if (a && a->has_tangent)
+    rec.tangent = blend_tangents(a->tangent[0], a->tangent[1], a->tangent[2], weights, rec);
 }
 
 // A scene triangle as a hittable, for the lesson's hittable_list.

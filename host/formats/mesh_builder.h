@@ -70,12 +70,14 @@ class mesh_builder {
 
   // One face; `normals` are the file's (not yet placed), or none for a flat face; `colors` its
   // corners' vertex colors (linear RGBA), or none; `uv1` its second texture coordinates (the
-  // emission texture's, triangle_shading::uv1), or none.
+  // emission texture's, triangle_shading::uv1), or none; `tangents` the file's vertex tangents
+  // (glTF's TANGENT, not yet placed; kept only with normals and uv), or none.
   void add(const std::array<point3, 3>& p, int material,
            const std::optional<std::array<vec3, 3>>& normals, const std::array<glm::dvec2, 3>& uv,
            bool has_uv, const transform& node,
            const std::optional<std::array<glm::vec4, 3>>& colors = std::nullopt,
-           const std::optional<std::array<glm::dvec2, 3>>& uv1 = std::nullopt) {
+           const std::optional<std::array<glm::dvec2, 3>>& uv1 = std::nullopt,
+           const std::optional<std::array<glm::vec4, 3>>& tangents = std::nullopt) {
     if (object_count(s_) >= max_scene_objects)
       fail("faces", "more than " + std::to_string(max_scene_objects) + " objects in one scene");
     triangle t;
@@ -99,9 +101,11 @@ class mesh_builder {
       }
       if (!smooth) sh.normal = {};
     }
+    if (smooth && has_uv && tangents) add_tangents(sh, *tangents, node, mirrored);
     if (mirrored) {
       std::swap(t.p[1], t.p[2]);
       std::swap(sh.normal[1], sh.normal[2]);
+      std::swap(sh.tangent[1], sh.tangent[2]);
     }
     std::array<glm::dvec2, 3> corners = uv;
     if (mirrored) std::swap(corners[1], corners[2]);
@@ -122,6 +126,21 @@ class mesh_builder {
       s_.shading.push_back(sh);
     }
     s_.triangles.push_back(t);
+  }
+
+  // The file's tangents placed into sh: directions in the surface, carried by the placement's
+  // linear part (not the normals' inverse transpose); a mirroring placement flips the
+  // handedness with the frame. A zero or broken one leaves the face without (then generated).
+  void add_tangents(triangle_shading& sh, const std::array<glm::vec4, 3>& tangents,
+                    const transform& node, bool mirrored) const {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const vec3 t = placement_.apply_vector(node.apply_vector(vec3(tangents[k])));
+      const double len = glm::length(t);
+      if (!(len > 0) || !std::isfinite(len)) return;
+      const float w = (tangents[k].w < 0) != mirrored ? -1.0f : 1.0f;
+      sh.tangent[k] = glm::vec4(glm::vec3(t / len), w);
+    }
+    sh.has_tangent = true;
   }
 
   // A material of the file's, appended to the scene under a name no other material has (a file

@@ -1,5 +1,7 @@
 #include "mesh_file.h"
 
+#include "mesh_tangents.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -45,12 +47,14 @@ void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind
 void load_mesh_bytes(scene& s, const std::string& bytes, const std::string& kind,
                      const std::string& name, const std::filesystem::path& base,
                      const mesh_placement& how, const path_guard& guard) {
+  const std::size_t before = s.triangles.size();
   if (kind == "obj")
     load_obj(s, bytes, name, base, how, guard);
   else if (kind == "gltf" || kind == "glb")
     load_gltf(s, bytes, kind == "glb", name, base, how, guard);
   else
     throw usage_error(name + ": not a mesh file (expected .obj, .gltf or .glb)");
+  generate_tangents(s, before);  // for the normal-mapped faces the file gave none
 }
 
 void load_mesh(scene& s, const std::filesystem::path& file, const mesh_placement& how) {

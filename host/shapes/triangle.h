@@ -51,19 +51,26 @@ struct triangle_shading {
   // color's, that transform baked in); where it has not, the emission texture reads uv.
   std::array<glm::dvec2, 3> uv1{};
   bool has_uv1 = false;  // uv1 came from the mesh
+  // Vertex tangents for normal maps (glTF's TANGENT convention): xyz the unit tangent along +u,
+  // w the handedness, +1 or -1, so that the bitangent (along +v) is cross(normal, xyz) * w. Read
+  // from the mesh or generated (tangent_frames.h); only with normals and uv.
+  std::array<glm::vec4, 3> tangent{};
+  bool has_tangent = false;  // tangent is set
   bool has_normals() const { return normal[0] != vec3(0); }
 };
 
 // A triangle's shading as both backends' searches keep it: normals normalized once.
 struct triangle_attributes {
-  std::array<vec3, 3> normal{};       // unit vertex normals, when smooth
-  std::array<glm::dvec2, 3> uv{};     // texture coordinates, when has_uv
-  std::array<glm::dvec4, 3> color{};  // vertex colors (linear RGBA), when has_color
-  std::array<glm::dvec2, 3> uv1{};    // the emission texture's coordinates, when has_uv1
-  bool smooth = false;                // shaded by the blended normals, else flat
-  bool has_uv = false;                // uv given by the mesh
-  bool has_color = false;             // vertex colors given by the mesh
-  bool has_uv1 = false;               // a second set given by the mesh
+  std::array<vec3, 3> normal{};         // unit vertex normals, when smooth
+  std::array<glm::dvec2, 3> uv{};       // texture coordinates, when has_uv
+  std::array<glm::dvec4, 3> color{};    // vertex colors (linear RGBA), when has_color
+  std::array<glm::dvec2, 3> uv1{};      // the emission texture's coordinates, when has_uv1
+  std::array<glm::dvec4, 3> tangent{};  // unit vertex tangents and handedness, when has_tangent
+  bool smooth = false;                  // shaded by the blended normals, else flat
+  bool has_uv = false;                  // uv given by the mesh
+  bool has_color = false;               // vertex colors given by the mesh
+  bool has_uv1 = false;                 // a second set given by the mesh
+  bool has_tangent = false;             // tangents given (only where smooth)
 };
 inline triangle_attributes attributes_of(const triangle_shading& sh) {
   triangle_attributes a;
@@ -76,6 +83,12 @@ inline triangle_attributes attributes_of(const triangle_shading& sh) {
   for (std::size_t k = 0; k < 3; ++k) a.color[k] = glm::dvec4(sh.color[k]);
   a.has_uv1 = sh.has_uv1;
   a.uv1 = sh.uv1;
+  a.has_tangent = a.smooth && sh.has_tangent;
+  if (a.has_tangent)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const vec3 t = glm::normalize(vec3(sh.tangent[k]));
+      a.tangent[k] = glm::dvec4(t, sh.tangent[k].w < 0 ? -1.0 : 1.0);
+    }
   return a;
 }
 

@@ -36,6 +36,10 @@
 #define RTVK_BINDING_TLAS 22        // acceleration structure: the scene's top level (--accel rt-*)
 #define RTVK_BINDING_RAY_TIMES 23   // storage buffer: float[], each launch's ray time (rt-pipeline)
 #define RTVK_BINDING_DISKS 24       // storage buffer: gpu_disk[], in the BVH's leaf order
+// 25: gpu_pbr[] (the PBR materials' parameters), from the material wiring.
+// storage buffer: vec4[], triangles' vertex tangents (xyz unit, w the handedness), three each,
+// at the entry the first normal's w names (scene_buffers.glsl); one unused element when none
+#define RTVK_BINDING_TANGENTS 26
 // storage buffer: float[bsdf_table_count], pbr.h's energy-compensation tables (bsdf_tables.h)
 #define RTVK_BINDING_BSDF_TABLES 27
 #define RTVK_SCENE_BINDINGS_END 28  // past the list: a pipeline that adds to it starts here

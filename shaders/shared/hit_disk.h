@@ -65,6 +65,7 @@ inline void record_disk_hit(disk_geometry d, uint material, ray r, real t,
   rec.uv = real2(real(0.5) + dot3(planar, d.u) * scale, real(0.5) + dot3(planar, d.v) * scale);
   rec.color = real4(1.0);
   rec.uv1 = rec.uv;
+  rec.tangent = real4(0.0);  // no tangents
   set_face_normal(rec, r, d.normal);
   rec.material = material;
   rec.offset = flat_offset(rec.p, r);

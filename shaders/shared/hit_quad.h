@@ -62,6 +62,7 @@ inline void record_quad_hit(quad_geometry q, uint material, ray r, real t,
   rec.uv = real2(dot3(q.w, cross3(planar, q.v)), dot3(q.w, cross3(q.u, planar)));
   rec.color = real4(1.0);
   rec.uv1 = rec.uv;
+  rec.tangent = real4(0.0);  // no tangents
   set_face_normal(rec, r, q.normal);
   rec.material = material;
   rec.offset = flat_offset(rec.p, r);

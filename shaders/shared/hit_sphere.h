@@ -64,6 +64,7 @@ inline void record_hit(real3 center, real radius, uint material, ray r, real t, 
   rec.uv = with_uv ? sphere_uv(outward_normal) : real2(0.0);
   rec.color = real4(1.0);
   rec.uv1 = rec.uv;
+  rec.tangent = real4(0.0);  // no tangents
   // About eight float ulps of the largest coordinate involved -- the sphere's, and the ray's
   // origin's, which p = origin + t * direction inherits the rounding of -- covers the GPU's
   // rounding (ScatterOrigin.RaysLeavingASphereStartOutsideIt...).

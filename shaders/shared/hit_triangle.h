@@ -82,6 +82,7 @@ inline void record_triangle_hit(real3 a, real3 b, real3 c, real3 shading, real2 
   rec.uv = uv;
   rec.color = real4(1.0);  // the vertex colors, where the triangle has some, are set after
   rec.uv1 = uv;            // and so is a second set of texture coordinates
+  rec.tangent = real4(0.0);  // and its tangents
   rec.p = ray_at(r, t);
   precise real3 geometric = unit_vector(cross3(b - a, c - a));
   set_face_normal(rec, r, geometric);
@@ -115,6 +116,22 @@ inline precise real2 triangle_uv(bool given, real2 uv0, real2 uv1, real2 uv2, re
 // at the hit, which multiplies the material's color and alpha.
 inline precise real4 blend_colors(real4 c0, real4 c1, real4 c2, real3 weights) {
   return weights.x * c0 + weights.y * c1 + weights.z * c2;
+}
+
+// The tangent at a hit (hit_record::tangent) from a triangle's vertex tangents t0, t1, t2 (xyz
+// unit, w the handedness, glTF's TANGENT): blended by barycentric weights, made perpendicular to
+// the record's shading normal (Gram-Schmidt) and unit. The handedness is the first vertex's (a
+// triangle's vertices agree: generation splits vertices at mirrored uv), negated on a back-face
+// hit, where the record's normal is the surface's turned over: cross(normal, t) * w stays the
+// surface's +v. Zero where the blend lies along the normal (degenerate input).
+inline precise real4 blend_tangents(real4 t0, real4 t1, real4 t2, real3 weights, hit_record rec) {
+  precise real3 t = weights.x * real3(t0) + weights.y * real3(t1) + weights.z * real3(t2);
+  precise real3 n = rec.normal;
+  precise real3 along = t - dot3(n, t) * n;
+  precise real len = length3(along);
+  if (!(len > real(0.0) && is_finite(len))) return real4(0.0);
+  real w = t0.w < real(0.0) ? real(-1.0) : real(1.0);
+  return real4(divide(along, len), rec.front_face ? w : -w);
 }
 
 RTVK_KERNELS_END

@@ -49,11 +49,30 @@ inline ray to_group(instance_frame f, ray r) {
   return ray(o, d, r.time);
 }
 
+// A tangent (hit_record::tangent) of a hit whose normal was n in the group's space, carried
+// back where that normal became `normal` (unit): by the placement's linear part M, as any
+// direction in the surface. The frame keeps M's inverse and the normal matrix N = M^-T, not M;
+// but t = cross(b, n) for the unit t perpendicular to the unit n and b = cross(n, t), and
+// M cross(b, n) = cross(N b, N n) / det(N), N n being along `normal`. A mirroring placement
+// (det < 0) turns the frame over, so the handedness flips with it.
+inline precise real4 carry_tangent(instance_frame f, real3 n, real4 tangent, real3 normal) {
+  precise real3 b = cross3(n, real3(tangent));
+  precise real3 nb = real3(dot3(f.normal_x, b), dot3(f.normal_y, b), dot3(f.normal_z, b));
+  precise real det = dot3(f.normal_x, cross3(f.normal_y, f.normal_z));
+  precise real side = det < real(0.0) ? real(-1.0) : real(1.0);
+  precise real3 t = cross3(nb, normal);
+  precise real3 along = t - dot3(normal, t) * normal;  // perpendicular again, after rounding
+  precise real len = length3(along);
+  if (!(len > real(0.0) && is_finite(len))) return real4(0.0);
+  return real4((side / len) * along, side * tangent.w);
+}
+
 // A record made in the group's space, at t, carried back to the scene's ray r.
 inline void carry_back(instance_frame f, ray r, real t, precise INOUT(hit_record) rec) {
   rec.p = ray_at(r, t);
   precise real3 n = rec.normal;
   rec.normal = unit_vector(real3(dot3(f.normal_x, n), dot3(f.normal_y, n), dot3(f.normal_z, n)));
+  if (rec.tangent.w != real(0.0)) rec.tangent = carry_tangent(f, n, rec.tangent, rec.normal);
   precise real offset = rec.offset * f.stretch + flat_offset(rec.p, r);
   rec.offset = offset;
 }

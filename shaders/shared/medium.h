@@ -102,6 +102,7 @@ inline bool hit_medium(medium_geometry m, ray r, real t_min, real t_max, real u,
   rec.uv = real2(0.0);
   rec.color = real4(1.0);
   rec.uv1 = rec.uv;
+  rec.tangent = real4(0.0);  // no tangents
   return true;
 }
 

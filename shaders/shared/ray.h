@@ -56,6 +56,9 @@ struct hit_record {
                          // the material's color and alpha
   precise real2 uv1;     // the second texture coordinates of p, which the emission texture
                          // reads: uv where the object has no second set
+  precise real4 tangent;  // xyz: the unit tangent at p (along +u, perpendicular to normal); w:
+                          // +1 or -1, the bitangent being cross(normal, xyz) * w with normal as
+                          // stored (facing the ray); all 0 where the object has no tangents
 };
 
 // Where a ray leaving the hit along `direction` starts: lifted off the surface to the side it

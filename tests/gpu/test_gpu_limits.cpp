@@ -88,8 +88,8 @@ TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
   // lavapipe's memory is the host's: the scene is written in place, its arrays in one
   // allocation: 2001 spheres (62.5 KiB), the materials, 971 four-wide BVH nodes (121.4 KiB), and
   // one unused element each of the velocity (nothing moves), quad, triangle, vertex normal,
-  // instance, texture coordinate, texture, texel, medium, light and disk arrays (none there),
-  // and the noise tables (7 KiB).
+  // instance, texture coordinate, texture, texel, medium, light, disk and vertex tangent arrays
+  // (none there), and the noise tables (7 KiB).
   EXPECT_THAT(
       render_with(s, {.allocation_size = 150 << 10}),
       testing::HasSubstr("the sphere array and the material array and the BVH and the "
@@ -97,7 +97,8 @@ TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
                          "the vertex normal array and the instance array and the texture "
                          "coordinate array and the texture array and the image textures' "
                          "texels and the noise tables and the media array and the light array "
-                         "and the disk array need 195.543 KiB in one memory allocation"));
+                         "and the disk array and the vertex tangent array need 195.559 KiB in "
+                         "one memory allocation"));
   EXPECT_EQ(render_with(s, {.allocation_size = 200 << 10}), "");
   // Three allocations in all: the scene's arrays, the targets' device-local and readback
   // buffers.

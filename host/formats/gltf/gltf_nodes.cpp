@@ -86,7 +86,7 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vect
     std::array<point3, 3> p;
     std::array<vec3, 3> n;
     std::array<glm::dvec2, 3> uv{}, uv1{};
-    std::array<glm::vec4, 3> color{};
+    std::array<glm::vec4, 3> color{}, tangent{};
     for (std::size_t k = 0; k < 3; ++k) {
       const std::uint64_t i = idx ? idx->index(3 * f + k) : 3 * f + k;
       if (i >= v.count())
@@ -94,10 +94,15 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vect
                           std::to_string(v.count()) + " vertices");
       vec3 q = v.position(std::size_t(i));
       if (v.has_normals()) n[k] = v.normal(std::size_t(i));
+      if (v.has_tangent()) tangent[k] = v.tangent(std::size_t(i));
       if (skinned) {
         const glm::dmat4 m = v.skin(std::size_t(i), *joints, face);
         q = vec3(m * glm::dvec4(q, 1));
         if (v.has_normals()) n[k] = glm::inverse(glm::transpose(glm::dmat3(m))) * n[k];
+        if (v.has_tangent()) {  // a direction in the surface: by the linear part, as positions
+          const float side = glm::determinant(glm::dmat3(m)) < 0 ? -1.0f : 1.0f;
+          tangent[k] = glm::vec4(glm::vec3(glm::dmat3(m) * vec3(tangent[k])), side * tangent[k].w);
+        }
       }
       p[k] = b_.position(q, t, face);
       if (v.has_color()) color[k] = v.color(std::size_t(i));
@@ -106,7 +111,8 @@ void gltf_walker::add_primitive(const tinygltf::Primitive& prim, const std::vect
     }
     b_.add(p, material, v.has_normals() ? std::optional(n) : std::nullopt, uv, v.has_uv(), t,
            v.has_color() ? std::optional(color) : std::nullopt,
-           v.has_uv1() ? std::optional(uv1) : std::nullopt);
+           v.has_uv1() ? std::optional(uv1) : std::nullopt,
+           v.has_tangent() ? std::optional(tangent) : std::nullopt);
   }
 }
 

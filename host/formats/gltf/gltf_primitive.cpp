@@ -1,5 +1,5 @@
-// A glTF primitive's vertex attributes: POSITION, NORMAL, TEXCOORD_n, COLOR_0 (and JOINTS_0 /
-// WEIGHTS_0 for skins), each of the types the spec and KHR_mesh_quantization allow.
+// A glTF primitive's vertex attributes: POSITION, NORMAL, TANGENT, TEXCOORD_n, COLOR_0 (and
+// JOINTS_0 / WEIGHTS_0 for skins), each of the types the spec and KHR_mesh_quantization allow.
 #include "gltf_primitive.h"
 
 #include <cmath>
@@ -36,6 +36,8 @@ primitive_vertices::primitive_vertices(const tinygltf::Model& m, const tinygltf:
                   "is not one VEC3 or VEC4 per position of floats or normalized integers");
   if (col_ && col_->component_type() != TINYGLTF_COMPONENT_TYPE_FLOAT && !col_->normalized())
     b_.fail(col_->where(), "integer colors must be normalized");
+  tan_ = attribute(prim.attributes, "TANGENT");
+  if (tan_) tan_->require({TINYGLTF_TYPE_VEC4}, {i8, i16}, n, "is not one VEC4 per position");
   joints_ = attribute(prim.attributes, "JOINTS_0");
   if (joints_) joints_->require({TINYGLTF_TYPE_VEC4}, {u8, u16}, n, "is not one VEC4 per position");
   if (joints_ && joints_->component_type() == TINYGLTF_COMPONENT_TYPE_FLOAT)
@@ -92,6 +94,15 @@ glm::vec4 primitive_vertices::color(std::size_t i) const {
     c[k] = float(std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0);
   }
   return c;
+}
+
+glm::vec4 primitive_vertices::tangent(std::size_t i) const {
+  glm::vec4 t(0);
+  for (int k = 0; k < 4; ++k) {
+    const double v = tan_->get(i, k);
+    t[k] = float(std::isfinite(v) && std::abs(v) <= 1e6 ? v : 0.0);
+  }
+  return t;
 }
 
 glm::dmat4 primitive_vertices::skin(std::size_t i, const std::vector<glm::dmat4>& joints,

@@ -26,6 +26,7 @@ class primitive_vertices {
   bool has_uv() const { return tex_.has_value(); }
   bool has_uv1() const { return tex1_.has_value(); }
   bool has_color() const { return col_.has_value(); }
+  bool has_tangent() const { return tan_.has_value(); }
   // The attribute set k's texture coordinates come from (0: uv, 1: uv1).
   const std::string& texcoord(int k) const { return texcoord_[std::size_t(k)]; }
 
@@ -36,6 +37,8 @@ class primitive_vertices {
   glm::dvec2 uv(std::size_t i) const { return mapped(*tex_, mapping_, i); }
   glm::dvec2 uv1(std::size_t i) const { return mapped(*tex1_, *second_, i); }
   glm::vec4 color(std::size_t i) const;  // linear RGBA (alpha 1 for VEC3)
+  // The file's TANGENT: xyz along +u (not normalized), w the handedness (+1 or -1).
+  glm::vec4 tangent(std::size_t i) const;
   // Vertex i's joint matrices blended by its weights (`joints`: the skin's); fails naming
   // `where` for a joint the skin does not have or a weight that is not finite.
   glm::dmat4 skin(std::size_t i, const std::vector<glm::dmat4>& joints,
@@ -55,7 +58,7 @@ class primitive_vertices {
   uv_mapping mapping_;
   std::optional<uv_mapping> second_;     // the second set's, when the material reads one
   std::array<std::string, 2> texcoord_;  // the attributes the two sets come from
-  std::optional<accessor_reader> pos_, nrm_, tex_, tex1_, col_, joints_, weights_;
+  std::optional<accessor_reader> pos_, nrm_, tex_, tex1_, col_, tan_, joints_, weights_;
   // Morph targets with a weight that is not 0: the weight and the target's displacements.
   struct target {
     double weight;

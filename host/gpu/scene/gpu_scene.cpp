@@ -74,6 +74,8 @@ std::vector<array_entry> arrays_of(const gpu_scene::host_arrays& a) {
       entry(RTVK_BINDING_LIGHTS, r::appearance, "the light array", "the lights' upload copy",
             a.lights),
       entry(RTVK_BINDING_DISKS, r::objects, "the disk array", "the disks' upload copy", a.disks),
+      entry(RTVK_BINDING_TANGENTS, r::objects, "the vertex tangent array",
+            "the vertex tangents' upload copy", a.tangents),
   };
 }
 
@@ -103,7 +105,7 @@ gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   a.nodes = std::move(nodes);
   a.velocities = to_gpu_velocities(s, tree.slots[shape_sphere]);
   a.quads = to_gpu_quads(s, tree.slots[shape_quad]);
-  a.triangles = to_gpu_triangles(s, tree.slots[shape_triangle], a.normals, a.uvs);
+  a.triangles = to_gpu_triangles(s, tree.slots[shape_triangle], a.normals, a.uvs, a.tangents);
   a.disks = to_gpu_disks(s, tree.slots[shape_disk]);
   a.build_seconds = seconds;
   a.moves = scene_moves(s);

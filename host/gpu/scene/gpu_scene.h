@@ -41,6 +41,7 @@ class gpu_scene {
     // follow).
     kind_counts own{};
     std::vector<glm::vec2> uvs;         // triangles' vertex uv, as `normals`
+    std::vector<vec4> tangents;         // vertex tangents of the triangles that have some
     std::vector<gpu_texture> textures;  // by material's texture index
     std::vector<std::uint32_t> texels;  // the images', one after another
     std::vector<gpu_perlin> perlin;     // one: the noise's tables

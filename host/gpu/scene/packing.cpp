@@ -71,12 +71,13 @@ std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const object_slot> 
 }
 
 std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const object_slot> slots,
-                                           std::vector<vec4>& normals,
-                                           std::vector<glm::vec2>& uvs) {
+                                           std::vector<vec4>& normals, std::vector<glm::vec2>& uvs,
+                                           std::vector<vec4>& tangents) {
   std::vector<gpu_triangle> out;
   out.reserve(slots.size());
   normals.clear();
   uvs.clear();
+  tangents.clear();
   std::vector<vec4> colors;          // vertex colors, three each, stored after all the normals
   std::vector<std::size_t> colored;  // the normals' entries whose colors those are, in order
   std::vector<glm::vec2> seconds;    // second texture coordinates, three each, after all the uvs
@@ -94,6 +95,13 @@ std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const objec
         const float flag = k == 0 ? float(a.smooth) : k == 1 ? float(a.has_uv) : 0.0f;
         normals.push_back(vec4(vec3(a.smooth ? a.normal[k] : rtvk::vec3(0)), flag));
         uvs.push_back(glm::vec2(a.uv[k]));
+      }
+      if (a.has_tangent) {
+        // The first normal's w, above its bit 0: the tangents' entry + 1 (exact below 2^23).
+        if (tangents.size() / 3 + 1 >= (std::size_t(1) << 23))
+          throw std::runtime_error("more than 2^23 shaded triangles with tangents");
+        normals[3 * smooth].w += float(2 * (tangents.size() / 3 + 1));
+        for (std::size_t k = 0; k < 3; ++k) tangents.push_back(vec4(a.tangent[k]));
       }
       if (a.has_color) {
         colored.push_back(smooth);

@@ -26,9 +26,11 @@ std::vector<vec4> to_gpu_velocities(const scene& s, std::span<const object_slot>
 std::vector<gpu_quad> to_gpu_quads(const scene& s, std::span<const object_slot> slots);
 std::vector<gpu_disk> to_gpu_disks(const scene& s, std::span<const object_slot> slots);
 // Triangles, and the shading of those that have some: vertex normals (three vec4 each, in
-// `normals`, with gpu_triangle::normals's flags) and texture coordinates (three each, in `uvs`).
+// `normals`, with gpu_triangle::normals's flags), texture coordinates (three each, in `uvs`) and
+// the tangents of those that have some (three each, in `tangents`, in the triangles' order).
 std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const object_slot> slots,
-                                           std::vector<vec4>& normals, std::vector<glm::vec2>& uvs);
+                                           std::vector<vec4>& normals, std::vector<glm::vec2>& uvs,
+                                           std::vector<vec4>& tangents);
 // The instances, in scene order: the inverse placements and normal matrices rounded to float
 // (formed in double), and where their groups are (scene_tree::groups).
 std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group_span> groups);

@@ -85,15 +85,24 @@ struct world_probe_entry {
   uint pad0;        // unused
   uint pad1;        // unused
   uint pad2;        // unused
+  vec4 tangent;     // out: the hit's tangent (hit_record::tangent; 0 where none)
+  vec3 texel;       // in: a normal map's texel (linear RGB) for normal_mapped at the hit
+  float scale;      // in: its normalTexture.scale
+  vec3 mapped;      // out: normal_mapped(hit, texel, scale, -unit direction)
+  uint pad3;        // unused
 };
 #ifdef __cplusplus
+static_assert(offsetof(world_probe_entry, tangent) == 64);
+static_assert(offsetof(world_probe_entry, texel) == 80);
+static_assert(offsetof(world_probe_entry, scale) == 92);
+static_assert(offsetof(world_probe_entry, mapped) == 96);
+static_assert(sizeof(world_probe_entry) == 112);
 static_assert(offsetof(world_probe_entry, t) == 12);
 static_assert(offsetof(world_probe_entry, direction) == 16);
 static_assert(offsetof(world_probe_entry, hit) == 28);
 static_assert(offsetof(world_probe_entry, normal) == 32);
 static_assert(offsetof(world_probe_entry, material) == 44);
 static_assert(offsetof(world_probe_entry, iterations) == 48);
-static_assert(sizeof(world_probe_entry) == 64);
 #endif
 
 // std430 array element for kernel_probe.comp (kernel_probe.h): the host fills a hit, the ray

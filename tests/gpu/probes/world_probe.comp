@@ -17,6 +17,7 @@ layout(push_constant) uniform push_block {
 };
 
 #include "world.glsl"
+#include "normal_map.h"
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
@@ -30,4 +31,8 @@ void main() {
   entries[i].normal = hit ? rec.normal : vec3(0.0);
   entries[i].material = hit ? rec.material : 0u;
   entries[i].iterations = iterations;
+  entries[i].tangent = hit ? rec.tangent : vec4(0.0);
+  entries[i].mapped = hit ? normal_mapped(rec, entries[i].texel, entries[i].scale,
+                                          -normalize(entries[i].direction))
+                          : vec3(0.0);
 }
