@@ -1,6 +1,6 @@
 // What shading reads besides the materials, as gpu_scene::appearance_bindings binds it: the
-// textures (texture.h reads `textures`, `texels` and `perlin`), the media and the lights (pdf.h
-// reads `lights`). render.comp's.
+// textures (texture.h reads `textures`, `texels` and `perlin`), the media, the lights (pdf.h
+// reads `lights`) and the PBR materials' parameters (pbr_shading.h reads `pbrs`). render.comp's.
 #ifndef RTVK_APPEARANCE_BUFFERS_GLSL
 #define RTVK_APPEARANCE_BUFFERS_GLSL
 
@@ -18,6 +18,9 @@ layout(std430, set = 0, binding = RTVK_BINDING_MEDIA) readonly buffer medium_blo
 };
 layout(std430, set = 0, binding = RTVK_BINDING_LIGHTS) readonly buffer light_block {
   gpu_light lights[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_PBR) readonly buffer pbr_block {
+  gpu_pbr pbrs[];
 };
 
 #endif

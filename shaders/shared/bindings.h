@@ -36,7 +36,10 @@
 #define RTVK_BINDING_TLAS 22        // acceleration structure: the scene's top level (--accel rt-*)
 #define RTVK_BINDING_RAY_TIMES 23   // storage buffer: float[], each launch's ray time (rt-pipeline)
 #define RTVK_BINDING_DISKS 24       // storage buffer: gpu_disk[], in the BVH's leaf order
-#define RTVK_SCENE_BINDINGS_END 25  // past the list: a pipeline that adds to it starts here
+// storage buffer: gpu_pbr[], the PBR materials' parameters (gpu_material::pbr indexes it); one
+// unused element when the scene has none
+#define RTVK_BINDING_PBR 25
+#define RTVK_SCENE_BINDINGS_END 26  // past the list: a pipeline that adds to it starts here
 
 // tonemap.comp: a band's sums in, its RGBA8 bytes out.
 #define RTVK_TONEMAP_SUMS 2         // storage buffer: pixel_sum[], the render's RTVK_BINDING_IMAGE
@@ -62,6 +65,8 @@
 #define RTVK_SPEC_CALIBRATED 14
 #define RTVK_SPEC_DISKS 15  // bool: the scene has disks
 #define RTVK_SPEC_STACK 16  // uint: entries of hit_bvh's stack in use; 0: all (tests make it less)
-#define RTVK_SPEC_COUNT 17  // constant ids in use
+// bool: some material is RTVK_MATERIAL_PBR (render.comp): without, its code is compiled out
+#define RTVK_SPEC_PBR 17
+#define RTVK_SPEC_COUNT 18  // constant ids in use
 
 #endif  // RTVK_BINDINGS_H

@@ -74,6 +74,8 @@ std::vector<array_entry> arrays_of(const gpu_scene::host_arrays& a) {
       entry(RTVK_BINDING_LIGHTS, r::appearance, "the light array", "the lights' upload copy",
             a.lights),
       entry(RTVK_BINDING_DISKS, r::objects, "the disk array", "the disks' upload copy", a.disks),
+      entry(RTVK_BINDING_PBR, r::appearance, "the PBR material array",
+            "the PBR materials' upload copy", a.pbr),
   };
 }
 
@@ -114,6 +116,7 @@ gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   a.perlin = {to_gpu_perlin(make_perlin(s.noise_seed))};
   a.media = to_gpu_media(s);
   a.lights = to_gpu_lights(scene_lights(s));
+  a.pbr = to_gpu_pbrs(s);
   a.with_uv = scene_reads_uv(s);
   return a;
 }
@@ -134,6 +137,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
                                   return m.texture != RTVK_NO_TEXTURE ||
                                          m.emission_texture != RTVK_NO_TEXTURE;
                                 })),
+      any_pbr_(!a.pbr.empty()),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
       specs_(specs_of(arrays_of(a))),
@@ -187,6 +191,7 @@ void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
   spec[RTVK_SPEC_UV] = with_uv_;
   spec[RTVK_SPEC_TEXTURES] = any_textures_;
   spec[RTVK_SPEC_MEDIA] = medium_count_ > 0;
+  spec[RTVK_SPEC_PBR] = any_pbr_;
 }
 
 void gpu_scene::set_counts(render_push& push) const {
