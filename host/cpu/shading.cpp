@@ -1,6 +1,5 @@
 #include "shading.h"
 
-#include <cmath>
 #include <limits>
 
 namespace rtvk {
@@ -13,38 +12,6 @@ scene_shading::scene_shading(const scene& s, bool sample_lights)
     media.push_back(geometry_of(s.media[k], std::uint32_t(k)));
   if (sample_lights) lights = scene_lights(s);
   for (const material& m : materials) pbr.push_back(pbr_record_of(m.pbr));
-}
-
-pbr_record pbr_record_of(const pbr_material& q) {
-  const auto tex = [](int t) { return t < 0 ? RTVK_NO_TEXTURE : uint(t); };
-  pbr_record r;
-  r.specular_color = q.specular_color;
-  r.metallic = q.metallic;
-  r.sheen_color = q.sheen_color;
-  r.roughness = q.roughness;
-  r.attenuation_color = q.attenuation_color;
-  r.attenuation_distance = std::isfinite(q.attenuation_distance) ? q.attenuation_distance : 0;
-  r.ior = q.ior;
-  r.specular = q.specular;
-  r.transmission = q.transmission;
-  r.thickness = q.thickness;
-  r.clearcoat = q.clearcoat;
-  r.clearcoat_roughness = q.clearcoat_roughness;
-  r.sheen_roughness = q.sheen_roughness;
-  r.normal_scale = q.normal_scale;
-  r.metallic_roughness_texture = tex(q.metallic_roughness_texture);
-  r.normal_texture = tex(q.normal_texture);
-  r.specular_texture = tex(q.specular_texture);
-  r.specular_color_texture = tex(q.specular_color_texture);
-  r.transmission_texture = tex(q.transmission_texture);
-  r.thickness_texture = tex(q.thickness_texture);
-  r.clearcoat_texture = tex(q.clearcoat_texture);
-  r.clearcoat_roughness_texture = tex(q.clearcoat_roughness_texture);
-  r.clearcoat_normal_texture = tex(q.clearcoat_normal_texture);
-  r.sheen_color_texture = tex(q.sheen_color_texture);
-  r.sheen_roughness_texture = tex(q.sheen_roughness_texture);
-  r.clearcoat_normal_scale = q.clearcoat_normal_scale;
-  return r;
 }
 
 // The book's recursion as a loop over the shared steps (ray_color.h); shaders/shading.glsl runs
@@ -67,9 +34,11 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
     }
     if (!hit) return path_missed(p, background.horizon, background.zenith);
     const material& m = shading.materials[rec.material];
-    const bool pbr = m.type == material_type::pbr;
-    // Absorbed on the way through a PBR volume, before anything else at its surface.
-    if (pbr) p.throughput *= pbr_volume_transmittance(shading.pbr[rec.material], rec, p.r);
+    if (m.type == material_type::pbr) {
+      color c;
+      if (pbr_step(shading, tables, lights, p, rec, c)) return c;
+      continue;
+    }
     const uint flags = material_flags(m);
     if ((flags & RTVK_MATERIAL_SEE_THROUGH) != 0u &&
         path_passes(p, rec, uint(m.type), flags,
@@ -79,11 +48,7 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
       path_emits(p, m.emission * emission_color(tables, uint(m.emission_texture), rec));
     const color albedo = material_color(tables, m.albedo, uint(m.texture), rec) * color(rec.color);
     color c;
-    if (pbr ? path_hit_pbr(lights, p, rec,
-                           pbr_surface_at(tables, shading.pbr[rec.material], albedo, rec),
-                           pbr_shading_normal(rec), c)
-            : path_hit(lights, p, rec, uint(m.type), flags, albedo, m.fuzz, m.ir, c))
-      return c;
+    if (path_hit(lights, p, rec, uint(m.type), flags, albedo, m.fuzz, m.ir, c)) return c;
   }
   return p.radiance;  // out of bounces, or no ray: the light gathered on the way
 }

@@ -51,6 +51,12 @@ inline color sky_color(const vec3& d, const sky& background = sky{}) {
 // attenuation_distance as 0.
 pbr_record pbr_record_of(const pbr_material& q);
 
+// One trip of ray_color's loop at a hit on a PBR material (pbr_step.cpp): its volume's absorption,
+// alpha and emission as for any material, then its bounce (path_hit_pbr). True: the path ended,
+// its color in `c`.
+bool pbr_step(const scene_shading& shading, const texture_tables& tables, const light_table& lights,
+              path_state& p, const hit_record& rec, color& c);
+
 // scatter (scatter.h) for one of the scene's materials.
 inline bool scatter(const material& m, const ray& r_in, const hit_record& rec,
                     const random_stream& rnd, color& attenuation, ray& scattered) {
