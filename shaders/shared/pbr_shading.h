@@ -83,7 +83,10 @@ inline precise real4 pbr_map(TABLES_PARAM uint index, hit_record rec) {
 // sees ior entering (front_face) and 1 / ior leaving; a thickness of 0 is thin-walled.
 inline pbr_surface pbr_surface_at(TABLES_PARAM pbr_record q, real3 base_color, hit_record rec) {
   precise real4 mr = pbr_map(TABLES q.metallic_roughness_texture, rec);
-  pbr_surface m = pbr_surface_of(base_color, q.metallic * mr.z, q.roughness * mr.y);
+  // Every product precise (ShaderPrecision): the GPU rounds them as the CPU does.
+  precise real metallic = q.metallic * mr.z;
+  precise real roughness = q.roughness * mr.y;
+  precise pbr_surface m = pbr_surface_of(base_color, metallic, roughness);
   m.eta = rec.front_face ? q.ior : real(1.0) / q.ior;
   m.specular = q.specular * pbr_map(TABLES q.specular_texture, rec).w;
   m.specular_color = q.specular_color * real3(pbr_map(TABLES q.specular_color_texture, rec));
@@ -175,7 +178,8 @@ inline bool path_hit_pbr(LIGHTS_PARAM precise INOUT(path_state) p, hit_record re
   // The no-leak rule, against the surface's own normal (rec.normal).
   precise real facing = dot3(direction, rec.normal);
   if (wi.z > real(0.0) ? !(facing > real(0.0)) : !(facing < real(0.0))) return true;
-  if (!(weight.x + weight.y + weight.z > real(0.0))) return true;  // absorbed (or not a number)
+  precise real total = weight.x + weight.y + weight.z;
+  if (!(total > real(0.0))) return true;  // absorbed (or not a number)
   p.r = ray(scatter_origin(rec, direction), direction, p.r.time);
   p.throughput *= weight;
   ++p.depth;
