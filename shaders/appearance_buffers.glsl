@@ -1,6 +1,6 @@
 // What shading reads besides the materials, as gpu_scene::appearance_bindings binds it: the
-// textures (texture.h reads `textures`, `texels` and `perlin`), the media and the lights (pdf.h
-// reads `lights`). render.comp's.
+// textures (texture.h reads `textures`, `texels` and `perlin`), the media, the lights (pdf.h
+// reads `lights`) the PBR materials' parameters (pbr_shading.h reads `pbrs`) and pbr.h's tables (`bsdf_table`). render.comp's.
 #ifndef RTVK_APPEARANCE_BUFFERS_GLSL
 #define RTVK_APPEARANCE_BUFFERS_GLSL
 
@@ -18,6 +18,13 @@ layout(std430, set = 0, binding = RTVK_BINDING_MEDIA) readonly buffer medium_blo
 };
 layout(std430, set = 0, binding = RTVK_BINDING_LIGHTS) readonly buffer light_block {
   gpu_light lights[];
+};
+layout(std430, set = 0, binding = RTVK_BINDING_PBR) readonly buffer pbr_block {
+  gpu_pbr pbrs[];
+};
+// pbr.h's tables (bsdf_tables.h reads them through BSDF_TABLE).
+layout(std430, set = 0, binding = RTVK_BINDING_BSDF_TABLES) readonly buffer bsdf_table_block {
+  float bsdf_table[];
 };
 
 #endif

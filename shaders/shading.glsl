@@ -5,6 +5,7 @@
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
 #include "medium.h"
+#include "pbr_shading.h"
 #include "ray_color.h"
 #include "texture.h"
 #include "world.glsl"
@@ -13,6 +14,9 @@
 // compiled out (on lavapipe it alone nearly halved book-final's speed).
 layout(constant_id = RTVK_SPEC_TEXTURES) const bool any_textures = false;
 layout(constant_id = RTVK_SPEC_MEDIA) const bool any_media = false;
+// Whether some material is PBR: without, pbr_shading.h's code is compiled out (the books' scenes
+// run the shader they ran before it).
+layout(constant_id = RTVK_SPEC_PBR) const bool any_pbr = false;
 
 // Medium k as the shared kernels take it.
 medium_geometry medium_at(uint k) {
@@ -64,6 +68,9 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
     return true;
   }
   gpu_material m = materials[rec.material];
+  bool pbr = any_pbr && m.type == RTVK_MATERIAL_PBR;
+  // Absorbed on the way through a PBR volume, before anything else at its surface.
+  if (pbr) p.throughput *= pbr_volume_transmittance(pbrs[m.pbr], rec, p.r);
   // A surface that lets this ray through: the path goes on beyond it, no bounce counted (as
   // host/cpu/shading.cpp's ray_color).
   if ((m.flags & RTVK_MATERIAL_SEE_THROUGH) != 0u) {
@@ -82,6 +89,9 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
       (any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo) * rec.color.xyz;
   // The lights' densities loop over every light (pdf.h): lavapipe counts those trips too.
   iterations += light_count();
+  if (pbr)
+    return path_hit_pbr(p, rec, pbr_surface_at(pbrs[m.pbr], albedo, rec), pbr_shading_normal(rec),
+                        c);
   return path_hit(p, rec, m.type, m.flags, albedo, m.fuzz, m.ir, c);
 }
 

@@ -11,6 +11,7 @@ scene_shading::scene_shading(const scene& s, bool sample_lights)
   for (std::size_t k = 0; k < s.media.size(); ++k)
     media.push_back(geometry_of(s.media[k], std::uint32_t(k)));
   if (sample_lights) lights = scene_lights(s);
+  for (const material& m : materials) pbr.push_back(pbr_record_of(m.pbr));
 }
 
 // The book's recursion as a loop over the shared steps (ray_color.h); shaders/shading.glsl runs
@@ -33,6 +34,11 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
     }
     if (!hit) return path_missed(p, background.horizon, background.zenith);
     const material& m = shading.materials[rec.material];
+    if (m.type == material_type::pbr) {
+      color c;
+      if (pbr_step(shading, tables, lights, p, rec, c)) return c;
+      continue;
+    }
     const uint flags = material_flags(m);
     if ((flags & RTVK_MATERIAL_SEE_THROUGH) != 0u &&
         path_passes(p, rec, uint(m.type), flags,

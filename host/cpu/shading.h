@@ -5,6 +5,7 @@
 #include "light_sources.h"
 #include "material.h"
 #include "medium.h"
+#include "pbr_shading.h"
 #include "random.h"
 #include "ray_color.h"
 #include "scene.h"
@@ -12,9 +13,10 @@
 
 namespace rtvk {
 
-// What shading reads besides the hit: the materials, the textures' tables, the media and the
-// lights to sample, as the shared kernels take them (texture.h, medium.h, pdf.h). The lights
-// only when `sample_lights` (samples_lights: the third book's mixture), else none: plain.
+// What shading reads besides the hit: the materials (and the PBR ones' parameters), the textures'
+// tables, the media and the lights to sample, as the shared kernels take them (texture.h, medium.h,
+// pdf.h). The lights only when `sample_lights` (samples_lights: the third book's mixture), else
+// none: plain.
 struct scene_shading {
   explicit scene_shading(const scene& s, bool sample_lights = false);
   std::vector<material> materials;     // by index
@@ -22,6 +24,8 @@ struct scene_shading {
   perlin_tables perlin;                // the noise's lattice (the scene's noise seed)
   std::vector<medium_geometry> media;  // in scene order
   std::vector<light_record> lights;    // what scattering aims at; empty: plain sampling
+  std::vector<pbr_record> pbr;         // by material index: a PBR material's parameters (the
+                                       // others' are the defaults, unread)
   texture_tables tables() const {
     return {textures.records.data(), textures.texels.data(), perlin.vectors.data(),
             perlin.perm.data()};
@@ -42,6 +46,16 @@ color ray_color(const ray& r, const hittable& world);
 inline color sky_color(const vec3& d, const sky& background = sky{}) {
   return sky_color(d, background.horizon, background.zenith);
 }
+
+// A PBR material's parameters as the shared kernels read them (pbr_shading.h), an infinite
+// attenuation_distance as 0.
+pbr_record pbr_record_of(const pbr_material& q);
+
+// One trip of ray_color's loop at a hit on a PBR material (pbr_step.cpp): its volume's absorption,
+// alpha and emission as for any material, then its bounce (path_hit_pbr). True: the path ended,
+// its color in `c`.
+bool pbr_step(const scene_shading& shading, const texture_tables& tables, const light_table& lights,
+              path_state& p, const hit_record& rec, color& c);
 
 // scatter (scatter.h) for one of the scene's materials.
 inline bool scatter(const material& m, const ray& r_in, const hit_record& rec,

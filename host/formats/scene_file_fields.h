@@ -82,6 +82,16 @@ void write_cameras(const scene& s, json& root);
 // scene_file_materials.cpp: "noise_seed" and "materials" (with their textures and images).
 void read_materials(const scene_reader& r, const json& root, scene& s);
 void write_materials(const scene& s, json& root);
+// A color field that may be a texture object instead (at `p`): sets m.albedo, or appends the
+// texture to s.textures and sets m.texture; a lamp's color (`radiance`) may pass 1.
+void read_color_or_texture(const scene_reader& r, const json& j, const std::string& p,
+                           bool radiance, scene& s, material& m);
+json texture_json(const texture& t);  // a texture object, as read_color_or_texture reads it
+
+// scene_file_pbr.cpp: a PBR material's fields beyond the base color (`albedo`) and the surface's.
+std::vector<std::string> pbr_fields();
+void read_pbr(const scene_reader& r, const json& j, const std::string& p, scene& s, material& m);
+void write_pbr(const scene& s, const material& m, json& j);
 
 // scene_file_objects.cpp: "spheres", "quads", "boxes", "triangles" and "meshes", of the scene
 // (at "") or of a group (at its pointer).

@@ -87,6 +87,8 @@ void read_image(const scene_reader& r, const json& f, const std::string& p, text
                   std::to_string(max_scene_texels));
 }
 
+}  // namespace
+
 // A color field that may be a texture instead: a color (in [0, 1], or any value >= 0 for a lamp's
 // `emit`), or a texture object ({"type": "checker" | "image" | "noise" | "solid", ...}), which is
 // appended to s.textures. Sets m.albedo or m.texture.
@@ -146,6 +148,8 @@ void read_color_or_texture(const scene_reader& r, const json& j, const std::stri
   s.textures.push_back(std::move(tex));
 }
 
+namespace {
+
 // An alpha mode's name, as glTF spells it in lower case.
 const char* alpha_name(alpha_mode a) {
   return a == alpha_mode::mask ? "mask" : a == alpha_mode::blend ? "blend" : "opaque";
@@ -187,8 +191,6 @@ void read_surface(const scene_reader& r, const json& j, const std::string& p, sc
   m.cull_back = r.flag(j, p, "cull_back");
 }
 
-json texture_json(const texture& t);
-
 void write_surface(const scene& s, const material& m, json& j) {
   if (m.emission != color(0)) j["emission"] = vec_json(m.emission);
   if (m.emission_texture >= 0)
@@ -215,6 +217,9 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
   if (kind->fuzz) fields.insert("fuzz");
   if (kind->ir) fields.insert("ir");
   if (lamp) fields.insert("one_sided");
+  const bool pbr = kind->type == material_type::pbr;
+  if (pbr)
+    for (const std::string& f : pbr_fields()) fields.insert(f);
   fields.insert(surface_fields.begin(), surface_fields.end());
   r.only_fields(j, p, fields);
   material m;
@@ -228,9 +233,12 @@ material read_material(const scene_reader& r, const json& j, const std::string& 
     if (m.ir <= 0)
       r.fail(p + "/ir", "expected an index of refraction > 0, got " + format_number(m.ir));
   }
+  if (pbr) read_pbr(r, j, p, s, m);
   read_surface(r, j, p, s, m);
   return m;
 }
+
+}  // namespace
 
 json texture_json(const texture& t) {
   json j = {{"type", type_name(t.type)}};
@@ -257,8 +265,6 @@ json texture_json(const texture& t) {
   }
   return j;
 }
-
-}  // namespace
 
 // Fills s.materials from /materials, in the file's order, and each name's index there.
 void read_materials(const scene_reader& r, const json& root, scene& s) {
@@ -288,6 +294,7 @@ void write_materials(const scene& s, json& root) {
     if (kind.fuzz) j["fuzz"] = m.fuzz;
     if (kind.ir) j["ir"] = m.ir;
     if (m.one_sided) j["one_sided"] = true;
+    if (m.type == material_type::pbr) write_pbr(s, m, j);
     write_surface(s, m, j);
     mats[name] = j;
   }

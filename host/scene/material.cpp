@@ -13,6 +13,8 @@ constexpr material_kind kinds[] = {
     {material_type::flat, "flat", true, false, false, false},
     {material_type::diffuse_light, "diffuse_light", true, false, false, false},
     {material_type::isotropic, "isotropic", true, false, false, true},
+    // Its parameters beyond the base color (albedo) are pbr_material's (scene_file_pbr.cpp).
+    {material_type::pbr, "pbr", true, false, false, true},
 };
 
 }  // namespace

@@ -36,7 +36,9 @@
 #define RTVK_BINDING_TLAS 22        // acceleration structure: the scene's top level (--accel rt-*)
 #define RTVK_BINDING_RAY_TIMES 23   // storage buffer: float[], each launch's ray time (rt-pipeline)
 #define RTVK_BINDING_DISKS 24       // storage buffer: gpu_disk[], in the BVH's leaf order
-// 25: gpu_pbr[] (the PBR materials' parameters), from the material wiring.
+// storage buffer: gpu_pbr[], the PBR materials' parameters (gpu_material::pbr indexes it); one
+// unused element when the scene has none
+#define RTVK_BINDING_PBR 25
 // storage buffer: vec4[], triangles' vertex tangents (xyz unit, w the handedness), three each,
 // at the entry the first normal's w names (scene_buffers.glsl); one unused element when none
 #define RTVK_BINDING_TANGENTS 26
@@ -68,6 +70,8 @@
 #define RTVK_SPEC_CALIBRATED 14
 #define RTVK_SPEC_DISKS 15  // bool: the scene has disks
 #define RTVK_SPEC_STACK 16  // uint: entries of hit_bvh's stack in use; 0: all (tests make it less)
-#define RTVK_SPEC_COUNT 17  // constant ids in use
+// bool: some material is RTVK_MATERIAL_PBR (render.comp): without, its code is compiled out
+#define RTVK_SPEC_PBR 17
+#define RTVK_SPEC_COUNT 18  // constant ids in use
 
 #endif  // RTVK_BINDINGS_H

@@ -1,4 +1,5 @@
 #include "gpu_scene.h"
+#include "bsdf_tables.h"
 
 #include <algorithm>
 #include <chrono>
@@ -76,6 +77,10 @@ std::vector<array_entry> arrays_of(const gpu_scene::host_arrays& a) {
       entry(RTVK_BINDING_DISKS, r::objects, "the disk array", "the disks' upload copy", a.disks),
       entry(RTVK_BINDING_TANGENTS, r::objects, "the vertex tangent array",
             "the vertex tangents' upload copy", a.tangents),
+      entry(RTVK_BINDING_PBR, r::appearance, "the PBR material array",
+            "the PBR materials' upload copy", a.pbr),
+      entry(RTVK_BINDING_BSDF_TABLES, r::appearance, "the BSDF tables",
+            "the BSDF tables' upload copy", a.bsdf_tables),
   };
 }
 
@@ -116,6 +121,8 @@ gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   a.perlin = {to_gpu_perlin(make_perlin(s.noise_seed))};
   a.media = to_gpu_media(s);
   a.lights = to_gpu_lights(scene_lights(s));
+  a.pbr = to_gpu_pbrs(s);
+  if (!a.pbr.empty()) a.bsdf_tables.assign(std::begin(bsdf_table_data), std::end(bsdf_table_data));
   a.with_uv = scene_reads_uv(s);
   return a;
 }
@@ -136,6 +143,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
                                   return m.texture != RTVK_NO_TEXTURE ||
                                          m.emission_texture != RTVK_NO_TEXTURE;
                                 })),
+      any_pbr_(!a.pbr.empty()),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
       specs_(specs_of(arrays_of(a))),
@@ -189,6 +197,7 @@ void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
   spec[RTVK_SPEC_UV] = with_uv_;
   spec[RTVK_SPEC_TEXTURES] = any_textures_;
   spec[RTVK_SPEC_MEDIA] = medium_count_ > 0;
+  spec[RTVK_SPEC_PBR] = any_pbr_;
 }
 
 void gpu_scene::set_counts(render_push& push) const {

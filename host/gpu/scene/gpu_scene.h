@@ -47,6 +47,8 @@ class gpu_scene {
     std::vector<gpu_perlin> perlin;     // one: the noise's tables
     std::vector<gpu_medium> media;      // in scene order
     std::vector<gpu_light> lights;      // scene_lights, what lights sampling aims at
+    std::vector<gpu_pbr> pbr;           // the PBR materials' parameters (gpu_material::pbr)
+    std::vector<float> bsdf_tables;     // pbr.h's tables (bsdf_tables.h), where `pbr` is not empty
     bool with_uv = false;               // some texture reads sphere hits' uv (RTVK_SPEC_UV)
   };
   // The scene's arrays, its BVH built (over no spheres when !use_bvh).
@@ -72,7 +74,7 @@ class gpu_scene {
   // that traces rays through the scene.
   std::vector<buffer_binding> object_bindings() const;
   // The bindings of what shading reads besides the materials (textures, texels, the noise's
-  // tables, media): render.comp's.
+  // tables, media, lights, the PBR materials' parameters): render.comp's and aov.comp's.
   std::vector<buffer_binding> appearance_bindings() const;
   // The switches render.comp and the probes are specialized with (RTVK_SPEC_MOTION, QUADS,
   // TRIANGLES), written into `spec` (indexed by constant id, at least RTVK_SPEC_TRIANGLES + 1).
@@ -88,6 +90,7 @@ class gpu_scene {
   std::uint32_t light_count_;          // lights
   bool with_uv_;                       // RTVK_SPEC_UV
   bool any_textures_;                  // RTVK_SPEC_TEXTURES
+  bool any_pbr_;                       // RTVK_SPEC_PBR
   double build_seconds_;               // building the BVH took
   bool moves_;                         // some sphere has a velocity
   std::vector<buffer_spec> specs_;     // the arrays' sizes (gpu_scene.cpp's arrays_of), for copies

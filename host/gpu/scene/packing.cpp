@@ -1,5 +1,6 @@
 #include "packing.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -170,14 +171,64 @@ std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group
   return out;
 }
 
+namespace {
+
+uint texture_of(int t) {
+  return t < 0 ? RTVK_NO_TEXTURE : uint(t);
+}
+
+}  // namespace
+
 std::vector<gpu_material> to_gpu_materials(const scene& s) {
   std::vector<gpu_material> out;
   out.reserve(s.materials.size());
-  const auto texture_of = [](int t) { return t < 0 ? RTVK_NO_TEXTURE : uint(t); };
+  uint pbr = 0;  // the next PBR material's gpu_pbr index
   for (const auto& [name, m] : s.materials)
     out.push_back({vec3(m.albedo), uint(m.type), float(m.fuzz), float(m.ir), texture_of(m.texture),
                    material_flags(m), vec3(m.emission), texture_of(m.emission_texture),
-                   float(m.opacity), float(m.alpha_cutoff), 0, 0});
+                   float(m.opacity), float(m.alpha_cutoff),
+                   m.type == material_type::pbr ? pbr++ : 0u, 0});
+  return out;
+}
+
+gpu_pbr to_gpu_pbr(const pbr_material& q) {
+  gpu_pbr g{};
+  g.specular_color = vec3(q.specular_color);
+  g.metallic = float(q.metallic);
+  g.sheen_color = vec3(q.sheen_color);
+  g.roughness = float(q.roughness);
+  g.attenuation_color = vec3(q.attenuation_color);
+  // gpu_pbr's 0 stands for infinity: float would keep it, but a shader may not see it (a driver
+  // may assume no float is infinite).
+  g.attenuation_distance =
+      std::isfinite(q.attenuation_distance) ? float(q.attenuation_distance) : 0;
+  g.ior = float(q.ior);
+  g.specular = float(q.specular);
+  g.transmission = float(q.transmission);
+  g.thickness = float(q.thickness);
+  g.clearcoat = float(q.clearcoat);
+  g.clearcoat_roughness = float(q.clearcoat_roughness);
+  g.sheen_roughness = float(q.sheen_roughness);
+  g.normal_scale = float(q.normal_scale);
+  g.metallic_roughness_texture = texture_of(q.metallic_roughness_texture);
+  g.normal_texture = texture_of(q.normal_texture);
+  g.specular_texture = texture_of(q.specular_texture);
+  g.specular_color_texture = texture_of(q.specular_color_texture);
+  g.transmission_texture = texture_of(q.transmission_texture);
+  g.thickness_texture = texture_of(q.thickness_texture);
+  g.clearcoat_texture = texture_of(q.clearcoat_texture);
+  g.clearcoat_roughness_texture = texture_of(q.clearcoat_roughness_texture);
+  g.clearcoat_normal_texture = texture_of(q.clearcoat_normal_texture);
+  g.sheen_color_texture = texture_of(q.sheen_color_texture);
+  g.sheen_roughness_texture = texture_of(q.sheen_roughness_texture);
+  g.clearcoat_normal_scale = float(q.clearcoat_normal_scale);
+  return g;
+}
+
+std::vector<gpu_pbr> to_gpu_pbrs(const scene& s) {
+  std::vector<gpu_pbr> out;
+  for (const auto& [name, m] : s.materials)
+    if (m.type == material_type::pbr) out.push_back(to_gpu_pbr(m.pbr));
   return out;
 }
 

@@ -34,8 +34,14 @@ std::vector<gpu_triangle> to_gpu_triangles(const scene& s, std::span<const objec
 // The instances, in scene order: the inverse placements and normal matrices rounded to float
 // (formed in double), and where their groups are (scene_tree::groups).
 std::vector<gpu_instance> to_gpu_instances(const scene& s, std::span<const group_span> groups);
-// The scene's materials, in order, rounded to float.
+// The scene's materials, in order, rounded to float; a PBR material's gpu_material::pbr is its
+// index in to_gpu_pbrs.
 std::vector<gpu_material> to_gpu_materials(const scene& s);
+// One PBR material's parameters beyond gpu_material's, rounded to float (an infinite
+// attenuation_distance is 0).
+gpu_pbr to_gpu_pbr(const pbr_material& q);
+// The PBR materials' parameters, in the order of the scene's materials of that kind.
+std::vector<gpu_pbr> to_gpu_pbrs(const scene& s);
 // The scene's textures (pack_textures), rounded to float, and every image's texels in `texels`.
 std::vector<gpu_texture> to_gpu_textures(const scene& s, std::vector<std::uint32_t>& texels);
 // The noise's tables, the vectors rounded to float.
