@@ -89,9 +89,14 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
       (any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo) * rec.color.xyz;
   // The lights' densities loop over every light (pdf.h): lavapipe counts those trips too.
   iterations += light_count();
-  if (pbr)
-    return path_hit_pbr(p, rec, pbr_surface_at(pbrs[m.pbr], albedo, rec), pbr_shading_normal(rec),
-                        c);
+  if (pbr) {
+    precise vec3 wo = -unit_vector(p.r.direction);
+    gpu_pbr q = pbrs[m.pbr];
+    pbr_texels t = pbr_texels_at(q, rec);
+    iterations += uint(pbr_map_count);  // pbr_texels_at's loop: lavapipe counts its trips
+    return path_hit_pbr(p, rec, pbr_surface_from(q, albedo, rec, t), pbr_shading_normal(q, rec, t, wo),
+                        pbr_coat_normal(q, rec, t, wo), c);
+  }
   return path_hit(p, rec, m.type, m.flags, albedo, m.fuzz, m.ir, c);
 }
 

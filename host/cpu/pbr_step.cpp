@@ -57,8 +57,10 @@ bool pbr_step(const scene_shading& shading, const texture_tables& tables, const 
   if ((flags & RTVK_MATERIAL_EMISSIVE) != 0u)
     path_emits(p, m.emission * emission_color(tables, uint(m.emission_texture), rec));
   const color base = material_color(tables, m.albedo, uint(m.texture), rec) * color(rec.color);
-  return path_hit_pbr(lights, p, rec, pbr_surface_at(tables, q, base, rec), pbr_shading_normal(rec),
-                      c);
+  const vec3 wo = -unit_vector(p.r.direction);
+  const pbr_texels t = pbr_texels_at(tables, q, rec);
+  return path_hit_pbr(lights, p, rec, pbr_surface_from(q, base, rec, t),
+                      pbr_shading_normal(q, rec, t, wo), pbr_coat_normal(q, rec, t, wo), c);
 }
 
 }  // namespace rtvk

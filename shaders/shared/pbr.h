@@ -203,19 +203,20 @@ inline bool pbr_draw(pbr_surface m, pbr_lobes l, real3 wo, int lobe, real3 u,
   return true;
 }
 
-// Draws wi given wo from three uniform numbers u in [0, 1): weight is f |wi.z| / pdf, the factor
-// a path's throughput takes. delta: wi came from a delta lobe (pdf is then that lobe's choice
-// probability, and no other density may be mixed with it). False: no direction (absorbed).
-// u.x chooses the lobe (coat, reflection, transmission, cosine) in proportion to their albedo
-// estimates; u.y and u.z draw the direction within it.
-inline bool pbr_sample(pbr_surface m, real3 wo, real3 u, precise OUT(real3) wi,
-                       precise OUT(real3) weight, precise OUT(real) pdf, OUT(bool) delta) {
+// pbr_sample's draw with the lobes of wo given (pbr_lobes_of), without the weight of a non-delta
+// direction: the caller evaluates it, as the path step does, which mixes the lights' density in.
+// Each of the model's parts is then compiled once into the render shader (sampling, evaluating
+// and the density each inlined twice made lavapipe compile it for minutes). wi: the direction;
+// delta: it came from a delta lobe, whose weight (its value over its choice probability) and
+// choice probability are set; else they are 0. False: no direction (absorbed).
+inline bool pbr_draw_direction(pbr_surface m, pbr_lobes l, real3 wo, real3 u,
+                               precise OUT(real3) wi, precise OUT(real3) weight,
+                               precise OUT(real) pdf, OUT(bool) delta) {
   wi = real3(0.0, 0.0, 1.0);
   weight = real3(0.0);
   pdf = real(0.0);
   delta = false;
   if (wo.z <= real(0.0)) return false;
-  pbr_lobes l = pbr_lobes_of(m, wo);
   int lobe = u.x < l.p_coat                          ? 0
              : u.x < l.p_coat + l.p_spec             ? 1
              : u.x < l.p_coat + l.p_spec + l.p_trans ? 2
@@ -238,7 +239,19 @@ inline bool pbr_sample(pbr_surface m, real3 wo, real3 u, precise OUT(real3) wi,
     return true;
   }
   // The transmission's lobe reflects where its microfacets reflect totally.
-  if (lobe == 2 ? wi.z == real(0.0) : wi.z <= real(0.0)) return false;
+  return lobe == 2 ? wi.z != real(0.0) : wi.z > real(0.0);
+}
+
+// Draws wi given wo from three uniform numbers u in [0, 1): weight is f |wi.z| / pdf, the factor
+// a path's throughput takes. delta: wi came from a delta lobe (pdf is then that lobe's choice
+// probability, and no other density may be mixed with it). False: no direction (absorbed).
+// u.x chooses the lobe (coat, reflection, transmission, cosine) in proportion to their albedo
+// estimates; u.y and u.z draw the direction within it.
+inline bool pbr_sample(pbr_surface m, real3 wo, real3 u, precise OUT(real3) wi,
+                       precise OUT(real3) weight, precise OUT(real) pdf, OUT(bool) delta) {
+  pbr_lobes l = pbr_lobes_of(m, wo);
+  if (!pbr_draw_direction(m, l, wo, u, wi, weight, pdf, delta)) return false;
+  if (delta) return true;
   pdf = pbr_pdf_lobes(m, l, wo, wi);
   if (!(pdf > real(0.0))) return false;
   weight = pbr_eval_lobes(m, l, wo, wi) / pdf;

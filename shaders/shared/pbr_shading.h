@@ -19,6 +19,7 @@
 #ifdef __cplusplus
 #pragma GCC diagnostic pop
 #endif
+#include "normal_map.h"
 #include "pdf.h"
 #include "random.h"
 #include "ray.h"
@@ -76,34 +77,97 @@ inline precise real4 pbr_map(TABLES_PARAM uint index, hit_record rec) {
   return real4(texture_value(TABLES index, rec.uv, rec.p), texture_alpha(TABLES index, rec.uv));
 }
 
-// The material's parameters at the hit (glTF's channels: metallic_roughness G roughness and B
-// metallic, specular A, specular_color RGB, transmission R, thickness G, clearcoat R,
-// clearcoat_roughness G, sheen_color RGB, sheen_roughness A; each times its factor), with
-// base_color its color there (material_color times the vertex colors, as for every kind). The ray
-// sees ior entering (front_face) and 1 / ior leaving; a thickness of 0 is thin-walled.
-inline pbr_surface pbr_surface_at(TABLES_PARAM pbr_record q, real3 base_color, hit_record rec) {
-  precise real4 mr = pbr_map(TABLES q.metallic_roughness_texture, rec);
+// The maps a PBR material reads at a hit (pbr_map's, 1 where it has none), in the order of
+// pbr_texels_at's loop.
+const int pbr_map_count = 11;
+struct pbr_texels {
+  real4 metallic_roughness;   // G roughness, B metallic
+  real4 specular;             // A
+  real4 specular_color;       // RGB
+  real4 transmission;         // R
+  real4 thickness;            // G
+  real4 clearcoat;            // R
+  real4 clearcoat_roughness;  // G
+  real4 sheen_color;          // RGB
+  real4 sheen_roughness;      // A
+  real4 normal;               // RGB: the normal map's texel
+  real4 clearcoat_normal;     // RGB: the coat's
+};
+
+// Every map of the material at the hit, read in one loop: the texture code (its Perlin noise
+// included) is then compiled once into the render shader rather than once per parameter, which
+// made lavapipe compile it for minutes. A loop of pbr_map_count trips (the caller counts them
+// against the GPU's loop budget).
+inline pbr_texels pbr_texels_at(TABLES_PARAM pbr_record q, hit_record rec) {
+  uint maps[pbr_map_count];
+  maps[0] = q.metallic_roughness_texture;
+  maps[1] = q.specular_texture;
+  maps[2] = q.specular_color_texture;
+  maps[3] = q.transmission_texture;
+  maps[4] = q.thickness_texture;
+  maps[5] = q.clearcoat_texture;
+  maps[6] = q.clearcoat_roughness_texture;
+  maps[7] = q.sheen_color_texture;
+  maps[8] = q.sheen_roughness_texture;
+  maps[9] = q.normal_texture;
+  maps[10] = q.clearcoat_normal_texture;
+  real4 v[pbr_map_count];
+  for (int k = 0; k < pbr_map_count; ++k) v[k] = pbr_map(TABLES maps[k], rec);
+  pbr_texels t;
+  t.metallic_roughness = v[0];
+  t.specular = v[1];
+  t.specular_color = v[2];
+  t.transmission = v[3];
+  t.thickness = v[4];
+  t.clearcoat = v[5];
+  t.clearcoat_roughness = v[6];
+  t.sheen_color = v[7];
+  t.sheen_roughness = v[8];
+  t.normal = v[9];
+  t.clearcoat_normal = v[10];
+  return t;
+}
+
+// The material's parameters at the hit from its maps there, t (glTF's channels: metallic_roughness
+// G roughness and B metallic, specular A, specular_color RGB, transmission R, thickness G,
+// clearcoat R, clearcoat_roughness G, sheen_color RGB, sheen_roughness A; each times its factor),
+// with base_color its color there (material_color times the vertex colors, as for every kind). The
+// ray sees ior entering (front_face) and 1 / ior leaving; a thickness of 0 is thin-walled.
+inline pbr_surface pbr_surface_from(pbr_record q, real3 base_color, hit_record rec, pbr_texels t) {
   // Every product precise (ShaderPrecision): the GPU rounds them as the CPU does.
-  precise real metallic = q.metallic * mr.z;
-  precise real roughness = q.roughness * mr.y;
+  precise real metallic = q.metallic * t.metallic_roughness.z;
+  precise real roughness = q.roughness * t.metallic_roughness.y;
   precise pbr_surface m = pbr_surface_of(base_color, metallic, roughness);
   m.eta = rec.front_face ? q.ior : real(1.0) / q.ior;
-  m.specular = q.specular * pbr_map(TABLES q.specular_texture, rec).w;
-  m.specular_color = q.specular_color * real3(pbr_map(TABLES q.specular_color_texture, rec));
-  m.transmission = q.transmission * pbr_map(TABLES q.transmission_texture, rec).x;
-  m.thin = q.thickness * pbr_map(TABLES q.thickness_texture, rec).y == real(0.0);
-  m.clearcoat = q.clearcoat * pbr_map(TABLES q.clearcoat_texture, rec).x;
-  m.clearcoat_roughness =
-      q.clearcoat_roughness * pbr_map(TABLES q.clearcoat_roughness_texture, rec).y;
-  m.sheen_color = q.sheen_color * real3(pbr_map(TABLES q.sheen_color_texture, rec));
-  m.sheen_roughness = q.sheen_roughness * pbr_map(TABLES q.sheen_roughness_texture, rec).w;
+  m.specular = q.specular * t.specular.w;
+  m.specular_color = q.specular_color * real3(t.specular_color);
+  m.transmission = q.transmission * t.transmission.x;
+  m.thin = q.thickness * t.thickness.y == real(0.0);
+  m.clearcoat = q.clearcoat * t.clearcoat.x;
+  m.clearcoat_roughness = q.clearcoat_roughness * t.clearcoat_roughness.y;
+  m.sheen_color = q.sheen_color * real3(t.sheen_color);
+  m.sheen_roughness = q.sheen_roughness * t.sheen_roughness.w;
   return m;
 }
 
+// The same from the material's record alone: its maps read here.
+inline pbr_surface pbr_surface_at(TABLES_PARAM pbr_record q, real3 base_color, hit_record rec) {
+  return pbr_surface_from(q, base_color, rec, pbr_texels_at(TABLES q, rec));
+}
+
 // The normal the material is shaded about at the hit (the frame's z), facing the side the ray
-// came from. For now the hit's own normal; normal_map.h's perturbed normal takes its place.
-inline precise real3 pbr_shading_normal(hit_record rec) {
-  return rec.normal;
+// came from: the hit's own, or where the material has a normal map, the map's normal there (its
+// texel t.normal) kept visible from wo, the unit direction back toward the viewer (normal_map.h).
+inline precise real3 pbr_shading_normal(pbr_record q, hit_record rec, pbr_texels t, real3 wo) {
+  if (q.normal_texture == RTVK_NO_TEXTURE) return rec.normal;
+  return normal_mapped(rec, real3(t.normal), q.normal_scale, wo);
+}
+
+// The clearcoat's normal (scene space): its own map's where it has one, else the hit's own normal
+// (glTF: without clearcoatNormalTexture the coat is not normal-mapped, even where the base is).
+inline precise real3 pbr_coat_normal(pbr_record q, hit_record rec, pbr_texels t, real3 wo) {
+  if (q.clearcoat_normal_texture == RTVK_NO_TEXTURE) return rec.normal;
+  return normal_mapped(rec, real3(t.clearcoat_normal), q.clearcoat_normal_scale, wo);
 }
 
 // KHR_materials_volume's absorption (Beer-Lambert) along a ray that reached the surface from
@@ -125,7 +189,7 @@ inline precise real3 to_frame(onb b, real3 d) {
 }
 
 // p.r hit `rec` on a PBR material whose parameters there are `m`, shaded about the unit normal
-// n (pbr_shading_normal): scatters the path for the next trip (false), or ends it (true, its color
+// n (pbr_shading_normal), its coat about coat_n (pbr_coat_normal, scene space): scatters the path for the next trip (false), or ends it (true, its color
 // in `c`: the light it gathered). Without lights it follows pbr_sample (throughput times its
 // weight). With lights (LIGHT_COUNT > 0), half the time toward the lights (pdf.h) and half by
 // pbr_sample, as the third book mixes: a non-delta direction is weighted by pbr_eval over the
@@ -135,45 +199,43 @@ inline precise real3 to_frame(onb b, real3 d) {
 // side of the surface for its lobe (a reflection below the hit's normal, a transmission above it)
 // ends the path black: the no-leak rule.
 inline bool path_hit_pbr(LIGHTS_PARAM precise INOUT(path_state) p, hit_record rec, pbr_surface m,
-                         real3 n, precise OUT(real3) c) {
+                         real3 n, real3 coat_n, precise OUT(real3) c) {
   c = p.radiance;
   onb b = onb_from_w(n);
   precise real3 wo = to_frame(b, -unit_vector(p.r.direction));
+  if (m.clearcoat > real(0.0)) m.clearcoat_normal = unit_vector(to_frame(b, coat_n));
+  if (!(wo.z > real(0.0))) return true;
+  pbr_lobes l = pbr_lobes_of(m, wo);
   random_stream s = at_bounce(p.s, p.depth + 1u);
   precise real3 direction;
   precise real3 wi;
   precise real3 weight;
+  bool delta = false;
   bool toward_lights = LIGHT_COUNT > 0u && real(rnd(s, dim_mixture)) < real(0.5);
   // The lights' densities are measured from where the book's mixture measures them.
   precise real3 origin = rec.p + rec.offset * rec.normal;
+  uint own = LIGHT_COUNT;
+  precise real own_pdf = real(0.0);
   if (toward_lights) {
-    uint own = LIGHT_COUNT;
-    precise real own_pdf = real(0.0);
     direction = light_list_random(LIGHTS origin, p.r.time, s, own, own_pdf);
     wi = to_frame(b, unit_vector(direction));
-    precise real mixture =
-        real(0.5) * pbr_pdf(m, wo, wi) +
-        real(0.5) * light_list_pdf(LIGHTS origin, direction, p.r.time, own, own_pdf);
-    if (!(mixture > real(0.0))) return true;
-    weight = pbr_eval(m, wo, wi) / mixture;
   } else {
     precise real3 u =
         real3(real(rnd(s, dim_pbr_lobe)), real(rnd(s, dim_pbr_a)), real(rnd(s, dim_pbr_b)));
-    precise real pdf;
-    bool delta;
-    if (!pbr_sample(m, wo, u, wi, weight, pdf, delta)) return true;
+    precise real delta_pdf;
+    if (!pbr_draw_direction(m, l, wo, u, wi, weight, delta_pdf, delta)) return true;
     direction = onb_local(b, wi);
-    if (LIGHT_COUNT > 0u) {
-      if (delta) {
-        weight = real(2.0) * weight;
-      } else {
-        precise real mixture =
-            real(0.5) * pdf +
-            real(0.5) * light_list_pdf(LIGHTS origin, direction, p.r.time, LIGHT_COUNT, real(0.0));
-        if (!(mixture > real(0.0))) return true;
-        weight = pbr_eval(m, wo, wi) / mixture;
-      }
-    }
+  }
+  // One evaluation and one density for both halves (each compiled once: see pbr_draw_direction).
+  if (delta) {
+    if (LIGHT_COUNT > 0u) weight = real(2.0) * weight;
+  } else {
+    precise real mixture = pbr_pdf_lobes(m, l, wo, wi);
+    if (LIGHT_COUNT > 0u)
+      mixture = real(0.5) * mixture +
+                real(0.5) * light_list_pdf(LIGHTS origin, direction, p.r.time, own, own_pdf);
+    if (!(mixture > real(0.0))) return true;
+    weight = pbr_eval_lobes(m, l, wo, wi) / mixture;
   }
   // The no-leak rule, against the surface's own normal (rec.normal).
   precise real facing = dot3(direction, rec.normal);

@@ -19,7 +19,7 @@
 namespace rtvk {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double pi_ = 3.14159265358979323846;
 
 light_record quad_light(const point3& Q, const vec3& u, const vec3& v) {
   scene s;
@@ -56,7 +56,7 @@ std::pair<double, double> integral(Pdf pdf, int n, std::uint64_t seed) {
   std::mt19937_64 gen(seed);
   double sum = 0, sum2 = 0;
   for (int k = 0; k < n; ++k) {
-    const double f = 4 * pi * pdf(uniform_direction(gen));
+    const double f = 4 * pi_ * pdf(uniform_direction(gen));
     sum += f;
     sum2 += f * f;
   }
@@ -89,7 +89,7 @@ TEST(Densities, EachIntegratesToOne) {
   const auto [cos_mean, cos_error] =
       integral([&](const vec3& d) { return cosine_pdf(n, d); }, 400000, 8);
   EXPECT_NEAR(cos_mean, 1, 4 * cos_error);
-  EXPECT_NEAR(4 * pi * sphere_pdf(), 1, 1e-15);
+  EXPECT_NEAR(4 * pi_ * sphere_pdf(), 1, 1e-15);
 }
 
 // What the samplers draw lies on the light, and the evaluator reports the density the book's
@@ -113,7 +113,7 @@ TEST(Densities, ASampledDirectionHasTheDensityTheEvaluatorReports) {
     }
     const vec3 d = light_random(ball, origin, 0.0, r1, r2);
     const double D2 = glm::dot(ball.a - origin, ball.a - origin);
-    const double cone = 2 * pi * (1 - std::sqrt(1 - ball.radius * ball.radius / D2));
+    const double cone = 2 * pi_ * (1 - std::sqrt(1 - ball.radius * ball.radius / D2));
     EXPECT_NEAR(light_pdf(ball, origin, d, 0.0), 1 / cone, 1e-9 / cone);
     // Inside the cone: the line hits the sphere.
     const vec3 w = glm::normalize(d), oc = ball.a - origin;
@@ -389,7 +389,7 @@ TEST_F(GpuSampling, TheDevicesDensitiesAreTheHosts) {
       const std::size_t i = li * per_light + std::size_t(k);
       gpu::light_probe_entry f = entries[i];
       f32::run_light_probe(f);
-      sum += 4 * pi * out[i].pdf;
+      sum += 4 * pi_ * out[i].pdf;
       // Float against float: the same operations (an edge of the light may tip either way).
       mismatched += std::abs(out[i].pdf - f.pdf) > 1e-4f * (1 + f.pdf);
       const double want = light_pdf(lights[li], origin, directions[i], 0.0);
