@@ -142,6 +142,8 @@ both cornell-smoke --scene cornell-smoke --width 300 --spp 64
 both next-week-final --scene next-week-final --width 400 --spp 16
 both cornell-plain --scene cornell-box --width 300 --spp 64 --sampling plain
 both rest-of-life-final --scene rest-of-life-final --width 300 --spp 64
+both pbr-spheres --scene docs/scenes/pbr-spheres.json --spp 32
+both pbr-layers --scene docs/scenes/pbr-layers.json --spp 32
 # (the device tool brings back at most 8 files: RTVK_CHECK_NO_IMAGES=1 leaves these out)
 [ -n "${RTVK_CHECK_NO_IMAGES:-}" ] ||
   cp /tmp/both-final.png /tmp/both-knot.png /tmp/both-forest.png /tmp/both-next-week-final.png "$out/" 2>/dev/null
