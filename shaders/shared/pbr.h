@@ -45,7 +45,9 @@ inline precise real3 pbr_trans_half(pbr_surface m, real3 wo, real3 wi) {
 // Whether a microfacet with cosine c to wo reflects all the refraction would take: the exact
 // Fresnel's total internal reflection (not Schlick's), for a ray leaving a denser medium.
 inline bool pbr_total_reflection(pbr_surface m, pbr_lobes l, real c) {
-  return !l.trans_delta && !m.thin && real(1.0) - c * c >= m.eta * m.eta;
+  precise real sin2 = real(1.0) - c * c;
+  precise real eta2 = m.eta * m.eta;
+  return !l.trans_delta && !m.thin && sin2 >= eta2;
 }
 
 // The base's reflection (single and multiple scattering, and the refraction's total internal
@@ -184,7 +186,8 @@ inline bool pbr_draw(pbr_surface m, pbr_lobes l, real3 wo, int lobe, real3 u,
                        : reflect_about(wo, ggx_sample_vndf(wo, l.alpha, v));
   } else if (lobe == 2) {
     precise real3 h = l.trans_delta ? real3(0.0, 0.0, 1.0) : ggx_sample_vndf(wo, l.alpha, v);
-    if (m.thin || (l.trans_delta && abs(m.eta - real(1.0)) < pbr_eta_one)) {
+    precise real eta_off = m.eta - real(1.0);
+    if (m.thin || (l.trans_delta && abs(eta_off) < pbr_eta_one)) {
       precise real3 r = reflect_about(wo, h);
       wi = real3(r.x, r.y, -r.z);   // thin: the light goes through without bending
       if (l.trans_delta) wi = -wo;  // exactly

@@ -266,7 +266,10 @@ const std::map<std::string, cpp_struct>& cpp_layouts() {
          RTVK_MEMBER(world_probe_entry, direction), RTVK_MEMBER(world_probe_entry, hit),
          RTVK_MEMBER(world_probe_entry, normal), RTVK_MEMBER(world_probe_entry, material),
          RTVK_MEMBER(world_probe_entry, iterations), RTVK_MEMBER(world_probe_entry, pad0),
-         RTVK_MEMBER(world_probe_entry, pad1), RTVK_MEMBER(world_probe_entry, pad2)}}},
+         RTVK_MEMBER(world_probe_entry, pad1), RTVK_MEMBER(world_probe_entry, pad2),
+         RTVK_MEMBER(world_probe_entry, tangent), RTVK_MEMBER(world_probe_entry, texel),
+         RTVK_MEMBER(world_probe_entry, scale), RTVK_MEMBER(world_probe_entry, mapped),
+         RTVK_MEMBER(world_probe_entry, pad3)}}},
   };
   return layouts;
 }

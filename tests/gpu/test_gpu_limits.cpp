@@ -97,8 +97,9 @@ TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
                          "the vertex normal array and the instance array and the texture "
                          "coordinate array and the texture array and the image textures' "
                          "texels and the noise tables and the media array and the light array "
-                         "and the disk array and the vertex tangent array need 195.559 KiB in "
-                         "one memory allocation"));
+                         "and the disk array and the vertex tangent array and the PBR "
+                         "material array and the BSDF tables need 195.688 KiB in one memory "
+                         "allocation"));
   EXPECT_EQ(render_with(s, {.allocation_size = 200 << 10}), "");
   // Three allocations in all: the scene's arrays, the targets' device-local and readback
   // buffers.
