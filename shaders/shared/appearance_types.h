@@ -93,21 +93,21 @@ static_assert(sizeof(gpu_material) == 64);
 // any material), 128 bytes. Each texture is a gpu_texture index or RTVK_NO_TEXTURE; the channel it
 // reads is glTF's, and it multiplies its factor. host/scene/pbr_material.h holds the meanings.
 struct gpu_pbr {
-  vec3 specular_color;           // KHR_materials_specular: F0 tint of the dielectric, linear
-  float metallic;                // 0 dielectric to 1 metal
-  vec3 sheen_color;              // KHR_materials_sheen: linear; 0: no sheen
-  float roughness;               // perceptual roughness, 0 to 1 (GGX alpha = roughness^2)
-  vec3 attenuation_color;        // KHR_materials_volume: color white light has after
-                                 // attenuation_distance inside, linear
-  float attenuation_distance;    // scene units; 0 stands for infinity (no attenuation)
-  float ior;                     // KHR_materials_ior: index of refraction, 1.5
-  float specular;                // KHR_materials_specular: strength, 1
-  float transmission;            // KHR_materials_transmission: 0 to 1
-  float thickness;               // KHR_materials_volume: 0 thin-walled, else a closed volume
-  float clearcoat;               // KHR_materials_clearcoat: 0 to 1
-  float clearcoat_roughness;     // perceptual, 0 to 1
-  float sheen_roughness;         // perceptual, 0 to 1
-  float normal_scale;            // the normal map's xy scale
+  vec3 specular_color;               // KHR_materials_specular: F0 tint of the dielectric, linear
+  float metallic;                    // 0 dielectric to 1 metal
+  vec3 sheen_color;                  // KHR_materials_sheen: linear; 0: no sheen
+  float roughness;                   // perceptual roughness, 0 to 1 (GGX alpha = roughness^2)
+  vec3 attenuation_color;            // KHR_materials_volume: color white light has after
+                                     // attenuation_distance inside, linear
+  float attenuation_distance;        // scene units; 0 stands for infinity (no attenuation)
+  float ior;                         // KHR_materials_ior: index of refraction, 1.5
+  float specular;                    // KHR_materials_specular: strength, 1
+  float transmission;                // KHR_materials_transmission: 0 to 1
+  float thickness;                   // KHR_materials_volume: 0 thin-walled, else a closed volume
+  float clearcoat;                   // KHR_materials_clearcoat: 0 to 1
+  float clearcoat_roughness;         // perceptual, 0 to 1
+  float sheen_roughness;             // perceptual, 0 to 1
+  float normal_scale;                // the normal map's xy scale
   uint metallic_roughness_texture;   // G: roughness, B: metallic
   uint normal_texture;               // tangent-space normal map, linear
   uint specular_texture;             // A: specular

@@ -24,18 +24,18 @@
 #define RTVK_BINDING_QUADS 8  // storage buffer: gpu_quad[], in the BVH's leaf order
 // 9 to 12: unused. They were tonemap.comp's and overlay.comp's when all pipelines shared one
 // numbering; renumbering would change every shader's SPIR-V for nothing.
-#define RTVK_BINDING_TRIANGLES 13   // storage buffer: gpu_triangle[], in the BVH's leaf order
-#define RTVK_BINDING_NORMALS 14     // storage buffer: vec4[], triangles' vertex normals
-#define RTVK_BINDING_INSTANCES 15   // storage buffer: gpu_instance[], in scene order
-#define RTVK_BINDING_TEXCOORDS 16   // storage buffer: vec2[], triangles' vertex uv (as normals)
-#define RTVK_BINDING_TEXTURES 17    // storage buffer: gpu_texture[]
-#define RTVK_BINDING_TEXELS 18      // storage buffer: uint[], image textures' RGBA8 texels
-#define RTVK_BINDING_PERLIN 19      // storage buffer: gpu_perlin, the noise textures' tables
-#define RTVK_BINDING_MEDIA 20       // storage buffer: gpu_medium[], in scene order
-#define RTVK_BINDING_LIGHTS 21      // storage buffer: gpu_light[], what lights sampling aims at
-#define RTVK_BINDING_TLAS 22        // acceleration structure: the scene's top level (--accel rt-*)
-#define RTVK_BINDING_RAY_TIMES 23   // storage buffer: float[], each launch's ray time (rt-pipeline)
-#define RTVK_BINDING_DISKS 24       // storage buffer: gpu_disk[], in the BVH's leaf order
+#define RTVK_BINDING_TRIANGLES 13  // storage buffer: gpu_triangle[], in the BVH's leaf order
+#define RTVK_BINDING_NORMALS 14    // storage buffer: vec4[], triangles' vertex normals
+#define RTVK_BINDING_INSTANCES 15  // storage buffer: gpu_instance[], in scene order
+#define RTVK_BINDING_TEXCOORDS 16  // storage buffer: vec2[], triangles' vertex uv (as normals)
+#define RTVK_BINDING_TEXTURES 17   // storage buffer: gpu_texture[]
+#define RTVK_BINDING_TEXELS 18     // storage buffer: uint[], image textures' RGBA8 texels
+#define RTVK_BINDING_PERLIN 19     // storage buffer: gpu_perlin, the noise textures' tables
+#define RTVK_BINDING_MEDIA 20      // storage buffer: gpu_medium[], in scene order
+#define RTVK_BINDING_LIGHTS 21     // storage buffer: gpu_light[], what lights sampling aims at
+#define RTVK_BINDING_TLAS 22       // acceleration structure: the scene's top level (--accel rt-*)
+#define RTVK_BINDING_RAY_TIMES 23  // storage buffer: float[], each launch's ray time (rt-pipeline)
+#define RTVK_BINDING_DISKS 24      // storage buffer: gpu_disk[], in the BVH's leaf order
 // storage buffer: gpu_pbr[], the PBR materials' parameters (gpu_material::pbr indexes it); one
 // unused element when the scene has none
 #define RTVK_BINDING_PBR 25

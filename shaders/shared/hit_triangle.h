@@ -80,8 +80,8 @@ inline void record_triangle_hit(real3 a, real3 b, real3 c, real3 shading, real2 
                                 ray r, real t, precise INOUT(hit_record) rec) {
   rec.t = t;
   rec.uv = uv;
-  rec.color = real4(1.0);  // the vertex colors, where the triangle has some, are set after
-  rec.uv1 = uv;            // and so is a second set of texture coordinates
+  rec.color = real4(1.0);    // the vertex colors, where the triangle has some, are set after
+  rec.uv1 = uv;              // and so is a second set of texture coordinates
   rec.tangent = real4(0.0);  // and its tangents
   rec.p = ray_at(r, t);
   precise real3 geometric = unit_vector(cross3(b - a, c - a));

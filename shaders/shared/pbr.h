@@ -212,9 +212,8 @@ inline bool pbr_draw(pbr_surface m, pbr_lobes l, real3 wo, int lobe, real3 u,
 // and the density each inlined twice made lavapipe compile it for minutes). wi: the direction;
 // delta: it came from a delta lobe, whose weight (its value over its choice probability) and
 // choice probability are set; else they are 0. False: no direction (absorbed).
-inline bool pbr_draw_direction(pbr_surface m, pbr_lobes l, real3 wo, real3 u,
-                               precise OUT(real3) wi, precise OUT(real3) weight,
-                               precise OUT(real) pdf, OUT(bool) delta) {
+inline bool pbr_draw_direction(pbr_surface m, pbr_lobes l, real3 wo, real3 u, precise OUT(real3) wi,
+                               precise OUT(real3) weight, precise OUT(real) pdf, OUT(bool) delta) {
   wi = real3(0.0, 0.0, 1.0);
   weight = real3(0.0);
   pdf = real(0.0);

@@ -189,15 +189,15 @@ inline precise real3 to_frame(onb b, real3 d) {
 }
 
 // p.r hit `rec` on a PBR material whose parameters there are `m`, shaded about the unit normal
-// n (pbr_shading_normal), its coat about coat_n (pbr_coat_normal, scene space): scatters the path for the next trip (false), or ends it (true, its color
-// in `c`: the light it gathered). Without lights it follows pbr_sample (throughput times its
-// weight). With lights (LIGHT_COUNT > 0), half the time toward the lights (pdf.h) and half by
-// pbr_sample, as the third book mixes: a non-delta direction is weighted by pbr_eval over the
-// mixture's density, half the BSDF's plus half the lights'; a delta direction (a smooth lobe,
-// which the lights' half never draws) by pbr_sample's weight over 1/2, the chance of the BSDF's
-// half (the lights' half leaves it out: pbr_eval has no delta lobe). A direction on the wrong
-// side of the surface for its lobe (a reflection below the hit's normal, a transmission above it)
-// ends the path black: the no-leak rule.
+// n (pbr_shading_normal), its coat about coat_n (pbr_coat_normal, scene space): scatters the path
+// for the next trip (false), or ends it (true, its color in `c`: the light it gathered). Without
+// lights it follows pbr_sample (throughput times its weight). With lights (LIGHT_COUNT > 0), half
+// the time toward the lights (pdf.h) and half by pbr_sample, as the third book mixes: a non-delta
+// direction is weighted by pbr_eval over the mixture's density, half the BSDF's plus half the
+// lights'; a delta direction (a smooth lobe, which the lights' half never draws) by pbr_sample's
+// weight over 1/2, the chance of the BSDF's half (the lights' half leaves it out: pbr_eval has no
+// delta lobe). A direction on the wrong side of the surface for its lobe (a reflection below the
+// hit's normal, a transmission above it) ends the path black: the no-leak rule.
 inline bool path_hit_pbr(LIGHTS_PARAM precise INOUT(path_state) p, hit_record rec, pbr_surface m,
                          real3 n, real3 coat_n, precise OUT(real3) c) {
   c = p.radiance;

@@ -45,17 +45,17 @@ inline precise real3 ray_at(ray r, real t) {
 }
 
 struct hit_record {
-  precise real3 p;       // where the ray hit, scene units
-  precise real3 normal;  // unit surface normal, facing against the ray
-  precise real t;        // ray parameter of the hit
-  bool front_face;       // the ray arrived from outside the surface
-  uint material;         // index into the scene's materials
-  precise real offset;   // how far a ray leaving p starts off the surface, scene units
-  precise real2 uv;      // texture coordinates of p on the object (image textures read them)
-  precise real4 color;   // the vertex colors blended at p (linear RGBA), 1 where none: multiply
-                         // the material's color and alpha
-  precise real2 uv1;     // the second texture coordinates of p, which the emission texture
-                         // reads: uv where the object has no second set
+  precise real3 p;        // where the ray hit, scene units
+  precise real3 normal;   // unit surface normal, facing against the ray
+  precise real t;         // ray parameter of the hit
+  bool front_face;        // the ray arrived from outside the surface
+  uint material;          // index into the scene's materials
+  precise real offset;    // how far a ray leaving p starts off the surface, scene units
+  precise real2 uv;       // texture coordinates of p on the object (image textures read them)
+  precise real4 color;    // the vertex colors blended at p (linear RGBA), 1 where none: multiply
+                          // the material's color and alpha
+  precise real2 uv1;      // the second texture coordinates of p, which the emission texture
+                          // reads: uv where the object has no second set
   precise real4 tangent;  // xyz: the unit tangent at p (along +u, perpendicular to normal); w:
                           // +1 or -1, the bitangent being cross(normal, xyz) * w with normal as
                           // stored (facing the ray); all 0 where the object has no tangents
