@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes shaders/shared/bsdf_tables.h: the albedo tables of pbr.h's energy compensation.
+"""Writes shaders/shared/pbr/bsdf_tables.h: the albedo tables of pbr.h's energy compensation.
 
 Tables (each N x N, row = perceptual roughness r = j / (N - 1), column = cosine
 mu = (i / (N - 1))^2, read bilinearly in (sqrt(mu), r): the albedos dip sharply at mu ~ alpha
@@ -166,7 +166,7 @@ def write(tables, avgs):
         out += [f"    // {k}", b + ("," if i + 1 < len(parts) else "")]
     out += ["};", "#endif", ""]
     out += ["RTVK_KERNELS_END", "", "#endif  // RTVK_BSDF_TABLES_H", ""]
-    with open("shaders/shared/bsdf_tables.h", "w") as f:
+    with open("shaders/shared/pbr/bsdf_tables.h", "w") as f:
         f.write("\n".join(out))
 
 

@@ -1,4 +1,4 @@
-// shaders/shared/normal_map.h in its C++ compilation: the mapped normal in the hit's tangent
+// shaders/shared/pbr/normal_map.h in its C++ compilation: the mapped normal in the hit's tangent
 // frame, and the no-leak rule (docs/materials.md, "Normal maps").
 #include <gtest/gtest.h>
 

@@ -196,7 +196,7 @@ static_assert(offsetof(light_probe_entry, sampled_pdf) == 144);
 static_assert(sizeof(light_probe_entry) == 160);
 #endif
 
-// std430 array element for pbr_probe.comp (pbr_probe.h): a pbr_surface (shaders/shared/pbr.h), an
+// std430 array element for pbr_probe.comp (pbr_probe.h): a pbr_surface (shaders/shared/pbr/pbr.h), an
 // outgoing direction and three uniform numbers; the shader samples pbr_sample with them and asks
 // pbr_eval and pbr_pdf of the sampled direction and of a direction the host names.
 struct pbr_probe_entry {
