@@ -61,10 +61,10 @@ struct gpu_triangle {
   uint normals;      // its shading at 3 * normals in the normals and texcoords buffers (vertex
                      // normals; uv); RTVK_FLAT: none (flat, uv barycentric). The first normal's
                      // w has bit 0 set when they blend (else flat) and above it the entry + 1 of
-                 // vertex tangents (3 * entry in tangents; 0: none); the second's, as a uint, has
-                 // bit 0 set when the uv are given and above it the entry of a second uv set (3 *
-                 // (w >> 1) in texcoords; 0: none); the third's is the entry of vertex colors (3 *
-                 // w in normals; 0: none): scene_buffers.glsl.
+  // vertex tangents (3 * entry in tangents; 0: none); the second's, as a uint, has
+  // bit 0 set when the uv are given and above it the entry of a second uv set (3 *
+  // (w >> 1) in texcoords; 0: none); the third's is the entry of vertex colors (3 *
+  // w in normals; 0: none): scene_buffers.glsl.
 };
 #ifdef __cplusplus
 static_assert(offsetof(gpu_triangle, material) == 12);

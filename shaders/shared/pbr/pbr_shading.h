@@ -10,15 +10,7 @@
 #define RTVK_PBR_SHADING_H
 #include "appearance_types.h"
 #include "kernel_lang.h"
-// pbr.h's stand-in leaves a parameter unused, which the host's -Werror build refuses.
-#ifdef __cplusplus
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#endif
 #include "pbr.h"
-#ifdef __cplusplus
-#pragma GCC diagnostic pop
-#endif
 #include "normal_map.h"
 #include "pdf.h"
 #include "random.h"

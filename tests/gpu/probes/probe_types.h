@@ -196,8 +196,8 @@ static_assert(offsetof(light_probe_entry, sampled_pdf) == 144);
 static_assert(sizeof(light_probe_entry) == 160);
 #endif
 
-// std430 array element for pbr_probe.comp (pbr_probe.h): a pbr_surface (shaders/shared/pbr/pbr.h), an
-// outgoing direction and three uniform numbers; the shader samples pbr_sample with them and asks
+// std430 array element for pbr_probe.comp (pbr_probe.h): a pbr_surface (shaders/shared/pbr/pbr.h),
+// an outgoing direction and three uniform numbers; the shader samples pbr_sample with them and asks
 // pbr_eval and pbr_pdf of the sampled direction and of a direction the host names.
 struct pbr_probe_entry {
   vec3 base_color;            // in: pbr_surface::base_color, linear
