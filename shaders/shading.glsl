@@ -92,7 +92,7 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   if (pbr) {
     precise vec3 wo = -unit_vector(p.r.direction);
     gpu_pbr q = pbrs[m.pbr];
-    pbr_texels t = pbr_texels_at(q, rec);
+    pbr_texels t = any_textures ? pbr_texels_at(q, rec) : pbr_no_texels();
     iterations += uint(pbr_map_count);  // pbr_texels_at's loop: lavapipe counts its trips
     return path_hit_pbr(p, rec, pbr_surface_from(q, albedo, rec, t), pbr_shading_normal(q, rec, t, wo),
                         pbr_coat_normal(q, rec, t, wo), c);

@@ -132,8 +132,10 @@ TEST(GltfPbr, MetallicRoughnessAndNormalMapAreReadExactly) {
   EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
 
   const pbr_material defaults{};
-  const pbr_material& d = loaded(json::object()).materials[0].m.pbr;
-  EXPECT_EQ(loaded(json::object()).materials[0].m.type, material_type::pbr);
+  // The scene is kept: a reference into a temporary's materials would dangle.
+  const scene plain = loaded(json::object());
+  const pbr_material& d = plain.materials[0].m.pbr;
+  EXPECT_EQ(plain.materials[0].m.type, material_type::pbr);
   EXPECT_EQ(d.metallic, 1);  // glTF's defaults: metallicFactor 1, roughnessFactor 1
   EXPECT_EQ(d.roughness, 1);
   EXPECT_EQ(d.ior, defaults.ior);

@@ -93,6 +93,21 @@ std::vector<buffer_spec> specs_of(const std::vector<array_entry>& arrays) {
   return out;
 }
 
+// Whether some material reads a texture (RTVK_SPEC_TEXTURES): its color or emission's, or one of a
+// PBR material's maps. Without, the shader compiles no texture code.
+bool reads_textures(const gpu_scene::host_arrays& a) {
+  for (const gpu_material& m : a.materials)
+    if (m.texture != RTVK_NO_TEXTURE || m.emission_texture != RTVK_NO_TEXTURE) return true;
+  for (const gpu_pbr& p : a.pbr)
+    for (std::uint32_t t :
+         {p.metallic_roughness_texture, p.normal_texture, p.specular_texture,
+          p.specular_color_texture, p.transmission_texture, p.thickness_texture,
+          p.clearcoat_texture, p.clearcoat_roughness_texture, p.clearcoat_normal_texture,
+          p.sheen_color_texture, p.sheen_roughness_texture})
+      if (t != RTVK_NO_TEXTURE) return true;
+  return false;
+}
+
 }  // namespace
 
 gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
@@ -138,11 +153,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       medium_count_(std::uint32_t(a.media.size())),
       light_count_(std::uint32_t(a.lights.size())),
       with_uv_(a.with_uv),
-      any_textures_(std::any_of(a.materials.begin(), a.materials.end(),
-                                [](const gpu_material& m) {
-                                  return m.texture != RTVK_NO_TEXTURE ||
-                                         m.emission_texture != RTVK_NO_TEXTURE;
-                                })),
+      any_textures_(reads_textures(a)),
       any_pbr_(!a.pbr.empty()),
       build_seconds_(a.build_seconds),
       moves_(a.moves),

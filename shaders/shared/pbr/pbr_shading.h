@@ -10,8 +10,8 @@
 #define RTVK_PBR_SHADING_H
 #include "appearance_types.h"
 #include "kernel_lang.h"
-#include "pbr.h"
 #include "normal_map.h"
+#include "pbr.h"
 #include "pdf.h"
 #include "random.h"
 #include "ray.h"
@@ -86,37 +86,91 @@ struct pbr_texels {
   real4 clearcoat_normal;     // RGB: the coat's
 };
 
+// Map k of the material (pbr_texels_at's order): its texture's index, RTVK_NO_TEXTURE for none.
+inline uint pbr_map_index(pbr_record q, int k) {
+  switch (k) {
+    case 0:
+      return q.metallic_roughness_texture;
+    case 1:
+      return q.specular_texture;
+    case 2:
+      return q.specular_color_texture;
+    case 3:
+      return q.transmission_texture;
+    case 4:
+      return q.thickness_texture;
+    case 5:
+      return q.clearcoat_texture;
+    case 6:
+      return q.clearcoat_roughness_texture;
+    case 7:
+      return q.sheen_color_texture;
+    case 8:
+      return q.sheen_roughness_texture;
+    case 9:
+      return q.normal_texture;
+    default:
+      return q.clearcoat_normal_texture;
+  }
+}
+
+// Sets map k's texel of t to v.
+inline void pbr_set_texel(INOUT(pbr_texels) t, int k, real4 v) {
+  switch (k) {
+    case 0:
+      t.metallic_roughness = v;
+      break;
+    case 1:
+      t.specular = v;
+      break;
+    case 2:
+      t.specular_color = v;
+      break;
+    case 3:
+      t.transmission = v;
+      break;
+    case 4:
+      t.thickness = v;
+      break;
+    case 5:
+      t.clearcoat = v;
+      break;
+    case 6:
+      t.clearcoat_roughness = v;
+      break;
+    case 7:
+      t.sheen_color = v;
+      break;
+    case 8:
+      t.sheen_roughness = v;
+      break;
+    case 9:
+      t.normal = v;
+      break;
+    default:
+      t.clearcoat_normal = v;
+      break;
+  }
+}
+
 // Every map of the material at the hit, read in one loop: the texture code (its Perlin noise
-// included) is then compiled once into the render shader rather than once per parameter, which
-// made lavapipe compile it for minutes. A loop of pbr_map_count trips (the caller counts them
-// against the GPU's loop budget).
+// included) is then compiled once into the render shader rather than once per parameter. No local
+// array is indexed by the loop's counter: lavapipe then unrolls the loop whole (to make the index
+// constant), eleven copies of the texture code that took it 4 to 10 minutes to compile; through
+// the two switches, 20 seconds. A loop of pbr_map_count trips (the caller counts them against the
+// GPU's loop budget).
 inline pbr_texels pbr_texels_at(TABLES_PARAM pbr_record q, hit_record rec) {
-  uint maps[pbr_map_count];
-  maps[0] = q.metallic_roughness_texture;
-  maps[1] = q.specular_texture;
-  maps[2] = q.specular_color_texture;
-  maps[3] = q.transmission_texture;
-  maps[4] = q.thickness_texture;
-  maps[5] = q.clearcoat_texture;
-  maps[6] = q.clearcoat_roughness_texture;
-  maps[7] = q.sheen_color_texture;
-  maps[8] = q.sheen_roughness_texture;
-  maps[9] = q.normal_texture;
-  maps[10] = q.clearcoat_normal_texture;
-  real4 v[pbr_map_count];
-  for (int k = 0; k < pbr_map_count; ++k) v[k] = pbr_map(TABLES maps[k], rec);
   pbr_texels t;
-  t.metallic_roughness = v[0];
-  t.specular = v[1];
-  t.specular_color = v[2];
-  t.transmission = v[3];
-  t.thickness = v[4];
-  t.clearcoat = v[5];
-  t.clearcoat_roughness = v[6];
-  t.sheen_color = v[7];
-  t.sheen_roughness = v[8];
-  t.normal = v[9];
-  t.clearcoat_normal = v[10];
+  for (int k = 0; k < pbr_map_count; ++k)
+    pbr_set_texel(t, k, pbr_map(TABLES pbr_map_index(q, k), rec));
+  return t;
+}
+
+// The texels of a material without maps (pbr_map's 1 for each): where no material has a texture,
+// the GPU reads these and compiles no texture code.
+inline pbr_texels pbr_no_texels() {
+  pbr_texels t;
+  for (int k = 0; k < pbr_map_count; ++k) pbr_set_texel(t, k, real4(1.0));
   return t;
 }
 
