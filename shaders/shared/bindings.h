@@ -44,7 +44,13 @@
 #define RTVK_BINDING_TANGENTS 26
 // storage buffer: float[bsdf_table_count], pbr.h's energy-compensation tables (bsdf_tables.h)
 #define RTVK_BINDING_BSDF_TABLES 27
-#define RTVK_SCENE_BINDINGS_END 28  // past the list: a pipeline that adds to it starts here
+// storage buffer: the environment map's texels (environment.h); one unused element when none
+#define RTVK_BINDING_ENVIRONMENT 28
+// storage buffer: the environment map's sampling tables (environment.h); likewise
+#define RTVK_BINDING_ENVIRONMENT_CDF 29
+// storage buffer: gpu_punctual[], the point, spot and directional lights (punctual.h); likewise
+#define RTVK_BINDING_PUNCTUAL 30
+#define RTVK_SCENE_BINDINGS_END 31  // past the list: a pipeline that adds to it starts here
 
 // tonemap.comp: a band's sums in, its RGBA8 bytes out.
 #define RTVK_TONEMAP_SUMS 2         // storage buffer: pixel_sum[], the render's RTVK_BINDING_IMAGE
@@ -72,6 +78,11 @@
 #define RTVK_SPEC_STACK 16  // uint: entries of hit_bvh's stack in use; 0: all (tests make it less)
 // bool: some material is RTVK_MATERIAL_PBR (render.comp): without, its code is compiled out
 #define RTVK_SPEC_PBR 17
-#define RTVK_SPEC_COUNT 18  // constant ids in use
+// bool: the scene has an environment map (environment.h): without, its code is compiled out
+#define RTVK_SPEC_ENVIRONMENT 18
+// bool: next-event estimation (--sampling nee; nee.h): a light sample and a shadow ray a vertex
+#define RTVK_SPEC_NEE 19
+#define RTVK_SPEC_PUNCTUAL 20  // bool: the scene has punctual lights (punctual.h)
+#define RTVK_SPEC_COUNT 21     // constant ids in use
 
 #endif  // RTVK_BINDINGS_H
