@@ -21,6 +21,8 @@ layout(constant_id = RTVK_SPEC_LENS) const bool any_lens = false;   // a view ha
 layout(constant_id = RTVK_SPEC_USE_BVH) const bool use_bvh = true;  // else every sphere in turn
 layout(constant_id = RTVK_SPEC_COUNT_RAYS) const bool count_rays = false;  // per-pixel counts
 layout(constant_id = RTVK_SPEC_LIGHTS) const bool sample_lights = false;  // the third book's
+// next-event estimation (shaders/shared/lights/nee.h): a light sample and a shadow ray a vertex
+layout(constant_id = RTVK_SPEC_NEE) const bool nee = false;
 // a view has a calibrated lens or a rolling shutter (camera_rays.h)
 layout(constant_id = RTVK_SPEC_CALIBRATED) const bool calibrated_cameras = false;
 
@@ -43,9 +45,9 @@ layout(push_constant) uniform push_block {
 #include "appearance_buffers.glsl"
 
 // The lights scattering aims at (pdf.h's LIGHT_COUNT): none unless the pipeline samples them, so
-// that plain renders compile the lights' code out.
+// that plain renders compile the lights' code out; under next-event estimation, the lamps.
 uint light_count() {
-  return sample_lights ? pc.light_count : 0u;
+  return sample_lights || nee ? pc.light_count : 0u;
 }
 
 #include "camera_rays.h"
@@ -60,7 +62,7 @@ path_state pixel_path(camera_ubo cam, uvec2 pixel, uint j, uint sample_index) {
       pixel_sample_stream(pc.seed, pixel.y * cam.image_width + pixel.x, sample_index);
   // Strata come with lights sampling only (pixel_strata): plain pipelines compile them out.
   ray r = sample_ray(cam, cam.image_width, cam.image_height, pixel.x, j, s, jitter, any_lens,
-                     sample_lights ? pc.strata : 1u, sample_index);
+                     sample_lights || nee ? pc.strata : 1u, sample_index);
   return start_path(r, s);
 }
 

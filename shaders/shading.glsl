@@ -5,6 +5,7 @@
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
 #include "medium.h"
+#include "nee_pbr.h"
 #include "pbr_shading.h"
 #include "ray_color.h"
 #include "texture.h"
@@ -47,13 +48,29 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   // all the same: the loops rtvk does not count, such as the samples' own, then weigh more).
   iterations += pc.trace_cost;
   if (iterations > pc.loop_budget) return true;
-  if (path_ends_unlit(p, pc.max_depth)) {
+  // Under next-event estimation a pending shadow ray takes a trip of its own, through the same
+  // world search as the path's rays (one copy of the traversal in the shader).
+  bool shadow = nee && p.shadow_reach > 0.0;
+  if (!shadow && path_ends_unlit(p, pc.max_depth)) {
     c = p.radiance;
     return true;
   }
   ++rays;
   hit_record rec;
-  bool hit = hit_world(p.r, t_min, max_float, rec, iterations);
+  bool hit = hit_world(shadow ? p.shadow : p.r, t_min, shadow ? p.shadow_reach : max_float, rec,
+                       iterations);
+  if (shadow) {
+    if (!hit) {
+      shadow_unblocked(p);
+      return false;
+    }
+    gpu_material o = materials[rec.material];
+    precise float alpha = (o.flags & RTVK_MATERIAL_SEE_THROUGH) == 0u ? 1.0
+                          : any_textures ? surface_alpha(o.opacity, o.texture, rec)
+                                         : o.opacity * rec.color.w;
+    shadow_meets(p, rec, o.type, o.flags, alpha, o.alpha_cutoff);
+    return false;
+  }
   // The media after the world, within its hit (host/cpu/shading.cpp's ray_color does the same).
   if (any_media) {
     random_stream s = at_bounce(p.s, p.depth + 1u);
@@ -94,9 +111,13 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
     gpu_pbr q = pbrs[m.pbr];
     pbr_texels t = any_textures ? pbr_texels_at(q, rec) : pbr_no_texels();
     iterations += uint(pbr_map_count);  // pbr_texels_at's loop: lavapipe counts its trips
+    if (nee)
+      return path_hit_pbr_nee(p, rec, pbr_surface_from(q, albedo, rec, t),
+                              pbr_shading_normal(q, rec, t, wo), pbr_coat_normal(q, rec, t, wo), c);
     return path_hit_pbr(p, rec, pbr_surface_from(q, albedo, rec, t), pbr_shading_normal(q, rec, t, wo),
                         pbr_coat_normal(q, rec, t, wo), c);
   }
+  if (nee) return path_hit_nee(p, rec, m.type, m.flags, albedo, m.fuzz, m.ir, c);
   return path_hit(p, rec, m.type, m.flags, albedo, m.fuzz, m.ir, c);
 }
 

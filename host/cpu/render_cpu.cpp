@@ -105,8 +105,9 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
   double build_seconds = 0;
   const std::unique_ptr<hittable> world = timed_world(s, engine, build_seconds);
   const bool lights = samples_lights(s, rs);
-  const scene_shading shading(s, lights);
-  const pixel_inputs in{cam, s.sky, rs, shading, win, pixel_strata(rs, lights)};
+  const bool nee = uses_nee(rs.sampling);
+  const scene_shading shading(s, lights, nee);
+  const pixel_inputs in{cam, s.sky, rs, shading, win, pixel_strata(rs, lights || nee)};
   framebuffer fb(win.width, win.height);
   const std::size_t width = std::size_t(win.width), pixels = width * std::size_t(win.height);
   std::atomic<std::size_t> pixels_done{0};

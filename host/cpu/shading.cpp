@@ -4,13 +4,15 @@
 
 namespace rtvk {
 
-scene_shading::scene_shading(const scene& s, bool sample_lights)
-    : materials(scene_materials(s)),
+scene_shading::scene_shading(const scene& s, bool sample_lights, bool nee_)
+    : nee(nee_),
+      materials(scene_materials(s)),
       textures(pack_textures(s.textures)),
       perlin(make_perlin(s.noise_seed)) {
   for (std::size_t k = 0; k < s.media.size(); ++k)
     media.push_back(geometry_of(s.media[k], std::uint32_t(k)));
   if (sample_lights) lights = scene_lights(s);
+  if (nee) lights = scene_lamps(s);
   for (const material& m : materials) pbr.push_back(pbr_record_of(m.pbr));
 }
 
@@ -19,6 +21,7 @@ scene_shading::scene_shading(const scene& s, bool sample_lights)
 // nearest of the world's hit and the media's scattering points wins.
 color ray_color(const ray& r_in, const hittable& world, const scene_shading& shading,
                 const sky& background, int max_depth, const random_stream& rnd) {
+  if (shading.nee) return ray_color_nee(r_in, world, shading, background, max_depth, rnd);
   const double infinity = std::numeric_limits<double>::infinity();
   const texture_tables tables = shading.tables();
   const light_table lights = shading.light_list();

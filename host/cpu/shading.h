@@ -16,9 +16,10 @@ namespace rtvk {
 // What shading reads besides the hit: the materials (and the PBR ones' parameters), the textures'
 // tables, the media and the lights to sample, as the shared kernels take them (texture.h, medium.h,
 // pdf.h). The lights only when `sample_lights` (samples_lights: the third book's mixture), else
-// none: plain.
+// none: plain; under next-event estimation (`nee`), the lamps only (nee.h).
 struct scene_shading {
-  explicit scene_shading(const scene& s, bool sample_lights = false);
+  explicit scene_shading(const scene& s, bool sample_lights = false, bool nee = false);
+  bool nee = false;                    // ray_color is ray_color_nee
   std::vector<material> materials;     // by index
   packed_textures textures;            // records and texels
   perlin_tables perlin;                // the noise's lattice (the scene's noise seed)
@@ -38,6 +39,11 @@ struct scene_shading {
 // The loop's body is the shared kernels' (ray_color.h), which the GPU runs too.
 color ray_color(const ray& r, const hittable& world, const scene_shading& shading,
                 const sky& background, int max_depth, const random_stream& rnd);
+
+// ray_color under next-event estimation (nee_step.cpp; shading.nee): a light sample and a shadow
+// ray at every diffuse or PBR vertex, weighed by multiple importance sampling.
+color ray_color_nee(const ray& r, const hittable& world, const scene_shading& shading,
+                    const sky& background, int max_depth, const random_stream& rnd);
 
 // The lesson's shading: every surface colored by its normal, the sky on a miss.
 color ray_color(const ray& r, const hittable& world);

@@ -72,8 +72,11 @@ render_settings read_render(const scene_reader& r, const json& j) {
       s.sampling = sampling_mode::lights;
     else if (name == "auto")
       s.sampling = sampling_mode::automatic;
+    else if (name == "nee")
+      s.sampling = sampling_mode::nee;
     else
-      r.fail(p + "/sampling", "expected \"plain\", \"lights\" or \"auto\", got " + m.dump());
+      r.fail(p + "/sampling",
+             "expected \"plain\", \"lights\", \"nee\" or \"auto\", got " + m.dump());
   }
   return s;
 }

@@ -35,17 +35,35 @@ light_record flat_light(std::uint32_t kind, const point3& a, const vec3& u, cons
   return l;
 }
 
+// Light l as a lamp of material `index` (what next-event estimation reads): its emission, its
+// sides, and whether that emission varies over it (a texture, or vertex colors where `colored`).
+light_record as_lamp(light_record l, const scene& s, int index, bool colored) {
+  const material& m = s.materials[std::size_t(index)].m;
+  l.flags = RTVK_LIGHT_EMITS;
+  if (m.one_sided) l.flags |= RTVK_LIGHT_ONE_SIDED;
+  if (m.texture >= 0 || colored) l.flags |= RTVK_LIGHT_UNEVEN;
+  l.emission = m.albedo;
+  return l;
+}
+
+bool has_colors(const scene& s, const triangle& t) {
+  return t.shading >= 0 && s.shading[std::size_t(t.shading)].has_color;
+}
+
 }  // namespace
 
 std::vector<light_record> scene_lights(const scene& s) {
   std::vector<light_record> out;
   for (const sphere& sp : s.spheres)
-    if (is_lamp(s, sp.material)) out.push_back(sphere_light(sp));
+    if (is_lamp(s, sp.material)) out.push_back(as_lamp(sphere_light(sp), s, sp.material, false));
   for (const quad& q : s.quads)
-    if (is_lamp(s, q.material)) out.push_back(flat_light(RTVK_LIGHT_QUAD, q.Q, q.u, q.v));
+    if (is_lamp(s, q.material))
+      out.push_back(as_lamp(flat_light(RTVK_LIGHT_QUAD, q.Q, q.u, q.v), s, q.material, false));
   for (const triangle& t : s.triangles)
     if (is_lamp(s, t.material))
-      out.push_back(flat_light(RTVK_LIGHT_TRIANGLE, t.p[0], t.p[1] - t.p[0], t.p[2] - t.p[0]));
+      out.push_back(
+          as_lamp(flat_light(RTVK_LIGHT_TRIANGLE, t.p[0], t.p[1] - t.p[0], t.p[2] - t.p[0]), s,
+                  t.material, has_colors(s, t)));
   for (const sphere& sp : s.spheres)
     if (sp.sampled && !is_lamp(s, sp.material)) out.push_back(sphere_light(sp));
   for (const quad& q : s.quads)
@@ -54,13 +72,31 @@ std::vector<light_record> scene_lights(const scene& s) {
   return out;
 }
 
+std::vector<light_record> scene_lamps(const scene& s) {
+  std::vector<light_record> out = scene_lights(s);
+  std::erase_if(out, [](const light_record& l) { return (l.flags & RTVK_LIGHT_EMITS) == 0u; });
+  return out;
+}
+
 bool samples_lights(std::size_t lights, sampling_mode m) {
-  if (m == sampling_mode::plain) return false;
+  if (m == sampling_mode::plain || m == sampling_mode::nee) return false;
   if (m == sampling_mode::lights) return true;
   return lights > 0 && lights <= RTVK_MAX_LIGHTS;
 }
 
 void check_sampling(const scene& s, const render_settings& rs, const std::string& what) {
+  if (rs.sampling == sampling_mode::nee) {
+    if (!s.media.empty())
+      throw std::invalid_argument(what +
+                                  " nee: the scene has media (constant-density volumes), which "
+                                  "next-event estimation does not handle yet; use lights or plain");
+    const std::size_t lamps = scene_lamps(s).size();
+    if (lamps > RTVK_MAX_LIGHTS)
+      throw std::invalid_argument(what + " nee: the scene has " + std::to_string(lamps) +
+                                  " lamps; next-event estimation draws from at most " +
+                                  std::to_string(RTVK_MAX_LIGHTS));
+    return;
+  }
   if (rs.sampling != sampling_mode::lights) return;
   const std::size_t n = scene_lights(s).size();
   if (n == 0)
@@ -84,6 +120,8 @@ const char* sampling_name(sampling_mode m) {
       return "plain";
     case sampling_mode::lights:
       return "lights";
+    case sampling_mode::nee:
+      return "nee";
     default:
       return "auto";
   }

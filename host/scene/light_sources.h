@@ -15,6 +15,13 @@ namespace rtvk {
 // (shaders/shared/pdf.h); the GPU gets them as gpu_light.
 std::vector<light_record> scene_lights(const scene& s);
 
+// The lamps of scene_lights (its first entries, RTVK_LIGHT_EMITS): what next-event estimation
+// draws (shaders/shared/lights/nee.h).
+std::vector<light_record> scene_lamps(const scene& s);
+
+// Whether a render under mode `m` uses next-event estimation (sampling_mode::nee).
+inline bool uses_nee(sampling_mode m) { return m == sampling_mode::nee; }
+
 // Whether a render of a scene with `lights` lights (scene_lights) samples toward them under mode
 // `m`: `lights` always, `plain` never, `automatic` where there are from 1 to RTVK_MAX_LIGHTS.
 bool samples_lights(std::size_t lights, sampling_mode m);

@@ -11,6 +11,9 @@ enum class sampling_mode : std::uint8_t {
   plain,      // the first two books': each material's own scattering
   lights,     // the third book's: half toward the lights, weighted by the mixture's density,
               // and stratified pixel samples
+  nee,        // next-event estimation: a light sample and a shadow ray at every diffuse or PBR
+              // vertex, weighed against the BSDF's sample by multiple importance sampling, and
+              // stratified pixel samples (shaders/shared/lights/nee.h)
 };
 
 // How to render a scene: what a scene file's "render" object holds, and what the CLI overrides.

@@ -34,6 +34,12 @@
 #define RTVK_LIGHT_QUAD 1      // by area
 #define RTVK_LIGHT_TRIANGLE 2  // by area
 #define RTVK_MAX_LIGHTS 256    // lights one scene may sample: each scattering evaluates them all
+// gpu_light::flags: what next-event estimation (nee.h) may do with the light
+#define RTVK_LIGHT_EMITS 1u      // a lamp (diffuse_light): it emits `emission`; else only aimed at
+#define RTVK_LIGHT_ONE_SIDED 2u  // emits from the front of its normal only (the third book's)
+// its emission varies over it (a texture, vertex colors): next-event estimation leaves it to the
+// paths that hit it, which then take all of its light (no weight to share)
+#define RTVK_LIGHT_UNEVEN 4u
 
 // What a material's color is (gpu_material::texture): its albedo, or one of these.
 #define RTVK_NO_TEXTURE 0xffffffffu
@@ -183,17 +189,20 @@ static_assert(offsetof(gpu_perlin, perm) == 16 * RTVK_PERLIN_POINTS);
 static_assert(sizeof(gpu_perlin) == 28 * RTVK_PERLIN_POINTS);
 #endif
 
-// std430 array element: a shape lights sampling aims at, 64 bytes (shaders/shared/pdf.h). The
-// geometry is the scene's object's, copied: a sphere's center moves with its velocity.
+// std430 array element: a shape lights sampling aims at, 80 bytes (shaders/shared/pdf.h). The
+// geometry is the scene's object's, copied: a sphere's center moves with its velocity. The lamps
+// come first (RTVK_LIGHT_EMITS): next-event estimation samples those only.
 struct gpu_light {
-  vec3 a;        // sphere: center at time 0; quad: the corner Q; triangle: vertex 0 (scene units)
-  uint kind;     // RTVK_LIGHT_*
-  vec3 u;        // sphere: velocity (units per second); quad: edge u; triangle: edge to vertex 1
-  float radius;  // sphere: radius (scene units)
-  vec3 v;        // quad: edge v; triangle: edge to vertex 2
-  float area;    // quad, triangle: area (square scene units)
-  vec3 normal;   // quad, triangle: unit normal, cross(u, v) normalized
-  uint pad0;     // unused
+  vec3 a;         // sphere: center at time 0; quad: the corner Q; triangle: vertex 0 (scene units)
+  uint kind;      // RTVK_LIGHT_*
+  vec3 u;         // sphere: velocity (units per second); quad: edge u; triangle: edge to vertex 1
+  float radius;   // sphere: radius (scene units)
+  vec3 v;         // quad: edge v; triangle: edge to vertex 2
+  float area;     // quad, triangle: area (square scene units)
+  vec3 normal;    // quad, triangle: unit normal, cross(u, v) normalized
+  uint flags;     // RTVK_LIGHT_EMITS, _ONE_SIDED, _UNEVEN
+  vec3 emission;  // a lamp's emitted radiance (its material's color), linear RGB
+  uint pad0;      // unused
 };
 #ifdef __cplusplus
 static_assert(offsetof(gpu_light, kind) == 12);
@@ -202,7 +211,9 @@ static_assert(offsetof(gpu_light, radius) == 28);
 static_assert(offsetof(gpu_light, v) == 32);
 static_assert(offsetof(gpu_light, area) == 44);
 static_assert(offsetof(gpu_light, normal) == 48);
-static_assert(sizeof(gpu_light) == 64);
+static_assert(offsetof(gpu_light, flags) == 60);
+static_assert(offsetof(gpu_light, emission) == 64);
+static_assert(sizeof(gpu_light) == 80);
 #endif
 
 // std430 array element: a constant-density medium (the book's constant_medium), 96 bytes.

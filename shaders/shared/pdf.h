@@ -28,6 +28,8 @@ struct light_record {
   real3 v;          // quad: edge v; triangle: edge to vertex 2
   real area = 0;    // quad, triangle: area
   real3 normal;     // quad, triangle: unit normal along cross(u, v)
+  uint flags = 0;   // RTVK_LIGHT_*
+  real3 emission;   // a lamp's emitted radiance, linear RGB
 };
 // The lights a render samples (host/scene/light_sources.h makes them).
 struct light_table {

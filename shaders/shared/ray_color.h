@@ -35,6 +35,13 @@ struct path_state {
   uint depth;                // bounces so far
   uint passes;               // surfaces passed through so far (path_passes)
   random_stream s;           // the path's random numbers (pixel, sample)
+  // Next-event estimation's (lights/nee.h; unused in the other modes):
+  precise real mis_pdf;           // the BSDF's density for p.r's direction at the vertex it left,
+                                  // per steradian; 0 where no light sample could have drawn it
+  ray shadow;                     // the shadow ray of the last light sample, when shadow_reach > 0
+  precise real shadow_reach;      // how far it must go unblocked; 0: no shadow ray pending
+  precise real3 shadow_radiance;  // what the path gathers when nothing blocks it
+  uint shadow_passes;             // see-through surfaces the shadow ray passed so far
 };
 
 inline path_state start_path(ray r, random_stream s) {
@@ -45,6 +52,11 @@ inline path_state start_path(ray r, random_stream s) {
   p.depth = 0u;
   p.passes = 0u;
   p.s = s;
+  p.mis_pdf = real(0.0);
+  p.shadow = r;
+  p.shadow_reach = real(0.0);
+  p.shadow_radiance = real3(0.0);
+  p.shadow_passes = 0u;
   return p;
 }
 

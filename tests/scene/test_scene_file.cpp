@@ -470,7 +470,7 @@ TEST(SceneFile, BadFilesNameTheFileThePlaceAndTheProblem) {
        "/media/0/material: a medium scatters by an isotropic material, \"m\" is normal"},
       {R"({"noise_seed":-1,"spheres":[]})", "/noise_seed: expected an integer in [0, 4294967295]"},
       {R"({"render":{"sampling":"importance"},"spheres":[]})",
-       "/render/sampling: expected \"plain\", \"lights\" or \"auto\", got \"importance\""},
+       "/render/sampling: expected \"plain\", \"lights\", \"nee\" or \"auto\", got \"importance\""},
       {"{" + m + R"(,"spheres":[{"center":[0,0,0],"radius":1,"material":"m","sample":1}]})",
        "/spheres/0/sample: expected true or false, got a number"},
       {"{" + m +

@@ -108,6 +108,12 @@ std::string scene_identity(const scene& s) {
     for (const light_record& l : scene_lights(s))
       append_bytes(out, l.kind, l.a, l.u, l.v, l.radius);
   }
+  // Next-event estimation likewise, with the lamps it draws and what they emit.
+  if (uses_nee(r.sampling)) {
+    append_bytes(out, std::uint8_t(0x4e), pixel_strata(r, true));
+    for (const light_record& l : scene_lamps(s))
+      append_bytes(out, l.kind, l.a, l.u, l.v, l.radius, l.flags, l.emission);
+  }
   for (const named_material& m : s.materials)
     if (m.m.one_sided) append_bytes(out, std::uint8_t(0x31), m.name);
   return out;

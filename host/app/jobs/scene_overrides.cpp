@@ -66,8 +66,10 @@ void apply_render(const scene_overrides& o, render_settings& r) {
       r.sampling = sampling_mode::lights;
     else if (*o.sampling == "auto")
       r.sampling = sampling_mode::automatic;
+    else if (*o.sampling == "nee")
+      r.sampling = sampling_mode::nee;
     else
-      throw usage_error("--sampling " + *o.sampling + ": expected plain, lights or auto");
+      throw usage_error("--sampling " + *o.sampling + ": expected plain, lights, nee or auto");
   }
   if (o.view_transform) {
     const auto t = view_transform_from_name(*o.view_transform);

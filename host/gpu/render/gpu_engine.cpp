@@ -129,9 +129,9 @@ void gpu_engine::rebind_all() {
 }
 
 const shader_program& gpu_engine::pipeline_for(bool jitter, bool lens, bool count_rays, bool lights,
-                                               bool calibrated) {
+                                               bool calibrated, bool nee) {
   const std::uint32_t switches = (jitter ? 1u : 0u) | (lens ? 2u : 0u) | (count_rays ? 4u : 0u) |
-                                 (lights ? 8u : 0u) | (calibrated ? 16u : 0u);
+                                 (lights ? 8u : 0u) | (calibrated ? 16u : 0u) | (nee ? 32u : 0u);
   std::unique_ptr<shader_program>& p = pipelines_[switches];
   if (!p) {
     std::uint32_t spec[RTVK_SPEC_COUNT] = {};  // by constant_id
@@ -144,6 +144,7 @@ const shader_program& gpu_engine::pipeline_for(bool jitter, bool lens, bool coun
     scene_.specialize(spec);
     spec[RTVK_SPEC_LIGHTS] = lights;
     spec[RTVK_SPEC_CALIBRATED] = calibrated;
+    spec[RTVK_SPEC_NEE] = nee;
     spec[RTVK_SPEC_STACK] = options_.stack_entries;
     const auto bindings = render_bindings(scene_, *targets_, accel_.get(), ray_times_.get());
     switch (options_.engine.traversal) {
@@ -256,10 +257,11 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
   const bool calibrated = std::any_of(views.begin(), views.end(), [](const camera& c) {
     return is_calibrated(c.projection()) || c.frame().readout != 0;
   });
+  const bool nee = uses_nee(rs.sampling);
   band_commands commands(
       {ctx_, targets, timer_, wg_, drawn_, tonemap_style_},
-      pipeline_for(rs.jitter, lens, count_rays, push.light_count > 0, calibrated), tonemap, push,
-      std::uint32_t(win.width), kept, kept ? std::uint32_t(win.sample_begin) : 0);
+      pipeline_for(rs.jitter, lens, count_rays, push.light_count > 0 && !nee, calibrated, nee),
+      tonemap, push, std::uint32_t(win.width), kept, kept ? std::uint32_t(win.sample_begin) : 0);
   band_scheduler bands(commands, {pacer_, trace_cost_, simulated_cuts_}, win, push.sample_limit,
                        options_.engine.cancelled);
   draw_bands(views, win, layout, {commands, bands, targets, count_rays, kept}, progress, stats,

@@ -136,7 +136,7 @@ class gpu_engine {
   render_targets& targets_for(VkDeviceSize pixels);
   // The pipeline with these switches, built (through the cache) the first time it is asked for.
   const shader_program& pipeline_for(bool jitter, bool lens, bool count_rays, bool lights,
-                                     bool calibrated);
+                                     bool calibrated, bool nee);
   const compute_pipeline& tonemap_pipeline();
   void rebind_all();
   // The thresholds of `e` into their buffer (when not there already), and tonemap_style_.

@@ -83,7 +83,10 @@ render_push make_push(const sky& background, const render_settings& rs, const re
     throw std::invalid_argument("--sampling lights: the scene has " +
                                 std::to_string(objects.light_count()) + " lights to aim at");
   push.light_count = lights ? objects.light_count() : 0u;
-  push.strata = pixel_strata(rs, lights);
+  // Next-event estimation draws the lamps, the table's first entries (check_sampling bounded them).
+  const bool nee = uses_nee(rs.sampling);
+  if (nee) push.light_count = objects.lamp_count();
+  push.strata = pixel_strata(rs, lights || nee);
   push.probe_trips = 2;  // limit_was_hit's loop (render_body.glsl)
   return push;
 }

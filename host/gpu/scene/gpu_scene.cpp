@@ -152,6 +152,9 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       instance_count_(std::uint32_t(a.instances.size())),
       medium_count_(std::uint32_t(a.media.size())),
       light_count_(std::uint32_t(a.lights.size())),
+      lamp_count_(std::uint32_t(
+          std::count_if(a.lights.begin(), a.lights.end(),
+                        [](const gpu_light& l) { return (l.flags & RTVK_LIGHT_EMITS) != 0u; }))),
       with_uv_(a.with_uv),
       any_textures_(reads_textures(a)),
       any_pbr_(!a.pbr.empty()),

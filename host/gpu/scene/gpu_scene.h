@@ -70,6 +70,8 @@ class gpu_scene {
   double build_seconds() const { return build_seconds_; }
   VkBuffer materials() const { return arrays_[1].get(); }
   std::uint32_t light_count() const { return light_count_; }
+  // The lamps among them (the first, RTVK_LIGHT_EMITS): what next-event estimation draws.
+  std::uint32_t lamp_count() const { return lamp_count_; }
   // The bindings of the objects and the BVH (shaders/scene_buffers.glsl's), for every shader
   // that traces rays through the scene.
   std::vector<buffer_binding> object_bindings() const;
@@ -88,6 +90,7 @@ class gpu_scene {
   std::uint32_t instance_count_;       // instances
   std::uint32_t medium_count_;         // media
   std::uint32_t light_count_;          // lights
+  std::uint32_t lamp_count_;           // of those, lamps (first)
   bool with_uv_;                       // RTVK_SPEC_UV
   bool any_textures_;                  // RTVK_SPEC_TEXTURES
   bool any_pbr_;                       // RTVK_SPEC_PBR

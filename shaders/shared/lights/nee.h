@@ -1,0 +1,230 @@
+// Next-event estimation with multiple importance sampling (Veach's thesis, chapter 9; pbrt-v4's
+// PathIntegrator): at every vertex whose BSDF is not a delta, one light is drawn, its sample
+// weighted by the BSDF there and sent along a shadow ray; the BSDF's own sample goes on as the
+// path, and when it hits a lamp, the lamp's light is weighted too. The power heuristic splits each
+// light path between the two ways that could have drawn it, so the sum is unbiased and each
+// light is found by the way that draws it best: small lamps by the light sample, glossy
+// reflections of large ones by the BSDF.
+//
+// The lights drawn are the scene's lamps (pdf.h's records with RTVK_LIGHT_EMITS: the first
+// LIGHT_COUNT of the table in this mode), each chosen with probability 1 / LIGHT_COUNT. A lamp
+// whose emission varies over it (RTVK_LIGHT_UNEVEN) is never drawn: its light comes whole from the
+// paths that hit it.
+//
+// The shadow ray is not traced here: the step leaves it in the path state (path_state::shadow) and
+// each backend traces it before the path goes on (host/cpu/shading.cpp at once; the GPU in a trip
+// of its own through the one world search, shaders/shading.glsl).
+#ifndef RTVK_NEE_H
+#define RTVK_NEE_H
+#include "kernel_lang.h"
+#include "light_sample.h"
+#include "pdf.h"
+#include "ray_color.h"
+
+RTVK_KERNELS_BEGIN
+
+// Random dimensions of a vertex's light sample (at_bounce's stream): the light's choice and the
+// point on it are pdf.h's dim_light_pick, dim_light_a and dim_light_b, which the mixture of the
+// third book (the other mode) uses for the same purpose.
+const uint dim_roulette = 13u;      // bounce >= 1: Russian roulette's draw
+const uint dim_shadow_alpha = 14u;  // bounce >= 1: a blended surface on the shadow ray lets it by
+
+// The shadow ray stops this far short of the sampled point (a fraction of the distance), so that
+// the lamp's own surface does not block its light.
+const real shadow_gap = real(1e-3);
+
+// Veach's power heuristic (beta 2) for one sample of each strategy: the weight of the strategy
+// whose density is `a` against the one whose density is `b` (both per steradian, each times its
+// choice probability). An infinite `a` takes all.
+inline precise real power_heuristic(real a, real b) {
+  if (!(a < real(3.0e38))) return real(1.0);
+  precise real a2 = a * a;
+  precise real b2 = b * b;
+  precise real sum = a2 + b2;
+  return sum > real(0.0) ? a2 / sum : real(0.0);
+}
+
+// Where a ray from `origin` along the unit direction `d` meets lamp l, or -1 where it misses it
+// (at the ray's `time`: a sphere's center moves).
+inline precise real lamp_distance(light_record l, real3 origin, real3 d, real time) {
+  if (l.kind == uint(RTVK_LIGHT_SPHERE)) {
+    precise real3 oc = moved_center(l.a, l.u, time) - origin;
+    precise real b = dot3(d, oc);
+    precise real disc = b * b - (dot3(oc, oc) - l.radius * l.radius);
+    if (disc < real(0.0)) return real(-1.0);
+    precise real root = sqrt(disc);
+    precise real near = b - root;
+    precise real far = b + root;
+    return near > real(0.0) ? near : far;
+  }
+  precise real facing = dot3(d, l.normal);
+  if (facing == real(0.0)) return real(-1.0);
+  return dot3(l.a - origin, l.normal) / facing;
+}
+
+// Lamp l seen from `origin`: a point drawn on it (pdf.h's light_random, the book's samplers),
+// with its density per steradian and the radiance it sends toward origin (none from a one-sided
+// lamp's back, none from an uneven lamp).
+inline light_sample lamp_sample(light_record l, real3 origin, real time, real r1, real r2) {
+  light_sample ls = no_light_sample();
+  if ((l.flags & RTVK_LIGHT_UNEVEN) != 0u) return ls;
+  precise real3 direction = light_random(l, origin, time, r1, r2);
+  precise real len = length3(direction);
+  if (!(len > real(0.0))) return ls;
+  ls.wi = direction / len;
+  ls.distance = l.kind == uint(RTVK_LIGHT_SPHERE) ? lamp_distance(l, origin, ls.wi, time) : len;
+  if (!(ls.distance > real(0.0))) return ls;
+  bool back = l.kind != uint(RTVK_LIGHT_SPHERE) && dot3(ls.wi, l.normal) > real(0.0);
+  if (back && (l.flags & RTVK_LIGHT_ONE_SIDED) != 0u) return ls;
+  ls.pdf = light_sampled_pdf(l, origin, direction, time);
+  ls.radiance = l.emission;
+  return ls;
+}
+
+// A light drawn for the vertex at `origin` from stream s (uniformly among the LIGHT_COUNT lamps);
+// choice: the probability of having chosen it. No sample (pdf 0) without lamps.
+inline light_sample nee_draw(LIGHTS_PARAM real3 origin, real time, random_stream s,
+                             precise OUT(real) choice) {
+  choice = real(0.0);
+  if (LIGHT_COUNT == 0u) return no_light_sample();
+  precise real pick = real(rnd(s, dim_light_pick)) * real(LIGHT_COUNT);
+  uint k = min(uint(pick), LIGHT_COUNT - 1u);
+  choice = real(1.0) / real(LIGHT_COUNT);
+  return lamp_sample(LIGHT_AT(k), origin, time, real(rnd(s, dim_light_a)),
+                     real(rnd(s, dim_light_b)));
+}
+
+// The density (per steradian, times the lamp's choice) with which nee_draw at `origin` would have
+// drawn the point that the ray along unit direction d hit at distance t_hit: that of the lamp
+// whose surface lies there (its own test of the ray agreeing within a thousandth), 0 where none
+// does (a lamp not drawn: uneven, in a group, or no lamp at all).
+inline precise real nee_lamp_pdf(LIGHTS_PARAM real3 origin, real3 d, real time, real t_hit) {
+  for (uint k = 0u; k < LIGHT_COUNT; ++k) {
+    light_record l = LIGHT_AT(k);
+    if ((l.flags & RTVK_LIGHT_UNEVEN) != 0u) continue;
+    precise real t = lamp_distance(l, origin, d, time);
+    precise real off = abs(t - t_hit);
+    precise real tolerance = real(1e-3) * t_hit + real(1e-6);
+    if (off > tolerance) continue;
+    return light_pdf(l, origin, d, time) / real(LIGHT_COUNT);
+  }
+  return real(0.0);
+}
+
+// The light sample ls (chosen with probability `choice`) weighed by the BSDF at the vertex: f is
+// the BSDF times |cos| toward ls.wi, bsdf_pdf the density with which the BSDF's own sample would
+// have drawn ls.wi. Leaves the shadow ray in p (from `origin`, short of the light by shadow_gap)
+// with what it adds when nothing blocks it; nothing where either is 0.
+inline void nee_queue(precise INOUT(path_state) p, real3 origin, light_sample ls, real choice,
+                      real3 f, real bsdf_pdf) {
+  if (!(ls.pdf > real(0.0)) || !(choice > real(0.0))) return;
+  precise real light_pdf_ = choice * ls.pdf;
+  precise real w = ls.delta ? real(1.0) : power_heuristic(light_pdf_, bsdf_pdf);
+  precise real3 add = p.throughput * f * ls.radiance * (w / light_pdf_);
+  precise real total = add.x + add.y + add.z;
+  if (!(total > real(0.0))) return;
+  p.shadow = ray(origin, ls.wi, p.r.time);
+  precise real short_of = ls.distance * (real(1.0) - shadow_gap);
+  p.shadow_reach = ls.distance < light_at_infinity ? short_of : light_at_infinity;
+  p.shadow_radiance = add;
+  p.shadow_passes = 0u;
+}
+
+// p.r hit a lamp that emits `emitted` toward it: its weight against the light sample that could
+// have drawn the same point from the vertex p.r left (none after a delta or from the camera:
+// p.mis_pdf 0, the path's light whole).
+inline precise real nee_hit_weight(LIGHTS_PARAM path_state p, real t_hit) {
+  if (!(p.mis_pdf > real(0.0))) return real(1.0);
+  precise real3 d = unit_vector(p.r.direction);
+  precise real scale = length3(p.r.direction);  // t_hit is in units of p.r.direction
+  precise real distance = t_hit * scale;
+  return power_heuristic(p.mis_pdf, nee_lamp_pdf(LIGHTS p.r.origin, d, p.r.time, distance));
+}
+
+// Russian roulette (pbrt-v4's): past the third bounce a path goes on with the probability of its
+// throughput's largest channel (at most 0.95), its throughput divided by it, so that the expected
+// value is unchanged. False: the path ends here.
+inline bool nee_roulette(precise INOUT(path_state) p, random_stream s) {
+  if (p.depth < 3u) return true;
+  precise real q = min(real(0.95), max(p.throughput.x, max(p.throughput.y, p.throughput.z)));
+  if (!(real(rnd(s, dim_roulette)) < q)) return false;
+  p.throughput = p.throughput / q;
+  return true;
+}
+
+// The path ends after its pending shadow ray, if any (path_ends_unlit sees no direction): the
+// steps below end a path this way rather than by returning true, so that the light sample of its
+// last vertex still counts.
+inline void nee_end(precise INOUT(path_state) p) {
+  p.r.direction = real3(0.0);
+}
+
+// p.r hit `rec` under next-event estimation; as path_hit (ray_color.h) otherwise. A lamp adds its
+// light weighed against the light sample (nee_hit_weight); lambertian and isotropic surfaces take
+// a light sample (their BSDF albedo / pi times the cosine, or albedo / 4 pi) and scatter as the
+// first two books do, their density kept for the next hit's weight; the others scatter as
+// path_hit has them, and whatever lamp their ray hits gives its light whole.
+inline bool path_hit_nee(LIGHTS_PARAM precise INOUT(path_state) p, hit_record rec, uint type,
+                         uint flags, real3 albedo, real fuzz, real ir, precise OUT(real3) c) {
+  c = p.radiance;
+  if (type == RTVK_MATERIAL_DIFFUSE_LIGHT) {
+    bool dark = (flags & RTVK_MATERIAL_ONE_SIDED) != 0u && !rec.front_face;
+    if (!dark) c = p.radiance + p.throughput * albedo * nee_hit_weight(LIGHTS p, rec.t);
+    return true;
+  }
+  random_stream s = at_bounce(p.s, p.depth + 1u);
+  bool diffuse = type == RTVK_MATERIAL_LAMBERTIAN || type == RTVK_MATERIAL_ISOTROPIC;
+  if (!diffuse) {
+    p.mis_pdf = real(0.0);
+    if (path_hit(LIGHTS p, rec, type, flags, albedo, fuzz, ir, c)) return true;
+  } else {
+    bool isotropic = type == RTVK_MATERIAL_ISOTROPIC;
+    precise real3 origin = isotropic ? rec.p : rec.p + rec.offset * rec.normal;
+    precise real choice;
+    light_sample ls = nee_draw(LIGHTS origin, p.r.time, s, choice);
+    precise real bsdf_pdf = material_pdf(type, rec.normal, ls.wi);
+    precise real3 f = albedo * bsdf_pdf;  // albedo / pi times the cosine, or albedo / 4 pi
+    nee_queue(p, isotropic ? rec.p : scatter_origin(rec, ls.wi), ls, choice, f, bsdf_pdf);
+    precise real3 attenuation;
+    if (!scatter(type, albedo, fuzz, ir, p.r, rec, s, attenuation, p.r)) {
+      nee_end(p);
+      return false;
+    }
+    p.mis_pdf = material_pdf(type, rec.normal, p.r.direction);
+    p.throughput *= attenuation;
+    ++p.depth;
+  }
+  if (!nee_roulette(p, s)) nee_end(p);
+  return false;
+}
+
+// The pending shadow ray met nothing before its reach: its light is the path's.
+inline void shadow_unblocked(precise INOUT(path_state) p) {
+  p.radiance += p.shadow_radiance;
+  p.shadow_reach = real(0.0);
+}
+
+// The pending shadow ray hit `rec` (at distance rec.t along its unit direction), on a surface
+// with these flags and alpha (surface_alpha): a surface that lets it by as path_passes lets a
+// path by (its own draw for a blend) moves it beyond; any other blocks it (glass included: light
+// through glass comes by the paths that cross it).
+inline void shadow_meets(precise INOUT(path_state) p, hit_record rec, uint type, uint flags,
+                         real alpha, real cutoff) {
+  random_stream s = random_stream(p.s.key, (p.depth + 1u) | (p.shadow_passes << 16u));
+  real u = (flags & RTVK_MATERIAL_ALPHA_BLEND) != 0u ? real(rnd(s, dim_shadow_alpha)) : real(0.0);
+  bool by = (flags & RTVK_MATERIAL_SEE_THROUGH) != 0u && p.shadow_passes < max_passes &&
+            !surface_counts(type, flags, rec.front_face, alpha, cutoff, u);
+  if (!by) {
+    p.shadow_reach = real(0.0);
+    return;
+  }
+  p.shadow.origin = scatter_origin(rec, p.shadow.direction);
+  precise real left = p.shadow_reach - rec.t;
+  if (p.shadow_reach < light_at_infinity) p.shadow_reach = left;
+  ++p.shadow_passes;
+  if (!(p.shadow_reach > real(0.0))) shadow_unblocked(p);
+}
+
+RTVK_KERNELS_END
+
+#endif  // RTVK_NEE_H
