@@ -38,6 +38,7 @@ struct path_state {
   // Next-event estimation's (lights/nee.h; unused in the other modes):
   precise real mis_pdf;           // the BSDF's density for p.r's direction at the vertex it left,
                                   // per steradian; 0 where no light sample could have drawn it
+  precise real3 mis_origin;       // that vertex (p.r's origin moves past see-through surfaces)
   ray shadow;                     // the shadow ray of the last light sample, when shadow_reach > 0
   precise real shadow_reach;      // how far it must go unblocked; 0: no shadow ray pending
   precise real3 shadow_radiance;  // what the path gathers when nothing blocks it
@@ -53,6 +54,7 @@ inline path_state start_path(ray r, random_stream s) {
   p.passes = 0u;
   p.s = s;
   p.mis_pdf = real(0.0);
+  p.mis_origin = r.origin;
   p.shadow = r;
   p.shadow_reach = real(0.0);
   p.shadow_radiance = real3(0.0);

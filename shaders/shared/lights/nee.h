@@ -130,15 +130,15 @@ inline void nee_queue(precise INOUT(path_state) p, real3 origin, light_sample ls
   p.shadow_passes = 0u;
 }
 
-// p.r hit a lamp that emits `emitted` toward it: its weight against the light sample that could
-// have drawn the same point from the vertex p.r left (none after a delta or from the camera:
-// p.mis_pdf 0, the path's light whole).
-inline precise real nee_hit_weight(LIGHTS_PARAM path_state p, real t_hit) {
+// p.r hit a lamp at `point`: the weight of its light against the light sample that could have
+// drawn the same point from the vertex the path left (p.mis_origin; p.r's own origin is beyond the
+// see-through surfaces it passed since). None after a delta or from the camera: p.mis_pdf 0, the
+// path's light whole.
+inline precise real nee_hit_weight(LIGHTS_PARAM path_state p, real3 point) {
   if (!(p.mis_pdf > real(0.0))) return real(1.0);
   precise real3 d = unit_vector(p.r.direction);
-  precise real scale = length3(p.r.direction);  // t_hit is in units of p.r.direction
-  precise real distance = t_hit * scale;
-  return power_heuristic(p.mis_pdf, nee_lamp_pdf(LIGHTS p.r.origin, d, p.r.time, distance));
+  precise real distance = length3(point - p.mis_origin);
+  return power_heuristic(p.mis_pdf, nee_lamp_pdf(LIGHTS p.mis_origin, d, p.r.time, distance));
 }
 
 // Russian roulette (pbrt-v4's): past the third bounce a path goes on with the probability of its
@@ -169,7 +169,7 @@ inline bool path_hit_nee(LIGHTS_PARAM precise INOUT(path_state) p, hit_record re
   c = p.radiance;
   if (type == RTVK_MATERIAL_DIFFUSE_LIGHT) {
     bool dark = (flags & RTVK_MATERIAL_ONE_SIDED) != 0u && !rec.front_face;
-    if (!dark) c = p.radiance + p.throughput * albedo * nee_hit_weight(LIGHTS p, rec.t);
+    if (!dark) c = p.radiance + p.throughput * albedo * nee_hit_weight(LIGHTS p, rec.p);
     return true;
   }
   random_stream s = at_bounce(p.s, p.depth + 1u);
@@ -191,6 +191,7 @@ inline bool path_hit_nee(LIGHTS_PARAM precise INOUT(path_state) p, hit_record re
       return false;
     }
     p.mis_pdf = material_pdf(type, rec.normal, p.r.direction);
+    p.mis_origin = p.r.origin;
     p.throughput *= attenuation;
     ++p.depth;
   }

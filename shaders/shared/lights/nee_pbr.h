@@ -66,6 +66,7 @@ inline bool path_hit_pbr_nee(LIGHTS_PARAM precise INOUT(path_state) p, hit_recor
   }
   p.mis_pdf = delta ? real(0.0) : pdf_bsdf;
   p.r = ray(scatter_origin(rec, direction), direction, p.r.time);
+  p.mis_origin = p.r.origin;
   p.throughput *= weight;
   ++p.depth;
   if (!nee_roulette(p, s)) nee_end(p);
