@@ -45,7 +45,7 @@ struct bench_record {
   int threads = 0, width = 0, height = 0, spp = 0, depth = 0;
   std::uint64_t rays = 0;
   std::uint64_t dropped = 0;  // samples with a NaN or infinite channel (added black)
-  std::string sampling;       // plain or lights
+  std::string sampling;       // plain, lights or nee
   std::string accel;          // what found the hits: bvh, none, rt-query, rt-pipeline
   double seconds = 0;         // the whole render, BVH build included (CPU; the GPU builds it once)
   double build_seconds = 0;   // of which building the BVH
@@ -74,8 +74,11 @@ void print(const bench_record& r) {
   std::printf(
       "%-4s %s %dx%d, %d spp, depth %d%s: %.1f M rays in %.3f s (%s) = %.2f Mrays/s (%s%s)\n",
       r.backend.c_str(), r.scene.c_str(), r.width, r.height, r.spp, r.depth,
-      r.sampling == "lights" ? ", lights sampling" : "", double(r.rays) / 1e6, r.seconds, setup,
-      r.mrays_per_s(), (r.device + ", accel " + r.accel).c_str(),
+      r.sampling == "lights" ? ", lights sampling"
+      : r.sampling == "nee"  ? ", nee sampling"
+                             : "",
+      double(r.rays) / 1e6, r.seconds, setup, r.mrays_per_s(),
+      (r.device + ", accel " + r.accel).c_str(),
       r.backend == "cpu" ? (", " + std::to_string(r.threads) + " threads").c_str() : "");
   if (r.dropped > 0)
     std::printf("     %llu samples were NaN or infinite and added black\n",
@@ -132,7 +135,9 @@ bench_record record_for(const scene& s, const camera& cam) {
   base.height = cam.image_height();
   base.spp = s.render.spp;
   base.depth = s.render.max_depth;
-  base.sampling = samples_lights(s, s.render) ? "lights" : "plain";
+  base.sampling = uses_nee(s.render.sampling)   ? "nee"
+                  : samples_lights(s, s.render) ? "lights"
+                                                : "plain";
   return base;
 }
 

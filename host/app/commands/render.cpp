@@ -74,6 +74,7 @@ struct run_context {
   bool several;          // more than one image: each summary line names its camera and frame
   std::size_t* written;  // images finished and written so far
   bool lights;           // samples toward the scene's lights (samples_lights), for the summaries
+  bool nee;              // next-event estimation (uses_nee), likewise
   unsigned aovs = 0;     // --aov's aov_bit mask; 0: none
   // What the AOV pass of the backend that drew the image found (set where aovs != 0), and
   // whether the CPU agreed with the device's (--backend both).
@@ -152,8 +153,10 @@ void summarize(const run_context& run, const render_job& job, const std::string&
   if (run.o.quiet) return;
   std::fprintf(stderr, "rtvk: %s %dx%d, %d spp%s, on %s in %.3f s -> %s\n", label(run, job).c_str(),
                run.win.width, run.win.height, run.win.samples(),
-               run.lights ? " (lights sampling)" : "", backend.c_str(), seconds,
-               job.output.c_str());
+               run.nee      ? " (nee sampling)"
+               : run.lights ? " (lights sampling)"
+                            : "",
+               backend.c_str(), seconds, job.output.c_str());
   if (dropped > overflows)
     std::fprintf(stderr, "rtvk: %llu samples were NaN or infinite and added black\n",
                  static_cast<unsigned long long>(dropped - overflows));
@@ -343,6 +346,7 @@ int run_render(render_options o) {
                   jobs.size() > 1,
                   &written,
                   samples_lights(s, s.render),
+                  uses_nee(s.render.sampling),
                   aovs};
   run.aov_pass = [&](const render_job& job) { return render_aov_cpu(job.cam, s, win, o.threads); };
   try {

@@ -90,8 +90,9 @@ void scene_flags::add_to(CLI::App& cmd) {
   sampling_opt_ = cmd.add_option("--sampling", sampling_,
                                  "How diffuse surfaces and media pick directions: plain (the first "
                                  "two books'), lights (the third book's: half toward the lights, "
-                                 "stratified pixels) or auto (default: lights where the scene has "
-                                 "lights)")
+                                 "stratified pixels), nee (next-event estimation: a lamp sample "
+                                 "and a shadow ray a vertex, multiple importance sampling) or auto "
+                                 "(default: lights where the scene has lights)")
                       ->group(group);
   view_transform_opt_ =
       cmd.add_option("--view-transform", view_transform_,

@@ -26,7 +26,7 @@ struct scene_overrides {
   std::optional<double> fisheye_fov;          // fisheye field of view, degrees
   std::optional<std::string> shutter;         // OPEN:CLOSE as typed, seconds after the frame's time
   std::optional<double> orbit;                // seconds per turn of the built-in orbit path
-  std::optional<std::string> sampling;        // plain, lights or auto (sampling_mode)
+  std::optional<std::string> sampling;        // plain, lights, nee or auto (sampling_mode)
   std::optional<std::string> view_transform;  // standard, filmic, agx, linear or gamma
   std::optional<double> exposure;             // EV, -16 to 16
   std::optional<std::string> calibration;     // OpenCV calibration file (calibration_file.h)
