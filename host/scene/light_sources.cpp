@@ -1,5 +1,6 @@
 #include "light_sources.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -50,6 +51,48 @@ bool has_colors(const scene& s, const triangle& t) {
   return t.shading >= 0 && s.shading[std::size_t(t.shading)].has_color;
 }
 
+// A lamp's power up to a constant common to all: the luminance it emits times its area, times 2
+// where both sides emit (a sphere's one side is its whole surface). Uneven lamps: 0, never drawn.
+double lamp_power(const light_record& l) {
+  if ((l.flags & RTVK_LIGHT_UNEVEN) != 0u) return 0;
+  const double luminance = 0.2126 * l.emission.x + 0.7152 * l.emission.y + 0.0722 * l.emission.z;
+  const double pi = 3.14159265358979323846;
+  const double area = l.kind == RTVK_LIGHT_SPHERE ? 4 * pi * l.radius * l.radius : l.area;
+  const double sides =
+      l.kind != RTVK_LIGHT_SPHERE && (l.flags & RTVK_LIGHT_ONE_SIDED) == 0u ? 2 : 1;
+  const double p = std::max(0.0, luminance) * area * sides;
+  return std::isfinite(p) ? p : 0;
+}
+
+// Vose's alias table over the lamps (the first `count` of `lights`), by power: each gets its
+// probability (pmf) and its slot's split (alias_q, alias), which nee_draw reads.
+void build_alias_table(std::vector<light_record>& lights, std::size_t count) {
+  double total = 0;
+  for (std::size_t k = 0; k < count; ++k) total += lamp_power(lights[k]);
+  if (!(total > 0)) return;  // nothing to draw: every pmf stays 0
+  std::vector<double> scaled(count);
+  std::vector<std::size_t> small, large;
+  for (std::size_t k = 0; k < count; ++k) {
+    lights[k].pmf = lamp_power(lights[k]) / total;
+    scaled[k] = lights[k].pmf * double(count);
+    (scaled[k] < 1 ? small : large).push_back(k);
+  }
+  while (!small.empty() && !large.empty()) {
+    const std::size_t s = small.back(), l = large.back();
+    small.pop_back();
+    lights[s].alias_q = scaled[s];
+    lights[s].alias = std::uint32_t(l);
+    scaled[l] -= 1 - scaled[s];
+    if (scaled[l] < 1) {
+      large.pop_back();
+      small.push_back(l);
+    }
+  }
+  // What is left keeps its whole slot (rounding leaves the last ones a hair from 1).
+  for (std::size_t k : small) lights[k].alias_q = 1, lights[k].alias = std::uint32_t(k);
+  for (std::size_t k : large) lights[k].alias_q = 1, lights[k].alias = std::uint32_t(k);
+}
+
 }  // namespace
 
 std::vector<light_record> scene_lights(const scene& s) {
@@ -64,6 +107,7 @@ std::vector<light_record> scene_lights(const scene& s) {
       out.push_back(
           as_lamp(flat_light(RTVK_LIGHT_TRIANGLE, t.p[0], t.p[1] - t.p[0], t.p[2] - t.p[0]), s,
                   t.material, has_colors(s, t)));
+  build_alias_table(out, out.size());  // the lamps, all pushed so far
   for (const sphere& sp : s.spheres)
     if (sp.sampled && !is_lamp(s, sp.material)) out.push_back(sphere_light(sp));
   for (const quad& q : s.quads)

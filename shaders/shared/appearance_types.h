@@ -189,7 +189,7 @@ static_assert(offsetof(gpu_perlin, perm) == 16 * RTVK_PERLIN_POINTS);
 static_assert(sizeof(gpu_perlin) == 28 * RTVK_PERLIN_POINTS);
 #endif
 
-// std430 array element: a shape lights sampling aims at, 80 bytes (shaders/shared/pdf.h). The
+// std430 array element: a shape lights sampling aims at, 96 bytes (shaders/shared/pdf.h). The
 // geometry is the scene's object's, copied: a sphere's center moves with its velocity. The lamps
 // come first (RTVK_LIGHT_EMITS): next-event estimation samples those only.
 struct gpu_light {
@@ -202,7 +202,14 @@ struct gpu_light {
   vec3 normal;    // quad, triangle: unit normal, cross(u, v) normalized
   uint flags;     // RTVK_LIGHT_EMITS, _ONE_SIDED, _UNEVEN
   vec3 emission;  // a lamp's emitted radiance (its material's color), linear RGB
+  // Next-event estimation's choice among the lamps, by power (Vose's alias table): lamp k is
+  // drawn with probability `pmf`; a draw u * count that lands in slot k keeps k where its
+  // fraction is below `alias_q`, else takes lamp `alias`.
+  float pmf;      // the probability of drawing this lamp, 0 to 1
+  float alias_q;  // the share of slot k that keeps k, 0 to 1
+  uint alias;     // the lamp that takes the rest of slot k
   uint pad0;      // unused
+  uint pad1;      // unused
 };
 #ifdef __cplusplus
 static_assert(offsetof(gpu_light, kind) == 12);
@@ -213,7 +220,10 @@ static_assert(offsetof(gpu_light, area) == 44);
 static_assert(offsetof(gpu_light, normal) == 48);
 static_assert(offsetof(gpu_light, flags) == 60);
 static_assert(offsetof(gpu_light, emission) == 64);
-static_assert(sizeof(gpu_light) == 80);
+static_assert(offsetof(gpu_light, pmf) == 76);
+static_assert(offsetof(gpu_light, alias_q) == 80);
+static_assert(offsetof(gpu_light, alias) == 84);
+static_assert(sizeof(gpu_light) == 96);
 #endif
 
 // std430 array element: a constant-density medium (the book's constant_medium), 96 bytes.

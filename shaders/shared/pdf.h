@@ -21,15 +21,18 @@ RTVK_KERNELS_BEGIN
 #ifdef __cplusplus
 // gpu_light's fields at the compilation's precision.
 struct light_record {
-  real3 a;          // sphere: center at time 0; quad: corner Q; triangle: vertex 0
-  uint kind = 0;    // RTVK_LIGHT_*
-  real3 u;          // sphere: velocity; quad: edge u; triangle: edge to vertex 1
-  real radius = 0;  // sphere: radius
-  real3 v;          // quad: edge v; triangle: edge to vertex 2
-  real area = 0;    // quad, triangle: area
-  real3 normal;     // quad, triangle: unit normal along cross(u, v)
-  uint flags = 0;   // RTVK_LIGHT_*
-  real3 emission;   // a lamp's emitted radiance, linear RGB
+  real3 a;           // sphere: center at time 0; quad: corner Q; triangle: vertex 0
+  uint kind = 0;     // RTVK_LIGHT_*
+  real3 u;           // sphere: velocity; quad: edge u; triangle: edge to vertex 1
+  real radius = 0;   // sphere: radius
+  real3 v;           // quad: edge v; triangle: edge to vertex 2
+  real area = 0;     // quad, triangle: area
+  real3 normal;      // quad, triangle: unit normal along cross(u, v)
+  uint flags = 0;    // RTVK_LIGHT_*
+  real3 emission;    // a lamp's emitted radiance, linear RGB
+  real pmf = 0;      // next-event estimation's probability of drawing it (gpu_light's alias table)
+  real alias_q = 1;  // the share of its slot that keeps it
+  uint alias = 0;    // the lamp that takes the rest
 };
 // The lights a render samples (host/scene/light_sources.h makes them).
 struct light_table {

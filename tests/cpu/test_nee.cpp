@@ -20,6 +20,7 @@ namespace {
 light_record lamp(light_record l, std::uint32_t flags = 0) {
   l.flags = RTVK_LIGHT_EMITS | flags;
   l.emission = color(3, 2, 1);
+  l.pmf = 0.25;  // as one of the four lamps of the first test, drawn alike
   return l;
 }
 
@@ -76,7 +77,7 @@ TEST(NeeDensity, ALampPointsDensityIsTheOneItsHitFinds) {
         EXPECT_NEAR(glm::dot(end - l.a, l.normal), 0, 1e-9);
       }
       const double found = nee_lamp_pdf(table, origin, ls.wi, time, ls.distance);
-      EXPECT_NEAR(found * double(lamps.size()), ls.pdf, 1e-7 * ls.pdf) << "lamp " << k;
+      EXPECT_NEAR(found / lamps[k].pmf, ls.pdf, 1e-7 * ls.pdf) << "lamp " << k;
       ++checked;
     }
   EXPECT_GT(checked, 600);
@@ -93,10 +94,58 @@ TEST(NeeDensity, OneSidedAndUnevenLampsAreDrawnOnlyWhereTheyShine) {
            RTVK_LIGHT_ONE_SIDED);  // normal -y: shines down
   EXPECT_GT(lamp_sample(front, point3(0, 0, 0), 0, 0.5, 0.5).pdf, 0);
   EXPECT_EQ(lamp_sample(front, point3(0, 4, 0), 0, 0.5, 0.5).pdf, 0);
-  const light_record uneven = lamp(front, RTVK_LIGHT_UNEVEN);
+  light_record uneven = lamp(front, RTVK_LIGHT_UNEVEN);
   EXPECT_EQ(lamp_sample(uneven, point3(0, 0, 0), 0, 0.5, 0.5).pdf, 0);
+  uneven.pmf = 0;  // as the alias table gives it (lamp_power 0)
   const light_table table{&uneven, 1};
   EXPECT_EQ(nee_lamp_pdf(table, point3(0, 0, 0), vec3(0, 1, 0), 0, 2), 0);
+}
+
+// Lamps are drawn in proportion to their power (emitted luminance times area, both sides for a
+// two-sided flat lamp): a scene's alias table gives each its share, and 200,000 draws through
+// nee_draw's one number land on each within 4 standard errors of it. Uniform choice fails it.
+TEST(NeeDensity, LampsAreDrawnInProportionToTheirPower) {
+  scene s = test::small_scene("cornell-box", 8, 1);
+  s.quads.clear();
+  s.spheres.clear();
+  s.materials.clear();
+  const auto add_lamp = [&](color emission, bool one_sided) {
+    material m{material_type::diffuse_light, emission, 0, 1.5, -1};
+    m.one_sided = one_sided;
+    s.materials.push_back({"lamp" + std::to_string(s.materials.size()), m});
+    return int(s.materials.size()) - 1;
+  };
+  // Powers: 1 x 8 x 2 = 16 (two-sided), 1 x 1 x 1 = 1 (one-sided), 3 x 4 pi 0.5^2 = 9.42 (a
+  // sphere's one side), 3 x 1 x 2 = 6, 0.
+  s.quads.push_back({point3(0), vec3(2, 0, 0), vec3(0, 0, 4), add_lamp(color(1), false)});
+  s.quads.push_back({point3(5), vec3(1, 0, 0), vec3(0, 0, 1), add_lamp(color(1), true)});
+  s.spheres.push_back(sphere(point3(0, 9, 0), 0.5, add_lamp(color(3), false)));
+  s.quads.push_back({point3(-5), vec3(1, 0, 0), vec3(0, 0, 1), add_lamp(color(3), false)});
+  s.quads.push_back({point3(-9), vec3(1, 0, 0), vec3(0, 0, 1), add_lamp(color(0), false)});
+  const std::vector<light_record> lamps = scene_lamps(s);
+  ASSERT_EQ(lamps.size(), 5u);
+  double total = 0;
+  for (const light_record& l : lamps) total += l.pmf;
+  EXPECT_NEAR(total, 1, 1e-12);
+  const double pi = 3.14159265358979323846, sphere_power = 4 * pi * 0.25 * 3;
+  const double all = 16 + 1 + sphere_power + 6;
+  // The table's order: spheres, then quads (scene_lights).
+  const double want[5] = {sphere_power / all, 16 / all, 1 / all, 6 / all, 0};
+  for (std::size_t k = 0; k < 5; ++k) EXPECT_NEAR(lamps[k].pmf, want[k], 1e-12) << k;
+  const light_table table{lamps.data(), uint(lamps.size())};
+  std::vector<int> drawn(5, 0);
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) {
+    double choice = 0;
+    const random_stream stream(hash32(std::uint32_t(i)), 1u);
+    nee_draw(table, point3(0, 50, 0), 0, stream, choice);
+    for (std::size_t k = 0; k < 5; ++k)
+      if (choice == lamps[k].pmf) ++drawn[k];
+  }
+  for (std::size_t k = 0; k < 5; ++k) {
+    const double sd = std::sqrt(n * want[k] * (1 - want[k]));
+    EXPECT_NEAR(drawn[k], n * want[k], 4 * sd + 1e-9) << "lamp " << k;
+  }
 }
 
 scene cornell(int width, int spp, sampling_mode m) {

@@ -370,8 +370,20 @@ TEST_F(GpuSampling, TheDevicesDensitiesAreTheHosts) {
   for (const light_record& l : lights)
     for (int k = 0; k < per_light; ++k) {
       gpu::light_probe_entry e{};
-      e.light = {glm::vec3(l.a), l.kind,        glm::vec3(l.u),      float(l.radius),
-                 glm::vec3(l.v), float(l.area), glm::vec3(l.normal), l.flags, glm::vec3(l.emission), 0};
+      e.light = {glm::vec3(l.a),
+                 l.kind,
+                 glm::vec3(l.u),
+                 float(l.radius),
+                 glm::vec3(l.v),
+                 float(l.area),
+                 glm::vec3(l.normal),
+                 l.flags,
+                 glm::vec3(l.emission),
+                 0.0f,
+                 1.0f,
+                 0,
+                 0,
+                 0};
       e.origin = glm::vec3(origin);
       directions.push_back(uniform_direction(gen));
       e.direction = glm::vec3(directions.back());

@@ -265,7 +265,8 @@ std::vector<gpu_light> to_gpu_lights(const std::vector<light_record>& lights) {
   std::vector<gpu_light> out;
   for (const light_record& l : lights)
     out.push_back({vec3(l.a), l.kind, vec3(l.u), float(l.radius), vec3(l.v), float(l.area),
-                   vec3(l.normal), l.flags, vec3(l.emission), 0});
+                   vec3(l.normal), l.flags, vec3(l.emission), float(l.pmf), float(l.alias_q),
+                   l.alias, 0, 0});
   return out;
 }
 

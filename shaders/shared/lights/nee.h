@@ -7,9 +7,10 @@
 // reflections of large ones by the BSDF.
 //
 // The lights drawn are the scene's lamps (pdf.h's records with RTVK_LIGHT_EMITS: the first
-// LIGHT_COUNT of the table in this mode), each chosen with probability 1 / LIGHT_COUNT. A lamp
-// whose emission varies over it (RTVK_LIGHT_UNEVEN) is never drawn: its light comes whole from the
-// paths that hit it.
+// LIGHT_COUNT of the table in this mode), each chosen in proportion to its power through an alias
+// table (gpu_light::pmf, alias_q, alias; host/scene/light_sources.cpp builds it). A lamp whose
+// emission varies over it (RTVK_LIGHT_UNEVEN) is never drawn: its light comes whole from the paths
+// that hit it.
 //
 // The shadow ray is not traced here: the step leaves it in the path state (path_state::shadow) and
 // each backend traces it before the path goes on (host/cpu/shading.cpp at once; the GPU in a trip
@@ -81,32 +82,36 @@ inline light_sample lamp_sample(light_record l, real3 origin, real time, real r1
   return ls;
 }
 
-// A light drawn for the vertex at `origin` from stream s (uniformly among the LIGHT_COUNT lamps);
-// choice: the probability of having chosen it. No sample (pdf 0) without lamps.
+// A light drawn for the vertex at `origin` from stream s: a lamp by the alias table (one number:
+// its slot, and within the slot whether it keeps its lamp or takes the alias); choice: the
+// probability of having drawn it. No sample (pdf 0) without lamps to draw.
 inline light_sample nee_draw(LIGHTS_PARAM real3 origin, real time, random_stream s,
                              precise OUT(real) choice) {
   choice = real(0.0);
   if (LIGHT_COUNT == 0u) return no_light_sample();
   precise real pick = real(rnd(s, dim_light_pick)) * real(LIGHT_COUNT);
   uint k = min(uint(pick), LIGHT_COUNT - 1u);
-  choice = real(1.0) / real(LIGHT_COUNT);
+  precise real within = pick - real(k);
+  if (!(within < LIGHT_AT(k).alias_q)) k = LIGHT_AT(k).alias;
+  choice = LIGHT_AT(k).pmf;
+  if (!(choice > real(0.0))) return no_light_sample();
   return lamp_sample(LIGHT_AT(k), origin, time, real(rnd(s, dim_light_a)),
                      real(rnd(s, dim_light_b)));
 }
 
-// The density (per steradian, times the lamp's choice) with which nee_draw at `origin` would have
+// The density (per steradian, times the lamp's pmf) with which nee_draw at `origin` would have
 // drawn the point that the ray along unit direction d hit at distance t_hit: that of the lamp
 // whose surface lies there (its own test of the ray agreeing within a thousandth), 0 where none
 // does (a lamp not drawn: uneven, in a group, or no lamp at all).
 inline precise real nee_lamp_pdf(LIGHTS_PARAM real3 origin, real3 d, real time, real t_hit) {
   for (uint k = 0u; k < LIGHT_COUNT; ++k) {
     light_record l = LIGHT_AT(k);
-    if ((l.flags & RTVK_LIGHT_UNEVEN) != 0u) continue;
+    if (!(l.pmf > real(0.0))) continue;
     precise real t = lamp_distance(l, origin, d, time);
     precise real off = abs(t - t_hit);
     precise real tolerance = real(1e-3) * t_hit + real(1e-6);
     if (off > tolerance) continue;
-    return light_pdf(l, origin, d, time) / real(LIGHT_COUNT);
+    return light_pdf(l, origin, d, time) * l.pmf;
   }
   return real(0.0);
 }

@@ -14,7 +14,8 @@ layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block {
 
 // pdf.h's table of lights (ray_color.h includes it): the probe aims at none.
 const gpu_light lights[1] = gpu_light[1](
-    gpu_light(vec3(0.0), 0u, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0u, vec3(0.0), 0u));
+    gpu_light(vec3(0.0), 0u, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0u, vec3(0.0), 0.0, 0.0,
+              0u, 0u, 0u));
 uint light_count() {
   return 0u;
 }

@@ -182,18 +182,18 @@ struct light_probe_entry {
   uint pad2;            // unused
 };
 #ifdef __cplusplus
-static_assert(offsetof(light_probe_entry, origin) == 80);
-static_assert(offsetof(light_probe_entry, time) == 92);
-static_assert(offsetof(light_probe_entry, direction) == 96);
-static_assert(offsetof(light_probe_entry, r1) == 108);
-static_assert(offsetof(light_probe_entry, normal) == 112);
-static_assert(offsetof(light_probe_entry, r2) == 124);
-static_assert(offsetof(light_probe_entry, sampled) == 128);
-static_assert(offsetof(light_probe_entry, pdf) == 140);
-static_assert(offsetof(light_probe_entry, cosine_sampled) == 144);
-static_assert(offsetof(light_probe_entry, cosine) == 156);
-static_assert(offsetof(light_probe_entry, sampled_pdf) == 160);
-static_assert(sizeof(light_probe_entry) == 176);
+static_assert(offsetof(light_probe_entry, origin) == 96);
+static_assert(offsetof(light_probe_entry, time) == 108);
+static_assert(offsetof(light_probe_entry, direction) == 112);
+static_assert(offsetof(light_probe_entry, r1) == 124);
+static_assert(offsetof(light_probe_entry, normal) == 128);
+static_assert(offsetof(light_probe_entry, r2) == 140);
+static_assert(offsetof(light_probe_entry, sampled) == 144);
+static_assert(offsetof(light_probe_entry, pdf) == 156);
+static_assert(offsetof(light_probe_entry, cosine_sampled) == 160);
+static_assert(offsetof(light_probe_entry, cosine) == 172);
+static_assert(offsetof(light_probe_entry, sampled_pdf) == 176);
+static_assert(sizeof(light_probe_entry) == 192);
 #endif
 
 // std430 array element for pbr_probe.comp (pbr_probe.h): a pbr_surface (shaders/shared/pbr/pbr.h),
