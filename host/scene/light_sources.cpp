@@ -1,4 +1,5 @@
 #include "light_sources.h"
+#include "punctual.h"
 
 #include <algorithm>
 #include <cmath>

@@ -60,7 +60,7 @@ TEST(SceneFileLights, ADumpReloadsToTheSameLights) {
   const scene s = parse_scene_json(every_kind, "lights.json");
   const std::string dumped = dump_scene_json(s);
   EXPECT_NE(dumped.find("\"lights\""), std::string::npos) << dumped;
-  EXPECT_NE(dumped.find("\"angular_diameter\":0.53"), std::string::npos) << dumped;
+  EXPECT_NE(dumped.find("\"angular_diameter\": 0.53"), std::string::npos) << dumped;
   const scene back = parse_scene_json(dumped, "back.json");
   ASSERT_EQ(back.punctual_lights.size(), s.punctual_lights.size());
   for (std::size_t k = 0; k < s.punctual_lights.size(); ++k)

@@ -45,7 +45,7 @@ class light_collector {
       fail(where, "light " + std::to_string(k) + " does not exist");
     if (s_.punctual_lights.size() >= max_punctual_lights)
       fail(where, "more than " + std::to_string(max_punctual_lights) + " lights");
-    punctual_light l = read(m_.lights[std::size_t(k)], "light " + std::to_string(k));
+    punctual_light l = read(m_.lights[std::size_t(k)], where + ": light " + std::to_string(k));
     if (l.name.empty()) l.name = m_.nodes[std::size_t(node)].name;
     l.position = world.apply_point(point3(0));
     const vec3 d = world.apply_vector(vec3(0, 0, -1));

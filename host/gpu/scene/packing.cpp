@@ -1,4 +1,5 @@
 #include "packing.h"
+#include "punctual.h"
 
 #include <cmath>
 #include <stdexcept>
