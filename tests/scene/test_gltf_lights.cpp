@@ -127,13 +127,11 @@ TEST(GltfLights, BadLightsAreRefusedNamingTheNodeAndTheLight) {
   }
 }
 
-// The Khronos sample (outside the repository: run where /work/samples holds it): five point
-// lights on root nodes 3 to 7, each at its matrix's translation, turned so that -Z is -Y; with
-// the file's intensities (candela) and colors.
-TEST(GltfLights, LightsPunctualLampHasItsFivePointLights) {
-  const std::filesystem::path file =
-      "/work/samples/khronos/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is not here";
+// The Khronos LightsPunctualLamp's five point lights, on root nodes 3 to 7, each at its matrix's
+// translation, turned so that -Z is -Y; with the file's intensities (candela) and colors; and
+// placed as a scene file's mesh is.
+void expect_lamp_lights(const std::filesystem::path& file) {
+  SCOPED_TRACE(file.string());
   scene s;
   load_mesh(s, file, {});
   ASSERT_EQ(s.punctual_lights.size(), 5u);
@@ -166,6 +164,19 @@ TEST(GltfLights, LightsPunctualLampHasItsFivePointLights) {
   load_mesh(placed, file, {-1, t, false});
   ASSERT_EQ(placed.punctual_lights.size(), 5u);
   expect_near(placed.punctual_lights[4].position, 2.0 * want[4].at + vec3(0, 1, 0), 1e-14);
+}
+
+// Its lights and their nodes, shipped (tests/data/gltf/LightsPunctualLamp: the meshes left out).
+TEST(GltfLights, LightsPunctualLampsLightsAreWhereTheFilePutsThem) {
+  expect_lamp_lights(RTVK_TEST_DATA "/gltf/LightsPunctualLamp/LightsPunctualLampLights.gltf");
+}
+
+// The whole sample, meshes and textures too, where this machine has it (/work/samples).
+TEST(GltfLights, TheWholeLightsPunctualLampHasItsFivePointLights) {
+  const std::filesystem::path file =
+      "/work/samples/khronos/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is not here";
+  expect_lamp_lights(file);
 }
 
 }  // namespace
