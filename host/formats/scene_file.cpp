@@ -144,6 +144,7 @@ const section sections[] = {
     {object_fields(), read_scene_objects, write_scene_objects},
     {{"groups", "instances"}, read_groups, write_groups},
     {{"media"}, read_media, write_media},
+    {{"lights"}, read_lights, write_lights},
 };
 
 scene read_scene(const scene_reader& r, const json& root, const std::string& name) {

@@ -112,4 +112,8 @@ void write_groups(const scene& s, json& root);
 void read_media(const scene_reader& r, const json& root, scene& s);
 void write_media(const scene& s, json& root);
 
+// scene_file_lights.cpp: "lights", the punctual lights.
+void read_lights(const scene_reader& r, const json& root, scene& s);
+void write_lights(const scene& s, json& root);
+
 }  // namespace rtvk::scene_json

@@ -97,6 +97,11 @@ void read_named_groups(const scene_reader& r, const json& groups, scene& s) {
     g.materials = std::move(s.materials);
     read_objects(r, j, p, g);
     s.materials = std::move(g.materials);
+    // A glTF's KHR_lights_punctual inside a group: instances do not place lights (yet).
+    if (!g.punctual_lights.empty())
+      s.warnings.push_back(r.file() + ": " + p + ": " + std::to_string(g.punctual_lights.size()) +
+                           " punctual lights of the group's mesh files are dropped (instances do "
+                           "not place lights)");
     for (std::size_t k = 0; k < g.spheres.size(); ++k)
       if (g.spheres[k].center1)
         r.fail(p + "/spheres/" + std::to_string(k) + "/center1",

@@ -1,7 +1,9 @@
 #include "light_sources.h"
+#include "punctual.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -169,6 +171,54 @@ const char* sampling_name(sampling_mode m) {
     default:
       return "auto";
   }
+}
+
+const char* punctual_kind_name(punctual_kind k) {
+  switch (k) {
+    case punctual_kind::point:
+      return "point";
+    case punctual_kind::spot:
+      return "spot";
+    case punctual_kind::directional:
+      return "directional";
+  }
+  return "point";
+}
+
+punctual_record punctual_record_of(const punctual_light& l) {
+  constexpr double radians = std::numbers::pi / 180;
+  punctual_record r;
+  r.position = l.position;
+  r.direction = glm::normalize(l.direction);
+  r.intensity = l.tint * l.intensity;
+  switch (l.kind) {
+    case punctual_kind::point:
+      r.kind = RTVK_PUNCTUAL_POINT;
+      break;
+    case punctual_kind::spot:
+      r.kind = RTVK_PUNCTUAL_SPOT;
+      break;
+    case punctual_kind::directional:
+      r.kind = RTVK_PUNCTUAL_DIRECTIONAL;
+      break;
+  }
+  if (l.kind == punctual_kind::spot) {  // KHR_lights_punctual's reference code
+    const double cos_inner = std::cos(l.inner_cone * radians);
+    const double cos_outer = std::cos(l.outer_cone * radians);
+    r.angle_scale = 1 / std::max(0.001, cos_inner - cos_outer);
+    r.angle_offset = -cos_outer * r.angle_scale;
+  }
+  // 1 - cos(theta_max) as 2 sin^2(theta_max / 2): exact for a small sun.
+  const double half_angle = 0.5 * l.angular_diameter * radians;
+  if (l.kind == punctual_kind::directional && l.angular_diameter > 0)
+    r.cone_gap = 2 * std::sin(0.5 * half_angle) * std::sin(0.5 * half_angle);
+  return r;
+}
+
+std::vector<punctual_record> punctual_records(const std::vector<punctual_light>& lights) {
+  std::vector<punctual_record> out;
+  for (const punctual_light& l : lights) out.push_back(punctual_record_of(l));
+  return out;
 }
 
 }  // namespace rtvk

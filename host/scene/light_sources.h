@@ -41,4 +41,19 @@ std::uint32_t pixel_strata(const render_settings& rs, bool lights);
 // The name of a sampling mode, as --sampling and scene files spell it.
 const char* sampling_name(sampling_mode m);
 
+// The punctual lights' kernel records (shaders/shared/lights/punctual.h, which the callers
+// include): declared here, not included, so that the many files that include this one (unity
+// batches among them, whose files define their own `pi`) do not all parse the kernel.
+struct punctual_record;
+
+// "point", "spot" or "directional" (scene files' and glTF's "type").
+const char* punctual_kind_name(punctual_kind k);
+
+// The kernel's record of `l` (its spot's scale and offset, a sun's cone gap worked out in
+// double): what the CPU samples and what the GPU's packing rounds to float.
+punctual_record punctual_record_of(const punctual_light& l);
+
+// Every light of `lights`, in order.
+std::vector<punctual_record> punctual_records(const std::vector<punctual_light>& lights);
+
 }  // namespace rtvk

@@ -26,6 +26,26 @@ struct sky {
   color zenith{0.5, 0.7, 1.0};   // ...this along +y
 };
 
+// Punctual lights (issue 46): KHR_lights_punctual's point, spot and directional lights, and a
+// sun (a directional light with an angular diameter). Data here; the kernel that samples them is
+// shaders/shared/lights/punctual.h (light_sources.h makes its records), their units
+// docs/lighting.md's "Punctual lights".
+enum class punctual_kind { point, spot, directional };
+
+// A light without size, or a sun. Angles are in degrees, as scene files write them (glTF's
+// radians are converted when read).
+struct punctual_light {
+  punctual_kind kind = punctual_kind::point;
+  std::string name;             // the glTF light's or node's name, for messages; may be empty
+  point3 position{0, 0, 0};     // point, spot: where it stands, scene units
+  vec3 direction{0, 0, -1};     // spot, directional: the way its light travels (any length)
+  color tint{1, 1, 1};          // linear RGB (glTF's "color")
+  double intensity = 1;         // point, spot: candela; directional: lux
+  double inner_cone = 0;        // spot: degrees off `direction` where the falloff starts
+  double outer_cone = 45;       // spot: degrees where it reaches 0 (glTF's default pi / 4)
+  double angular_diameter = 0;  // directional: degrees; 0 a delta light, > 0 a sun's disk
+};
+
 struct named_camera {
   std::string name;  // how --camera and {camera} in -o refer to it
   camera_path path;  // where it stands at each time
@@ -62,6 +82,9 @@ struct scene : shape_lists {
   std::vector<texture> textures;  // checker, image and noise textures
   std::uint32_t noise_seed = 0;   // makes the noise textures' tables (make_perlin)
   std::vector<medium> media;      // constant-density media, tested after every object
+  // Point, spot and directional lights and suns (punctual_light above): lit by next-event
+  // estimation, never hit by a path (a sun is seen by rays that escape).
+  std::vector<punctual_light> punctual_lights;
   // Objects of several primitives, one object each to --aov object-id (object_ids.h): a box's
   // six quads, a mesh file's triangles.
   std::vector<primitive_run> compounds;
@@ -125,6 +148,9 @@ inline constexpr std::size_t max_scene_objects = std::size_t(1) << 28;
 
 // The most media a scene may hold: every ray tests each of them (no BVH over media).
 inline constexpr std::size_t max_scene_media = 64;
+// Punctual lights one scene may hold: next-event estimation picks among them, and a ray that
+// escapes tests every sun (punctual.h's sun_radiance).
+inline constexpr std::size_t max_punctual_lights = 1024;
 
 // The most spheres spheres:N builds.
 inline constexpr std::uint32_t max_scene_spheres = 4'000'000;

@@ -10,6 +10,7 @@
 #include "kernel_probe.h"
 #include "light_probe.h"
 #include "pbr_probe.h"
+#include "punctual_probe.h"
 #include "random.h"
 
 namespace rtvk::f32 {
@@ -56,6 +57,17 @@ void run_light_probe(gpu::light_probe_entry& e) {
 
 void run_pbr_probe(gpu::pbr_probe_entry& e) {
   k::run_pbr_probe(e);
+}
+
+void run_punctual_probe(const std::vector<gpu::gpu_punctual>& lights,
+                        gpu::punctual_probe_entry& e) {
+  std::vector<k::punctual_record> records;
+  for (const gpu::gpu_punctual& g : lights)
+    records.push_back(
+        {g.position, g.kind, g.direction, g.angle_scale, g.intensity, g.angle_offset, g.cone_gap});
+  // The shader reads the count from the first element (0 in an unused one).
+  const k::punctual_table t{records.data(), lights.empty() ? 0u : lights[0].count};
+  k::run_punctual_probe(t, e);
 }
 
 bool pbr_sample(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 u, glm::vec3& wi,

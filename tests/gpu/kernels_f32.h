@@ -5,12 +5,14 @@
 // bound where the device's sqrt, division and transcendentals may differ. The compilation is its
 // own translation unit (kernels_f32.cpp), since a unit compiles the kernels with one `real` only.
 #include <cstdint>
+#include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "camera_ubo.h"
+#include "lights_types.h"
 #include "probe_types.h"
 
 namespace rtvk::f32 {
@@ -50,5 +52,9 @@ bool pbr_sample(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 u, glm::v
                 glm::vec3& weight, float& pdf, bool& delta);
 float pbr_pdf(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi);
 glm::vec3 pbr_eval(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi);
+
+// run_punctual_probe (tests/gpu/probes/punctual_probe.h) in float over `lights` (their count
+// the elements', as the shader reads it): what punctual_probe.comp computes.
+void run_punctual_probe(const std::vector<gpu::gpu_punctual>& lights, gpu::punctual_probe_entry& e);
 
 }  // namespace rtvk::f32

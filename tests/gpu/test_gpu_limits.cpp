@@ -89,7 +89,7 @@ TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
   // allocation: 2001 spheres (62.5 KiB), the materials, 971 four-wide BVH nodes (121.4 KiB), and
   // one unused element each of the velocity (nothing moves), quad, triangle, vertex normal,
   // instance, texture coordinate, texture, texel, medium, light, disk and vertex tangent arrays
-  // (none there), and the noise tables (7 KiB).
+  // (none there), the noise tables (7 KiB) and the punctual lights' unused element (count 0).
   EXPECT_THAT(
       render_with(s, {.allocation_size = 150 << 10}),
       testing::HasSubstr("the sphere array and the material array and the BVH and the "
@@ -98,8 +98,8 @@ TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
                          "coordinate array and the texture array and the image textures' "
                          "texels and the noise tables and the media array and the light array "
                          "and the disk array and the vertex tangent array and the PBR "
-                         "material array and the BSDF tables need 195.688 KiB in one memory "
-                         "allocation"));
+                         "material array and the BSDF tables and the punctual light array need "
+                         "195.75 KiB in one memory allocation"));
   EXPECT_EQ(render_with(s, {.allocation_size = 200 << 10}), "");
   // Three allocations in all: the scene's arrays, the targets' device-local and readback
   // buffers.

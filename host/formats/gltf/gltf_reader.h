@@ -30,6 +30,12 @@ tinygltf::Model parse_gltf(const std::string& bytes, bool binary, const std::str
 void check_extensions(const tinygltf::Model& m, const std::string& name,
                       std::vector<std::string>& warnings);
 
+// gltf_lights.cpp: appends to s.punctual_lights one light per node of the default scene whose
+// KHR_lights_punctual names one, in node order, placed by its world transform after `placement`:
+// a light shines down its node's -Z. Throws usage_error naming `name`, the node and the light.
+void add_gltf_lights(scene& s, const tinygltf::Model& m, const std::string& name,
+                     const transform& placement);
+
 // Where a material's texture coordinates come from: the TEXCOORD_<set> attribute, mapped by
 // KHR_texture_transform's matrix (in glTF's uv, v down) before rtvk flips v.
 struct uv_mapping {

@@ -19,6 +19,7 @@ void load_gltf(scene& s, const std::string& bytes, bool binary, const std::strin
   gltfx_decompress(model, name);
   mesh_builder b(s, name, how.placement);
   gltf_walker(model, b, how).walk_scene();
+  add_gltf_lights(s, model, name, how.placement);
   if (how.cameras) add_gltf_cameras(s, model, name, how.placement, true);
 }
 

@@ -81,6 +81,8 @@ std::vector<array_entry> arrays_of(const gpu_scene::host_arrays& a) {
             "the PBR materials' upload copy", a.pbr),
       entry(RTVK_BINDING_BSDF_TABLES, r::appearance, "the BSDF tables",
             "the BSDF tables' upload copy", a.bsdf_tables),
+      entry(RTVK_BINDING_PUNCTUAL, r::appearance, "the punctual light array",
+            "the punctual lights' upload copy", a.punctual),
   };
 }
 
@@ -138,6 +140,7 @@ gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   a.lights = to_gpu_lights(scene_lights(s));
   a.pbr = to_gpu_pbrs(s);
   if (!a.pbr.empty()) a.bsdf_tables.assign(std::begin(bsdf_table_data), std::end(bsdf_table_data));
+  a.punctual = to_gpu_punctuals(s);
   a.with_uv = scene_reads_uv(s);
   return a;
 }
@@ -158,6 +161,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       with_uv_(a.with_uv),
       any_textures_(reads_textures(a)),
       any_pbr_(!a.pbr.empty()),
+      any_punctual_(!a.punctual.empty() && a.punctual[0].count > 0),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
       specs_(specs_of(arrays_of(a))),
@@ -212,6 +216,7 @@ void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
   spec[RTVK_SPEC_TEXTURES] = any_textures_;
   spec[RTVK_SPEC_MEDIA] = medium_count_ > 0;
   spec[RTVK_SPEC_PBR] = any_pbr_;
+  spec[RTVK_SPEC_PUNCTUAL] = any_punctual_;
 }
 
 void gpu_scene::set_counts(render_push& push) const {

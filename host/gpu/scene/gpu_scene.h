@@ -9,6 +9,7 @@
 #include "compute_pipeline.h"
 #include "context.h"
 #include "device_fit.h"
+#include "lights_types.h"
 #include "scene.h"
 #include "shared_types.h"
 
@@ -49,7 +50,10 @@ class gpu_scene {
     std::vector<gpu_light> lights;      // scene_lights, what lights sampling aims at
     std::vector<gpu_pbr> pbr;           // the PBR materials' parameters (gpu_material::pbr)
     std::vector<float> bsdf_tables;     // pbr.h's tables (bsdf_tables.h), where `pbr` is not empty
-    bool with_uv = false;               // some texture reads sphere hits' uv (RTVK_SPEC_UV)
+    // The punctual lights (punctual.h), each with their count; one unused element (count 0)
+    // when the scene has none.
+    std::vector<gpu_punctual> punctual;
+    bool with_uv = false;  // some texture reads sphere hits' uv (RTVK_SPEC_UV)
   };
   // The scene's arrays, its BVH built (over no spheres when !use_bvh).
   static host_arrays build(const scene& s, bool use_bvh);
@@ -76,7 +80,8 @@ class gpu_scene {
   // that traces rays through the scene.
   std::vector<buffer_binding> object_bindings() const;
   // The bindings of what shading reads besides the materials (textures, texels, the noise's
-  // tables, media, lights, the PBR materials' parameters): render.comp's and aov.comp's.
+  // tables, media, lights, the PBR materials' parameters, the punctual lights): render.comp's
+  // and aov.comp's.
   std::vector<buffer_binding> appearance_bindings() const;
   // The switches render.comp and the probes are specialized with (RTVK_SPEC_MOTION, QUADS,
   // TRIANGLES), written into `spec` (indexed by constant id, at least RTVK_SPEC_TRIANGLES + 1).
@@ -94,6 +99,7 @@ class gpu_scene {
   bool with_uv_;                       // RTVK_SPEC_UV
   bool any_textures_;                  // RTVK_SPEC_TEXTURES
   bool any_pbr_;                       // RTVK_SPEC_PBR
+  bool any_punctual_;                  // RTVK_SPEC_PUNCTUAL
   double build_seconds_;               // building the BVH took
   bool moves_;                         // some sphere has a velocity
   std::vector<buffer_spec> specs_;     // the arrays' sizes (gpu_scene.cpp's arrays_of), for copies

@@ -1,4 +1,5 @@
 #include "packing.h"
+#include "punctual.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -229,6 +230,28 @@ std::vector<gpu_pbr> to_gpu_pbrs(const scene& s) {
   std::vector<gpu_pbr> out;
   for (const auto& [name, m] : s.materials)
     if (m.type == material_type::pbr) out.push_back(to_gpu_pbr(m.pbr));
+  return out;
+}
+
+gpu_punctual to_gpu_punctual(const punctual_record& r, std::uint32_t count) {
+  gpu_punctual g{};
+  g.position = vec3(r.position);
+  g.kind = r.kind;
+  g.direction = vec3(r.direction);
+  g.angle_scale = float(r.angle_scale);
+  g.intensity = vec3(r.intensity);
+  g.angle_offset = float(r.angle_offset);
+  g.cone_gap = float(r.cone_gap);
+  g.count = count;
+  return g;
+}
+
+std::vector<gpu_punctual> to_gpu_punctuals(const scene& s) {
+  const auto count = std::uint32_t(s.punctual_lights.size());
+  std::vector<gpu_punctual> out;
+  for (const punctual_record& r : punctual_records(s.punctual_lights))
+    out.push_back(to_gpu_punctual(r, count));
+  if (out.empty()) out.push_back(gpu_punctual{});  // count 0
   return out;
 }
 

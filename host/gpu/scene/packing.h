@@ -5,6 +5,7 @@
 
 #include "camera.h"
 #include "light_sources.h"
+#include "lights_types.h"
 #include "scene.h"
 #include "scene_tree.h"
 #include "shared_types.h"
@@ -48,6 +49,13 @@ std::vector<gpu_texture> to_gpu_textures(const scene& s, std::vector<std::uint32
 gpu_perlin to_gpu_perlin(const perlin_tables& p);
 // The scene's media (geometry_of), rounded to float.
 std::vector<gpu_medium> to_gpu_media(const scene& s);
+
+// One punctual light's kernel record (punctual_record_of, formed in double) rounded to float,
+// with the array's light count.
+gpu_punctual to_gpu_punctual(const punctual_record& r, std::uint32_t count);
+// The scene's punctual lights, in order, each with their count; one unused element (count 0)
+// when it has none, so that the shader reads count 0 from a buffer that cannot be empty.
+std::vector<gpu_punctual> to_gpu_punctuals(const scene& s);
 
 // The lights sampling aims at (scene_lights), in the shared layout.
 std::vector<gpu_light> to_gpu_lights(const std::vector<light_record>& lights);

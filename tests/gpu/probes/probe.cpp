@@ -15,7 +15,7 @@ namespace {
 // Runs a probe shader once over a host-visible buffer it reads and writes in place.
 void run_in_place(gpu_context& ctx, std::span<const std::uint32_t> spirv, void* data,
                   std::size_t bytes, std::uint32_t groups, const gpu_buffer* ubo,
-                  const gpu_buffer* tables = nullptr) {
+                  const gpu_buffer* tables = nullptr, const gpu_buffer* punctual = nullptr) {
   gpu_buffer buf(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::upload);
   buf.write(data, bytes);
   std::vector<buffer_binding> bindings{
@@ -24,6 +24,8 @@ void run_in_place(gpu_context& ctx, std::span<const std::uint32_t> spirv, void* 
   if (tables)
     bindings.push_back(
         {RTVK_BINDING_BSDF_TABLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tables->get()});
+  if (punctual)
+    bindings.push_back({RTVK_BINDING_PUNCTUAL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, punctual->get()});
   const compute_pipeline pipeline(ctx, spirv, bindings, 0);
   ctx.submit_and_wait([&](VkCommandBuffer cb) {
     pipeline.bind(cb);
@@ -84,6 +86,18 @@ std::vector<pbr_probe_entry> run_pbr_probe(gpu_context& ctx, std::vector<pbr_pro
   tables.write(bsdf_table_data, sizeof bsdf_table_data);
   run_in_place(ctx, pbr_probe_shader(), entries.data(), entries.size() * sizeof(pbr_probe_entry),
                std::uint32_t((entries.size() + 63) / 64), nullptr, &tables);
+  return entries;
+}
+
+std::vector<punctual_probe_entry> run_punctual_probe(gpu_context& ctx,
+                                                     const std::vector<gpu_punctual>& lights,
+                                                     std::vector<punctual_probe_entry> entries) {
+  const std::size_t light_bytes = lights.size() * sizeof(gpu_punctual);
+  gpu_buffer buf(ctx, light_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::upload);
+  buf.write(lights.data(), light_bytes);
+  run_in_place(ctx, punctual_probe_shader(), entries.data(),
+               entries.size() * sizeof(punctual_probe_entry),
+               std::uint32_t((entries.size() + 63) / 64), nullptr, nullptr, &buf);
   return entries;
 }
 

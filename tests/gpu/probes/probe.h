@@ -6,6 +6,7 @@
 
 #include "camera.h"
 #include "context.h"
+#include "lights_types.h"
 #include "probe_types.h"
 #include "scene.h"
 #include "shared_types.h"
@@ -36,6 +37,13 @@ std::vector<light_probe_entry> run_light_probe(gpu_context& ctx,
 // Runs pbr_probe.comp: fills the outputs of each entry with pbr.h's sample, evaluation and
 // density (run_pbr_probe in pbr_probe.h).
 std::vector<pbr_probe_entry> run_pbr_probe(gpu_context& ctx, std::vector<pbr_probe_entry> entries);
+
+// Runs punctual_probe.comp over `lights` (at RTVK_BINDING_PUNCTUAL, as gpu_scene binds them):
+// fills the outputs of each entry with punctual.h's answers (run_punctual_probe in
+// punctual_probe.h).
+std::vector<punctual_probe_entry> run_punctual_probe(gpu_context& ctx,
+                                                     const std::vector<gpu_punctual>& lights,
+                                                     std::vector<punctual_probe_entry> entries);
 
 // Runs world_probe.comp over the scene's spheres (through the BVH, or every sphere in turn): fills
 // `t`, `hit`, `normal` and `material` of each entry with what hit_world finds along its ray.

@@ -8,6 +8,7 @@
 #include "light_probe_spv.h"
 #include "pbr_probe_spv.h"
 #include "probe_spv.h"
+#include "punctual_probe_spv.h"
 #include "rng_probe_spv.h"
 #include "world_probe_spv.h"
 
@@ -33,6 +34,9 @@ std::span<const std::uint32_t> light_probe_shader() {
 }
 std::span<const std::uint32_t> pbr_probe_shader() {
   return pbr_probe_spv;
+}
+std::span<const std::uint32_t> punctual_probe_shader() {
+  return punctual_probe_spv;
 }
 
 }  // namespace rtvk::gpu

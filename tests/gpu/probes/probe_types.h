@@ -249,6 +249,41 @@ static_assert(offsetof(pbr_probe_entry, eval_sampled) == 192);
 static_assert(sizeof(pbr_probe_entry) == 208);
 #endif
 
+// std430 array element for punctual_probe.comp (punctual_probe.h): a shading point, a light and
+// two uniform numbers for punctual_sample, and a direction whose sun radiance and density are
+// asked.
+#ifdef __cplusplus
+using vec2 = glm::vec2;  // GLSL's built-in
+#endif
+struct punctual_probe_entry {
+  vec3 p;             // in: the shading point
+  uint light;         // in: which punctual light
+  vec3 query;         // in: a direction for sun_radiance and sun_pdf
+  uint count;         // out: punctual_count
+  vec2 u;             // in: punctual_sample's uniform numbers in [0, 1)
+  float distance;     // out: light_sample::distance
+  float pdf;          // out: light_sample::pdf
+  vec3 wi;            // out: light_sample::wi
+  uint delta;         // out: 1 when light_sample::delta
+  vec3 radiance;      // out: light_sample::radiance
+  float sun_pdf;      // out: sun_pdf(light, query)
+  vec3 sun_radiance;  // out: sun_radiance(query)
+  uint pad0;          // unused
+};
+#ifdef __cplusplus
+static_assert(offsetof(punctual_probe_entry, query) == 16);
+static_assert(offsetof(punctual_probe_entry, count) == 28);
+static_assert(offsetof(punctual_probe_entry, u) == 32);
+static_assert(offsetof(punctual_probe_entry, distance) == 40);
+static_assert(offsetof(punctual_probe_entry, pdf) == 44);
+static_assert(offsetof(punctual_probe_entry, wi) == 48);
+static_assert(offsetof(punctual_probe_entry, delta) == 60);
+static_assert(offsetof(punctual_probe_entry, radiance) == 64);
+static_assert(offsetof(punctual_probe_entry, sun_pdf) == 76);
+static_assert(offsetof(punctual_probe_entry, sun_radiance) == 80);
+static_assert(sizeof(punctual_probe_entry) == 96);
+#endif
+
 RTVK_GPU_TYPES_END
 
 #endif  // RTVK_PROBE_TYPES_H
