@@ -4,6 +4,7 @@
 // render shaders once next-event estimation lights with them).
 #ifndef RTVK_PUNCTUAL_BUFFERS_GLSL
 #define RTVK_PUNCTUAL_BUFFERS_GLSL
+#include "lights_types.h"
 
 layout(std430, set = 0, binding = RTVK_BINDING_PUNCTUAL) readonly buffer punctual_block {
   gpu_punctual punctuals[];

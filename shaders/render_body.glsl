@@ -43,6 +43,12 @@ layout(push_constant) uniform push_block {
 };
 #include "scene_buffers.glsl"
 #include "appearance_buffers.glsl"
+#include "punctual_buffers.glsl"
+
+// Whether the scene has punctual lights: next-event estimation draws them (lights/nee.h), else
+// their code is compiled out.
+layout(constant_id = RTVK_SPEC_PUNCTUAL) const bool any_punctual = false;
+#define NEE_PUNCTUAL_COUNT (nee && any_punctual ? punctuals[0].count : 0u)
 
 // The lights scattering aims at (pdf.h's LIGHT_COUNT): none unless the pipeline samples them, so
 // that plain renders compile the lights' code out; under next-event estimation, the lamps.

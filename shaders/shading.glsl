@@ -81,7 +81,10 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
     }
   }
   if (!hit) {
-    if (iterations <= pc.loop_budget) c = path_missed(p, pc.sky_horizon, pc.sky_zenith);
+    iterations += NEE_PUNCTUAL_COUNT;  // the suns' densities where the path escapes (nee.h)
+    if (iterations <= pc.loop_budget)
+      c = nee ? path_missed_nee(p, pc.sky_horizon, pc.sky_zenith)
+              : path_missed(p, pc.sky_horizon, pc.sky_zenith);
     return true;
   }
   gpu_material m = materials[rec.material];

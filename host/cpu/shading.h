@@ -6,6 +6,7 @@
 #include "material.h"
 #include "medium.h"
 #include "pbr_shading.h"
+#include "punctual.h"
 #include "random.h"
 #include "ray_color.h"
 #include "scene.h"
@@ -27,11 +28,13 @@ struct scene_shading {
   std::vector<light_record> lights;    // what scattering aims at; empty: plain sampling
   std::vector<pbr_record> pbr;         // by material index: a PBR material's parameters (the
                                        // others' are the defaults, unread)
+  std::vector<punctual_record> punctual;  // the punctual lights (next-event estimation draws them)
   texture_tables tables() const {
     return {textures.records.data(), textures.texels.data(), perlin.vectors.data(),
             perlin.perm.data()};
   }
   light_table light_list() const { return {lights.data(), uint(lights.size())}; }
+  punctual_table punctual_list() const { return {punctual.data(), uint(punctual.size())}; }
 };
 
 // The color seen along r: bounces through the materials up to max_depth scatter events, and

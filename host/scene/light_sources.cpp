@@ -124,6 +124,12 @@ std::vector<light_record> scene_lamps(const scene& s) {
   return out;
 }
 
+void resolve_sampling(scene& s) {
+  if (s.render.sampling == sampling_mode::automatic && !s.punctual_lights.empty() &&
+      s.media.empty())
+    s.render.sampling = sampling_mode::nee;
+}
+
 bool samples_lights(std::size_t lights, sampling_mode m) {
   if (m == sampling_mode::plain || m == sampling_mode::nee) return false;
   if (m == sampling_mode::lights) return true;

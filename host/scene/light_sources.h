@@ -19,6 +19,10 @@ std::vector<light_record> scene_lights(const scene& s);
 // draws (shaders/shared/lights/nee.h).
 std::vector<light_record> scene_lamps(const scene& s);
 
+// `auto` made definite where it is not what samples_lights says: next-event estimation where the
+// scene has punctual lights (only it can draw a delta light) and no media (which it refuses).
+void resolve_sampling(scene& s);
+
 // Whether a render under mode `m` uses next-event estimation (sampling_mode::nee).
 inline bool uses_nee(sampling_mode m) { return m == sampling_mode::nee; }
 

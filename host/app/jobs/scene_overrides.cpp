@@ -216,6 +216,7 @@ void scene_overrides::apply(scene& s) const {
   std::optional<rtvk::calibration> cal;
   if (calibration) cal = read_opencv_calibration(*calibration);
   apply_render(*this, s.render);
+  resolve_sampling(s);
   try {  // lights asked of a scene without (or with too many)
     check_sampling(s, s.render, sampling ? "--sampling" : s.name + ": /render/sampling");
   } catch (const std::invalid_argument& e) {
