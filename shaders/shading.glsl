@@ -4,6 +4,7 @@
 // light_count() (pdf.h) declared by the including shader.
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
+#include "environment.h"
 #include "medium.h"
 #include "pbr_shading.h"
 #include "ray_color.h"
@@ -17,6 +18,9 @@ layout(constant_id = RTVK_SPEC_MEDIA) const bool any_media = false;
 // Whether some material is PBR: without, pbr_shading.h's code is compiled out (the books' scenes
 // run the shader they ran before it).
 layout(constant_id = RTVK_SPEC_PBR) const bool any_pbr = false;
+// Whether the scene has an environment map: without, environment.h's code is compiled out and
+// escaping rays see the sky as they always did.
+layout(constant_id = RTVK_SPEC_ENVIRONMENT) const bool any_environment = false;
 
 // Medium k as the shared kernels take it.
 medium_geometry medium_at(uint k) {
@@ -64,7 +68,12 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
     }
   }
   if (!hit) {
-    if (iterations <= pc.loop_budget) c = path_missed(p, pc.sky_horizon, pc.sky_zenith);
+    if (iterations <= pc.loop_budget) {
+      if (any_environment && path_sees_environment(p, environment_visible()))
+        c = path_missed_into(p, environment_radiance(p.r.direction));
+      else
+        c = path_missed(p, pc.sky_horizon, pc.sky_zenith);
+    }
     return true;
   }
   gpu_material m = materials[rec.material];

@@ -1,6 +1,8 @@
 #pragma once
+#include <optional>
 #include <span>
 
+#include "environment_map.h"
 #include "hittable.h"
 #include "light_sources.h"
 #include "material.h"
@@ -26,6 +28,7 @@ struct scene_shading {
   std::vector<light_record> lights;    // what scattering aims at; empty: plain sampling
   std::vector<pbr_record> pbr;         // by material index: a PBR material's parameters (the
                                        // others' are the defaults, unread)
+  std::optional<environment_tables> environment;  // what escaping rays see; none: the sky
   texture_tables tables() const {
     return {textures.records.data(), textures.texels.data(), perlin.vectors.data(),
             perlin.perm.data()};

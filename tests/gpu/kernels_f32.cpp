@@ -6,6 +6,7 @@
 #include "kernels_f32.h"
 
 #include "camera_rays.h"
+#include "environment_probe.h"
 #include "hit_sphere.h"
 #include "kernel_probe.h"
 #include "light_probe.h"
@@ -56,6 +57,11 @@ void run_light_probe(gpu::light_probe_entry& e) {
 
 void run_pbr_probe(gpu::pbr_probe_entry& e) {
   k::run_pbr_probe(e);
+}
+
+void run_environment_probe(const std::uint32_t* texels, const float* table,
+                           gpu::environment_probe_entry& e) {
+  k::run_environment_probe(k::environment_table{texels, table}, e);
 }
 
 bool pbr_sample(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 u, glm::vec3& wi,

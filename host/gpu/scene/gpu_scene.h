@@ -50,6 +50,10 @@ class gpu_scene {
     std::vector<gpu_pbr> pbr;           // the PBR materials' parameters (gpu_material::pbr)
     std::vector<float> bsdf_tables;     // pbr.h's tables (bsdf_tables.h), where `pbr` is not empty
     bool with_uv = false;               // some texture reads sphere hits' uv (RTVK_SPEC_UV)
+    // The environment map (lights/environment.h): RGBE texels and the sampling table; empty
+    // where the scene has none.
+    std::vector<std::uint32_t> environment_texels;
+    std::vector<float> environment_table;
   };
   // The scene's arrays, its BVH built (over no spheres when !use_bvh).
   static host_arrays build(const scene& s, bool use_bvh);
@@ -91,6 +95,7 @@ class gpu_scene {
   bool with_uv_;                       // RTVK_SPEC_UV
   bool any_textures_;                  // RTVK_SPEC_TEXTURES
   bool any_pbr_;                       // RTVK_SPEC_PBR
+  bool any_environment_;               // RTVK_SPEC_ENVIRONMENT
   double build_seconds_;               // building the BVH took
   bool moves_;                         // some sphere has a velocity
   std::vector<buffer_spec> specs_;     // the arrays' sizes (gpu_scene.cpp's arrays_of), for copies

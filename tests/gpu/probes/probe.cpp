@@ -15,7 +15,7 @@ namespace {
 // Runs a probe shader once over a host-visible buffer it reads and writes in place.
 void run_in_place(gpu_context& ctx, std::span<const std::uint32_t> spirv, void* data,
                   std::size_t bytes, std::uint32_t groups, const gpu_buffer* ubo,
-                  const gpu_buffer* tables = nullptr) {
+                  const gpu_buffer* tables = nullptr, std::span<const buffer_binding> more = {}) {
   gpu_buffer buf(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::upload);
   buf.write(data, bytes);
   std::vector<buffer_binding> bindings{
@@ -24,6 +24,7 @@ void run_in_place(gpu_context& ctx, std::span<const std::uint32_t> spirv, void* 
   if (tables)
     bindings.push_back(
         {RTVK_BINDING_BSDF_TABLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tables->get()});
+  bindings.insert(bindings.end(), more.begin(), more.end());
   const compute_pipeline pipeline(ctx, spirv, bindings, 0);
   ctx.submit_and_wait([&](VkCommandBuffer cb) {
     pipeline.bind(cb);
@@ -84,6 +85,24 @@ std::vector<pbr_probe_entry> run_pbr_probe(gpu_context& ctx, std::vector<pbr_pro
   tables.write(bsdf_table_data, sizeof bsdf_table_data);
   run_in_place(ctx, pbr_probe_shader(), entries.data(), entries.size() * sizeof(pbr_probe_entry),
                std::uint32_t((entries.size() + 63) / 64), nullptr, &tables);
+  return entries;
+}
+
+std::vector<environment_probe_entry> run_environment_probe(
+    gpu_context& ctx, const std::vector<std::uint32_t>& texels, const std::vector<float>& table,
+    std::vector<environment_probe_entry> entries) {
+  gpu_buffer t(ctx, texels.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+               memory_use::upload);
+  t.write(texels.data(), texels.size() * sizeof(std::uint32_t));
+  gpu_buffer c(ctx, table.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+               memory_use::upload);
+  c.write(table.data(), table.size() * sizeof(float));
+  const buffer_binding more[] = {
+      {RTVK_BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.get()},
+      {RTVK_BINDING_ENVIRONMENT_CDF, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, c.get()}};
+  run_in_place(ctx, environment_probe_shader(), entries.data(),
+               entries.size() * sizeof(environment_probe_entry),
+               std::uint32_t((entries.size() + 63) / 64), nullptr, nullptr, more);
   return entries;
 }
 

@@ -36,6 +36,11 @@ std::vector<light_probe_entry> run_light_probe(gpu_context& ctx,
 // Runs pbr_probe.comp: fills the outputs of each entry with pbr.h's sample, evaluation and
 // density (run_pbr_probe in pbr_probe.h).
 std::vector<pbr_probe_entry> run_pbr_probe(gpu_context& ctx, std::vector<pbr_probe_entry> entries);
+// Runs environment_probe.comp on a map's RGBE texels and sampling table (environment.h): fills
+// each entry's outputs (run_environment_probe in environment_probe.h).
+std::vector<environment_probe_entry> run_environment_probe(
+    gpu_context& ctx, const std::vector<std::uint32_t>& texels, const std::vector<float>& table,
+    std::vector<environment_probe_entry> entries);
 
 // Runs world_probe.comp over the scene's spheres (through the BVH, or every sphere in turn): fills
 // `t`, `hit`, `normal` and `material` of each entry with what hit_world finds along its ray.
