@@ -3,8 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "environment_map.h"
+#include "light_sources.h"
 #include "scene.h"
+#include "scene_file.h"
 
 namespace rtvk::test {
 

@@ -1,5 +1,5 @@
-// libFuzzer target for the environment-map reader (host/scene/environment_map.h): Radiance .hdr
-// through stb_image after rtvk's own walk of its scanlines, OpenEXR .exr through OpenEXR, told
+// libFuzzer target for the environment-map reader (host/formats/environment_file.cpp): Radiance
+// .hdr through stb_image after rtvk's own walk of its scanlines, OpenEXR .exr through OpenEXR, told
 // apart by content. Any input may be rejected, but only with usage_error; anything else -- a
 // crash, another exception, undefined behaviour, a read past a buffer -- is a bug. Every map
 // accepted has its size's texels within the limit, and a sampling table whose CDFs run from 0 to
@@ -9,8 +9,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "environment_map.h"
 #include "errors.h"
+#include "light_sources.h"
+#include "scene_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);

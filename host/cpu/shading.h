@@ -2,7 +2,6 @@
 #include <optional>
 #include <span>
 
-#include "environment_map.h"
 #include "hittable.h"
 #include "light_sources.h"
 #include "material.h"

@@ -7,7 +7,6 @@
 #include "camera.h"
 #include "camera_path.h"
 #include "disk.h"
-#include "environment_map.h"
 #include "material.h"
 #include "object_group.h"
 #include "quad.h"

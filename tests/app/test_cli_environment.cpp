@@ -51,9 +51,10 @@ TEST(CliEnvironment, TheFlagAndTheSceneFieldRenderTheSameImage) {
       run_rtvk({"render", "--scene", scene, "--environment", hdr + ":0.5", "-q", "-o", b});
   ASSERT_EQ(rb.status, 0) << rb.err;
   EXPECT_EQ(file_bytes(a), file_bytes(b));
-  // Strength 1 is brighter: the flag's strength is used.
+  // Strength 1 is brighter: the flag's strength is used (without one, the scene's is kept).
   const std::string c = (dir.path() / "c.ppm").string();
-  ASSERT_EQ(run_rtvk({"render", "--scene", scene, "--environment", hdr, "-q", "-o", c}).status, 0);
+  ASSERT_EQ(
+      run_rtvk({"render", "--scene", scene, "--environment", hdr + ":1", "-q", "-o", c}).status, 0);
   EXPECT_NE(file_bytes(a), file_bytes(c));
 }
 

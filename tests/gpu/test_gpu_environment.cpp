@@ -39,14 +39,15 @@ TEST_F(GpuEnvironment, AnInvisibleMapShowsTheSkyToCameraRaysOnly) {
   EXPECT_NEAR(fb.at(12, 12).g, 0.75, 1e-5);
 }
 
-// The test map's sun over diffuse, metal and glass spheres: the device's image is the CPU's
-// (the Monte Carlo agreement rule the Gpu* image tests use).
+// The test map's sun over diffuse, metal and glass spheres: the device's image is the CPU's.
+// Measured on lavapipe (Mesa 22.3.6): 72.2 dB, no pixel over 2 levels (measured_agreement's
+// margin below that).
 TEST_F(GpuEnvironment, ASunlitSceneMatchesTheCpu) {
   const scene s = test::sunlit_scene();
   const image_rgb8 cpu = test::cpu_image(s);
   const image_difference d =
       compare_images(test::gpu_image(gpu(), s), cpu, monte_carlo_agreement.tolerance);
-  const agreement rule = test::measured_agreement(40, 0.01, cpu.width * cpu.height);
+  const agreement rule = test::measured_agreement(72, 0, cpu.width * cpu.height);
   EXPECT_GE(d.psnr_db, rule.min_psnr_db);
   EXPECT_LE(d.share_over, rule.max_share) << d.pixels_over << " pixels over 2 levels";
 }
@@ -68,7 +69,8 @@ TEST_F(GpuEnvironmentKernels, TheDeviceSamplesAndLooksUpAsTheFloatCompilation) {
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   std::vector<gpu::environment_probe_entry> in(4096);
   for (gpu::environment_probe_entry& p : in) {
-    p.u = glm::vec2(uniform(rng), uniform(rng));
+    p.ux = uniform(rng);
+    p.uy = uniform(rng);
     const float z = 2 * uniform(rng) - 1, phi = 6.2831853f * uniform(rng);
     const float r = std::sqrt(std::max(0.0f, 1 - z * z));
     p.query = glm::vec3(r * std::cos(phi), z, r * std::sin(phi));
@@ -82,7 +84,7 @@ TEST_F(GpuEnvironmentKernels, TheDeviceSamplesAndLooksUpAsTheFloatCompilation) {
     gpu::environment_probe_entry cpu = in[i];
     f32::run_environment_probe(texels.data(), table.data(), cpu);
     const gpu::environment_probe_entry& g = out[i];
-    ASSERT_EQ(g.trips, 16u);
+    ASSERT_EQ(g.trips, 15u);  // ceil(log2 256) + ceil(log2 128)
     ASSERT_EQ(g.trips, cpu.trips);
     ASSERT_EQ(g.visible, 0u);
     radiance_differs += g.radiance != cpu.radiance;

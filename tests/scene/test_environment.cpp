@@ -7,10 +7,11 @@
 #include <random>
 
 #include "bsdf/chi_square.h"
-#include "environment_map.h"
 #include "environment_scenes.h"
 #include "errors.h"
+#include "light_sources.h"
 #include "render_helpers.h"
+#include "scene_file.h"
 #include "temp_dir.h"
 
 namespace rtvk {
@@ -41,7 +42,7 @@ TEST(EnvironmentFile, TheTestMapReadsAsWrittenAndItsRgbeIsExact) {
   ASSERT_EQ(e.image->width, 256);
   ASSERT_EQ(e.image->height, 128);
   // RGBE words decode to what stb_image decoded, and encode back to the same words.
-  for (float v : {0.0f, 1.0f, 0.25f, 5000.0f, 0x1p-100f, 3.0e38f}) {
+  for (float v : {0.0f, 1.0f, 0.25f, 5000.0f, 0x1p-100f, 1.0e38f}) {
     const std::uint32_t w = encode_rgbe(v, v / 2, 0);
     const double s = std::ldexp(1.0, int(w >> 24) - 136);
     EXPECT_NEAR((w & 255) * s, v, v / 128) << v;
@@ -142,12 +143,13 @@ TEST(EnvironmentSampling, ASamplesPdfAndRadianceAreThoseOfItsDirection) {
   const int n = 20000;
   for (int i = 0; i < n; ++i) {
     const light_sample s = environment_sample(t.view(), real2(uniform(rng), uniform(rng)));
-    ASSERT_NEAR(glm::length(s.wi), 1, 1e-12);
+    ASSERT_NEAR(glm::length(s.wi), 1, 1e-6);  // the rotation is float cos and sin
     ASSERT_EQ(s.distance, light_at_infinity);
     ASSERT_FALSE(s.delta);
     ASSERT_GT(s.pdf, 0);
-    // A sample on a texel's edge may land in its neighbor when mapped back: rare.
-    pdf_off += std::abs(environment_pdf(t.view(), s.wi) / s.pdf - 1) > 1e-9;
+    // The same texel, sin(theta) within the rotation's float rounding; a sample on a texel's
+    // edge may land in its neighbor when turned back: rare.
+    pdf_off += std::abs(environment_pdf(t.view(), s.wi) / s.pdf - 1) > 1e-6;
     if (environment_radiance(t.view(), s.wi) == s.radiance) sun += s.radiance.x > 1000;
   }
   EXPECT_LE(pdf_off, n / 1000);

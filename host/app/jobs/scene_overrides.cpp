@@ -9,6 +9,7 @@
 #include "format.h"
 #include "light_sources.h"
 #include "parse_values.h"
+#include "scene_file.h"
 
 namespace rtvk {
 namespace {

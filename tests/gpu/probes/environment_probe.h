@@ -16,7 +16,7 @@ using ::rtvk::gpu::environment_probe_entry;  // the struct that crosses; GLSL se
 inline void run_environment_probe(ENV_PARAM INOUT(environment_probe_entry) e) {
   e.radiance_query = environment_radiance(ENV e.query);
   e.pdf_query = environment_pdf(ENV e.query);
-  light_sample ls = environment_sample(ENV e.u);
+  light_sample ls = environment_sample(ENV real2(e.ux, e.uy));
   e.wi = ls.wi;
   e.pdf = ls.pdf;
   e.radiance = ls.radiance;

@@ -261,7 +261,8 @@ struct environment_probe_entry {
   float pdf_sampled;    // out: environment_pdf(wi)
   vec3 radiance;        // out: environment_sample(u).radiance
   uint trips;           // out: environment_sample_trips
-  vec2 u;               // in: the sampler's uniform numbers in [0, 1)
+  float ux;             // in: the sampler's uniform numbers in [0, 1): u.x
+  float uy;             // and u.y
   uint visible;         // out: environment_visible
   uint pad;             // unused
 };
@@ -273,7 +274,8 @@ static_assert(offsetof(environment_probe_entry, wi) == 32);
 static_assert(offsetof(environment_probe_entry, pdf_sampled) == 44);
 static_assert(offsetof(environment_probe_entry, radiance) == 48);
 static_assert(offsetof(environment_probe_entry, trips) == 60);
-static_assert(offsetof(environment_probe_entry, u) == 64);
+static_assert(offsetof(environment_probe_entry, ux) == 64);
+static_assert(offsetof(environment_probe_entry, uy) == 68);
 static_assert(offsetof(environment_probe_entry, visible) == 72);
 static_assert(sizeof(environment_probe_entry) == 80);
 #endif
