@@ -26,12 +26,24 @@ void write_file(const std::filesystem::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
-// A 4x2 OpenEXR map of one value.
+// A 4x2 OpenEXR map of one color, (value, value / 2, value / 4).
 void write_exr(const std::filesystem::path& path, float value) {
-  std::vector<Imf::Rgba> px(8, Imf::Rgba(value, value, value, 1));
+  std::vector<Imf::Rgba> px(8, Imf::Rgba(value, value / 2, value / 4, 1));
   Imf::RgbaOutputFile f(path.c_str(), 4, 2, Imf::WRITE_RGB);
   f.setFrameBuffer(px.data(), 1, 4);
   f.writePixels(2);
+}
+
+// An OpenEXR map's R, G and B channels are its radiance (values RGBE holds exactly).
+TEST(CliEnvironment, AnExrMapIsReadAsItsChannels) {
+  test::temp_dir dir;
+  write_exr(dir.path() / "m.exr", 2.0f);
+  environment_map e;
+  e.image = load_environment_image(dir.path() / "m.exr", "test");
+  ASSERT_EQ(e.image->width, 4);
+  ASSERT_EQ(e.image->height, 2);
+  const environment_tables t(e);
+  EXPECT_EQ(environment_radiance(t.view(), vec3(0.3, -0.5, 0.8)), color(2.0, 1.0, 0.5));
 }
 
 TEST(CliEnvironment, TheFlagAndTheSceneFieldRenderTheSameImage) {
