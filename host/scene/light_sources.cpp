@@ -40,6 +40,7 @@ double luminance(const color& c) {
   return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
 }
 
+// An RGBE texel's radiance, as environment.h's environment_texel decodes it (in double).
 color decode(std::uint32_t w) {
   const std::uint32_t e = w >> 24;
   if (e == 0) return color(0);
