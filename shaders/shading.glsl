@@ -1,7 +1,8 @@
 // ray_color's loop, a bounce per trip: the steps are the shared kernels' (ray_color.h), which
 // the CPU runs too (host/cpu/shading.cpp); what is the GPU's own is the world search (world.glsl)
 // and the loop budget. Expects `materials` (gpu_material[]), `pc` (render_push), `lights` and
-// light_count() (pdf.h) declared by the including shader.
+// light_count() (pdf.h), `environment_texels` and `environment_table` (environment.h) declared by
+// the including shader.
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
 #include "environment.h"
