@@ -10,6 +10,7 @@
 
 #include "environment_scenes.h"
 #include "gpu/kernels_f32.h"
+#include "gpu_engine.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
 #include "probe.h"
@@ -18,7 +19,18 @@
 namespace rtvk {
 namespace {
 
-class GpuEnvironment : public test::GpuTest {};
+class GpuEnvironment : public test::GpuTest {
+ protected:
+  // The sums of a render of `s` on traversal `t` (as GpuPbr's).
+  gpu::sum_image sums(const scene& s, gpu_traversal t) {
+    gpu::gpu_render_options o;
+    o.engine.traversal = t;
+    gpu::gpu_engine engine(gpu(), s, o);
+    const camera cam = test::scene_camera(s);
+    return engine.render_sums({cam}, s.render,
+                              whole_render(cam.image_width(), cam.image_height(), s.render.spp))[0];
+  }
+};
 
 // The white furnace of tests/scene/test_environment.cpp on the device: L everywhere.
 TEST_F(GpuEnvironment, AWhiteSphereInAUniformEnvironmentIsItsRadiance) {
@@ -50,6 +62,29 @@ TEST_F(GpuEnvironment, ASunlitSceneMatchesTheCpu) {
   const agreement rule = test::measured_agreement(72, 0, cpu.width * cpu.height);
   EXPECT_GE(d.psnr_db, rule.min_psnr_db);
   EXPECT_LE(d.share_over, rule.max_share) << d.pixels_over << " pixels over 2 levels";
+}
+
+// The hardware paths see the map as the compute BVH does: the same sums exactly (Mesa 25's
+// lavapipe: the sunlit scene's 48x32 pixels; skipped where the device has no ray tracing).
+TEST_F(GpuEnvironment, TheHardwarePathsGiveTheComputeBvhsExactSums) {
+  scene s = test::sunlit_scene();
+  s.render.spp = 4;
+  const gpu::sum_image want = sums(s, gpu_traversal::compute);
+  for (gpu_traversal t : {gpu_traversal::ray_query, gpu_traversal::ray_pipeline}) {
+    const bool has =
+        t == gpu_traversal::ray_query ? ctx_->ray_queries() : ctx_->ray_tracing_pipelines();
+    if (!has) continue;  // Mesa 22.3's lavapipe
+    const gpu::sum_image got = sums(s, t);
+    ASSERT_EQ(got.pixels.size(), want.pixels.size());
+    int differ = 0;
+    for (std::size_t i = 0; i < want.pixels.size(); ++i) {
+      const gpu::pixel_sum& a = want.pixels[i];
+      const gpu::pixel_sum& b = got.pixels[i];
+      differ += a.r != b.r || a.g != b.g || a.b != b.b || a.r_top != b.r_top ||
+                a.g_top != b.g_top || a.b_top != b.b_top || a.samples != b.samples;
+    }
+    EXPECT_EQ(differ, 0) << (t == gpu_traversal::ray_query ? "rt-query" : "rt-pipeline");
+  }
 }
 
 class GpuEnvironmentKernels : public test::GpuTest {};
