@@ -49,6 +49,10 @@ layout(push_constant) uniform push_block {
 // their code is compiled out.
 layout(constant_id = RTVK_SPEC_PUNCTUAL) const bool any_punctual = false;
 #define NEE_PUNCTUAL_COUNT (nee && any_punctual ? punctuals[0].count : 0u)
+// Whether the scene has an environment map: without, environment.h's code is compiled out and
+// escaping rays see the sky as they always did; next-event estimation draws it where it has one.
+layout(constant_id = RTVK_SPEC_ENVIRONMENT) const bool any_environment = false;
+#define NEE_ENVIRONMENT (nee && any_environment)
 
 // The lights scattering aims at (pdf.h's LIGHT_COUNT): none unless the pipeline samples them, so
 // that plain renders compile the lights' code out; under next-event estimation, the lamps.

@@ -1,9 +1,11 @@
 // ray_color's loop, a bounce per trip: the steps are the shared kernels' (ray_color.h), which
 // the CPU runs too (host/cpu/shading.cpp); what is the GPU's own is the world search (world.glsl)
 // and the loop budget. Expects `materials` (gpu_material[]), `pc` (render_push), `lights` and
-// light_count() (pdf.h) declared by the including shader.
+// light_count() (pdf.h), `environment_texels` and `environment_table` (environment.h) declared by
+// the including shader.
 #ifndef RTVK_SHADING_GLSL
 #define RTVK_SHADING_GLSL
+#include "environment.h"
 #include "medium.h"
 #include "nee_pbr.h"
 #include "pbr_shading.h"
@@ -82,9 +84,13 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   }
   if (!hit) {
     iterations += NEE_PUNCTUAL_COUNT;  // the suns' densities where the path escapes (nee.h)
-    if (iterations <= pc.loop_budget)
-      c = nee ? path_missed_nee(p, pc.sky_horizon, pc.sky_zenith)
-              : path_missed(p, pc.sky_horizon, pc.sky_zenith);
+    if (iterations > pc.loop_budget) return true;
+    if (nee)
+      c = path_missed_nee(p, pc.sky_horizon, pc.sky_zenith);
+    else if (any_environment && path_sees_environment(p, environment_visible()))
+      c = path_missed_into(p, environment_radiance(p.r.direction));
+    else
+      c = path_missed(p, pc.sky_horizon, pc.sky_zenith);
     return true;
   }
   gpu_material m = materials[rec.material];
@@ -109,6 +115,8 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
       (any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo) * rec.color.xyz;
   // The lights' densities loop over every light (pdf.h): lavapipe counts those trips too.
   iterations += light_count();
+  // Next-event estimation's draw toward the environment: its two binary searches.
+  if (nee && any_environment) iterations += environment_sample_trips();
   if (pbr) {
     precise vec3 wo = -unit_vector(p.r.direction);
     gpu_pbr q = pbrs[m.pbr];

@@ -15,7 +15,22 @@ scene_shading::scene_shading(const scene& s, bool sample_lights, bool nee_)
   if (nee) lights = scene_lamps(s);
   if (nee) punctual = punctual_records(s.punctual_lights);
   for (const material& m : materials) pbr.push_back(pbr_record_of(m.pbr));
+  if (s.environment) environment.emplace(*s.environment);
 }
+
+namespace {
+
+// p.r escaped: the sky, or the environment map where the scene has one and p sees it.
+color missed(const path_state& p, const scene_shading& shading, const sky& background) {
+  if (shading.environment) {
+    const environment_table env = shading.environment->view();
+    if (path_sees_environment(p, environment_visible(env)))
+      return path_missed_into(p, environment_radiance(env, p.r.direction));
+  }
+  return path_missed(p, background.horizon, background.zenith);
+}
+
+}  // namespace
 
 // The book's recursion as a loop over the shared steps (ray_color.h); shaders/shading.glsl runs
 // the same steps, a bounce per trip. The media are tested after the world, within its hit: the
@@ -36,7 +51,7 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
         if (hit_medium(m, p.r, t_min, hit ? rec.t : infinity, medium_random(s, m.index), rec))
           hit = true;
     }
-    if (!hit) return path_missed(p, background.horizon, background.zenith);
+    if (!hit) return missed(p, shading, background);
     const material& m = shading.materials[rec.material];
     if (m.type == material_type::pbr) {
       color c;

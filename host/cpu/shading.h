@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <span>
 
 #include "hittable.h"
@@ -29,6 +30,7 @@ struct scene_shading {
   std::vector<pbr_record> pbr;         // by material index: a PBR material's parameters (the
                                        // others' are the defaults, unread)
   std::vector<punctual_record> punctual;  // the punctual lights (next-event estimation draws them)
+  std::optional<environment_tables> environment;  // what escaping rays see; none: the sky
   texture_tables tables() const {
     return {textures.records.data(), textures.texels.data(), perlin.vectors.data(),
             perlin.perm.data()};

@@ -121,6 +121,39 @@ void write_sky(const scene& s, json& root) {
     root["sky"] = {{"horizon", vec_json(s.sky.horizon)}, {"zenith", vec_json(s.sky.zenith)}};
 }
 
+// The environment map escaping rays see instead of the sky (docs/lighting.md): its file, relative
+// to the scene file and within the folder its files may use, and how it is turned and scaled.
+void read_environment(const scene_reader& r, const json& root, scene& s) {
+  if (!root.contains("environment")) return;
+  const std::string p = "/environment";
+  const json& j = root["environment"];
+  r.only_fields(j, p, {"file", "rotation", "strength", "visible"});
+  const json& f = r.required(j, p, "file");
+  if (!f.is_string() || f.get<std::string>().empty())
+    r.fail(p + "/file", "expected a file name, got " + r.type_of(f));
+  environment_map e;
+  e.file = f.get<std::string>();
+  const std::string field = r.file() + ": " + p + "/file";
+  const std::filesystem::path file = r.base() / e.file;
+  r.guard().check(file, field, e.file);
+  e.image = load_environment_image(file, field);
+  if (j.contains("rotation")) e.rotation = r.number_in(j["rotation"], p + "/rotation", -3600, 3600);
+  if (j.contains("strength")) e.strength = r.number_in(j["strength"], p + "/strength", 0, 1e9);
+  if (j.contains("visible")) {
+    if (!j["visible"].is_boolean())
+      r.fail(p + "/visible", "expected true or false, got " + r.type_of(j["visible"]));
+    e.visible = j["visible"].get<bool>();
+  }
+  s.environment = std::move(e);
+}
+
+void write_environment(const scene& s, json& root) {
+  if (!s.environment) return;
+  const environment_map& e = *s.environment;
+  root["environment"] = {
+      {"file", e.file}, {"rotation", e.rotation}, {"strength", e.strength}, {"visible", e.visible}};
+}
+
 // Each part of a scene file: the top-level fields it owns, its reader and its writer. Parts are
 // read and written in this order: cameras first, materials before the objects that name them.
 struct section {
@@ -140,6 +173,7 @@ const section sections[] = {
     {{"camera", "cameras"}, read_cameras, write_cameras},
     {{"render"}, read_settings, write_settings},
     {{"sky", "background"}, read_sky, write_sky},
+    {{"environment"}, read_environment, write_environment},
     {{"noise_seed", "materials"}, read_materials, write_materials},
     {object_fields(), read_scene_objects, write_scene_objects},
     {{"groups", "instances"}, read_groups, write_groups},

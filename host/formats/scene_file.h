@@ -35,4 +35,14 @@ bool names_scene_file(const std::string& value);
 // names confined as `access` says).
 scene load_scene(const std::string& value, const file_access& access = {});
 
+// Reads a Radiance .hdr (stb_image) or OpenEXR .exr file (told apart by content) as an
+// environment image. Throws usage_error naming `name` (the field or flag) and the file: missing,
+// unreadable, not an HDR image, truncated, with a texel not finite or negative, or too large.
+std::shared_ptr<const environment_image> load_environment_image(const std::filesystem::path& file,
+                                                                const std::string& name);
+
+// The same for a file's bytes (the fuzzer's entry); `where` leads every message.
+std::shared_ptr<const environment_image> decode_environment_image(const std::string& bytes,
+                                                                  const std::string& where);
+
 }  // namespace rtvk

@@ -95,6 +95,42 @@ void build_alias_table(std::vector<light_record>& lights, std::size_t count) {
   for (std::size_t k : large) lights[k].alias_q = 1, lights[k].alias = std::uint32_t(k);
 }
 
+// Rec. 709 luminance.
+double luminance(const color& c) {
+  return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
+
+// An RGBE texel's radiance, as environment.h's environment_texel decodes it (in double).
+color decode(std::uint32_t w) {
+  const std::uint32_t e = w >> 24;
+  if (e == 0) return color(0);
+  const double s = std::ldexp(1.0, int(e) - 136);
+  return color((w & 255) * s, ((w >> 8) & 255) * s, ((w >> 16) & 255) * s);
+}
+
+// Writes a CDF of the weights (n + 1 entries from `out`): 0, the running sums over their total,
+// 1; a uniform one where the total is 0. Returns the total.
+double write_cdf(const std::vector<double>& weights, float* out) {
+  double total = 0;
+  for (double w : weights) total += w;
+  const std::size_t n = weights.size();
+  double sum = 0;
+  out[0] = 0.0f;
+  for (std::size_t i = 1; i < n; ++i) {
+    sum += weights[i - 1];
+    out[i] = total > 0 ? float(sum / total) : float(double(i) / double(n));
+  }
+  out[n] = 1.0f;
+  return total;
+}
+
+// ceil(log2(n)): the trips of environment_search over n steps.
+std::uint32_t search_trips(std::uint64_t n) {
+  std::uint32_t trips = 0;
+  while ((std::uint64_t(1) << trips) < n) ++trips;
+  return trips;
+}
+
 }  // namespace
 
 std::vector<light_record> scene_lights(const scene& s) {
@@ -225,6 +261,31 @@ std::vector<punctual_record> punctual_records(const std::vector<punctual_light>&
   std::vector<punctual_record> out;
   for (const punctual_light& l : lights) out.push_back(punctual_record_of(l));
   return out;
+}
+
+std::vector<float> environment_table_of(const environment_map& e) {
+  const environment_image& image = *e.image;
+  const std::size_t w = std::size_t(image.width), h = std::size_t(image.height);
+  std::vector<float> table(RTVK_ENV_HEADER + (h + 1) + h * (w + 1), 0.0f);
+  const double radians = e.rotation * 3.14159265358979323846 / 180.0;
+  table[RTVK_ENV_WIDTH] = float(w);
+  table[RTVK_ENV_HEIGHT] = float(h);
+  table[RTVK_ENV_STRENGTH] = float(e.strength);
+  table[RTVK_ENV_COS] = float(std::cos(radians));
+  table[RTVK_ENV_SIN] = float(std::sin(radians));
+  table[RTVK_ENV_VISIBLE] = e.visible ? 1.0f : 0.0f;
+  table[RTVK_ENV_TRIPS] = float(search_trips(w) + search_trips(h));
+  // Each texel weighs its luminance times sin(theta) at its row's center: the solid angle a row
+  // spans shrinks toward the poles.
+  std::vector<double> rows(h), texels(w);
+  for (std::size_t y = 0; y < h; ++y) {
+    const double sin_theta = std::sin(3.14159265358979323846 * (double(y) + 0.5) / double(h));
+    for (std::size_t x = 0; x < w; ++x)
+      texels[x] = luminance(decode(image.texels[y * w + x])) * sin_theta;
+    rows[y] = write_cdf(texels, &table[RTVK_ENV_HEADER + h + 1 + y * (w + 1)]);
+  }
+  write_cdf(rows, &table[RTVK_ENV_HEADER]);
+  return table;
 }
 
 }  // namespace rtvk

@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "environment.h"
 #include "pdf.h"
 #include "render_settings.h"
 #include "scene.h"
@@ -59,5 +60,18 @@ punctual_record punctual_record_of(const punctual_light& l);
 
 // Every light of `lights`, in order.
 std::vector<punctual_record> punctual_records(const std::vector<punctual_light>& lights);
+// The map's sampling table (environment.h's layout): its header (size, strength, rotation,
+// visibility, the sampler's loop trips) and the CDFs of luminance x sin(theta), in float, exactly
+// as the GPU gets it.
+std::vector<float> environment_table_of(const environment_map& e);
+
+// The map packed for the C++ kernels: its texels and its table, and the view of both they take.
+struct environment_tables {
+  explicit environment_tables(const environment_map& e)
+      : image(e.image), table(environment_table_of(e)) {}
+  std::shared_ptr<const environment_image> image;
+  std::vector<float> table;
+  environment_table view() const { return {image->texels.data(), table.data()}; }
+};
 
 }  // namespace rtvk

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -71,7 +72,9 @@ struct scene : shape_lists {
                                                        // default; the lesson's camera unless set
   render_settings render;                              // default image size, samples, depth, ...
   rtvk::sky sky;                                       // what rays that escape see
-  std::vector<named_material> materials;               // objects index into this
+  // What they see instead, where given (camera rays see the sky where it is not visible).
+  std::optional<environment_map> environment;
+  std::vector<named_material> materials;  // objects index into this
   // The objects, one list per shape (shape_lists, the base: spheres, quads, triangles and their
   // shading, disks), hit as if in one list in that order, an exact tie going to the later.
   // Groups of objects stored once, and their placements: hit after every object above, in

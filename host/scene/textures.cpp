@@ -8,6 +8,7 @@
 #include <mutex>
 #include <tuple>
 
+#include "environment.h"
 #include "errors.h"
 #include "input_file.h"
 #include "texture.h"
@@ -84,6 +85,48 @@ std::shared_ptr<const texel_image> decode_texel_image(const std::string& bytes,
                        std::uint32_t(to_linear[p[2]]) << 16 | std::uint32_t(p[3]) << 24;
   }
   stbi_image_free(pixels);
+  return image;
+}
+
+void check_environment_size(std::uint64_t width, std::uint64_t height, const std::string& where) {
+  const std::uint64_t texel_bytes = 4 * width * height;
+  const std::uint64_t table_bytes = 4 * ((width + 2) * height + RTVK_ENV_HEADER + 1);
+  if (width == 0 || height == 0 || width > (1u << 24) || height > (1u << 24) ||
+      texel_bytes > max_environment_buffer_bytes || table_bytes > max_environment_buffer_bytes)
+    throw usage_error(where + ": " + std::to_string(width) + "x" + std::to_string(height) +
+                      " texels is past the limit (texels and sampling table each within 128 MiB, "
+                      "lavapipe's storage-buffer range: 6144x3072 fits, 8192x4096 does not)");
+}
+
+std::uint32_t encode_rgbe(float r, float g, float b) {
+  const float largest = std::max({r, g, b});
+  if (!(largest >= 0x1p-118f)) return 0;  // below what the GPU's decode builds (e >= 10)
+  int e = 0;
+  std::frexp(largest, &e);  // largest = f 2^e, f in [0.5, 1)
+  const double scale = std::ldexp(1.0, 8 - e);
+  auto mantissa = [&](float c) { return std::uint32_t(std::min(255.0, std::floor(c * scale))); };
+  return mantissa(r) | mantissa(g) << 8 | mantissa(b) << 16 | std::uint32_t(e + 128) << 24;
+}
+
+std::shared_ptr<const environment_image> environment_from_rgb(int width, int height,
+                                                              const std::vector<float>& rgb,
+                                                              const std::string& where) {
+  check_environment_size(std::uint64_t(std::max(width, 0)), std::uint64_t(std::max(height, 0)),
+                         where);
+  auto image = std::make_shared<environment_image>();
+  image->width = width;
+  image->height = height;
+  const std::size_t n = std::size_t(width) * std::size_t(height);
+  image->texels.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const float* t = &rgb[3 * i];
+    for (int c = 0; c < 3; ++c)
+      if (!(t[c] >= 0 && t[c] < 0x1p127f))  // NaN fails too; RGBE's exponent ends at 2^127
+        throw usage_error(where + ": texel " + std::to_string(i % std::size_t(width)) + "," +
+                          std::to_string(i / std::size_t(width)) + " is " + std::to_string(t[c]) +
+                          " (expected finite radiance, 0 to 1.7e38)");
+    image->texels[i] = encode_rgbe(t[0], t[1], t[2]);
+  }
   return image;
 }
 

@@ -119,6 +119,44 @@ struct packed_textures {
 };
 packed_textures pack_textures(const std::vector<texture>& textures);
 
+// An environment map's texels as both backends read them (shaders/shared/lights/environment.h):
+// Radiance RGBE words, row by row from the top of the image.
+struct environment_image {
+  int width = 0;                      // texels in a row
+  int height = 0;                     // rows
+  std::vector<std::uint32_t> texels;  // RGBE, width x height
+};
+
+// What escaping rays see instead of the sky (scene files' "environment", --environment).
+struct environment_map {
+  std::string file;                                // as the scene file or the flag names it
+  std::shared_ptr<const environment_image> image;  // never null in a scene
+  double rotation = 0;                             // degrees about +y (docs/lighting.md)
+  double strength = 1;                             // multiplies every texel's radiance, >= 0
+  bool visible = true;  // camera rays that escape see it; false: they see the scene's sky
+};
+
+// The device limit an environment map is held to: lavapipe's storage-buffer range, 128 MiB, for
+// its texels (4 bytes each) and for its sampling table (4 bytes an entry: (width + 2) x height +
+// 9). 6144x3072 fits; 8192x4096 does not (its table is 20 KiB over).
+inline constexpr std::uint64_t max_environment_buffer_bytes = std::uint64_t(128) << 20;
+// The largest environment file read, bytes.
+inline constexpr std::uint64_t max_environment_file_bytes = std::uint64_t(1) << 30;
+
+// Throws usage_error, naming `where`, unless a width x height map fits the limit above.
+void check_environment_size(std::uint64_t width, std::uint64_t height, const std::string& where);
+
+// Radiance's RGBE word of a linear RGB texel (each in [0, 2^127)): bits 0-23 the channels'
+// mantissas, 24-31 the shared exponent; 0 (black) where the largest channel is below 2^-118. What a
+// Radiance file decodes to (stb_image's float) encodes back exactly.
+std::uint32_t encode_rgbe(float r, float g, float b);
+
+// An environment image from linear float RGB, row by row from the top. Throws usage_error,
+// naming `where`, for a texel that is not finite or is negative, or an image past the limit.
+std::shared_ptr<const environment_image> environment_from_rgb(int width, int height,
+                                                              const std::vector<float>& rgb,
+                                                              const std::string& where);
+
 std::string type_name(texture_type t);  // "checker", "image", "noise"
 std::string style_name(noise_style s);  // "smooth", "turbulence", "marble"
 std::string wrap_name(image_wrap w);    // "clamp", "repeat", "mirror"

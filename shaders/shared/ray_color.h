@@ -98,6 +98,20 @@ inline precise real3 path_missed(path_state p, real3 horizon, real3 zenith) {
   return p.radiance + p.throughput * sky_color(p.r.direction, horizon, zenith);
 }
 
+// p.r escaped where the scene has an environment map (lights/environment.h): whether it sees the
+// map (else the sky, path_missed). Every ray does but a camera ray -- one that has not bounced yet,
+// whether or not it passed through see-through surfaces on its way -- where the map is not
+// `visible` (the product shot's option: the map lights the scene, the sky is the backdrop).
+inline bool path_sees_environment(path_state p, bool visible) {
+  return visible || p.depth > 0u;
+}
+
+// p.r escaped into an environment map that shows `seen` along it (environment_radiance): the
+// color the path gathers.
+inline precise real3 path_missed_into(path_state p, real3 seen) {
+  return p.radiance + p.throughput * seen;
+}
+
 // p.r hit `rec`, whose material is of `type` with these parameters (scatter's; albedo is the
 // material's color at the hit, its texture's value there when it has one; flags
 // RTVK_MATERIAL_*). Either ends the path, its color in `c` (the lesson's normal shading; a flat

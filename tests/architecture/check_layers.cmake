@@ -10,7 +10,9 @@ set(may_use_camera "camera;base;shared")
 set(may_use_shapes "shapes;base;shared")
 set(may_use_scene "scene;shapes;camera;base;shared")
 set(may_use_formats/obj "formats/obj;scene;shapes;camera;base;shared")
-set(may_use_formats "formats;formats/obj;formats/gltf;formats/gltf_ext;scene;shapes;camera;base;shared")
+set(may_use_formats "formats;formats/calibration;formats/obj;formats/gltf;formats/gltf_ext;scene;shapes;camera;base;shared")
+# OpenCV calibrations: part of the formats library, in a folder of their own for its size.
+set(may_use_formats/calibration "formats/calibration;camera;base;shared")
 # The glTF reader: part of the formats library, in a folder of its own for its size.
 set(may_use_formats/gltf "formats/gltf;formats;formats/obj;formats/gltf_ext;scene;shapes;camera;base;shared")
 set(may_use_formats/colmap "formats/colmap;camera;base;shared")
@@ -24,11 +26,11 @@ set(may_use_gpu/scene "gpu/scene;gpu/pipeline;gpu/vulkan;accel;scene;shapes;came
 set(gpu_layers "gpu/render;gpu/scene;gpu/pipeline;gpu/vulkan")
 set(may_use_gpu/render "${gpu_layers};accel;scene;shapes;camera;base;shared")
 set(may_use_view "view;cpu;${gpu_layers};accel;scene;shapes;camera;base;shared")
-set(may_use_app/jobs "app/jobs;cpu;image;${gpu_layers};accel;formats;formats/colmap;scene;shapes;camera;base;shared")
+set(may_use_app/jobs "app/jobs;cpu;image;${gpu_layers};accel;formats;formats/calibration;formats/colmap;scene;shapes;camera;base;shared")
 set(may_use_app/commands
-    "app/commands;app/jobs;view;cpu;image;${gpu_layers};accel;formats;formats/colmap;scene;shapes;camera;base;shared")
+    "app/commands;app/jobs;view;cpu;image;${gpu_layers};accel;formats;formats/calibration;formats/colmap;scene;shapes;camera;base;shared")
 set(may_use_app "app;app/commands;app/jobs;image;base;shared")
-set(layers base camera shapes scene formats/obj formats/gltf_ext formats formats/gltf formats/colmap accel cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
+set(layers base camera shapes scene formats/obj formats/gltf_ext formats/calibration formats formats/gltf formats/colmap accel cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
            app/jobs app/commands app)
 
 # A new folder of sources must be given its place in the map above.

@@ -138,7 +138,7 @@ TEST(NeeDensity, LampsAreDrawnInProportionToTheirPower) {
   for (int i = 0; i < n; ++i) {
     double choice = 0;
     const random_stream stream(hash32(std::uint32_t(i)), 1u);
-    nee_draw(table, punctual_table{}, point3(0, 50, 0), 0, stream, choice);
+    nee_draw(table, punctual_table{}, environment_table{}, point3(0, 50, 0), 0, stream, choice);
     for (std::size_t k = 0; k < 5; ++k)
       if (choice == lamps[k].pmf) ++drawn[k];
   }

@@ -6,6 +6,7 @@
 #include "kernels_f32.h"
 
 #include "camera_rays.h"
+#include "environment_probe.h"
 #include "hit_sphere.h"
 #include "kernel_probe.h"
 #include "light_probe.h"
@@ -68,6 +69,11 @@ void run_punctual_probe(const std::vector<gpu::gpu_punctual>& lights,
   // The shader reads the count from the first element (0 in an unused one).
   const k::punctual_table t{records.data(), lights.empty() ? 0u : lights[0].count};
   k::run_punctual_probe(t, e);
+}
+
+void run_environment_probe(const std::uint32_t* texels, const float* table,
+                           gpu::environment_probe_entry& e) {
+  k::run_environment_probe(k::environment_table{texels, table}, e);
 }
 
 bool pbr_sample(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 u, glm::vec3& wi,

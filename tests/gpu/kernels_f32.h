@@ -38,6 +38,11 @@ bool hit_sphere(glm::vec3 center, float radius, ray_f r, float t_min, float t_ma
 // GPU starts the next ray.
 glm::vec3 scatter_origin(glm::vec3 center, float radius, ray_f r, float t, glm::vec3 leaving);
 
+// run_environment_probe (tests/gpu/probes/environment_probe.h) in float, on a map's RGBE texels
+// and sampling table (environment.h).
+void run_environment_probe(const std::uint32_t* texels, const float* table,
+                           gpu::environment_probe_entry& e);
+
 // run_kernel_probe (tests/gpu/probes/kernel_probe.h) in float: what kernel_probe.comp computes.
 void run_kernel_probe(gpu::kernel_probe_entry& e);
 

@@ -73,8 +73,7 @@ struct run_context {
   ppm_encoding enc;
   bool several;          // more than one image: each summary line names its camera and frame
   std::size_t* written;  // images finished and written so far
-  bool lights;           // samples toward the scene's lights (samples_lights), for the summaries
-  bool nee;              // next-event estimation (uses_nee), likewise
+  bool lights, nee;      // lights sampling, next-event estimation: for the summaries
   unsigned aovs = 0;     // --aov's aov_bit mask; 0: none
   // What the AOV pass of the backend that drew the image found (set where aovs != 0), and
   // whether the CPU agreed with the device's (--backend both).

@@ -94,6 +94,12 @@ void scene_flags::add_to(CLI::App& cmd) {
                                  "and a shadow ray a vertex, multiple importance sampling) or auto "
                                  "(default: lights where the scene has lights)")
                       ->group(group);
+  environment_opt_ =
+      cmd.add_option("--environment", environment_,
+                     "HDR environment map FILE[:STRENGTH] (Radiance .hdr or OpenEXR .exr, "
+                     "equirectangular, Blender's convention; docs/lighting.md): what rays that "
+                     "escape see instead of the sky, times STRENGTH (default 1)")
+          ->group(group);
   view_transform_opt_ =
       cmd.add_option("--view-transform", view_transform_,
                      "How 8-bit images (PNG, PPM, the viewer) encode the scene-linear light: "
@@ -159,7 +165,8 @@ scene_overrides scene_flags::overrides() const {
           .intrinsics = if_given(intrinsics_opt_, intrinsics_),
           .distortion = if_given(distortion_opt_, distortion_),
           .rolling_shutter = if_given(rolling_shutter_opt_, rolling_shutter_),
-          .colmap = if_given(colmap_opt_, colmap_)};
+          .colmap = if_given(colmap_opt_, colmap_),
+          .environment = if_given(environment_opt_, environment_)};
 }
 
 }  // namespace rtvk

@@ -51,6 +51,7 @@ class scene_flags {
   std::string view_transform_;
   double exposure_ = 0;
   std::string calibration_, intrinsics_, distortion_, rolling_shutter_, colmap_;
+  std::string environment_;
   CLI::Option* width_opt_ = nullptr;
   CLI::Option* aspect_opt_ = nullptr;
   CLI::Option* spp_opt_ = nullptr;
@@ -74,6 +75,7 @@ class scene_flags {
   CLI::Option* distortion_opt_ = nullptr;
   CLI::Option* rolling_shutter_opt_ = nullptr;
   CLI::Option* colmap_opt_ = nullptr;
+  CLI::Option* environment_opt_ = nullptr;
   scene_path_flags paths_;
 };
 

@@ -116,6 +116,15 @@ std::string scene_identity(const scene& s) {
   }
   for (const named_material& m : s.materials)
     if (m.m.one_sided) append_bytes(out, std::uint8_t(0x31), m.name);
+  // The environment map after a marker of its own, its texels and settings: scenes without keep
+  // their identity.
+  if (s.environment) {
+    const environment_map& e = *s.environment;
+    append_bytes(out, std::uint8_t(0x45), e.image->width, e.image->height, e.rotation, e.strength,
+                 e.visible);
+    out.append(reinterpret_cast<const char*>(e.image->texels.data()),
+               e.image->texels.size() * sizeof(std::uint32_t));
+  }
   return out;
 }
 

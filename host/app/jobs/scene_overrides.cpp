@@ -1,6 +1,7 @@
 #include "scene_overrides.h"
 
 #include <cmath>
+#include <cstdlib>
 
 #include "calibration_file.h"
 #include "colmap_model.h"
@@ -8,6 +9,7 @@
 #include "format.h"
 #include "light_sources.h"
 #include "parse_values.h"
+#include "scene_file.h"
 
 namespace rtvk {
 namespace {
@@ -47,6 +49,33 @@ double parse_rolling_shutter(const std::string& text) {
   if (!(readout >= 0))
     throw usage_error("--rolling-shutter " + text + ": the readout time must be >= 0 seconds");
   return direction == "top-down" ? readout : -readout;
+}
+
+// --environment FILE[:STRENGTH]: the map escaping rays see, replacing the scene's own (whose
+// rotation and visibility it keeps) or the sky. A suffix after the last colon that is not a number
+// is part of the file's name.
+void apply_environment(const std::string& text, scene& s) {
+  std::string file = text;
+  double strength = s.environment ? s.environment->strength : 1.0;
+  const std::size_t colon = text.rfind(':');
+  if (colon != std::string::npos) {
+    const std::string tail = text.substr(colon + 1);
+    char* end = nullptr;
+    const double v = std::strtod(tail.c_str(), &end);
+    if (!tail.empty() && end == tail.c_str() + tail.size()) {
+      if (!(v >= 0 && v <= 1e9))
+        throw usage_error("--environment " + text +
+                          ": the strength must be a number from 0 to 1e9");
+      strength = v;
+      file = text.substr(0, colon);
+    }
+  }
+  if (file.empty()) throw usage_error("--environment " + text + ": expected FILE[:STRENGTH]");
+  environment_map e = s.environment ? *s.environment : environment_map{};
+  e.file = file;
+  e.strength = strength;
+  e.image = load_environment_image(file, "--environment");
+  s.environment = std::move(e);
 }
 
 bool moves_pose(const scene_overrides& o) {
@@ -217,6 +246,7 @@ void scene_overrides::apply(scene& s) const {
   if (calibration) cal = read_opencv_calibration(*calibration);
   apply_render(*this, s.render);
   resolve_sampling(s);
+  if (environment) apply_environment(*environment, s);
   try {  // lights asked of a scene without (or with too many)
     check_sampling(s, s.render, sampling ? "--sampling" : s.name + ": /render/sampling");
   } catch (const std::invalid_argument& e) {

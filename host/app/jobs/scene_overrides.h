@@ -34,6 +34,7 @@ struct scene_overrides {
   std::optional<std::string> distortion;      // the model's coefficients as typed, comma-separated
   std::optional<std::string> rolling_shutter;  // DIRECTION:SECONDS as typed
   std::optional<std::string> colmap;           // a COLMAP text model's folder: one camera per view
+  std::optional<std::string> environment;      // FILE[:STRENGTH] as typed: an environment map
 
   // Replaces the scene's cameras with a COLMAP model's views (--colmap), and sets the image size
   // from the calibration or the views when no --width is given. Before the cameras are chosen.

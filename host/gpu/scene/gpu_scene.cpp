@@ -83,6 +83,10 @@ std::vector<array_entry> arrays_of(const gpu_scene::host_arrays& a) {
             "the BSDF tables' upload copy", a.bsdf_tables),
       entry(RTVK_BINDING_PUNCTUAL, r::appearance, "the punctual light array",
             "the punctual lights' upload copy", a.punctual),
+      entry(RTVK_BINDING_ENVIRONMENT, r::appearance, "the environment map's texels",
+            "the environment map's upload copy", a.environment_texels),
+      entry(RTVK_BINDING_ENVIRONMENT_CDF, r::appearance, "the environment map's sampling table",
+            "the environment table's upload copy", a.environment_table),
   };
 }
 
@@ -142,6 +146,10 @@ gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   if (!a.pbr.empty()) a.bsdf_tables.assign(std::begin(bsdf_table_data), std::end(bsdf_table_data));
   a.punctual = to_gpu_punctuals(s);
   a.with_uv = scene_reads_uv(s);
+  if (s.environment) {
+    a.environment_texels = s.environment->image->texels;
+    a.environment_table = environment_table_of(*s.environment);
+  }
   return a;
 }
 
@@ -162,6 +170,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       any_textures_(reads_textures(a)),
       any_pbr_(!a.pbr.empty()),
       any_punctual_(!a.punctual.empty() && a.punctual[0].count > 0),
+      any_environment_(!a.environment_table.empty()),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
       specs_(specs_of(arrays_of(a))),
@@ -217,6 +226,7 @@ void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
   spec[RTVK_SPEC_MEDIA] = medium_count_ > 0;
   spec[RTVK_SPEC_PBR] = any_pbr_;
   spec[RTVK_SPEC_PUNCTUAL] = any_punctual_;
+  spec[RTVK_SPEC_ENVIRONMENT] = any_environment_;
 }
 
 void gpu_scene::set_counts(render_push& push) const {

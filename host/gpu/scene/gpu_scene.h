@@ -53,7 +53,11 @@ class gpu_scene {
     // The punctual lights (punctual.h), each with their count; one unused element (count 0)
     // when the scene has none.
     std::vector<gpu_punctual> punctual;
-    bool with_uv = false;  // some texture reads sphere hits' uv (RTVK_SPEC_UV)
+    bool with_uv = false;               // some texture reads sphere hits' uv (RTVK_SPEC_UV)
+    // The environment map (lights/environment.h): RGBE texels and the sampling table; empty
+    // where the scene has none.
+    std::vector<std::uint32_t> environment_texels;
+    std::vector<float> environment_table;
   };
   // The scene's arrays, its BVH built (over no spheres when !use_bvh).
   static host_arrays build(const scene& s, bool use_bvh);
@@ -100,6 +104,7 @@ class gpu_scene {
   bool any_textures_;                  // RTVK_SPEC_TEXTURES
   bool any_pbr_;                       // RTVK_SPEC_PBR
   bool any_punctual_;                  // RTVK_SPEC_PUNCTUAL
+  bool any_environment_;               // RTVK_SPEC_ENVIRONMENT
   double build_seconds_;               // building the BVH took
   bool moves_;                         // some sphere has a velocity
   std::vector<buffer_spec> specs_;     // the arrays' sizes (gpu_scene.cpp's arrays_of), for copies

@@ -6,9 +6,10 @@
 // light is found by the way that draws it best: small lamps by the light sample, glossy
 // reflections of large ones by the BSDF.
 //
-// The lights drawn are the scene's lamps and its punctual lights (punctual.h: point, spot,
-// directional, suns), each kind present drawn alike (half each where both are); among the
-// punctual lights, each alike. The lamps are pdf.h's records with RTVK_LIGHT_EMITS (the first
+// The lights drawn are the scene's lamps, its punctual lights (punctual.h: point, spot,
+// directional, suns) and its environment map (environment.h, by its own importance sampler),
+// each kind present drawn alike (a third each where all are); among the punctual lights, each
+// alike. The lamps are pdf.h's records with RTVK_LIGHT_EMITS (the first
 // LIGHT_COUNT of the table in this mode), each chosen in proportion to its power through an alias
 // table (gpu_light::pmf, alias_q, alias; host/scene/light_sources.cpp builds it). A lamp whose
 // emission varies over it (RTVK_LIGHT_UNEVEN) is never drawn: its light comes whole from the paths
@@ -19,6 +20,7 @@
 // of its own through the one world search, shaders/shading.glsl).
 #ifndef RTVK_NEE_H
 #define RTVK_NEE_H
+#include "environment.h"
 #include "kernel_lang.h"
 #include "light_sample.h"
 #include "pdf.h"
@@ -29,6 +31,23 @@
 // compile them out where the scene has none).
 #ifndef NEE_PUNCTUAL_COUNT
 #define NEE_PUNCTUAL_COUNT PUNCTUAL_COUNT
+#endif
+// Whether it draws the environment map: where the scene has one (a GPU shader defines it first,
+// from its specialization constant).
+#ifndef NEE_ENVIRONMENT
+#define NEE_ENVIRONMENT (env_in.table != nullptr)
+#endif
+// The tables of the lights next-event estimation draws: the lamps, the punctual lights and the
+// environment (C++: three parameters; GLSL: none, the shader's buffers).
+#define NEE_PARAM LIGHTS_PARAM PUNCTUAL_PARAM ENV_PARAM
+#define NEE_LIGHTS LIGHTS PUNCTUALS ENV
+#ifdef __cplusplus
+#define NEE_PARAM_ONLY \
+  const light_table &lights_in, const punctual_table &punctual_in, const environment_table &env_in
+#define NEE_LIGHTS_ONLY lights_in, punctual_in, env_in
+#else
+#define NEE_PARAM_ONLY
+#define NEE_LIGHTS_ONLY
 #endif
 
 RTVK_KERNELS_BEGIN
@@ -91,23 +110,26 @@ inline light_sample lamp_sample(light_record l, real3 origin, real time, real r1
   return ls;
 }
 
-// The probability that nee_draw draws from the lamps, and from the punctual lights: each kind
-// present alike.
-inline precise real2 nee_kinds(LIGHTS_PARAM PUNCTUAL_PARAM_ONLY) {
-  bool lamps = LIGHT_COUNT > 0u;
-  bool punctual = NEE_PUNCTUAL_COUNT > 0u;
-  precise real share = lamps && punctual ? real(0.5) : real(1.0);
-  return real2(lamps ? share : real(0.0), punctual ? share : real(0.0));
+// The probabilities that nee_draw draws from the lamps, the punctual lights and the environment:
+// each kind present alike.
+inline precise real3 nee_kinds(NEE_PARAM_ONLY) {
+  real lamps = LIGHT_COUNT > 0u ? real(1.0) : real(0.0);
+  real punctual = NEE_PUNCTUAL_COUNT > 0u ? real(1.0) : real(0.0);
+  real environment = NEE_ENVIRONMENT ? real(1.0) : real(0.0);
+  precise real n = lamps + punctual + environment;
+  if (!(n > real(0.0))) return real3(0.0);
+  return real3(lamps, punctual, environment) / n;
 }
 
 // A light drawn for the vertex at `origin` from stream s: its kind, then a lamp by the alias table
-// or a punctual light alike (one number: the kind by its first half or second, the rest scaled
-// back to [0, 1) for the choice within), then a point or direction on it (two numbers); choice:
-// the probability of having drawn that light. No sample (pdf 0) without lights to draw.
-inline light_sample nee_draw(LIGHTS_PARAM PUNCTUAL_PARAM real3 origin, real time, random_stream s,
+// or a punctual light alike (one number: the kind by where it falls, the rest scaled back to
+// [0, 1) for the choice within), then a point or direction on it (two numbers; the environment's
+// by its sampler); choice: the probability of having drawn that light. No sample (pdf 0) without
+// lights to draw.
+inline light_sample nee_draw(NEE_PARAM real3 origin, real time, random_stream s,
                              precise OUT(real) choice) {
   choice = real(0.0);
-  precise real2 kinds = nee_kinds(LIGHTS PUNCTUALS_ONLY);
+  precise real3 kinds = nee_kinds(NEE_LIGHTS_ONLY);
   precise real u = real(rnd(s, dim_light_pick));
   real a = real(rnd(s, dim_light_a));
   real b = real(rnd(s, dim_light_b));
@@ -120,11 +142,16 @@ inline light_sample nee_draw(LIGHTS_PARAM PUNCTUAL_PARAM real3 origin, real time
     if (!(choice > real(0.0))) return no_light_sample();
     return lamp_sample(LIGHT_AT(k), origin, time, a, b);
   }
-  if (!(kinds.y > real(0.0))) return no_light_sample();
-  precise real pick = ((u - kinds.x) / kinds.y) * real(NEE_PUNCTUAL_COUNT);
-  uint k = min(uint(pick), NEE_PUNCTUAL_COUNT - 1u);
-  choice = kinds.y / real(NEE_PUNCTUAL_COUNT);
-  return punctual_sample(PUNCTUALS k, origin, real2(a, b));
+  precise real past = u - kinds.x;
+  if (past < kinds.y) {
+    precise real pick = (past / kinds.y) * real(NEE_PUNCTUAL_COUNT);
+    uint k = min(uint(pick), NEE_PUNCTUAL_COUNT - 1u);
+    choice = kinds.y / real(NEE_PUNCTUAL_COUNT);
+    return punctual_sample(PUNCTUALS k, origin, real2(a, b));
+  }
+  if (!(kinds.z > real(0.0))) return no_light_sample();
+  choice = kinds.z;
+  return environment_sample(ENV real2(a, b));
 }
 
 // The density (per steradian, times the lamp's pmf) with which nee_draw at `origin` would have
@@ -167,21 +194,30 @@ inline void nee_queue(precise INOUT(path_state) p, real3 origin, light_sample ls
 // drawn the same point from the vertex the path left (p.mis_origin; p.r's own origin is beyond the
 // see-through surfaces it passed since). None after a delta or from the camera: p.mis_pdf 0, the
 // path's light whole.
-inline precise real nee_hit_weight(LIGHTS_PARAM PUNCTUAL_PARAM path_state p, real3 point) {
+inline precise real nee_hit_weight(NEE_PARAM path_state p, real3 point) {
   if (!(p.mis_pdf > real(0.0))) return real(1.0);
   precise real3 d = unit_vector(p.r.direction);
   precise real distance = length3(point - p.mis_origin);
-  precise real lamps = nee_kinds(LIGHTS PUNCTUALS_ONLY).x;
+  precise real lamps = nee_kinds(NEE_LIGHTS_ONLY).x;
   precise real light = lamps * nee_lamp_pdf(LIGHTS p.mis_origin, d, p.r.time, distance);
   return power_heuristic(p.mis_pdf, light);
 }
 
-// p.r escaped: the sky, and the suns' disks it points into, weighed against the light sample that
-// could have drawn the same direction (each sun's density times its choice; the sky is not drawn,
-// its light whole).
-inline precise real3 path_missed_nee(LIGHTS_PARAM PUNCTUAL_PARAM path_state p, real3 horizon,
-                                     real3 zenith) {
-  precise real3 c = path_missed(p, horizon, zenith);
+// p.r escaped: the sky or the environment map (as path_missed and path_missed_into), and the
+// suns' disks it points into. The map and the suns are weighed against the light sample that could
+// have drawn the same direction (each one's density times its choice); the sky, which no light
+// sample draws, gives its light whole, as does all of it after a delta or from the camera.
+inline precise real3 path_missed_nee(NEE_PARAM path_state p, real3 horizon, real3 zenith) {
+  precise real3 kinds = nee_kinds(NEE_LIGHTS_ONLY);
+  bool mixed = p.mis_pdf > real(0.0);
+  precise real3 c;
+  if (NEE_ENVIRONMENT && path_sees_environment(p, environment_visible(ENV_ALONE))) {
+    precise real w = mixed ? power_heuristic(p.mis_pdf, kinds.z * environment_pdf(ENV p.r.direction))
+                           : real(1.0);
+    c = path_missed_into(p, environment_radiance(ENV p.r.direction) * w);
+  } else {
+    c = path_missed(p, horizon, zenith);
+  }
   if (NEE_PUNCTUAL_COUNT == 0u) return c;
   precise real3 sun = real3(0.0);
   precise real density = real(0.0);
@@ -191,8 +227,8 @@ inline precise real3 path_missed_nee(LIGHTS_PARAM PUNCTUAL_PARAM path_state p, r
     sun += sun_disk_radiance(PUNCTUAL_AT(k));
     density += pdf;
   }
-  precise real choice = nee_kinds(LIGHTS PUNCTUALS_ONLY).y / real(NEE_PUNCTUAL_COUNT);
-  precise real w = p.mis_pdf > real(0.0) ? power_heuristic(p.mis_pdf, choice * density) : real(1.0);
+  precise real choice = kinds.y / real(NEE_PUNCTUAL_COUNT);
+  precise real w = mixed ? power_heuristic(p.mis_pdf, choice * density) : real(1.0);
   return c + p.throughput * sun * w;
 }
 
@@ -219,13 +255,13 @@ inline void nee_end(precise INOUT(path_state) p) {
 // a light sample (their BSDF albedo / pi times the cosine, or albedo / 4 pi) and scatter as the
 // first two books do, their density kept for the next hit's weight; the others scatter as
 // path_hit has them, and whatever lamp their ray hits gives its light whole.
-inline bool path_hit_nee(LIGHTS_PARAM PUNCTUAL_PARAM precise INOUT(path_state) p, hit_record rec,
+inline bool path_hit_nee(NEE_PARAM precise INOUT(path_state) p, hit_record rec,
                          uint type,
                          uint flags, real3 albedo, real fuzz, real ir, precise OUT(real3) c) {
   c = p.radiance;
   if (type == RTVK_MATERIAL_DIFFUSE_LIGHT) {
     bool dark = (flags & RTVK_MATERIAL_ONE_SIDED) != 0u && !rec.front_face;
-    if (!dark) c = p.radiance + p.throughput * albedo * nee_hit_weight(LIGHTS PUNCTUALS p, rec.p);
+    if (!dark) c = p.radiance + p.throughput * albedo * nee_hit_weight(NEE_LIGHTS p, rec.p);
     return true;
   }
   random_stream s = at_bounce(p.s, p.depth + 1u);
@@ -237,7 +273,7 @@ inline bool path_hit_nee(LIGHTS_PARAM PUNCTUAL_PARAM precise INOUT(path_state) p
     bool isotropic = type == RTVK_MATERIAL_ISOTROPIC;
     precise real3 origin = isotropic ? rec.p : rec.p + rec.offset * rec.normal;
     precise real choice;
-    light_sample ls = nee_draw(LIGHTS PUNCTUALS origin, p.r.time, s, choice);
+    light_sample ls = nee_draw(NEE_LIGHTS origin, p.r.time, s, choice);
     precise real bsdf_pdf = material_pdf(type, rec.normal, ls.wi);
     precise real3 f = albedo * bsdf_pdf;  // albedo / pi times the cosine, or albedo / 4 pi
     nee_queue(p, isotropic ? rec.p : scatter_origin(rec, ls.wi), ls, choice, f, bsdf_pdf);

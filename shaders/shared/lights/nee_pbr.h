@@ -20,7 +20,7 @@ inline bool pbr_side_agrees(hit_record rec, real3 d, real local_z) {
 // against pbr_pdf's, and the BSDF's sample as the path (its density kept for the next hit's
 // weight; a delta lobe's none). The model is evaluated at both directions in one loop of two
 // trips, so that its code is compiled once into the render shader.
-inline bool path_hit_pbr_nee(LIGHTS_PARAM PUNCTUAL_PARAM precise INOUT(path_state) p, hit_record rec,
+inline bool path_hit_pbr_nee(NEE_PARAM precise INOUT(path_state) p, hit_record rec,
                              pbr_surface m, real3 n, real3 coat_n, precise OUT(real3) c) {
   c = p.radiance;
   onb b = onb_from_w(n);
@@ -31,7 +31,7 @@ inline bool path_hit_pbr_nee(LIGHTS_PARAM PUNCTUAL_PARAM precise INOUT(path_stat
   random_stream s = at_bounce(p.s, p.depth + 1u);
   precise real3 origin = rec.p + rec.offset * rec.normal;
   precise real choice;
-  light_sample ls = nee_draw(LIGHTS PUNCTUALS origin, p.r.time, s, choice);
+  light_sample ls = nee_draw(NEE_LIGHTS origin, p.r.time, s, choice);
   precise real3 u =
       real3(real(rnd(s, dim_pbr_lobe)), real(rnd(s, dim_pbr_a)), real(rnd(s, dim_pbr_b)));
   precise real3 wi;

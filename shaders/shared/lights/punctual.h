@@ -80,7 +80,8 @@ inline bool in_sun(punctual_record l, real3 direction) {
   precise real3 w = -l.direction;
   if (dot3(direction, w) <= real(0.0)) return false;
   precise real3 across = cross3(direction, w);
-  return dot3(across, across) <= sun_sin2(l.cone_gap) * dot3(direction, direction);
+  precise real reach = sun_sin2(l.cone_gap) * dot3(direction, direction);
+  return dot3(across, across) <= reach;
 }
 
 // A direction uniform in the cone of half-angle theta_max about the unit w: cos theta uniform in

@@ -15,7 +15,7 @@ namespace {
 // Runs a probe shader once over a host-visible buffer it reads and writes in place.
 void run_in_place(gpu_context& ctx, std::span<const std::uint32_t> spirv, void* data,
                   std::size_t bytes, std::uint32_t groups, const gpu_buffer* ubo,
-                  const gpu_buffer* tables = nullptr, const gpu_buffer* punctual = nullptr) {
+                  const gpu_buffer* tables = nullptr, std::span<const buffer_binding> more = {}) {
   gpu_buffer buf(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::upload);
   buf.write(data, bytes);
   std::vector<buffer_binding> bindings{
@@ -24,8 +24,7 @@ void run_in_place(gpu_context& ctx, std::span<const std::uint32_t> spirv, void* 
   if (tables)
     bindings.push_back(
         {RTVK_BINDING_BSDF_TABLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tables->get()});
-  if (punctual)
-    bindings.push_back({RTVK_BINDING_PUNCTUAL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, punctual->get()});
+  bindings.insert(bindings.end(), more.begin(), more.end());
   const compute_pipeline pipeline(ctx, spirv, bindings, 0);
   ctx.submit_and_wait([&](VkCommandBuffer cb) {
     pipeline.bind(cb);
@@ -95,9 +94,29 @@ std::vector<punctual_probe_entry> run_punctual_probe(gpu_context& ctx,
   const std::size_t light_bytes = lights.size() * sizeof(gpu_punctual);
   gpu_buffer buf(ctx, light_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, memory_use::upload);
   buf.write(lights.data(), light_bytes);
+  const buffer_binding binding{RTVK_BINDING_PUNCTUAL, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buf.get()};
   run_in_place(ctx, punctual_probe_shader(), entries.data(),
                entries.size() * sizeof(punctual_probe_entry),
-               std::uint32_t((entries.size() + 63) / 64), nullptr, nullptr, &buf);
+               std::uint32_t((entries.size() + 63) / 64), nullptr, nullptr,
+               std::span<const buffer_binding>(&binding, 1));
+  return entries;
+}
+
+std::vector<environment_probe_entry> run_environment_probe(
+    gpu_context& ctx, const std::vector<std::uint32_t>& texels, const std::vector<float>& table,
+    std::vector<environment_probe_entry> entries) {
+  gpu_buffer t(ctx, texels.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+               memory_use::upload);
+  t.write(texels.data(), texels.size() * sizeof(std::uint32_t));
+  gpu_buffer c(ctx, table.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+               memory_use::upload);
+  c.write(table.data(), table.size() * sizeof(float));
+  const buffer_binding more[] = {
+      {RTVK_BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, t.get()},
+      {RTVK_BINDING_ENVIRONMENT_CDF, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, c.get()}};
+  run_in_place(ctx, environment_probe_shader(), entries.data(),
+               entries.size() * sizeof(environment_probe_entry),
+               std::uint32_t((entries.size() + 63) / 64), nullptr, nullptr, more);
   return entries;
 }
 

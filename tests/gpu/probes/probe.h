@@ -37,6 +37,11 @@ std::vector<light_probe_entry> run_light_probe(gpu_context& ctx,
 // Runs pbr_probe.comp: fills the outputs of each entry with pbr.h's sample, evaluation and
 // density (run_pbr_probe in pbr_probe.h).
 std::vector<pbr_probe_entry> run_pbr_probe(gpu_context& ctx, std::vector<pbr_probe_entry> entries);
+// Runs environment_probe.comp on a map's RGBE texels and sampling table (environment.h): fills
+// each entry's outputs (run_environment_probe in environment_probe.h).
+std::vector<environment_probe_entry> run_environment_probe(
+    gpu_context& ctx, const std::vector<std::uint32_t>& texels, const std::vector<float>& table,
+    std::vector<environment_probe_entry> entries);
 
 // Runs punctual_probe.comp over `lights` (at RTVK_BINDING_PUNCTUAL, as gpu_scene binds them):
 // fills the outputs of each entry with punctual.h's answers (run_punctual_probe in

@@ -3,6 +3,7 @@
 // The generated headers declare uint32_t arrays without including <cstdint> themselves.
 #include <cstdint>
 
+#include "environment_probe_spv.h"
 #include "hit_probe_spv.h"
 #include "kernel_probe_spv.h"
 #include "light_probe_spv.h"
@@ -37,6 +38,10 @@ std::span<const std::uint32_t> pbr_probe_shader() {
 }
 std::span<const std::uint32_t> punctual_probe_shader() {
   return punctual_probe_spv;
+}
+
+std::span<const std::uint32_t> environment_probe_shader() {
+  return environment_probe_spv;
 }
 
 }  // namespace rtvk::gpu

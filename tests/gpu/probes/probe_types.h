@@ -284,6 +284,37 @@ static_assert(offsetof(punctual_probe_entry, sun_radiance) == 80);
 static_assert(sizeof(punctual_probe_entry) == 96);
 #endif
 
+// std430 array element for environment_probe.comp (environment_probe.h): a query direction and
+// two uniform numbers in; environment.h's radiance and density of the query, and its sample from
+// the numbers with the density of its direction, out.
+struct environment_probe_entry {
+  vec3 query;           // in: a direction whose radiance and density are asked
+  float pdf_query;      // out: environment_pdf(query)
+  vec3 radiance_query;  // out: environment_radiance(query)
+  float pdf;            // out: environment_sample(u).pdf
+  vec3 wi;              // out: environment_sample(u).wi
+  float pdf_sampled;    // out: environment_pdf(wi)
+  vec3 radiance;        // out: environment_sample(u).radiance
+  uint trips;           // out: environment_sample_trips
+  float ux;             // in: the sampler's uniform numbers in [0, 1): u.x
+  float uy;             // and u.y
+  uint visible;         // out: environment_visible
+  uint pad;             // unused
+};
+#ifdef __cplusplus
+static_assert(offsetof(environment_probe_entry, pdf_query) == 12);
+static_assert(offsetof(environment_probe_entry, radiance_query) == 16);
+static_assert(offsetof(environment_probe_entry, pdf) == 28);
+static_assert(offsetof(environment_probe_entry, wi) == 32);
+static_assert(offsetof(environment_probe_entry, pdf_sampled) == 44);
+static_assert(offsetof(environment_probe_entry, radiance) == 48);
+static_assert(offsetof(environment_probe_entry, trips) == 60);
+static_assert(offsetof(environment_probe_entry, ux) == 64);
+static_assert(offsetof(environment_probe_entry, uy) == 68);
+static_assert(offsetof(environment_probe_entry, visible) == 72);
+static_assert(sizeof(environment_probe_entry) == 80);
+#endif
+
 RTVK_GPU_TYPES_END
 
 #endif  // RTVK_PROBE_TYPES_H
