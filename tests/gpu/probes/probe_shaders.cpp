@@ -9,6 +9,7 @@
 #include "pbr_probe_spv.h"
 #include "probe_spv.h"
 #include "rng_probe_spv.h"
+#include "sobol_probe_spv.h"
 #include "world_probe_spv.h"
 
 namespace rtvk::gpu {
@@ -33,6 +34,9 @@ std::span<const std::uint32_t> light_probe_shader() {
 }
 std::span<const std::uint32_t> pbr_probe_shader() {
   return pbr_probe_spv;
+}
+std::span<const std::uint32_t> sobol_probe_shader() {
+  return sobol_probe_spv;
 }
 
 }  // namespace rtvk::gpu
