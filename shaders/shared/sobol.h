@@ -42,16 +42,19 @@ inline uint sobol_first(uint index) {
 // The second dimension: index bit j adds generator column j, whose fraction bit 31 - i is set
 // where i's bits are a subset of j's (the binomial C(j, i) is odd: Pascal's triangle mod 2, the
 // columns the recurrence v_j = v_(j-1) ^ (v_(j-1) >> 1) of the polynomial x + 1 makes). So bit
-// 31 - i of the point is the parity of the index's bits j that are supersets of i: five steps of
-// a superset sum over the 5-bit positions, then the reversal.
-inline uint sobol_second(uint index) {
+// 31 - i of the point is bit i of sobol_pascal(index), the parity of the index's bits j that are
+// supersets of i: five steps of a superset sum over the 5-bit positions.
+inline uint sobol_pascal(uint index) {
   uint x = index;
   x ^= (x >> 1u) & 0x55555555u;  // positions without bit 0 gather those with it
   x ^= (x >> 2u) & 0x33333333u;
   x ^= (x >> 4u) & 0x0f0f0f0fu;
   x ^= (x >> 8u) & 0x00ff00ffu;
   x ^= (x >> 16u) & 0x0000ffffu;
-  return bitfieldReverse(x);
+  return x;
+}
+inline uint sobol_second(uint index) {
+  return bitfieldReverse(sobol_pascal(index));
 }
 
 // A bijection of 32-bit words whose bit i depends on bits 0 .. i only (multiplications by even
@@ -74,9 +77,10 @@ inline uint nested_uniform_scramble(uint x, uint seed) {
 }
 
 // The seed of a dimension (or of a pair, by its first dimension) of one pixel's samples at one
-// bounce: the pixel's key with rnd's counter (bounce << 4 | dim).
+// bounce: the pixel's key with rnd's counter (bounce << 4 | dim), spread by an odd multiplier
+// (one to one) and offset so that no seed is rnd's key of sample 0, hashed once.
 inline uint sobol_seed(random_stream s, uint dim) {
-  return hash32(s.pixel_key ^ hash32(((s.bounce << 4u) | dim) + 0x50b01u));
+  return hash32(s.pixel_key ^ (((s.bounce << 4u) | dim) * 0x9e3779b9u + 0x50b01u));
 }
 
 // The sample's index in the pair's copy of the sequence, and the two coordinates' scramble seeds.
@@ -90,18 +94,21 @@ inline uint sobol_seed_y(uint seed) {
   return hash32(seed ^ 0x63d83595u);
 }
 
-// The 32 bits of dimension `dim`, and of the pair that begins at `dim`.
+// The 32 bits of dimension `dim`, and of the pair that begins at `dim`: the scrambles of
+// sobol_first and sobol_second of sobol_index, written with the reversals that cancel left out
+// (nested_uniform_scramble(sobol_first(i), s) = bitfieldReverse(laine_karras_permutation(i, s)),
+// and likewise sobol_second's with sobol_pascal(i)): 3 and 4 reversals, not 6 and 8.
 inline uint sobol_bits(random_stream s, uint dim) {
   uint seed = sobol_seed(s, dim);
   uint index = sobol_index(s.sample_index, seed);
-  return nested_uniform_scramble(sobol_first(index), sobol_seed_x(seed));
+  return bitfieldReverse(laine_karras_permutation(index, sobol_seed_x(seed)));
 }
 
 inline uvec2 sobol_bits2(random_stream s, uint dim) {
   uint seed = sobol_seed(s, dim);
   uint index = sobol_index(s.sample_index, seed);
-  return uvec2(nested_uniform_scramble(sobol_first(index), sobol_seed_x(seed)),
-               nested_uniform_scramble(sobol_second(index), sobol_seed_y(seed)));
+  return uvec2(bitfieldReverse(laine_karras_permutation(index, sobol_seed_x(seed))),
+               bitfieldReverse(laine_karras_permutation(sobol_pascal(index), sobol_seed_y(seed))));
 }
 
 // A low-discrepancy number in [0, 1), rounded as rnd's (the top 24 bits).

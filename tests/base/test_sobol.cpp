@@ -19,15 +19,21 @@ namespace {
 // Known answers computed by an independent Python implementation (Sobol's second dimension by
 // its direction numbers' recurrence, the scramble and hashes written out).
 TEST(Sobol, KnownAnswers) {
-  EXPECT_EQ(sobol_bits2(pixel_sample_stream(0, 0, 0), 0), uvec2(0x7158e0c9u, 0x6ee40c8au));
+  EXPECT_EQ(sobol_bits2(pixel_sample_stream(0, 0, 0), 0), uvec2(0x6783afe7u, 0x8f5df841u));
   EXPECT_EQ(sobol_bits2(at_bounce(pixel_sample_stream(7, 12345, 3), 2), 1),
-            uvec2(0xf5e34bb6u, 0xdf7f1fe3u));
+            uvec2(0x14c93b66u, 0xc1ce0df2u));
   EXPECT_EQ(sobol_bits2(at_bounce(pixel_sample_stream(1, 99, 255), 5), 7),
-            uvec2(0x06c1a99fu, 0xc160de7cu));
+            uvec2(0x0d4af351u, 0xe777823eu));
   EXPECT_EQ(sobol_bits2(at_bounce(pixel_sample_stream(0xffffffffu, 0xffffffffu, 1000000), 50), 15),
-            uvec2(0xffa99fbeu, 0x32b3d0e1u));
+            uvec2(0x359aab48u, 0x33f383efu));
   EXPECT_EQ(sobol_rnd2(at_bounce(pixel_sample_stream(7, 12345, 3), 2), 1),
-            real2(0.9604994654655457, 0.8730334639549255));
+            real2(0.08119553327560425, 0.7570503354072571));
+  // The pieces the header names compose into the same bits.
+  const random_stream s = at_bounce(pixel_sample_stream(7, 12345, 3), 2);
+  const uint seed = sobol_seed(s, 1), index = sobol_index(3, seed);
+  EXPECT_EQ(sobol_bits2(s, 1),
+            uvec2(nested_uniform_scramble(sobol_first(index), sobol_seed_x(seed)),
+                  nested_uniform_scramble(sobol_second(index), sobol_seed_y(seed))));
 }
 
 // The stream carries the pixel's key and the sample index beside rnd's key, through at_bounce,
@@ -132,7 +138,7 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
 
 // Over one pixel's 256 samples, the numbers of two pairs, of two pixels, of two bounces are not
 // correlated: the mean |correlation| over 256 pixels is near independent numbers' (about
-// 0.8 / sqrt(256) = 0.05). Measured 0.062 to 0.067: the shuffle keeps samples 2m and 2m + 1 in
+// 0.8 / sqrt(256) = 0.05). Measured 0.059 to 0.063: the shuffle keeps samples 2m and 2m + 1 in
 // opposite halves in every dimension (they are an aligned block of two), so half as many
 // independent top bits meet (1.06 / sqrt(n) expected), with no bias. Without the index's shuffle,
 // two pairs' first numbers are scrambles of one van der Corput point and agree in their top bit
@@ -222,8 +228,8 @@ double rms_error(const std::function<double(real2)>& f, double exact, uint n, bo
 
 // The slope of log error against log n from 16 to 256 samples, and the error at 256. Owen's
 // scrambled nets: n^-1.5 for smooth integrands, n^-0.75 for a disk's edge; independent numbers
-// n^-0.5. Measured over 512 pixels: smooth -1.38 (sobol) / -0.50 (rnd), disk -0.83 / -0.49; at
-// 256 samples the error is 75 (smooth) and 3.9 (disk) times smaller than rnd's. Without Owen's
+// n^-0.5. Measured over 512 pixels: smooth -1.39 (sobol) / -0.50 (rnd), disk -0.83 / -0.49; at
+// 256 samples the error is 81 (smooth) and 3.9 (disk) times smaller than rnd's. Without Owen's
 // scramble (the shuffle alone) the smooth slope is -1.02 and the disk's ratio 1.8.
 TEST(Sobol, TheErrorFallsFasterThanWithIndependentNumbers) {
   // exp(x y) over the unit square: the sum of 1 / (k k!), k >= 1.
