@@ -1,7 +1,8 @@
 // Google Benchmark microbenchmarks: ray-sphere, BVH build, BVH traversal: the CPU's four-wide
 // traversal beside the binary traversal it replaced (kept here, on the same tree, as the
-// reference) and the linear scan, on camera rays and on book-final's bounce rays. Built with the
-// project, run on demand (build/<preset>/rtvk_microbench), not in CI's tests.
+// reference) and the linear scan, on camera rays and on book-final's bounce rays; and sobol.h's
+// numbers beside rnd's. Built with the project, run on demand (build/<preset>/rtvk_microbench),
+// not in CI's tests.
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
@@ -16,6 +17,7 @@
 #include "random.h"
 #include "scene.h"
 #include "shading.h"
+#include "sobol.h"
 #include "world.h"
 
 namespace rtvk {
@@ -187,6 +189,50 @@ void BM_BookFinalRays(benchmark::State& state) {
 }
 BENCHMARK(BM_BookFinalRays<traversal::wide>)->Name("BM_BookFinalRays/wide");
 BENCHMARK(BM_BookFinalRays<traversal::binary>)->Name("BM_BookFinalRays/binary");
+
+// sobol.h's low-discrepancy numbers against rnd's independent ones (issue 46): one number, and
+// one pair, for 1024 pixel samples' streams at bounce 1 in turn. Items are numbers drawn.
+std::vector<random_stream> bounce_streams() {
+  std::vector<random_stream> streams;
+  for (std::uint32_t i = 0; i < 1024; ++i)
+    streams.push_back(at_bounce(pixel_sample_stream(1, i / 16, i % 16), 1));
+  return streams;
+}
+
+void BM_Rnd(benchmark::State& state) {
+  const std::vector<random_stream> streams = bounce_streams();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(rnd(streams[i++ & 1023], dim_mixture));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Rnd);
+
+void BM_SobolRnd(benchmark::State& state) {
+  const std::vector<random_stream> streams = bounce_streams();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(sobol_rnd(streams[i++ & 1023], dim_mixture));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SobolRnd);
+
+void BM_RndPair(benchmark::State& state) {
+  const std::vector<random_stream> streams = bounce_streams();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const random_stream& s = streams[i++ & 1023];
+    benchmark::DoNotOptimize(real2(rnd(s, dim_direction_a), rnd(s, dim_direction_b)));
+  }
+  state.SetItemsProcessed(2 * state.iterations());
+}
+BENCHMARK(BM_RndPair);
+
+void BM_SobolRnd2(benchmark::State& state) {
+  const std::vector<random_stream> streams = bounce_streams();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(sobol_rnd2(streams[i++ & 1023], dim_direction_a));
+  state.SetItemsProcessed(2 * state.iterations());
+}
+BENCHMARK(BM_SobolRnd2);
 
 }  // namespace
 }  // namespace rtvk

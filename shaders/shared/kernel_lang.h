@@ -85,6 +85,12 @@ inline uint floatBitsToUint(float x) {  // GLSL's built-in
   std::memcpy(&u, &x, sizeof u);
   return u;
 }
+inline uint bitfieldReverse(uint x) {  // GLSL's built-in: bit i moves to bit 31 - i
+  x = ((x >> 1u) & 0x55555555u) | ((x & 0x55555555u) << 1u);  // within pairs of bits,
+  x = ((x >> 2u) & 0x33333333u) | ((x & 0x33333333u) << 2u);  // then nibbles,
+  x = ((x >> 4u) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4u);  // then bytes;
+  return __builtin_bswap32(x);                                // the bytes' order (one instruction)
+}
 }  // namespace RTVK_KERNEL_NAMESPACE
 
 #else  // GLSL

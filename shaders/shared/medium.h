@@ -30,7 +30,8 @@ const uint dim_medium = 4u;  // bounce >= 1: where the ray scatters in a medium 
 // The uniform number medium `index` draws for the ray of this bounce's stream: each medium a key
 // of its own, so that two media a ray crosses scatter it independently.
 inline precise float medium_random(random_stream s, uint index) {
-  return rnd(random_stream(hash32(s.key ^ (index * 0x9e3779b9u + 0x6d656469u)), s.bounce),
+  return rnd(random_stream(hash32(s.key ^ (index * 0x9e3779b9u + 0x6d656469u)), s.bounce,
+                           s.pixel_key, s.sample_index),
              dim_medium);
 }
 

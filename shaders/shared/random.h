@@ -37,9 +37,15 @@ inline uint hash32(uint x) {
   return x;
 }
 
+// The part of sample_key that depends on the pixel only: what low-discrepancy numbers
+// (sobol.h) scramble a pixel's samples by.
+inline uint pixel_key(uint seed, uint pixel) {
+  return hash32(hash32(seed ^ 0x9e3779b9u) ^ pixel);
+}
+
 // The part of random_bits that depends on the sample only, shared by all its numbers.
 inline uint sample_key(uint seed, uint pixel, uint sample_index) {
-  return hash32(hash32(hash32(seed ^ 0x9e3779b9u) ^ pixel) ^ sample_index);
+  return hash32(pixel_key(seed, pixel) ^ sample_index);
 }
 
 inline uint random_bits(uint seed, uint pixel, uint sample_index, uint bounce, uint dim) {
@@ -56,19 +62,26 @@ inline precise float random_float(uint seed, uint pixel, uint sample_index, uint
 }
 
 // The random numbers of one pixel sample at one bounce. The sample's key is hashed once, when the
-// stream is made: every number then costs one hash, not four (the same numbers).
+// stream is made: every number then costs one hash, not four (the same numbers). rnd reads key
+// and bounce only; sobol.h's low-discrepancy numbers need the pixel's key and the raw sample
+// index apart (a sample's points are a permutation of one Sobol sequence per pixel), so the
+// stream carries them too.
 struct random_stream {
-  uint key;     // sample_key(seed, pixel y * width + x from the top, sample index)
-  uint bounce;  // 0 for the camera ray, k for the k-th scatter
+  uint key;           // sample_key(seed, pixel y * width + x from the top, sample index)
+  uint bounce;        // 0 for the camera ray, k for the k-th scatter
+  uint pixel_key;     // pixel_key(seed, pixel): key without the sample index
+  uint sample_index;  // the sample's index in its pixel
 #ifdef __cplusplus
-  random_stream() : random_stream(0u, 0u) {}
-  random_stream(uint k, uint b) : key(k), bounce(b) {}
+  random_stream() : random_stream(0u, 0u, 0u, 0u) {}
+  random_stream(uint k, uint b, uint p, uint i)
+      : key(k), bounce(b), pixel_key(p), sample_index(i) {}
 #endif
 };
 
 // The stream of a pixel sample's camera ray (bounce 0).
 inline random_stream pixel_sample_stream(uint seed, uint pixel, uint sample_index) {
-  return random_stream(sample_key(seed, pixel, sample_index), 0u);
+  uint p = pixel_key(seed, pixel);
+  return random_stream(hash32(p ^ sample_index), 0u, p, sample_index);
 }
 
 inline precise float rnd(random_stream s, uint dim) {
@@ -76,7 +89,7 @@ inline precise float rnd(random_stream s, uint dim) {
 }
 
 inline random_stream at_bounce(random_stream s, uint b) {
-  return random_stream(s.key, b);
+  return random_stream(s.key, b, s.pixel_key, s.sample_index);
 }
 
 // (cos, sin) of the angle 2 pi b, b in [0, 1), without libm's sincos (a tenth of the CPU's time

@@ -65,7 +65,7 @@ inline path_state start_path(ray r, random_stream s) {
 // The path's random number for a blend at the surface it hit now: a dimension of its own at the
 // bounce about to be made, the surfaces passed before telling each draw apart.
 inline precise real alpha_random(path_state p) {
-  return real(rnd(random_stream(p.s.key, (p.depth + 1u) | (p.passes << 16u)), dim_alpha));
+  return real(rnd(at_bounce(p.s, (p.depth + 1u) | (p.passes << 16u)), dim_alpha));
 }
 
 // p.r hit `rec` on a surface with these flags and this alpha (surface_alpha): true, with p.r

@@ -137,7 +137,7 @@ TEST(NeeDensity, LampsAreDrawnInProportionToTheirPower) {
   const int n = 200000;
   for (int i = 0; i < n; ++i) {
     double choice = 0;
-    const random_stream stream(hash32(std::uint32_t(i)), 1u);
+    const random_stream stream(hash32(std::uint32_t(i)), 1u, 0u, std::uint32_t(i));
     nee_draw(table, punctual_table{}, environment_table{}, point3(0, 50, 0), 0, stream, choice);
     for (std::size_t k = 0; k < 5; ++k)
       if (choice == lamps[k].pmf) ++drawn[k];

@@ -70,7 +70,8 @@ TEST(ShaderPrecision, EveryMultiplyAddAndSubtractIsNoContraction) {
                                     std::pair{"rng_probe.comp", gpu::rng_probe_shader()},
                                     std::pair{"world_probe.comp", gpu::world_probe_shader()},
                                     std::pair{"kernel_probe.comp", gpu::kernel_probe_shader()},
-                                    std::pair{"pbr_probe.comp", gpu::pbr_probe_shader()}}) {
+                                    std::pair{"pbr_probe.comp", gpu::pbr_probe_shader()},
+                                    std::pair{"sobol_probe.comp", gpu::sobol_probe_shader()}}) {
     const arithmetic_census c = census(spirv);
     EXPECT_GT(c.checked, 0) << name << ": no float arithmetic found: is this SPIR-V?";
     EXPECT_TRUE(c.undecorated.empty())

@@ -303,7 +303,7 @@ inline void shadow_unblocked(precise INOUT(path_state) p) {
 // through glass comes by the paths that cross it).
 inline void shadow_meets(precise INOUT(path_state) p, hit_record rec, uint type, uint flags,
                          real alpha, real cutoff) {
-  random_stream s = random_stream(p.s.key, (p.depth + 1u) | (p.shadow_passes << 16u));
+  random_stream s = at_bounce(p.s, (p.depth + 1u) | (p.shadow_passes << 16u));
   real u = (flags & RTVK_MATERIAL_ALPHA_BLEND) != 0u ? real(rnd(s, dim_shadow_alpha)) : real(0.0);
   bool by = (flags & RTVK_MATERIAL_SEE_THROUGH) != 0u && p.shadow_passes < max_passes &&
             !surface_counts(type, flags, rec.front_face, alpha, cutoff, u);

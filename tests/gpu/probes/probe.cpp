@@ -57,6 +57,14 @@ std::vector<rng_probe_entry> run_rng_probe(gpu_context& ctx, std::vector<rng_pro
   return entries;
 }
 
+std::vector<sobol_probe_entry> run_sobol_probe(gpu_context& ctx,
+                                               std::vector<sobol_probe_entry> entries) {
+  run_in_place(ctx, sobol_probe_shader(), entries.data(),
+               entries.size() * sizeof(sobol_probe_entry),
+               std::uint32_t((entries.size() + 63) / 64), nullptr);
+  return entries;
+}
+
 std::vector<hit_probe_entry> run_hit_probe(gpu_context& ctx, std::vector<hit_probe_entry> entries) {
   run_in_place(ctx, hit_probe_shader(), entries.data(), entries.size() * sizeof(hit_probe_entry),
                std::uint32_t((entries.size() + 63) / 64), nullptr);

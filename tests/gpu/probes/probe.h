@@ -21,6 +21,10 @@ probe_io run_probe(gpu_context& ctx, const camera& cam,
 // Runs rng_probe.comp: fills `bits` and `value` of each entry on the GPU (seed 0x5eed).
 std::vector<rng_probe_entry> run_rng_probe(gpu_context& ctx, std::vector<rng_probe_entry> entries);
 
+// Runs sobol_probe.comp: fills the outputs of each entry with sobol.h's numbers (seed 0x5eed).
+std::vector<sobol_probe_entry> run_sobol_probe(gpu_context& ctx,
+                                               std::vector<sobol_probe_entry> entries);
+
 // Runs hit_probe.comp: fills `t` and `hit` of each entry with the shared hit_sphere.
 std::vector<hit_probe_entry> run_hit_probe(gpu_context& ctx, std::vector<hit_probe_entry> entries);
 

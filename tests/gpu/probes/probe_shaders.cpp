@@ -11,6 +11,7 @@
 #include "probe_spv.h"
 #include "punctual_probe_spv.h"
 #include "rng_probe_spv.h"
+#include "sobol_probe_spv.h"
 #include "world_probe_spv.h"
 
 namespace rtvk::gpu {
@@ -42,6 +43,10 @@ std::span<const std::uint32_t> punctual_probe_shader() {
 
 std::span<const std::uint32_t> environment_probe_shader() {
   return environment_probe_spv;
+}
+
+std::span<const std::uint32_t> sobol_probe_shader() {
+  return sobol_probe_spv;
 }
 
 }  // namespace rtvk::gpu

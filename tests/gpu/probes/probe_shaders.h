@@ -15,5 +15,6 @@ std::span<const std::uint32_t> light_probe_shader();        // light_probe.comp
 std::span<const std::uint32_t> pbr_probe_shader();          // pbr_probe.comp
 std::span<const std::uint32_t> punctual_probe_shader();     // punctual_probe.comp
 std::span<const std::uint32_t> environment_probe_shader();  // environment_probe.comp
+std::span<const std::uint32_t> sobol_probe_shader();        // sobol_probe.comp
 
 }  // namespace rtvk::gpu

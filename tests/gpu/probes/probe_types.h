@@ -47,6 +47,27 @@ static_assert(offsetof(rng_probe_entry, value) == 20);
 static_assert(sizeof(rng_probe_entry) == 32);
 #endif
 
+// std430 array element for sobol_probe.comp: the host fills the counters, the shader the
+// low-discrepancy numbers of the stream at_bounce(pixel_sample_stream(0x5eed, pixel, sample),
+// bounce) (sobol.h).
+struct sobol_probe_entry {
+  uint pixel;         // counter: pixel index
+  uint sample_index;  // counter: sample index
+  uint bounce;        // counter: bounce
+  uint dim;           // counter: dimension (the pair's first)
+  uint bits;          // sobol_bits(s, dim)
+  uint bits_x;        // sobol_bits2(s, dim).x
+  uint bits_y;        // sobol_bits2(s, dim).y
+  float value;        // sobol_rnd(s, dim)
+  float value_x;      // sobol_rnd2(s, dim).x
+  float value_y;      // sobol_rnd2(s, dim).y
+};
+#ifdef __cplusplus
+static_assert(offsetof(sobol_probe_entry, bits) == 16);
+static_assert(offsetof(sobol_probe_entry, value_y) == 36);
+static_assert(sizeof(sobol_probe_entry) == 40);
+#endif
+
 // std430 array element for hit_probe.comp: the host fills a ray, an interval and a sphere; the
 // shader runs hit_sphere on them.
 struct hit_probe_entry {
