@@ -26,6 +26,7 @@
 #include "pdf.h"
 #include "punctual.h"
 #include "ray_color.h"
+#include "sobol.h"
 
 // The punctual lights next-event estimation draws: the table's (a GPU shader defines it first, to
 // compile them out where the scene has none).
@@ -121,7 +122,8 @@ inline precise real3 nee_kinds(NEE_PARAM_ONLY) {
   return real3(lamps, punctual, environment) / n;
 }
 
-// A light drawn for the vertex at `origin` from stream s: its kind, then a lamp by the alias table
+// A light drawn for the vertex at `origin` from stream s (Owen-scrambled Sobol numbers): its kind,
+// then a lamp by the alias table
 // or a punctual light alike (one number: the kind by where it falls, the rest scaled back to
 // [0, 1) for the choice within), then a point or direction on it (two numbers; the environment's
 // by its sampler); choice: the probability of having drawn that light. No sample (pdf 0) without
@@ -130,9 +132,12 @@ inline light_sample nee_draw(NEE_PARAM real3 origin, real time, random_stream s,
                              precise OUT(real) choice) {
   choice = real(0.0);
   precise real3 kinds = nee_kinds(NEE_LIGHTS_ONLY);
-  precise real u = real(rnd(s, dim_light_pick));
-  real a = real(rnd(s, dim_light_a));
-  real b = real(rnd(s, dim_light_b));
+  // Low-discrepancy numbers (sobol.h): the pick in one dimension, the point on the light a pair
+  // (a (0, 2)-net over a pixel's samples), so that its samples cover each light evenly.
+  precise real u = real(sobol_rnd(s, dim_light_pick));
+  precise real2 ab = sobol_rnd2(s, dim_light_a);
+  real a = ab.x;
+  real b = ab.y;
   if (u < kinds.x) {
     precise real pick = (u / kinds.x) * real(LIGHT_COUNT);
     uint k = min(uint(pick), LIGHT_COUNT - 1u);
