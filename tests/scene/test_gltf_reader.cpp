@@ -282,7 +282,7 @@ TEST(GltfReader, RequiredExtensionsAreRefusedByNameAndIgnoredOnesWarnedOnce) {
   write(dir.path() / "ok.gltf",
         with(R"("extensionsRequired":["KHR_mesh_quantization","KHR_texture_transform"],)"
              R"("extensionsUsed":["KHR_mesh_quantization","KHR_texture_transform",)"
-             R"("KHR_materials_anisotropy","KHR_lights_punctual"],"animations":[{"channels":[],)"
+             R"("KHR_materials_anisotropy","KHR_materials_iridescence"],"animations":[{"channels":[],)"
              R"("samplers":[]}])"));
   write(dir.path() / "s.json", R"({"meshes":[{"file":"ok.gltf"},{"file":"ok.gltf"}]})");
   const std::string out = (dir.path() / "o.png").string();
@@ -299,7 +299,7 @@ TEST(GltfReader, RequiredExtensionsAreRefusedByNameAndIgnoredOnesWarnedOnce) {
   const std::string warning =
       "rtvk: warning: " + (dir.path() / "ok.gltf").string() +
       ": drawn without what rtvk does not read: the extensions "
-      "KHR_materials_anisotropy, KHR_lights_punctual; 1 animation (drawn at "
+      "KHR_materials_anisotropy, KHR_materials_iridescence; 1 animation (drawn at "
       "rest)\n";
   EXPECT_EQ(drawn.err.find(warning), 0u) << drawn.err;
   EXPECT_EQ(drawn.err.rfind("warning"), drawn.err.find("warning")) << drawn.err;  // once

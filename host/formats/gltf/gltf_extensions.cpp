@@ -27,8 +27,8 @@ constexpr honoured_extension honoured[] = {
     {"KHR_materials_clearcoat", "pbr_material::clearcoat*"},
     {"KHR_materials_sheen", "pbr_material::sheen_*"},
     {"KHR_materials_unlit", "the flat kind of the base color (gltf_material.cpp)"},
-    // KHR_lights_punctual is read (gltf_lights.cpp: scene::punctual_lights) but not yet drawn:
-    // it stays listed among the ignored until next-event estimation lights with it.
+    // Drawn by next-event estimation (lights/nee.h), which `auto` picks for a scene with them.
+    {"KHR_lights_punctual", "scene::punctual_lights (gltf_lights.cpp)"},
 };
 
 // The table's, and those formats/gltf_ext decodes before the walk (KHR_draco_mesh_compression,
