@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # README command 2, and what CI runs (.ci/run): install what is missing, then build and test in
 # passes, each aimed at what it alone can find (docs/testing.md: what runs where, and why):
-#   fuzz    the three libFuzzer targets (scene files, mesh files, calibrations), a minute each
+#   fuzz    the four libFuzzer targets (scene files, mesh files, calibrations, environment maps), a minute each
 #           from their committed corpora (clang, ASan + UBSan)
 #   ci      every test, on the system's lavapipe (release build, warnings are errors)
 #   asan    under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer: the host tests
@@ -111,7 +111,7 @@ fi
 
 echo "== fuzz"
 timed "build fuzz" build fuzz
-timed "fuzz: 3 targets, 60 s each" tests fuzz fuzz
+timed "fuzz: 4 targets, 60 s each" tests fuzz fuzz
 
 echo "== ci: every test, on the system's lavapipe ($system_mesa)"
 timed "build ci" build ci
