@@ -29,28 +29,6 @@ void trace_shadow(const hittable& world, const scene_shading& shading, const tex
   }
 }
 
-// pbr_step's steps with path_hit_pbr_nee for the bounce.
-bool pbr_step_nee(const scene_shading& shading, const texture_tables& tables,
-                  const light_table& lights, const punctual_table& punctual,
-                  const environment_table& env, path_state& p, const hit_record& rec, color& c) {
-  const material& m = shading.materials[rec.material];
-  const pbr_record& q = shading.pbr[rec.material];
-  c = p.radiance;
-  p.throughput *= pbr_volume_transmittance(q, rec, p.r);
-  const uint flags = material_flags(m);
-  if ((flags & RTVK_MATERIAL_SEE_THROUGH) != 0u &&
-      path_passes(p, rec, uint(m.type), flags,
-                  surface_alpha(tables, m.opacity, uint(m.texture), rec), m.alpha_cutoff))
-    return false;
-  if ((flags & RTVK_MATERIAL_EMISSIVE) != 0u)
-    path_emits(p, m.emission * emission_color(tables, uint(m.emission_texture), rec));
-  const color base = material_color(tables, m.albedo, uint(m.texture), rec) * color(rec.color);
-  const vec3 wo = -unit_vector(p.r.direction);
-  const pbr_texels t = pbr_texels_at(tables, q, rec);
-  return path_hit_pbr_nee(lights, punctual, env, p, rec, pbr_surface_from(q, base, rec, t),
-                          pbr_shading_normal(q, rec, t, wo), pbr_coat_normal(q, rec, t, wo), c);
-}
-
 }  // namespace
 
 color ray_color_nee(const ray& r_in, const hittable& world, const scene_shading& shading,
@@ -58,8 +36,10 @@ color ray_color_nee(const ray& r_in, const hittable& world, const scene_shading&
   const double infinity = std::numeric_limits<double>::infinity();
   const texture_tables tables = shading.tables();
   const light_table lights = shading.light_list();
-  const punctual_table punctual = shading.punctual_list();
-  const environment_table env = shading.environment ? shading.environment->view() : environment_table{};
+  const nee_tables nee{shading.punctual_list(),
+                       shading.environment ? shading.environment->view() : environment_table{}};
+  const punctual_table& punctual = nee.punctual;
+  const environment_table& env = nee.environment;
   path_state p = start_path(r_in, rnd);
   while (!path_ends_unlit(p, uint(max_depth))) {
     hit_record rec{};
@@ -68,7 +48,7 @@ color ray_color_nee(const ray& r_in, const hittable& world, const scene_shading&
     const material& m = shading.materials[rec.material];
     color c;
     if (m.type == material_type::pbr) {
-      if (pbr_step_nee(shading, tables, lights, punctual, env, p, rec, c)) return c;
+      if (pbr_step(shading, tables, lights, p, rec, c, &nee)) return c;
       trace_shadow(world, shading, tables, p);
       continue;
     }

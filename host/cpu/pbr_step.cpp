@@ -4,6 +4,7 @@
 // 4% slower on the Cornell box with them there.
 #include <cmath>
 
+#include "nee_pbr.h"
 #include "shading.h"
 
 namespace rtvk {
@@ -44,7 +45,7 @@ pbr_record pbr_record_of(const pbr_material& q) {
 // the generic steps (alpha, emission) as the loop takes them, then the PBR bounce. True: the path
 // ended, its color in `c`.
 bool pbr_step(const scene_shading& shading, const texture_tables& tables, const light_table& lights,
-              path_state& p, const hit_record& rec, color& c) {
+              path_state& p, const hit_record& rec, color& c, const nee_tables* nee) {
   const material& m = shading.materials[rec.material];
   const pbr_record& q = shading.pbr[rec.material];
   c = p.radiance;
@@ -59,8 +60,11 @@ bool pbr_step(const scene_shading& shading, const texture_tables& tables, const 
   const color base = material_color(tables, m.albedo, uint(m.texture), rec) * color(rec.color);
   const vec3 wo = -unit_vector(p.r.direction);
   const pbr_texels t = pbr_texels_at(tables, q, rec);
-  return path_hit_pbr(lights, p, rec, pbr_surface_from(q, base, rec, t),
-                      pbr_shading_normal(q, rec, t, wo), pbr_coat_normal(q, rec, t, wo), c);
+  const pbr_surface surface = pbr_surface_from(q, base, rec, t);
+  const vec3 n = pbr_shading_normal(q, rec, t, wo), coat_n = pbr_coat_normal(q, rec, t, wo);
+  if (nee)
+    return path_hit_pbr_nee(lights, nee->punctual, nee->environment, p, rec, surface, n, coat_n, c);
+  return path_hit_pbr(lights, p, rec, surface, n, coat_n, c);
 }
 
 }  // namespace rtvk

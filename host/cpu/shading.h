@@ -21,14 +21,14 @@ namespace rtvk {
 // none: plain; under next-event estimation (`nee`), the lamps only (nee.h).
 struct scene_shading {
   explicit scene_shading(const scene& s, bool sample_lights = false, bool nee = false);
-  bool nee = false;                    // ray_color is ray_color_nee
-  std::vector<material> materials;     // by index
-  packed_textures textures;            // records and texels
-  perlin_tables perlin;                // the noise's lattice (the scene's noise seed)
-  std::vector<medium_geometry> media;  // in scene order
-  std::vector<light_record> lights;    // what scattering aims at; empty: plain sampling
-  std::vector<pbr_record> pbr;         // by material index: a PBR material's parameters (the
-                                       // others' are the defaults, unread)
+  bool nee = false;                       // ray_color is ray_color_nee
+  std::vector<material> materials;        // by index
+  packed_textures textures;               // records and texels
+  perlin_tables perlin;                   // the noise's lattice (the scene's noise seed)
+  std::vector<medium_geometry> media;     // in scene order
+  std::vector<light_record> lights;       // what scattering aims at; empty: plain sampling
+  std::vector<pbr_record> pbr;            // by material index: a PBR material's parameters (the
+                                          // others' are the defaults, unread)
   std::vector<punctual_record> punctual;  // the punctual lights (next-event estimation draws them)
   std::optional<environment_tables> environment;  // what escaping rays see; none: the sky
   texture_tables tables() const {
@@ -65,8 +65,14 @@ pbr_record pbr_record_of(const pbr_material& q);
 // One trip of ray_color's loop at a hit on a PBR material (pbr_step.cpp): its volume's absorption,
 // alpha and emission as for any material, then its bounce (path_hit_pbr). True: the path ended,
 // its color in `c`.
+// Under next-event estimation (`nee`: the punctual lights' and the environment's tables beside the
+// lamps, `lights`), its bounce is path_hit_pbr_nee.
+struct nee_tables {
+  punctual_table punctual;
+  environment_table environment;
+};
 bool pbr_step(const scene_shading& shading, const texture_tables& tables, const light_table& lights,
-              path_state& p, const hit_record& rec, color& c);
+              path_state& p, const hit_record& rec, color& c, const nee_tables* nee = nullptr);
 
 // scatter (scatter.h) for one of the scene's materials.
 inline bool scatter(const material& m, const ray& r_in, const hit_record& rec,
