@@ -12,6 +12,7 @@
 #include "gpu/kernels_f32.h"
 #include "gpu_engine.h"
 #include "gpu_fixture.h"
+#include "hardware_sums.h"
 #include "image_compare.h"
 #include "probe.h"
 #include "render_helpers.h"
@@ -22,14 +23,6 @@ namespace {
 class GpuEnvironment : public test::GpuTest {
  protected:
   // The sums of a render of `s` on traversal `t` (as GpuPbr's).
-  gpu::sum_image sums(const scene& s, gpu_traversal t) {
-    gpu::gpu_render_options o;
-    o.engine.traversal = t;
-    gpu::gpu_engine engine(gpu(), s, o);
-    const camera cam = test::scene_camera(s);
-    return engine.render_sums({cam}, s.render,
-                              whole_render(cam.image_width(), cam.image_height(), s.render.spp))[0];
-  }
 };
 
 // The white furnace of tests/scene/test_environment.cpp on the device: L everywhere.
@@ -69,22 +62,7 @@ TEST_F(GpuEnvironment, ASunlitSceneMatchesTheCpu) {
 TEST_F(GpuEnvironment, TheHardwarePathsGiveTheComputeBvhsExactSums) {
   scene s = test::sunlit_scene();
   s.render.spp = 4;
-  const gpu::sum_image want = sums(s, gpu_traversal::compute);
-  for (gpu_traversal t : {gpu_traversal::ray_query, gpu_traversal::ray_pipeline}) {
-    const bool has =
-        t == gpu_traversal::ray_query ? ctx_->ray_queries() : ctx_->ray_tracing_pipelines();
-    if (!has) continue;  // Mesa 22.3's lavapipe
-    const gpu::sum_image got = sums(s, t);
-    ASSERT_EQ(got.pixels.size(), want.pixels.size());
-    int differ = 0;
-    for (std::size_t i = 0; i < want.pixels.size(); ++i) {
-      const gpu::pixel_sum& a = want.pixels[i];
-      const gpu::pixel_sum& b = got.pixels[i];
-      differ += a.r != b.r || a.g != b.g || a.b != b.b || a.r_top != b.r_top ||
-                a.g_top != b.g_top || a.b_top != b.b_top || a.samples != b.samples;
-    }
-    EXPECT_EQ(differ, 0) << (t == gpu_traversal::ray_query ? "rt-query" : "rt-pipeline");
-  }
+  test::expect_hardware_paths_match(gpu(), s);
 }
 
 class GpuEnvironmentKernels : public test::GpuTest {};

@@ -9,6 +9,7 @@
 #include "aov_pass.h"
 #include "gpu_engine.h"
 #include "gpu_fixture.h"
+#include "hardware_sums.h"
 #include "image_compare.h"
 #include "pbr_scenes.h"
 #include "render_gpu.h"
@@ -23,16 +24,6 @@ class GpuPbr : public test::GpuTest {
 
   framebuffer render(const scene& s) {
     return gpu::render_gpu(gpu(), test::scene_camera(s), s, s.render);
-  }
-
-  // The scene's sums through traversal `t`.
-  gpu::sum_image sums(const scene& s, gpu_traversal t) {
-    gpu::gpu_render_options o;
-    o.engine.traversal = t;
-    gpu::gpu_engine engine(gpu(), s, o);
-    const camera cam = test::scene_camera(s);
-    return engine.render_sums({cam}, s.render,
-                              whole_render(cam.image_width(), cam.image_height(), s.render.spp))[0];
   }
 };
 
@@ -55,22 +46,7 @@ TEST_F(GpuPbr, TheGalleryMatchesTheCpu) {
 TEST_F(GpuPbr, TheHardwarePathsGiveTheComputeBvhsExactSums) {
   scene s = test::pbr_gallery();
   s.render.spp = 4;
-  const gpu::sum_image want = sums(s, gpu_traversal::compute);
-  for (gpu_traversal t : {gpu_traversal::ray_query, gpu_traversal::ray_pipeline}) {
-    const bool has =
-        t == gpu_traversal::ray_query ? ctx_->ray_queries() : ctx_->ray_tracing_pipelines();
-    if (!has) continue;  // Mesa 22.3's lavapipe: GpuHardwareRt checks the refusal
-    const gpu::sum_image got = sums(s, t);
-    ASSERT_EQ(got.pixels.size(), want.pixels.size());
-    int differ = 0;
-    for (std::size_t i = 0; i < want.pixels.size(); ++i) {
-      const gpu::pixel_sum& a = want.pixels[i];
-      const gpu::pixel_sum& b = got.pixels[i];
-      differ += a.r != b.r || a.g != b.g || a.b != b.b || a.r_top != b.r_top ||
-                a.g_top != b.g_top || a.b_top != b.b_top || a.samples != b.samples;
-    }
-    EXPECT_EQ(differ, 0) << (t == gpu_traversal::ray_query ? "rt-query" : "rt-pipeline");
-  }
+  test::expect_hardware_paths_match(gpu(), s);
 }
 
 TEST_F(GpuPbr, AWhiteSphereInAWhiteFurnaceIsWhite) {
