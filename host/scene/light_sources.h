@@ -25,7 +25,9 @@ std::vector<light_record> scene_lamps(const scene& s);
 void resolve_sampling(scene& s);
 
 // Whether a render under mode `m` uses next-event estimation (sampling_mode::nee).
-inline bool uses_nee(sampling_mode m) { return m == sampling_mode::nee; }
+inline bool uses_nee(sampling_mode m) {
+  return m == sampling_mode::nee;
+}
 
 // Whether a render of a scene with `lights` lights (scene_lights) samples toward them under mode
 // `m`: `lights` always, `plain` never, `automatic` where there are from 1 to RTVK_MAX_LIGHTS.

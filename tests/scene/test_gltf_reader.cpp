@@ -279,11 +279,13 @@ TEST(GltfReader, RequiredExtensionsAreRefusedByNameAndIgnoredOnesWarnedOnce) {
   };
   write(dir.path() / "req.gltf", with(R"("extensionsRequired":["KHR_draco_mesh_compression_x"],)"
                                       R"("extensionsUsed":["KHR_draco_mesh_compression_x"])"));
-  write(dir.path() / "ok.gltf",
-        with(R"("extensionsRequired":["KHR_mesh_quantization","KHR_texture_transform"],)"
-             R"("extensionsUsed":["KHR_mesh_quantization","KHR_texture_transform",)"
-             R"("KHR_materials_anisotropy","KHR_materials_iridescence"],"animations":[{"channels":[],)"
-             R"("samplers":[]}])"));
+  write(
+      dir.path() / "ok.gltf",
+      with(
+          R"("extensionsRequired":["KHR_mesh_quantization","KHR_texture_transform"],)"
+          R"("extensionsUsed":["KHR_mesh_quantization","KHR_texture_transform",)"
+          R"("KHR_materials_anisotropy","KHR_materials_iridescence"],"animations":[{"channels":[],)"
+          R"("samplers":[]}])"));
   write(dir.path() / "s.json", R"({"meshes":[{"file":"ok.gltf"},{"file":"ok.gltf"}]})");
   const std::string out = (dir.path() / "o.png").string();
   const auto refused = test::run_rtvk(

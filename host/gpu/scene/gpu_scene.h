@@ -53,7 +53,7 @@ class gpu_scene {
     // The punctual lights (punctual.h), each with their count; one unused element (count 0)
     // when the scene has none.
     std::vector<gpu_punctual> punctual;
-    bool with_uv = false;               // some texture reads sphere hits' uv (RTVK_SPEC_UV)
+    bool with_uv = false;  // some texture reads sphere hits' uv (RTVK_SPEC_UV)
     // The environment map (lights/environment.h): RGBE texels and the sampling table; empty
     // where the scene has none.
     std::vector<std::uint32_t> environment_texels;

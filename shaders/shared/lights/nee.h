@@ -217,8 +217,9 @@ inline precise real3 path_missed_nee(NEE_PARAM path_state p, real3 horizon, real
   bool mixed = p.mis_pdf > real(0.0);
   precise real3 c;
   if (NEE_ENVIRONMENT && path_sees_environment(p, environment_visible(ENV_ALONE))) {
-    precise real w = mixed ? power_heuristic(p.mis_pdf, kinds.z * environment_pdf(ENV p.r.direction))
-                           : real(1.0);
+    precise real w = mixed
+                         ? power_heuristic(p.mis_pdf, kinds.z * environment_pdf(ENV p.r.direction))
+                         : real(1.0);
     c = path_missed_into(p, environment_radiance(ENV p.r.direction) * w);
   } else {
     c = path_missed(p, horizon, zenith);
@@ -260,8 +261,7 @@ inline void nee_end(precise INOUT(path_state) p) {
 // a light sample (their BSDF albedo / pi times the cosine, or albedo / 4 pi) and scatter as the
 // first two books do, their density kept for the next hit's weight; the others scatter as
 // path_hit has them, and whatever lamp their ray hits gives its light whole.
-inline bool path_hit_nee(NEE_PARAM precise INOUT(path_state) p, hit_record rec,
-                         uint type,
+inline bool path_hit_nee(NEE_PARAM precise INOUT(path_state) p, hit_record rec, uint type,
                          uint flags, real3 albedo, real fuzz, real ir, precise OUT(real3) c) {
   c = p.radiance;
   if (type == RTVK_MATERIAL_DIFFUSE_LIGHT) {

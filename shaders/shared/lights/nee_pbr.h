@@ -20,8 +20,8 @@ inline bool pbr_side_agrees(hit_record rec, real3 d, real local_z) {
 // against pbr_pdf's, and the BSDF's sample as the path (its density kept for the next hit's
 // weight; a delta lobe's none). The model is evaluated at both directions in one loop of two
 // trips, so that its code is compiled once into the render shader.
-inline bool path_hit_pbr_nee(NEE_PARAM precise INOUT(path_state) p, hit_record rec,
-                             pbr_surface m, real3 n, real3 coat_n, precise OUT(real3) c) {
+inline bool path_hit_pbr_nee(NEE_PARAM precise INOUT(path_state) p, hit_record rec, pbr_surface m,
+                             real3 n, real3 coat_n, precise OUT(real3) c) {
   c = p.radiance;
   onb b = onb_from_w(n);
   precise real3 wo = to_frame(b, -unit_vector(p.r.direction));
