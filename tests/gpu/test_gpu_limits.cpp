@@ -89,7 +89,8 @@ TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
   // allocation: 2001 spheres (62.5 KiB), the materials, 971 four-wide BVH nodes (121.4 KiB), and
   // one unused element each of the velocity (nothing moves), quad, triangle, vertex normal,
   // instance, texture coordinate, texture, texel, medium, light, disk and vertex tangent arrays
-  // (none there), the noise tables (7 KiB) and the punctual lights' unused element (count 0).
+  // (none there), the noise tables (7 KiB), the punctual lights' unused element (count 0) and
+  // the environment map's two (no map).
   EXPECT_THAT(
       render_with(s, {.allocation_size = 150 << 10}),
       testing::HasSubstr("the sphere array and the material array and the BVH and the "
@@ -98,8 +99,9 @@ TEST_F(GpuLimits, EachLimitIsCheckedAndRendersWithinThemStillWork) {
                          "coordinate array and the texture array and the image textures' "
                          "texels and the noise tables and the media array and the light array "
                          "and the disk array and the vertex tangent array and the PBR "
-                         "material array and the BSDF tables and the punctual light array need "
-                         "195.75 KiB in one memory allocation"));
+                         "material array and the BSDF tables and the punctual light array and "
+                         "the environment map's texels and the environment map's sampling "
+                         "table need 195.789 KiB in one memory allocation"));
   EXPECT_EQ(render_with(s, {.allocation_size = 200 << 10}), "");
   // Three allocations in all: the scene's arrays, the targets' device-local and readback
   // buffers.
