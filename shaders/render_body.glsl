@@ -70,9 +70,11 @@ uint light_count() {
 path_state pixel_path(camera_ubo cam, uvec2 pixel, uint j, uint sample_index) {
   random_stream s =
       pixel_sample_stream(pc.seed, pixel.y * cam.image_width + pixel.x, sample_index);
+  // Next-event estimation's paths draw Sobol numbers in every dimension (random.h).
+  if (nee) s = with_low_discrepancy(s);
   // Strata come with lights sampling only (pixel_strata): plain pipelines compile them out.
   ray r = sample_ray(cam, cam.image_width, cam.image_height, pixel.x, j, s, jitter, any_lens,
-                     sample_lights || nee ? pc.strata : 1u, sample_index);
+                     sample_lights ? pc.strata : 1u, sample_index);
   return start_path(r, s);
 }
 

@@ -62,6 +62,20 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   bool hit = hit_world(shadow ? p.shadow : p.r, t_min, shadow ? p.shadow_reach : max_float, rec,
                        iterations);
   if (shadow) {
+    // A medium that scatters the shadow ray before its end blocks it (nee.h's shadow_blocked).
+    if (any_media) {
+      random_stream s = shadow_stream(p);
+      precise float t_end = hit ? rec.t : p.shadow_reach;
+      hit_record scatter_point;
+      for (uint k = 0u; k < pc.medium_count; ++k) {
+        ++iterations;
+        if (hit_medium(medium_at(k), p.shadow, t_min, t_end,
+                       medium_random(s, k, dim_shadow_medium), scatter_point)) {
+          shadow_blocked(p);
+          return false;
+        }
+      }
+    }
     if (!hit) {
       shadow_unblocked(p);
       return false;
@@ -78,7 +92,7 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
     random_stream s = at_bounce(p.s, p.depth + 1u);
     for (uint k = 0u; k < pc.medium_count; ++k) {
       ++iterations;
-      if (hit_medium(medium_at(k), p.r, t_min, hit ? rec.t : max_float, medium_random(s, k), rec))
+      if (hit_medium(medium_at(k), p.r, t_min, hit ? rec.t : max_float, medium_random(s, k, dim_medium), rec))
         hit = true;
     }
   }

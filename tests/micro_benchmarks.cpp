@@ -17,7 +17,7 @@
 #include "random.h"
 #include "scene.h"
 #include "shading.h"
-#include "sobol.h"
+#include "random.h"
 #include "world.h"
 
 namespace rtvk {

@@ -10,13 +10,29 @@
 namespace rtvk {
 namespace {
 
+// Whether a medium scatters p's shadow ray before t_end (the world's hit or the ray's reach).
+bool shadow_scattered(const scene_shading& shading, const path_state& p, double t_end) {
+  const random_stream s = shadow_stream(p);
+  hit_record rec{};
+  for (const medium_geometry& m : shading.media)
+    if (hit_medium(m, p.shadow, t_min, t_end, medium_random(s, m.index, dim_shadow_medium), rec))
+      return true;
+  return false;
+}
+
 // Traces p's pending shadow ray to its end: its light is added where nothing blocks it, and the
-// see-through surfaces it meets let it by as they let paths by.
+// see-through surfaces it meets let it by as they let paths by; a medium that scatters it blocks
+// it.
 void trace_shadow(const hittable& world, const scene_shading& shading, const texture_tables& tables,
                   path_state& p) {
   while (p.shadow_reach > 0) {
     hit_record rec{};
-    if (!world.hit(p.shadow, t_min, p.shadow_reach, rec)) {
+    const bool hit = world.hit(p.shadow, t_min, p.shadow_reach, rec);
+    if (shadow_scattered(shading, p, hit ? rec.t : p.shadow_reach)) {
+      shadow_blocked(p);
+      return;
+    }
+    if (!hit) {
       shadow_unblocked(p);
       return;
     }
@@ -43,7 +59,15 @@ color ray_color_nee(const ray& r_in, const hittable& world, const scene_shading&
   path_state p = start_path(r_in, rnd);
   while (!path_ends_unlit(p, uint(max_depth))) {
     hit_record rec{};
-    if (!world.hit(p.r, t_min, infinity, rec))
+    bool hit = world.hit(p.r, t_min, infinity, rec);
+    if (!shading.media.empty()) {  // as ray_color: the media within the world's hit
+      const random_stream s = at_bounce(p.s, p.depth + 1u);
+      for (const medium_geometry& m : shading.media)
+        if (hit_medium(m, p.r, t_min, hit ? rec.t : infinity, medium_random(s, m.index, dim_medium),
+                       rec))
+          hit = true;
+    }
+    if (!hit)
       return path_missed_nee(lights, punctual, env, p, background.horizon, background.zenith);
     const material& m = shading.materials[rec.material];
     color c;

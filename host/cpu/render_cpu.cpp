@@ -41,6 +41,7 @@ struct pixel_inputs {
   const scene_shading& shading;  // the scene's materials, textures and media
   const render_window& win;      // the samples to take
   std::uint32_t strata;          // pixel_strata: the cells a side the samples spread over
+  bool low_discrepancy;          // Sobol numbers in every dimension (next-event estimation)
 };
 
 // Whether a sample's color can be added: a NaN or an infinity (a lamp past float's range, an
@@ -61,8 +62,9 @@ color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y,
   const int j = height - 1 - y;  // the lesson counts rows from the bottom
   color sum(0, 0, 0);
   for (int sample = in.win.sample_begin; sample < in.win.sample_end; ++sample) {
-    const random_stream rnd =
+    const random_stream hashed =
         pixel_sample_stream(in.rs.seed, uint(y) * uint(width) + uint(i), uint(sample));
+    const random_stream rnd = in.low_discrepancy ? with_low_discrepancy(hashed) : hashed;
     const ray r = sample_ray(in.cam.frame(), uint(width), uint(height), uint(i), uint(j), rnd,
                              in.rs.jitter, true, in.strata, uint(sample));
     const color c = ray_color(r, world, in.shading, in.sky, in.rs.max_depth, rnd);
@@ -107,7 +109,7 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
   const bool lights = samples_lights(s, rs);
   const bool nee = uses_nee(rs.sampling);
   const scene_shading shading(s, lights, nee);
-  const pixel_inputs in{cam, s.sky, rs, shading, win, pixel_strata(rs, lights || nee)};
+  const pixel_inputs in{cam, s.sky, rs, shading, win, pixel_strata(rs, lights), nee};
   framebuffer fb(win.width, win.height);
   const std::size_t width = std::size_t(win.width), pixels = width * std::size_t(win.height);
   std::atomic<std::size_t> pixels_done{0};

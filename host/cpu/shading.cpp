@@ -48,7 +48,8 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
     if (!shading.media.empty()) {
       const random_stream s = at_bounce(p.s, p.depth + 1u);
       for (const medium_geometry& m : shading.media)
-        if (hit_medium(m, p.r, t_min, hit ? rec.t : infinity, medium_random(s, m.index), rec))
+        if (hit_medium(m, p.r, t_min, hit ? rec.t : infinity, medium_random(s, m.index, dim_medium),
+                       rec))
           hit = true;
     }
     if (!hit) return missed(p, shading, background);

@@ -161,8 +161,7 @@ std::vector<light_record> scene_lamps(const scene& s) {
 }
 
 void resolve_sampling(scene& s) {
-  if (s.render.sampling == sampling_mode::automatic && !s.punctual_lights.empty() &&
-      s.media.empty())
+  if (s.render.sampling == sampling_mode::automatic && !s.punctual_lights.empty())
     s.render.sampling = sampling_mode::nee;
 }
 
@@ -174,10 +173,6 @@ bool samples_lights(std::size_t lights, sampling_mode m) {
 
 void check_sampling(const scene& s, const render_settings& rs, const std::string& what) {
   if (rs.sampling == sampling_mode::nee) {
-    if (!s.media.empty())
-      throw std::invalid_argument(what +
-                                  " nee: the scene has media (constant-density volumes), which "
-                                  "next-event estimation does not handle yet; use lights or plain");
     const std::size_t lamps = scene_lamps(s).size();
     if (lamps > RTVK_MAX_LIGHTS)
       throw std::invalid_argument(what + " nee: the scene has " + std::to_string(lamps) +

@@ -21,7 +21,7 @@ std::vector<light_record> scene_lights(const scene& s);
 std::vector<light_record> scene_lamps(const scene& s);
 
 // `auto` made definite where it is not what samples_lights says: next-event estimation where the
-// scene has punctual lights (only it can draw a delta light) and no media (which it refuses).
+// scene has punctual lights (only it can draw a delta light).
 void resolve_sampling(scene& s);
 
 // Whether a render under mode `m` uses next-event estimation (sampling_mode::nee).

@@ -26,13 +26,18 @@ struct medium_geometry {
 };
 
 const uint dim_medium = 4u;  // bounce >= 1: where the ray scatters in a medium (its own key)
+// bounce >= 1: where a shadow ray scatters in a medium (next-event estimation: its own number, so
+// that the shadow ray and the path's next ray cross a medium independently)
+const uint dim_shadow_medium = 15u;
 
-// The uniform number medium `index` draws for the ray of this bounce's stream: each medium a key
-// of its own, so that two media a ray crosses scatter it independently.
-inline precise float medium_random(random_stream s, uint index) {
-  return rnd(random_stream(hash32(s.key ^ (index * 0x9e3779b9u + 0x6d656469u)), s.bounce,
-                           s.pixel_key, s.sample_index),
-             dim_medium);
+// The uniform number medium `index` draws in dimension `dim` (dim_medium, dim_shadow_medium) of
+// this bounce's stream: each medium a key of its own (and a pixel key of its own for the
+// low-discrepancy numbers), so that two media a ray crosses scatter it independently.
+inline precise float medium_random(random_stream s, uint index, uint dim) {
+  uint spread = index * 0x9e3779b9u + 0x6d656469u;
+  return rnd(random_stream(hash32(s.key ^ spread), s.bounce, hash32(s.pixel_key ^ spread),
+                           s.sample_index, s.low_discrepancy),
+             dim);
 }
 
 // Where the line of r enters and leaves a sphere (t_in <= t_out, any sign), or false.

@@ -10,8 +10,8 @@
 #include <set>
 #include <vector>
 
+#include "medium.h"
 #include "random.h"
-#include "sobol.h"
 
 namespace rtvk {
 namespace {
@@ -44,6 +44,26 @@ TEST(Sobol, TheStreamCarriesThePixelAndTheSampleIndex) {
   EXPECT_EQ(s.pixel_key, pixel_key(7, 12345));
   EXPECT_EQ(s.sample_index, 3u);
   EXPECT_EQ(s.bounce, 2u);
+}
+
+// A stream asked for low-discrepancy numbers (next-event estimation's paths) draws them in every
+// dimension through rnd, the pairs' seconds as their pair's second coordinate, through at_bounce
+// and in the media's own streams; a hashed stream's rnd is unchanged.
+TEST(Sobol, ALowDiscrepancyStreamDrawsSobolInEveryDimension) {
+  const random_stream hashed = at_bounce(pixel_sample_stream(7, 12345, 3), 2);
+  const random_stream s = at_bounce(with_low_discrepancy(pixel_sample_stream(7, 12345, 3)), 2);
+  EXPECT_FALSE(hashed.low_discrepancy);
+  EXPECT_TRUE(s.low_discrepancy);
+  EXPECT_EQ(rnd(hashed, 5), bits_to_unit(random_bits(7, 12345, 3, 2, 5)));
+  for (uint dim = 0; dim < 16; ++dim) {
+    const bool second = dim == 1 || dim == 3 || dim == 8 || dim == 12;
+    const float want = second ? float(sobol_rnd2(s, dim - 1).y) : float(sobol_rnd(s, dim));
+    EXPECT_EQ(rnd(s, dim), want) << "dimension " << dim;
+    EXPECT_NE(rnd(s, dim), rnd(hashed, dim)) << "dimension " << dim;
+  }
+  // Two media in one stream draw apart (their own pixel keys as well as keys).
+  EXPECT_NE(medium_random(s, 0, dim_medium), medium_random(s, 1, dim_medium));
+  EXPECT_NE(medium_random(s, 0, dim_medium), medium_random(s, 0, dim_shadow_medium));
 }
 
 TEST(Sobol, TheGeneratorsAreSobolsFirstTwoDimensions) {

@@ -142,7 +142,7 @@ TEST(Densities, TheMixturesWeightsAverageToTheAlbedo) {
   for (int k = 0; k < n; ++k) {
     color att;
     ray out;
-    const random_stream s(hash32(std::uint32_t(k)), 1, 0, 0);
+    const random_stream s(hash32(std::uint32_t(k)), 1, 0, 0, false);
     if (!scatter_mixture(table, RTVK_MATERIAL_LAMBERTIAN, color(0.5), r_in, rec, s, att, out))
       continue;
     sum += att.x;

@@ -9,7 +9,7 @@
 #include "gpu_fixture.h"
 #include "probe.h"
 #include "random.h"
-#include "sobol.h"
+#include "random.h"
 
 namespace rtvk {
 namespace {

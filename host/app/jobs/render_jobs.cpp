@@ -108,9 +108,11 @@ std::string scene_identity(const scene& s) {
     for (const light_record& l : scene_lights(s))
       append_bytes(out, l.kind, l.a, l.u, l.v, l.radius);
   }
-  // Next-event estimation likewise, with the lamps it draws and what they emit.
+  // Next-event estimation likewise, with the lamps it draws and what they emit, and the version
+  // of its low-discrepancy numbers (2: Sobol in every dimension, no strata), so that pieces drawn
+  // by an older build do not merge with these.
   if (uses_nee(r.sampling)) {
-    append_bytes(out, std::uint8_t(0x4e), pixel_strata(r, true));
+    append_bytes(out, std::uint8_t(0x4e), std::uint8_t(2));
     for (const light_record& l : scene_lamps(s))
       append_bytes(out, l.kind, l.a, l.u, l.v, l.radius, l.flags, l.emission);
   }

@@ -86,7 +86,7 @@ render_push make_push(const sky& background, const render_settings& rs, const re
   // Next-event estimation draws the lamps, the table's first entries (check_sampling bounded them).
   const bool nee = uses_nee(rs.sampling);
   if (nee) push.light_count = objects.lamp_count();
-  push.strata = pixel_strata(rs, lights || nee);
+  push.strata = pixel_strata(rs, lights);
   push.probe_trips = 2;  // limit_was_hit's loop (render_body.glsl)
   return push;
 }

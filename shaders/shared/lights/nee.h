@@ -26,7 +26,7 @@
 #include "pdf.h"
 #include "punctual.h"
 #include "ray_color.h"
-#include "sobol.h"
+#include "random.h"
 
 // The punctual lights next-event estimation draws: the table's (a GPU shader defines it first, to
 // compile them out where the scene has none).
@@ -302,18 +302,31 @@ inline void shadow_unblocked(precise INOUT(path_state) p) {
   p.shadow_reach = real(0.0);
 }
 
+// The stream of the pending shadow ray's numbers: its vertex's bounce, and above bit 16 the
+// surfaces it passed, so that each stretch of it draws its own.
+inline random_stream shadow_stream(path_state p) {
+  return at_bounce(p.s, (p.depth + 1u) | (p.shadow_passes << 16u));
+}
+
+// The pending shadow ray is blocked: by an opaque surface, or by a medium that scattered it before
+// its end (medium.h's hit_medium with dim_shadow_medium: the chance that none does is the media's
+// transmittance, so counting the light only then is unbiased).
+inline void shadow_blocked(precise INOUT(path_state) p) {
+  p.shadow_reach = real(0.0);
+}
+
 // The pending shadow ray hit `rec` (at distance rec.t along its unit direction), on a surface
 // with these flags and alpha (surface_alpha): a surface that lets it by as path_passes lets a
 // path by (its own draw for a blend) moves it beyond; any other blocks it (glass included: light
 // through glass comes by the paths that cross it).
 inline void shadow_meets(precise INOUT(path_state) p, hit_record rec, uint type, uint flags,
                          real alpha, real cutoff) {
-  random_stream s = at_bounce(p.s, (p.depth + 1u) | (p.shadow_passes << 16u));
+  random_stream s = shadow_stream(p);
   real u = (flags & RTVK_MATERIAL_ALPHA_BLEND) != 0u ? real(rnd(s, dim_shadow_alpha)) : real(0.0);
   bool by = (flags & RTVK_MATERIAL_SEE_THROUGH) != 0u && p.shadow_passes < max_passes &&
             !surface_counts(type, flags, rec.front_face, alpha, cutoff, u);
   if (!by) {
-    p.shadow_reach = real(0.0);
+    shadow_blocked(p);
     return;
   }
   p.shadow.origin = scatter_origin(rec, p.shadow.direction);

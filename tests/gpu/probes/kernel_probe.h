@@ -26,7 +26,7 @@ inline void run_kernel_probe(INOUT(kernel_probe_entry) e) {
   rec.front_face = e.front_face != 0u;
   rec.material = 0u;
   rec.offset = e.offset;
-  random_stream s = random_stream(e.key, e.bounce, 0u, 0u);
+  random_stream s = random_stream(e.key, e.bounce, 0u, 0u, false);
   ray r_in = ray(e.p - e.direction, e.direction, real(0.0));
   precise real3 attenuation;
   precise ray scattered;

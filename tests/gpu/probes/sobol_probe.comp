@@ -11,7 +11,7 @@ layout(std430, set = 0, binding = RTVK_BINDING_PROBE) buffer probe_block {
   sobol_probe_entry entries[];
 };
 
-#include "sobol.h"
+#include "random.h"
 
 void main() {
   uint i = gl_GlobalInvocationID.x;

@@ -22,14 +22,11 @@
 // arithmetic only, no tables, no state: the numbers are a function of (seed, pixel, sample index,
 // bounce, dimension), as rnd's.
 //
-// Use: sobol_rnd(s, dim) and sobol_rnd2(s, dim) for the stream s of a pixel sample at a bounce
-// (random.h's pixel_sample_stream and at_bounce carry the pixel's key and the sample index for
-// this), with random.h's dimension names; a pair is named by its first dimension, and its first
-// number is that dimension's sobol_rnd. Floats as rnd's: the top 24 bits, exact in [0, 1).
+// This file holds the bit arithmetic; random.h seeds it from a pixel sample's stream (sobol_rnd,
+// sobol_rnd2) and draws from it wherever a stream asks for low-discrepancy numbers (rnd).
 #ifndef RTVK_SOBOL_H
 #define RTVK_SOBOL_H
 #include "kernel_lang.h"
-#include "random.h"
 
 RTVK_KERNELS_BEGIN
 
@@ -74,52 +71,6 @@ inline uint laine_karras_permutation(uint x, uint seed) {
 // size, and a net stays a net.
 inline uint nested_uniform_scramble(uint x, uint seed) {
   return bitfieldReverse(laine_karras_permutation(bitfieldReverse(x), seed));
-}
-
-// The seed of a dimension (or of a pair, by its first dimension) of one pixel's samples at one
-// bounce: the pixel's key with rnd's counter (bounce << 4 | dim), spread by an odd multiplier
-// (one to one) and offset so that no seed is rnd's key of sample 0, hashed once.
-inline uint sobol_seed(random_stream s, uint dim) {
-  return hash32(s.pixel_key ^ (((s.bounce << 4u) | dim) * 0x9e3779b9u + 0x50b01u));
-}
-
-// The sample's index in the pair's copy of the sequence, and the two coordinates' scramble seeds.
-inline uint sobol_index(uint sample_index, uint seed) {
-  return nested_uniform_scramble(sample_index, seed);
-}
-inline uint sobol_seed_x(uint seed) {
-  return hash32(seed ^ 0xa511e9b3u);
-}
-inline uint sobol_seed_y(uint seed) {
-  return hash32(seed ^ 0x63d83595u);
-}
-
-// The 32 bits of dimension `dim`, and of the pair that begins at `dim`: the scrambles of
-// sobol_first and sobol_second of sobol_index, written with the reversals that cancel left out
-// (nested_uniform_scramble(sobol_first(i), s) = bitfieldReverse(laine_karras_permutation(i, s)),
-// and likewise sobol_second's with sobol_pascal(i)): 3 and 4 reversals, not 6 and 8.
-inline uint sobol_bits(random_stream s, uint dim) {
-  uint seed = sobol_seed(s, dim);
-  uint index = sobol_index(s.sample_index, seed);
-  return bitfieldReverse(laine_karras_permutation(index, sobol_seed_x(seed)));
-}
-
-inline uvec2 sobol_bits2(random_stream s, uint dim) {
-  uint seed = sobol_seed(s, dim);
-  uint index = sobol_index(s.sample_index, seed);
-  return uvec2(bitfieldReverse(laine_karras_permutation(index, sobol_seed_x(seed))),
-               bitfieldReverse(laine_karras_permutation(sobol_pascal(index), sobol_seed_y(seed))));
-}
-
-// A low-discrepancy number in [0, 1), rounded as rnd's (the top 24 bits).
-inline precise real sobol_rnd(random_stream s, uint dim) {
-  return real(bits_to_unit(sobol_bits(s, dim)));
-}
-
-// The pair of dimensions (dim, dim + 1) as one 2D point: (0, k, 2)-nets over a pixel's samples.
-inline precise real2 sobol_rnd2(random_stream s, uint dim) {
-  uvec2 b = sobol_bits2(s, dim);
-  return real2(real(bits_to_unit(b.x)), real(bits_to_unit(b.y)));
 }
 
 RTVK_KERNELS_END

@@ -5,6 +5,7 @@
 #ifndef RTVK_RANDOM_H
 #define RTVK_RANDOM_H
 #include "kernel_lang.h"
+#include "sobol.h"
 
 RTVK_KERNELS_BEGIN
 
@@ -65,31 +66,101 @@ inline precise float random_float(uint seed, uint pixel, uint sample_index, uint
 // stream is made: every number then costs one hash, not four (the same numbers). rnd reads key
 // and bounce only; sobol.h's low-discrepancy numbers need the pixel's key and the raw sample
 // index apart (a sample's points are a permutation of one Sobol sequence per pixel), so the
-// stream carries them too.
+// stream carries them too, and whether its every number is one of those.
 struct random_stream {
-  uint key;           // sample_key(seed, pixel y * width + x from the top, sample index)
-  uint bounce;        // 0 for the camera ray, k for the k-th scatter
-  uint pixel_key;     // pixel_key(seed, pixel): key without the sample index
-  uint sample_index;  // the sample's index in its pixel
+  uint key;              // sample_key(seed, pixel y * width + x from the top, sample index)
+  uint bounce;           // 0 for the camera ray, k for the k-th scatter
+  uint pixel_key;        // pixel_key(seed, pixel): key without the sample index
+  uint sample_index;     // the sample's index in its pixel
+  bool low_discrepancy;  // rnd draws Owen-scrambled Sobol numbers (next-event estimation's paths)
 #ifdef __cplusplus
-  random_stream() : random_stream(0u, 0u, 0u, 0u) {}
-  random_stream(uint k, uint b, uint p, uint i)
-      : key(k), bounce(b), pixel_key(p), sample_index(i) {}
+  random_stream() : random_stream(0u, 0u, 0u, 0u, false) {}
+  random_stream(uint k, uint b, uint p, uint i, bool ld)
+      : key(k), bounce(b), pixel_key(p), sample_index(i), low_discrepancy(ld) {}
 #endif
 };
 
-// The stream of a pixel sample's camera ray (bounce 0).
+// The stream of a pixel sample's camera ray (bounce 0), of hashed numbers (the books' modes).
 inline random_stream pixel_sample_stream(uint seed, uint pixel, uint sample_index) {
   uint p = pixel_key(seed, pixel);
-  return random_stream(hash32(p ^ sample_index), 0u, p, sample_index);
+  return random_stream(hash32(p ^ sample_index), 0u, p, sample_index, false);
 }
 
+// Stream s drawing low-discrepancy numbers in every dimension instead (next-event estimation).
+inline random_stream with_low_discrepancy(random_stream s) {
+  s.low_discrepancy = true;
+  return s;
+}
+
+// The seed of a dimension (or of a pair, by its first dimension) of one pixel's samples at one
+// bounce: the pixel's key with rnd's counter (bounce << 4 | dim), spread by an odd multiplier
+// (one to one) and offset so that no seed is rnd's key of sample 0, hashed once.
+inline uint sobol_seed(random_stream s, uint dim) {
+  return hash32(s.pixel_key ^ (((s.bounce << 4u) | dim) * 0x9e3779b9u + 0x50b01u));
+}
+
+// The sample's index in the pair's copy of the sequence, and the two coordinates' scramble seeds.
+inline uint sobol_index(uint sample_index, uint seed) {
+  return nested_uniform_scramble(sample_index, seed);
+}
+inline uint sobol_seed_x(uint seed) {
+  return hash32(seed ^ 0xa511e9b3u);
+}
+inline uint sobol_seed_y(uint seed) {
+  return hash32(seed ^ 0x63d83595u);
+}
+
+// The 32 bits of dimension `dim`, and of the pair that begins at `dim`: the scrambles of
+// sobol_first and sobol_second of sobol_index, written with the reversals that cancel left out
+// (nested_uniform_scramble(sobol_first(i), s) = bitfieldReverse(laine_karras_permutation(i, s)),
+// and likewise sobol_second's with sobol_pascal(i)): 3 and 4 reversals, not 6 and 8.
+inline uint sobol_bits(random_stream s, uint dim) {
+  uint seed = sobol_seed(s, dim);
+  uint index = sobol_index(s.sample_index, seed);
+  return bitfieldReverse(laine_karras_permutation(index, sobol_seed_x(seed)));
+}
+
+inline uvec2 sobol_bits2(random_stream s, uint dim) {
+  uint seed = sobol_seed(s, dim);
+  uint index = sobol_index(s.sample_index, seed);
+  return uvec2(bitfieldReverse(laine_karras_permutation(index, sobol_seed_x(seed))),
+               bitfieldReverse(laine_karras_permutation(sobol_pascal(index), sobol_seed_y(seed))));
+}
+
+// A low-discrepancy number in [0, 1), rounded as rnd's (the top 24 bits).
+inline precise real sobol_rnd(random_stream s, uint dim) {
+  return real(bits_to_unit(sobol_bits(s, dim)));
+}
+
+// The pair of dimensions (dim, dim + 1) as one 2D point: (0, k, 2)-nets over a pixel's samples.
+inline precise real2 sobol_rnd2(random_stream s, uint dim) {
+  uvec2 b = sobol_bits2(s, dim);
+  return real2(real(bits_to_unit(b.x)), real(bits_to_unit(b.y)));
+}
+
+// Which dimensions are the second of a pair (sobol_rnd2): the pixel's jitter and a scattered
+// direction (0, 1), the lens point or a metal's fuzz with glass's choice (2, 3), the point on a
+// light (7, 8), a PBR lobe's direction (11, 12). A stream's numbers in a pair's two dimensions
+// are then one 2D point of a (0, 2)-net, as pixel_spot, scatter.h and nee.h use them.
+const uint sobol_pair_seconds = (1u << 1u) | (1u << 3u) | (1u << 8u) | (1u << 12u);
+
+// Dimension `dim` of stream s as a low-discrepancy number: its pair's second coordinate or its
+// own (a first's number is sobol_rnd's, the first coordinate of its pair).
+inline precise float sobol_dimension(random_stream s, uint dim) {
+  if (((sobol_pair_seconds >> dim) & 1u) != 0u)
+    return bits_to_unit(sobol_bits2(s, dim - 1u).y);
+  return bits_to_unit(sobol_bits(s, dim));
+}
+
+// The uniform number of dimension `dim` in [0, 1): hashed from the stream's key and counter, or
+// the low-discrepancy one where the stream asks for those.
 inline precise float rnd(random_stream s, uint dim) {
+  if (s.low_discrepancy) return sobol_dimension(s, dim);
   return bits_to_unit(hash32(s.key ^ ((s.bounce << 4) | dim)));
 }
 
 inline random_stream at_bounce(random_stream s, uint b) {
-  return random_stream(s.key, b, s.pixel_key, s.sample_index);
+  return random_stream(s.key, b, s.pixel_key, s.sample_index, s.low_discrepancy);
 }
 
 // (cos, sin) of the angle 2 pi b, b in [0, 1), without libm's sincos (a tenth of the CPU's time
