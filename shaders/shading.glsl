@@ -17,6 +17,9 @@
 // compiled out (on lavapipe it alone nearly halved book-final's speed).
 layout(constant_id = RTVK_SPEC_TEXTURES) const bool any_textures = false;
 layout(constant_id = RTVK_SPEC_MEDIA) const bool any_media = false;
+// Whether every hit blocks a shadow ray (no see-through material, no media): its search then
+// ends at the first hit (world.glsl's first_hit_ends).
+layout(constant_id = RTVK_SPEC_OPAQUE_SHADOWS) const bool opaque_shadows = false;
 // Whether some material is PBR: without, pbr_shading.h's code is compiled out (the books' scenes
 // run the shader they ran before it).
 layout(constant_id = RTVK_SPEC_PBR) const bool any_pbr = false;
@@ -59,6 +62,7 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   }
   ++rays;
   hit_record rec;
+  first_hit_ends = shadow && opaque_shadows;
   bool hit = hit_world(shadow ? p.shadow : p.r, t_min, shadow ? p.shadow_reach : max_float, rec,
                        iterations);
   if (shadow) {

@@ -199,6 +199,10 @@ uint sort_key(bool entered, float t) {
 // (lavapipe's 8 lanes, a warp) step together instead of waiting for each other in nested loops;
 // each trip counts one iteration against the loop budget. (It takes 13 to 15% less time on
 // lavapipe than the binary tree it replaced: docs/benchmarks.md.)
+// Set while a shadow ray is searched in a scene whose every hit blocks it (shading.glsl): the
+// search ends at the first hit it finds, which decides the shadow as the nearest would.
+bool first_hit_ends = false;
+
 bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inout uint iterations) {
   if (pc.sphere_count + pc.quad_count + pc.triangle_count + pc.disk_count + pc.instance_count == 0u)
     return false;
@@ -261,6 +265,7 @@ bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inou
       pop = false;
     } else if ((next & RTVK_WIDE_LEAF) != 0u) {
       test_object(next & ~RTVK_WIDE_LEAF, rc, sr, t_min, closest, best, best_ref, inst, best_inst);
+      if (first_hit_ends && best >= 0) break;
     } else {
       bvh_wide_node n = bvh_nodes[next];
       precise vec4 t;

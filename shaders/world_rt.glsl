@@ -122,6 +122,10 @@ bool hit_hardware(ray r, float t_min, float t_max, precise inout hit_record rec,
     bool box = rayQueryGetIntersectionTypeEXT(q, false) == gl_RayQueryCandidateIntersectionAABBEXT;
     uint ref = candidate_ref(inst, box, rayQueryGetIntersectionPrimitiveIndexEXT(q, false));
     if (!try_candidate(ref, inst, g, t_min, n)) continue;
+    if (first_hit_ends) {  // a shadow ray in a scene whose every hit blocks it: decided
+      rayQueryTerminateEXT(q);
+      break;
+    }
     if (!box) {
       rayQueryConfirmIntersectionEXT(q);
       committed = min(committed, rayQueryGetIntersectionTEXT(q, false));
@@ -157,7 +161,10 @@ bool hit_hardware(ray r, float t_min, float t_max, precise inout hit_record rec,
   if (motion) ray_times[launch_slot(gl_LaunchIDEXT)] = r.time;
   uint allowed = pc.loop_budget - iterations;
   traced = nearest_hit(t_max, -1, 0u, 0u, allowed);
-  traceRayEXT(tlas, gl_RayFlagsNoneEXT, 0xffu, 0u, 1u, 0u, r.origin, t_min, r.direction, t_max, 0);
+  // A shadow ray whose first hit decides it (first_hit_ends) ends at the first candidate the
+  // any-hit shader keeps.
+  uint flags = first_hit_ends ? gl_RayFlagsTerminateOnFirstHitEXT : gl_RayFlagsNoneEXT;
+  traceRayEXT(tlas, flags, 0xffu, 0u, 1u, 0u, r.origin, t_min, r.direction, t_max, 0);
   if (traced.trips == 0u) {  // the budget ran out inside the traversal
     iterations = pc.loop_budget + 1u;
     return false;

@@ -83,6 +83,9 @@
 // bool: next-event estimation (--sampling nee; nee.h): a light sample and a shadow ray a vertex
 #define RTVK_SPEC_NEE 19
 #define RTVK_SPEC_PUNCTUAL 20  // bool: the scene has punctual lights (punctual.h)
-#define RTVK_SPEC_COUNT 21     // constant ids in use
+// bool: every hit blocks a shadow ray (no see-through material, no media), so that its search
+// ends at the first hit it finds rather than the nearest (world.glsl's first_hit_ends)
+#define RTVK_SPEC_OPAQUE_SHADOWS 21
+#define RTVK_SPEC_COUNT 22  // constant ids in use
 
 #endif  // RTVK_BINDINGS_H

@@ -28,14 +28,15 @@ scene nee_scene(scene s) {
 
 // The Cornell box (a one-sided quad lamp, Lambertian walls, two boxes) and the PBR gallery (its
 // lobes, a lamp quad and the sky) against the CPU, by the rule GpuBook's scenes follow. Measured on
-// lavapipe 22.3 (2026-11-28): the Cornell box's bytes equal the CPU's (PSNR infinite); the
-// gallery's too. Two tests: the gallery's PBR variant compiles for minutes on Mesa 25's lavapipe,
-// whose pass leaves it out (scripts/test.sh).
-void expect_cpus_image(gpu::gpu_context& ctx, const scene& s) {
+// lavapipe 22.3 (2026-11-28, Sobol numbers in every dimension): the smoky box's bytes equal the
+// CPU's (PSNR infinite); the gallery's PSNR is 63.3 dB, no pixel over 2 levels (a path or two
+// that float and double round apart at its glossy lobes). Two tests: the gallery's PBR variant
+// compiles for minutes on Mesa 25's lavapipe, whose pass leaves it out (scripts/test.sh).
+void expect_cpus_image(gpu::gpu_context& ctx, const scene& s, double measured_psnr_db = 73) {
   const image_rgb8 cpu = test::cpu_image(s);
   const image_difference d =
       compare_images(test::gpu_image(ctx, s), cpu, monte_carlo_agreement.tolerance);
-  const agreement rule = test::measured_agreement(73, 0, cpu.width * cpu.height);
+  const agreement rule = test::measured_agreement(measured_psnr_db, 0, cpu.width * cpu.height);
   EXPECT_GE(d.psnr_db, rule.min_psnr_db);
   EXPECT_LE(d.share_over, rule.max_share) << d.pixels_over << " pixels over 2 levels";
 }
@@ -47,7 +48,7 @@ TEST_F(GpuNee, TheSmokyCornellBoxMatchesTheCpu) {
 }
 
 TEST_F(GpuNee, ThePbrGalleryMatchesTheCpu) {
-  expect_cpus_image(gpu(), nee_scene(test::pbr_gallery()));
+  expect_cpus_image(gpu(), nee_scene(test::pbr_gallery()), 63);
 }
 
 // The lights only next-event estimation draws, all at once: three spheres on a floor under a map

@@ -114,6 +114,15 @@ bool reads_textures(const gpu_scene::host_arrays& a) {
   return false;
 }
 
+// Whether every surface blocks a shadow ray it meets (RTVK_SPEC_OPAQUE_SHADOWS, with no media): no
+// material lets rays through (alpha mask or blend, a culled back face), so whatever a shadow ray
+// hits first decides it, and its search may end there.
+bool every_hit_blocks(const gpu_scene::host_arrays& a) {
+  for (const gpu_material& m : a.materials)
+    if ((m.flags & RTVK_MATERIAL_SEE_THROUGH) != 0u) return false;
+  return true;
+}
+
 }  // namespace
 
 gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
@@ -171,6 +180,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       any_pbr_(!a.pbr.empty()),
       any_punctual_(!a.punctual.empty() && a.punctual[0].count > 0),
       any_environment_(!a.environment_table.empty()),
+      opaque_shadows_(a.media.empty() && every_hit_blocks(a)),
       build_seconds_(a.build_seconds),
       moves_(a.moves),
       specs_(specs_of(arrays_of(a))),
@@ -227,6 +237,7 @@ void gpu_scene::specialize(std::span<std::uint32_t> spec) const {
   spec[RTVK_SPEC_PBR] = any_pbr_;
   spec[RTVK_SPEC_PUNCTUAL] = any_punctual_;
   spec[RTVK_SPEC_ENVIRONMENT] = any_environment_;
+  spec[RTVK_SPEC_OPAQUE_SHADOWS] = opaque_shadows_;
 }
 
 void gpu_scene::set_counts(render_push& push) const {

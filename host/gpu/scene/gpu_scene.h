@@ -105,6 +105,7 @@ class gpu_scene {
   bool any_pbr_;                       // RTVK_SPEC_PBR
   bool any_punctual_;                  // RTVK_SPEC_PUNCTUAL
   bool any_environment_;               // RTVK_SPEC_ENVIRONMENT
+  bool opaque_shadows_;                // RTVK_SPEC_OPAQUE_SHADOWS
   double build_seconds_;               // building the BVH took
   bool moves_;                         // some sphere has a velocity
   std::vector<buffer_spec> specs_;     // the arrays' sizes (gpu_scene.cpp's arrays_of), for copies
