@@ -4,14 +4,16 @@
 #   fuzz    the four libFuzzer targets (scene files, mesh files, calibrations, environment maps), a minute each
 #           from their committed corpora (clang, ASan + UBSan)
 #   ci      every test, on the system's lavapipe (release build, warnings are errors)
-#   asan    under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer: the host tests
-#           (label host) with no Vulkan driver at all, so a test that needs a device and is not
-#           labelled gpu fails; then the GPU tests that run every host-side Vulkan path (label
-#           sanitize) on both lavapipes (ray tracing refused on one, run on the other)
 #   second  the GPU tests (label gpu) again, on a second lavapipe: Mesa 25 from
 #           bookworm-backports when the system has bookworm's Mesa 22.3, else bookworm's 22.3,
 #           fetched by scripts/private-mesa.sh into ~/.cache/rtvk-test-mesa/ (RTVK_MESA_DIR) and
 #           never installed (RTVK_SECOND_MESA=SUITE picks the suite)
+#   asan    under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer: the host tests
+#           (label host) with no Vulkan driver at all, so a test that needs a device and is not
+#           labelled gpu fails; then the GPU tests that run every host-side Vulkan path (label
+#           sanitize) on both lavapipes (ray tracing refused on one, run on the other), last, so
+#           that both lavapipes' shaders are compiled (the cache is shared) before the
+#           sanitizers' slow process would compile them
 # At the end it prints each stage's time and the slowest tests of the run (build/test-report.txt).
 #
 #   scripts/test.sh --quick   the inner loop while working: builds the ci preset and runs the host
@@ -118,6 +120,23 @@ timed "build ci" build ci
 show_devices
 timed "ci: every test" tests ci ci
 
+# Before the sanitizers' pass: the shader cache is shared, so their process (where a cold Mesa 25
+# compile takes several times longer) finds the second lavapipe's variants already compiled.
+echo "== the GPU tests again, on the lavapipe of $second's mesa-vulkan-drivers (the system has $system_mesa)"
+listing=$(on_second show_devices)
+echo "$listing"
+# The pass must run on the fetched driver, not silently on the system's.
+want="Mesa $(sed -n 's/^RTVK_PRIVATE_MESA_VERSION=//p' "$second_env" | cut -d- -f1)"
+grep -qF "$want" <<<"$listing" || { echo "rtvk: expected a lavapipe of $want (above)" >&2; exit 1; }
+# The PBR renders run on the system's lavapipe only (the ci pass): a PBR shader variant compiles
+# cold in about 20 s on Mesa 22.3 but for 2 to 9 minutes on Mesa 25 (pbr-spheres 137 s;
+# GpuGltfSamples 553 s and GpuPbr's hardware-path test 433 s, which compile several), nearly all
+# in LLVM's CoroSplit pass over lavapipe's compute coroutine. The kernels' probe (seconds) still
+# runs here. PBR on the hardware paths was checked on an NVIDIA H200 instead (docs/materials.md,
+# docs/benchmarks.md).
+pbr_renders='^(GpuPbr\.(TheGalleryMatchesTheCpu|AWhiteSphereInAWhiteFurnaceIsWhite|AVolumeAttenuatesByBeerLambert|TheHardwarePathsGiveTheComputeBvhsExactSums)|GpuGltfSamples\..*|GpuNee\.ThePbrGalleryMatchesTheCpu)$'
+timed "GPU tests on $want" on_second tests second ci -L '^gpu' -E "$pbr_renders"
+
 echo "== asan: the host tests with no Vulkan driver, the sanitize GPU tests on both lavapipes"
 timed "build asan" build asan
 # without_driver COMMAND...: runs it with a loader that finds no driver at all, and as in CI
@@ -134,18 +153,3 @@ without_driver() {
 timed "asan: host tests, no driver" without_driver tests asan-host asan -L '^host$'
 timed "asan: sanitize GPU tests, system's lavapipe" tests asan-gpu asan -L sanitize
 timed "asan: sanitize GPU tests, second lavapipe" on_second tests asan-gpu-second asan -L sanitize
-
-echo "== the GPU tests again, on the lavapipe of $second's mesa-vulkan-drivers (the system has $system_mesa)"
-listing=$(on_second show_devices)
-echo "$listing"
-# The pass must run on the fetched driver, not silently on the system's.
-want="Mesa $(sed -n 's/^RTVK_PRIVATE_MESA_VERSION=//p' "$second_env" | cut -d- -f1)"
-grep -qF "$want" <<<"$listing" || { echo "rtvk: expected a lavapipe of $want (above)" >&2; exit 1; }
-# The PBR renders run on the system's lavapipe only (the ci pass): a PBR shader variant compiles
-# cold in about 20 s on Mesa 22.3 but for 2 to 9 minutes on Mesa 25 (pbr-spheres 137 s;
-# GpuGltfSamples 553 s and GpuPbr's hardware-path test 433 s, which compile several), nearly all
-# in LLVM's CoroSplit pass over lavapipe's compute coroutine. The kernels' probe (seconds) still
-# runs here. PBR on the hardware paths was checked on an NVIDIA H200 instead (docs/materials.md,
-# docs/benchmarks.md).
-pbr_renders='^(GpuPbr\.(TheGalleryMatchesTheCpu|AWhiteSphereInAWhiteFurnaceIsWhite|AVolumeAttenuatesByBeerLambert|TheHardwarePathsGiveTheComputeBvhsExactSums)|GpuGltfSamples\..*|GpuNee\.ThePbrGalleryMatchesTheCpu)$'
-timed "GPU tests on $want" on_second tests second ci -L '^gpu' -E "$pbr_renders"
