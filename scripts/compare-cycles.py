@@ -1,0 +1,240 @@
+#!/usr/bin/env python3
+"""rtvk against Blender's Cycles on the same Cornell box, the same CPU cores: the time each needs
+to reach an equal error (docs/benchmarks.md, "rtvk against Blender's Cycles"). By hand, never in
+CI (Blender is not one of rtvk's dependencies).
+
+  compare-cycles.py RTVK OUTDIR [--width 150] [--seconds 8] [--threads 2] [--modes lights,nee]
+                    [--rtvk-reference REF.exr | --rtvk-reference-spp 32768]
+                    [--cycles-reference-spp 8192] [--blender blender] [--agree 0.03]
+
+1. `RTVK scene dump cornell-box` to OUTDIR/cornell-box.json, which scripts/blender-cornell.py
+   builds in Blender (`blender -b --factory-startup --debug-cycles -P scripts/blender-cornell.py
+   -- OUTDIR/cornell-box.json OUT.exr --width W --spp N --seed S --threads T`).
+2. Each renderer's own converged reference: rtvk's (`--sampling lights`, seed 0; or the one
+   given) and Cycles' (seed 0), reused from OUTDIR when there already.
+3. The two references must agree: the mean of each channel over the whole image and over a 3x3
+   grid of regions within --agree (relative) of each other, else the script stops (exit 1)
+   before measuring anything: a gap there is a difference of scene, units or camera, not noise.
+4. Each renderer's curve: renders at 1, 2, 4, ... samples per pixel (seed 7) until one takes more
+   than --seconds, each one's mean squared error against its own reference (the linear RGB
+   values, over pixels and channels; scripts/exr_pixels.py reads both renderers' files) and its
+   render time: rtvk's summary line (`in S s`: the render alone) and Cycles' own report
+   ("Rendered N samples in S seconds": path tracing alone, not Blender's start-up nor the
+   scene's synchronisation).
+5. The time each needs to reach equal errors, interpolated in log-log between measured points,
+   at errors spaced over the range both curves cover, and Cycles' time over rtvk's (above 1: rtvk
+   gets there sooner).
+
+Writes OUTDIR/compare-cycles.json (every point) and OUTDIR/compare-cycles.svg (the curves, drawn
+by plot-sampling-noise.py's plot).
+"""
+import argparse
+import importlib.util
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import exr_pixels  # noqa: E402
+
+SEED = 7  # the measured renders' seed: not the references' 0
+
+
+def plot_module():
+    spec = importlib.util.spec_from_file_location("plot_sampling_noise",
+                                                  os.path.join(HERE, "plot-sampling-noise.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def rtvk_render(args, mode, spp, seed, out):
+    cmd = [args.rtvk, "render", "cornell-box", "--width", str(args.width), "--spp", str(spp),
+           "--sampling", mode, "--backend", "cpu", "--threads", str(args.threads), "--seed",
+           str(seed), "-o", out]
+    err = subprocess.run(cmd, check=True, capture_output=True, text=True).stderr
+    return float(re.search(r" in ([0-9.]+) s -> ", err).group(1))
+
+
+def cycles_render(args, spp, seed, out):
+    cmd = [args.blender, "-b", "--factory-startup", "--debug-cycles", "-P",
+           os.path.join(HERE, "blender-cornell.py"), "--", args.scene_json, out, "--width",
+           str(args.width), "--spp", str(spp), "--seed", str(seed), "--threads",
+           str(args.threads)]
+    start = time.perf_counter()
+    log = subprocess.run(cmd, check=True, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True).stdout
+    wall = time.perf_counter() - start
+    m = re.search(r"^Rendered (\d+) samples in ([0-9.]+) seconds$", log, re.M)
+    if not m or int(m.group(1)) != spp:
+        sys.exit("compare-cycles.py: no 'Rendered %d samples in S seconds' in Cycles' log (run "
+                 "with --debug-cycles):\n%s" % (spp, log[-2000:]))
+    return float(m.group(2)), wall
+
+
+def regions_agree(args, a, b, width, height):
+    """Each channel's mean over the image and a 3x3 grid, rtvk's against Cycles'; True when all
+    are within args.agree (relative) of each other."""
+    boxes = [("whole", 0, 0, width, height)]
+    for j in range(3):
+        for i in range(3):
+            boxes.append(("r%d c%d" % (j, i), i * width // 3, j * height // 3,
+                          (i + 1) * width // 3, (j + 1) * height // 3))
+    worst = 0.0
+    for name, x0, y0, x1, y1 in boxes:
+        means = []
+        for img in (a, b):
+            s = [0.0, 0.0, 0.0]
+            for y in range(y0, y1):
+                for x in range(x0, x1):
+                    for c in range(3):
+                        s[c] += img[3 * (y * width + x) + c]
+            n = (x1 - x0) * (y1 - y0)
+            means.append([v / n for v in s])
+        gaps = [(p - q) / max(q, 1e-6) for p, q in zip(means[0], means[1])]
+        worst = max(worst, max(abs(g) for g in gaps))
+        print("%-8s rtvk %s  cycles %s  rtvk/cycles - 1: %s" % (
+            name, " ".join("%.4f" % v for v in means[0]), " ".join("%.4f" % v for v in means[1]),
+            " ".join("%+.3f" % g for g in gaps)))
+    print("largest gap %.2f%% (allowed %.1f%%)" % (100 * worst, 100 * args.agree))
+    return worst <= args.agree
+
+
+def curves(makers, seconds):
+    """Each renderer's points at 1, 2, 4, ... samples per pixel until one render takes more than
+    `seconds`. The renderers take turns at each sample count, so that other work on the machine
+    slows them alike. makers: name -> (render_one(spp) -> (seconds, extra with "out"), reference)."""
+    points = {name: [] for name in makers}
+    active, spp = list(makers), 1
+    while active:
+        for name in list(active):
+            render_one, reference = makers[name]
+            t, extra = render_one(spp)
+            _, _, img = exr_pixels.read_rgb(extra["out"])
+            point = {"spp": spp, "seconds": t, "mse": exr_pixels.mse(img, reference)}
+            point.update({k: v for k, v in extra.items() if k != "out"})
+            points[name].append(point)
+            print("%-14s %6d spp %8.3f s  mse %.4e" % (name, spp, t, point["mse"]), flush=True)
+            if t > seconds:
+                active.remove(name)
+        spp *= 2
+    return points
+
+
+def log_time_at(points, e):
+    """The render time at which the curve's error is e, linear in log-log (None outside it)."""
+    for a, b in zip(points, points[1:]):
+        lo, hi = sorted((a["mse"], b["mse"]))
+        if lo <= e <= hi and a["mse"] != b["mse"]:
+            f = (math.log(e) - math.log(a["mse"])) / (math.log(b["mse"]) - math.log(a["mse"]))
+            return math.exp(math.log(a["seconds"]) + f * (math.log(b["seconds"]) -
+                                                           math.log(a["seconds"])))
+    return None
+
+
+def equal_error(cycles, mine):
+    """Cycles' time over rtvk's at nine errors spaced over the range both curves cover."""
+    hi = min(max(p["mse"] for p in cycles), max(p["mse"] for p in mine))
+    lo = max(min(p["mse"] for p in cycles), min(p["mse"] for p in mine))
+    out = []
+    for k in range(9):
+        e = min(max(hi * (lo / hi) ** (k / 8), lo), hi)
+        tc, tr = log_time_at(cycles, e), log_time_at(mine, e)
+        if tc is not None and tr is not None:
+            out.append({"mse": e, "cycles_seconds": tc, "rtvk_seconds": tr,
+                        "cycles_over_rtvk": tc / tr})
+    return out
+
+
+def parse():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("rtvk")
+    ap.add_argument("outdir")
+    ap.add_argument("--width", type=int, default=150)
+    ap.add_argument("--seconds", type=float, default=8)
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--modes", default="lights,nee")
+    ap.add_argument("--rtvk-reference")
+    ap.add_argument("--rtvk-reference-spp", type=int, default=32768)
+    ap.add_argument("--cycles-reference-spp", type=int, default=8192)
+    ap.add_argument("--blender", default="blender")
+    ap.add_argument("--agree", type=float, default=0.03)
+    return ap.parse_args()
+
+
+def references(args):
+    if not args.rtvk_reference:
+        args.rtvk_reference = os.path.join(args.outdir, "rtvk-ref-%d-%d.exr" % (
+            args.width, args.rtvk_reference_spp))
+        if not os.path.exists(args.rtvk_reference):
+            t = rtvk_render(args, "lights", args.rtvk_reference_spp, 0, args.rtvk_reference)
+            print("rtvk reference: %d spp, lights, %.1f s" % (args.rtvk_reference_spp, t))
+    cycles_ref = os.path.join(args.outdir, "cycles-ref-%d-%d.exr" % (args.width,
+                                                                     args.cycles_reference_spp))
+    if not os.path.exists(cycles_ref):
+        t, wall = cycles_render(args, args.cycles_reference_spp, 0, cycles_ref)
+        print("Cycles reference: %d spp, %.1f s (%.1f s with Blender's start)" % (
+            args.cycles_reference_spp, t, wall))
+    return cycles_ref
+
+
+def main():
+    args = parse()
+    os.makedirs(args.outdir, exist_ok=True)
+    args.scene_json = os.path.join(args.outdir, "cornell-box.json")
+    with open(args.scene_json, "w") as f:
+        subprocess.run([args.rtvk, "scene", "dump", "cornell-box"], check=True, stdout=f)
+    cycles_ref = references(args)
+    w, h, rtvk_ref = exr_pixels.read_rgb(args.rtvk_reference)
+    w2, h2, cyc_ref = exr_pixels.read_rgb(cycles_ref)
+    if (w, h) != (w2, h2):
+        sys.exit("compare-cycles.py: the references differ in size: %dx%d, %dx%d" % (w, h, w2, h2))
+    if not regions_agree(args, rtvk_ref, cyc_ref, w, h):
+        sys.exit("compare-cycles.py: the two converged images disagree beyond --agree %g: find"
+                 " why (units, camera, materials) before measuring" % args.agree)
+    makers = {}
+    for mode in args.modes.split(","):
+        out = os.path.join(args.outdir, "rtvk-%s.exr" % mode)
+        makers["rtvk/" + mode] = (
+            lambda n, mode=mode, out=out: (rtvk_render(args, mode, n, SEED, out), {"out": out}),
+            rtvk_ref)
+    out = os.path.join(args.outdir, "cycles.exr")
+
+    def one_cycles(n):
+        t, wall = cycles_render(args, n, SEED, out)
+        return t, {"out": out, "process_seconds": wall}
+
+    makers["cycles/cycles"] = (one_cycles, cyc_ref)
+    load_before = os.getloadavg()
+    measured = curves(makers, args.seconds)
+    load_after = os.getloadavg()
+    print("load average (1, 5, 15 min) before the curves %.2f %.2f %.2f, after %.2f %.2f %.2f" %
+          (load_before + load_after))
+    summary = {"width": args.width, "threads": args.threads, "curves": measured,
+               "load_before": load_before, "load_after": load_after, "equal_error": {}}
+    for mode in args.modes.split(","):
+        rows = equal_error(measured["cycles/cycles"], measured["rtvk/" + mode])
+        summary["equal_error"][mode] = rows
+        for r in rows:
+            print("mse %.3e: Cycles %.3f s, rtvk %s %.3f s: Cycles takes %.2fx rtvk's time" % (
+                r["mse"], r["cycles_seconds"], mode, r["rtvk_seconds"], r["cycles_over_rtvk"]))
+    for name, pts in measured.items():
+        p = pts[-1]
+        print("%-14s at %d spp: %.4f s a sample, mse x spp %.4f" % (
+            name, p["spp"], p["seconds"] / p["spp"], p["mse"] * p["spp"]))
+    with open(os.path.join(args.outdir, "compare-cycles.json"), "w") as f:
+        json.dump(summary, f, indent=1)
+    plot = plot_module()
+    plot.COLORS["cycles"] = "#e67e22"
+    with open(os.path.join(args.outdir, "compare-cycles.svg"), "w") as f:
+        f.write(plot.svg(measured, "cornell-box, %d wide, %d threads: rtvk and Cycles" % (
+            args.width, args.threads), {"rtvk": "rtvk CPU", "cycles": "Cycles"}))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
