@@ -15,7 +15,9 @@ says how each was made). For each backend and each mode the script renders at 1,
 samples per pixel (`RTVK render SCENE --width W --spp N --sampling M --backend B --seed 7
 [--environment E] -o OUT.exr`; time from rtvk's summary line, the render alone) until one render
 takes longer than --seconds, and measures each against the reference (`RTVK compare OUT.exr
-REFERENCE.exr`: the linear mean squared error over pixels and channels). A mode rtvk refuses for
+REFERENCE.exr`: the linear mean squared error over pixels and channels). The curves take turns at
+each sample count (1 spp of each, then 2 of each, ...), so that other work on the machine slows
+them alike; the load average before and after is printed and kept. A mode rtvk refuses for
 the scene (exit 2: `lights` or `nee` past their lamp limits, `nee` with media) is reported with
 rtvk's message and left out; the others go on.
 
@@ -66,17 +68,34 @@ def mse(rtvk, image, reference):
     return float(re.search(r"^mse\s+([0-9.e+-]+)", out, re.M).group(1))
 
 
-def curve(rtvk, args, backend, mode):
-    points, spp = [], 1
-    image = os.path.join(args.outdir, "noise-%s-%s-%s.exr" % (args.name, backend, mode))
-    while True:
-        seconds = render(rtvk, args, backend, mode, spp, image)
-        points.append({"spp": spp, "seconds": seconds, "mse": mse(rtvk, image, args.reference)})
-        print("%-4s %-6s %6d spp %8.3f s  mse %.4e" % (backend, mode, spp, seconds,
-                                                        points[-1]["mse"]), flush=True)
-        if seconds > args.seconds:
-            return points
+def measure(args):
+    """Every backend's and mode's points at 1, 2, 4, ... samples per pixel, each until one render
+    takes longer than --seconds. The curves take turns at each sample count, so that other work
+    on the machine slows them alike. Returns the curves (BACKEND/MODE: points) and the modes rtvk
+    refused (BACKEND/MODE: its message)."""
+    curves, refused, spp = {}, {}, 1
+    active = [b + "/" + m for b in args.backends for m in args.modes]
+    while active:
+        for name in list(active):
+            backend, mode = name.split("/")
+            image = os.path.join(args.outdir, "noise-%s-%s-%s.exr" % (args.name, backend, mode))
+            try:
+                seconds = render(args.rtvk, args, backend, mode, spp, image)
+            except Refused as e:
+                refused[name] = str(e)
+                active.remove(name)
+                print("%-4s %-6s refused by rtvk: %s" % (backend, mode, e), flush=True)
+                continue
+            point = {"spp": spp, "seconds": seconds, "mse": mse(args.rtvk, image, args.reference)}
+            curves.setdefault(name, []).append(point)
+            print("%-4s %-6s %6d spp %8.3f s  mse %.4e" % (backend, mode, spp, seconds,
+                                                            point["mse"]), flush=True)
+            if seconds > args.seconds:
+                active.remove(name)
         spp *= 2
+    # In the order asked for (the plot's legend), whatever order they finished in.
+    order = [b + "/" + m for b in args.backends for m in args.modes]
+    return {n: curves[n] for n in order if n in curves}, refused
 
 
 def log_interp(points, t):
@@ -183,8 +202,12 @@ def ratios_and_crops(args, curves, summary):
             if pts is None:
                 continue
             spp = spp_for(pts, t * 1.05)
-            render(args.rtvk, args, backend, mode, spp, os.path.join(
-                args.outdir, "crop-%s-%s-%s.png" % (args.name, backend, mode)), args.crop)
+            try:
+                render(args.rtvk, args, backend, mode, spp, os.path.join(
+                    args.outdir, "crop-%s-%s-%s.png" % (args.name, backend, mode)), args.crop)
+            except Refused as e:
+                print("%s crop, %s: refused by rtvk: %s" % (backend, mode, e))
+                continue
             summary["crops"]["%s/%s" % (backend, mode)] = spp
             print("%s crop, %s: %d spp (about %.2f s for the whole image)" % (backend, mode, spp, t))
 
@@ -221,19 +244,17 @@ def parse():
 def main():
     args = parse()
     os.makedirs(args.outdir, exist_ok=True)
-    curves, refused = {}, {}
-    for backend in args.backends:
-        for mode in args.modes:
-            try:
-                curves[backend + "/" + mode] = curve(args.rtvk, args, backend, mode)
-            except Refused as e:
-                refused[backend + "/" + mode] = str(e)
-                print("%-4s %-6s refused by rtvk: %s" % (backend, mode, e), flush=True)
+    load_before = os.getloadavg()
+    curves, refused = measure(args)
+    load_after = os.getloadavg()
+    print("load average (1, 5, 15 min) before the curves %.2f %.2f %.2f, after %.2f %.2f %.2f" %
+          (load_before + load_after))
     if not curves:
         sys.exit("plot-sampling-noise.py: every mode was refused")
     summary = {"scene": args.scene, "name": args.name, "environment": args.environment,
                "width": args.width, "against": args.against, "curves": curves,
-               "refused": refused, "ratios": {}, "crops": {}}
+               "refused": refused, "ratios": {}, "crops": {}, "load_before": load_before,
+               "load_after": load_after}
     ratios_and_crops(args, curves, summary)
     stem = os.path.join(args.outdir, "sampling-noise-" + args.name)
     with open(stem + ".json", "w") as f:
