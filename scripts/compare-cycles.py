@@ -4,6 +4,7 @@ to reach an equal error (docs/benchmarks.md, "rtvk against Blender's Cycles"). B
 CI (Blender is not one of rtvk's dependencies).
 
   compare-cycles.py RTVK OUTDIR [--width 150] [--seconds 8] [--threads 2] [--modes lights,nee]
+                    [--spp-factor 4]
                     [--rtvk-reference REF.exr | --rtvk-reference-spp 32768]
                     [--cycles-reference-spp 8192] [--blender blender] [--agree 0.03]
 
@@ -15,8 +16,9 @@ CI (Blender is not one of rtvk's dependencies).
 3. The two references must agree: the mean of each channel over the whole image and over a 3x3
    grid of regions within --agree (relative) of each other, else the script stops (exit 1)
    before measuring anything: a gap there is a difference of scene, units or camera, not noise.
-4. Each renderer's curve: renders at 1, 2, 4, ... samples per pixel (seed 7) until one takes more
-   than --seconds, each one's mean squared error against its own reference (the linear RGB
+4. Each renderer's curve: renders at 1, 4, 16, ... samples per pixel (seed 7; --spp-factor 2:
+   1, 2, 4, ...; rtvk's lights and nee stratify pixels whole only at square counts), taking
+   turns at each count, until one takes more than --seconds, each one's mean squared error against its own reference (the linear RGB
    values, over pixels and channels; scripts/exr_pixels.py reads both renderers' files) and its
    render time: rtvk's summary line (`in S s`: the render alone) and Cycles' own report
    ("Rendered N samples in S seconds": path tracing alone, not Blender's start-up nor the
@@ -105,7 +107,7 @@ def regions_agree(args, a, b, width, height):
     return worst <= args.agree
 
 
-def curves(makers, seconds):
+def curves(makers, seconds, factor):
     """Each renderer's points at 1, 2, 4, ... samples per pixel until one render takes more than
     `seconds`. The renderers take turns at each sample count, so that other work on the machine
     slows them alike. makers: name -> (render_one(spp) -> (seconds, extra with "out"), reference)."""
@@ -122,7 +124,7 @@ def curves(makers, seconds):
             print("%-14s %6d spp %8.3f s  mse %.4e" % (name, spp, t, point["mse"]), flush=True)
             if t > seconds:
                 active.remove(name)
-        spp *= 2
+        spp *= factor
     return points
 
 
@@ -158,6 +160,8 @@ def parse():
     ap.add_argument("--width", type=int, default=150)
     ap.add_argument("--seconds", type=float, default=8)
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--spp-factor", type=int, default=4, choices=(2, 4),
+                    help="samples per pixel grow by this factor (4: rtvk's pixels stratify whole)")
     ap.add_argument("--modes", default="lights,nee")
     ap.add_argument("--rtvk-reference")
     ap.add_argument("--rtvk-reference-spp", type=int, default=32768)
@@ -211,7 +215,7 @@ def main():
 
     makers["cycles/cycles"] = (one_cycles, cyc_ref)
     load_before = os.getloadavg()
-    measured = curves(makers, args.seconds)
+    measured = curves(makers, args.seconds, args.spp_factor)
     load_after = os.getloadavg()
     print("load average (1, 5, 15 min) before the curves %.2f %.2f %.2f, after %.2f %.2f %.2f" %
           (load_before + load_after))

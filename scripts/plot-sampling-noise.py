@@ -4,20 +4,22 @@ a converged reference as the render time grows, drawn as an SVG (docs/images/sam
 
   plot-sampling-noise.py RTVK REFERENCE.exr OUTDIR [--scene cornell-box | --scene-file FILE]
                          [--environment FILE[:STRENGTH]] [--modes plain,lights] [--against lights]
-                         [--width 150] [--backends cpu,gpu] [--seconds 32] [--crop X,Y,W,H]
-                         [--gpu-label NAME] [--name NAME]
+                         [--width 150] [--backends cpu,gpu] [--seconds 32] [--gpu-seconds S]
+                         [--spp-factor 2|4] [--crop X,Y,W,H] [--gpu-label NAME] [--name NAME]
 
 The scene is a built-in name (--scene) or a .json scene file or mesh file (--scene-file; rtvk
 takes either in the same place); --environment is passed to every render (an HDR map lighting a
 mesh file or replacing a scene's sky). REFERENCE.exr is the same scene at the same width (and
 environment) rendered long enough that its own noise is far below the curves' (docs/benchmarks.md
 says how each was made). For each backend and each mode the script renders at 1, 2, 4, ...
-samples per pixel (`RTVK render SCENE --width W --spp N --sampling M --backend B --seed 7
-[--environment E] -o OUT.exr`; time from rtvk's summary line, the render alone) until one render
-takes longer than --seconds, and measures each against the reference (`RTVK compare OUT.exr
-REFERENCE.exr`: the linear mean squared error over pixels and channels). The curves take turns at
-each sample count (1 spp of each, then 2 of each, ...), so that other work on the machine slows
-them alike; the load average before and after is printed and kept. A mode rtvk refuses for
+samples per pixel (1, 4, 16, ... with --spp-factor 4; `RTVK render SCENE --width W --spp N
+--sampling M --backend B --seed 7 [--environment E] -o OUT.exr`; time from rtvk's summary line,
+the render alone) until one render takes longer than --seconds (--gpu-seconds on the GPU), and
+measures each against the reference (`RTVK compare OUT.exr REFERENCE.exr`: the linear mean
+squared error over pixels and channels). The curves take turns at each sample count (1 spp of
+each, then 2 of each, ...), so that other work on the machine slows them alike; the load average
+before and after is printed and kept, and each point keeps the render process's CPU time (user +
+system) beside rtvk's wall-clock figure. A mode rtvk refuses for
 the scene (exit 2: `lights` or `nee` past their lamp limits, `nee` with media) is reported with
 rtvk's message and left out; the others go on.
 
@@ -35,6 +37,7 @@ import json
 import math
 import os
 import re
+import resource
 import subprocess
 import sys
 
@@ -53,7 +56,11 @@ def render(rtvk, args, backend, mode, spp, out, region=None):
         cmd += ["--environment", args.environment]
     if region:
         cmd += ["--region", region]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     done = subprocess.run(cmd, capture_output=True, text=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    args.last_cpu_seconds = (after.ru_utime + after.ru_stime) - (before.ru_utime +
+                                                                 before.ru_stime)
     if done.returncode == 2:
         raise Refused(done.stderr.strip())
     if done.returncode != 0:
@@ -86,13 +93,14 @@ def measure(args):
                 active.remove(name)
                 print("%-4s %-6s refused by rtvk: %s" % (backend, mode, e), flush=True)
                 continue
-            point = {"spp": spp, "seconds": seconds, "mse": mse(args.rtvk, image, args.reference)}
+            point = {"spp": spp, "seconds": seconds, "mse": mse(args.rtvk, image, args.reference),
+                     "process_cpu_seconds": args.last_cpu_seconds}
             curves.setdefault(name, []).append(point)
-            print("%-4s %-6s %6d spp %8.3f s  mse %.4e" % (backend, mode, spp, seconds,
-                                                            point["mse"]), flush=True)
-            if seconds > args.seconds:
+            print("%-4s %-6s %6d spp %8.3f s  mse %.4e  (process: %.2f CPU s)" % (
+                backend, mode, spp, seconds, point["mse"], args.last_cpu_seconds), flush=True)
+            if seconds > (args.gpu_seconds if backend == "gpu" else args.seconds):
                 active.remove(name)
-        spp *= 2
+        spp *= args.spp_factor
     # In the order asked for (the plot's legend), whatever order they finished in.
     order = [b + "/" + m for b in args.backends for m in args.modes]
     return {n: curves[n] for n in order if n in curves}, refused
@@ -228,9 +236,15 @@ def parse():
     ap.add_argument("--width", type=int, default=150)
     ap.add_argument("--backends", default="cpu,gpu")
     ap.add_argument("--seconds", type=float, default=32)
+    ap.add_argument("--gpu-seconds", type=float, help="--seconds for the GPU (default the same)")
+    ap.add_argument("--spp-factor", type=int, default=2, choices=(2, 4),
+                    help="samples per pixel grow by this factor; 4 keeps to the counts whose"
+                    " pixels stratify whole (1, 4, 16, ...: lights and nee cut the pixel into"
+                    " floor(sqrt(spp))^2 cells), which make smoother curves")
     ap.add_argument("--crop", default="40,40,64,64")
     ap.add_argument("--gpu-label", default="GPU", help="the GPU's name in the legend")
     args = ap.parse_args()
+    args.gpu_seconds = args.gpu_seconds or args.seconds
     args.scene = args.scene_file or args.scene or "cornell-box"
     args.name = args.name or os.path.splitext(os.path.basename(args.scene))[0]
     args.modes = [m for m in args.modes.split(",") if m]
@@ -252,7 +266,7 @@ def main():
     if not curves:
         sys.exit("plot-sampling-noise.py: every mode was refused")
     summary = {"scene": args.scene, "name": args.name, "environment": args.environment,
-               "width": args.width, "against": args.against, "curves": curves,
+               "width": args.width, "spp_factor": args.spp_factor, "against": args.against, "curves": curves,
                "refused": refused, "ratios": {}, "crops": {}, "load_before": load_before,
                "load_after": load_after}
     ratios_and_crops(args, curves, summary)
