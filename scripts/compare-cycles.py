@@ -18,9 +18,9 @@ CI (Blender is not one of rtvk's dependencies).
    before measuring anything: a gap there is a difference of scene, units or camera, not noise.
 4. Each renderer's curve: renders at 1, 4, 16, ... samples per pixel (seed 7; --spp-factor 2:
    1, 2, 4, ...; rtvk's lights and nee stratify pixels whole only at square counts), taking
-   turns at each count, until one takes more than --seconds, each one's mean squared error against its own reference (the linear RGB
-   values, over pixels and channels; scripts/exr_pixels.py reads both renderers' files) and its
-   render time: rtvk's summary line (`in S s`: the render alone) and Cycles' own report
+   turns at each count, until one takes more than --seconds; each one's mean squared error
+   against its own reference (the linear RGB values, over pixels and channels;
+   scripts/exr_pixels.py reads both renderers' files) and its render time: rtvk's summary line (`in S s`: the render alone) and Cycles' own report
    ("Rendered N samples in S seconds": path tracing alone, not Blender's start-up nor the
    scene's synchronisation).
 5. The time each needs to reach equal errors, interpolated in log-log between measured points,
@@ -108,9 +108,10 @@ def regions_agree(args, a, b, width, height):
 
 
 def curves(makers, seconds, factor):
-    """Each renderer's points at 1, 2, 4, ... samples per pixel until one render takes more than
-    `seconds`. The renderers take turns at each sample count, so that other work on the machine
-    slows them alike. makers: name -> (render_one(spp) -> (seconds, extra with "out"), reference)."""
+    """Each renderer's points at 1, factor, factor^2, ... samples per pixel until one render takes
+    more than `seconds`. The renderers take turns at each sample count, so that other work on the
+    machine slows them alike. makers: name -> (render_one(spp) -> (seconds, extra with "out"),
+    reference)."""
     points = {name: [] for name in makers}
     active, spp = list(makers), 1
     while active:

@@ -131,6 +131,11 @@ def equal_time_ratios(mode, base):
     return out
 
 
+def by_cpu_time(points):
+    """The points with the render process's CPU time as their time."""
+    return [dict(p, seconds=p["process_cpu_seconds"]) for p in points]
+
+
 def spp_for(points, seconds):
     """The largest measured spp whose render took at most `seconds`."""
     return max([p["spp"] for p in points if p["seconds"] <= seconds] or [1])
@@ -203,6 +208,13 @@ def ratios_and_crops(args, curves, summary):
             for t, r in ratios:
                 print("%s: at %.2f s, %s's mse is %.3gx %s's (%s's is %.3gx %s's)" %
                       (backend, t, mode, r, args.against, args.against, 1 / r, mode))
+            # The same by the processes' CPU time, which other work on the machine changes less
+            # than the wall clock (it counts set-up too: the GPU's shader compiles).
+            cpu = equal_time_ratios(by_cpu_time(pts), by_cpu_time(base))
+            summary["ratios_by_cpu_time"]["%s/%s" % (backend, mode)] = [
+                {"cpu_seconds": t, "over_" + args.against: r} for t, r in cpu]
+            print("%s, by CPU time: %s's mse over %s's: %s" % (
+                backend, mode, args.against, ", ".join("%.3g (%.2f s)" % (r, t) for t, r in cpu)))
         # Crops at equal time: the --against mode's second longest render, each mode about then.
         t = base[-2]["seconds"] if len(base) > 1 else base[-1]["seconds"]
         for mode in args.modes:
@@ -217,7 +229,8 @@ def ratios_and_crops(args, curves, summary):
                 print("%s crop, %s: refused by rtvk: %s" % (backend, mode, e))
                 continue
             summary["crops"]["%s/%s" % (backend, mode)] = spp
-            print("%s crop, %s: %d spp (about %.2f s for the whole image)" % (backend, mode, spp, t))
+            print("%s crop, %s: %d spp (about %.2f s for the whole image)" % (backend, mode, spp,
+                                                                              t))
 
 
 def parse():
@@ -266,9 +279,9 @@ def main():
     if not curves:
         sys.exit("plot-sampling-noise.py: every mode was refused")
     summary = {"scene": args.scene, "name": args.name, "environment": args.environment,
-               "width": args.width, "spp_factor": args.spp_factor, "against": args.against, "curves": curves,
-               "refused": refused, "ratios": {}, "crops": {}, "load_before": load_before,
-               "load_after": load_after}
+               "width": args.width, "spp_factor": args.spp_factor, "against": args.against,
+               "curves": curves, "refused": refused, "ratios": {}, "ratios_by_cpu_time": {},
+               "crops": {}, "load_before": load_before, "load_after": load_after}
     ratios_and_crops(args, curves, summary)
     stem = os.path.join(args.outdir, "sampling-noise-" + args.name)
     with open(stem + ".json", "w") as f:
