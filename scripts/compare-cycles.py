@@ -20,9 +20,9 @@ CI (Blender is not one of rtvk's dependencies).
    1, 2, 4, ...; rtvk's lights and nee stratify pixels whole only at square counts), taking
    turns at each count, until one takes more than --seconds; each one's mean squared error
    against its own reference (the linear RGB values, over pixels and channels;
-   scripts/exr_pixels.py reads both renderers' files) and its render time: rtvk's summary line (`in S s`: the render alone) and Cycles' own report
-   ("Rendered N samples in S seconds": path tracing alone, not Blender's start-up nor the
-   scene's synchronisation).
+   scripts/exr_pixels.py reads both renderers' files) and its render time: rtvk's summary line
+   (`in S s`: the render alone) and Cycles' own report ("Rendered N samples in S seconds": path
+   tracing alone, not Blender's start-up nor the scene's synchronisation).
 5. The time each needs to reach equal errors, interpolated in log-log between measured points,
    at errors spaced over the range both curves cover, and Cycles' time over rtvk's (above 1: rtvk
    gets there sooner).
