@@ -6,7 +6,8 @@ CI (Blender is not one of rtvk's dependencies).
   compare-cycles.py RTVK OUTDIR [--width 150] [--seconds 8] [--threads 2] [--modes lights,nee]
                     [--spp-factor 4]
                     [--rtvk-reference REF.exr | --rtvk-reference-spp 32768]
-                    [--cycles-reference-spp 8192] [--blender blender] [--agree 0.03]
+                    [--rtvk-reference-mode lights] [--cycles-reference-spp 8192]
+                    [--blender blender] [--agree 0.03] [--from-json compare-cycles.json]
 
 1. `RTVK scene dump cornell-box` to OUTDIR/cornell-box.json, which scripts/blender-cornell.py
    builds in Blender (`blender -b --factory-startup --debug-cycles -P scripts/blender-cornell.py
@@ -23,7 +24,9 @@ CI (Blender is not one of rtvk's dependencies).
    scripts/exr_pixels.py reads both renderers' files) and its render time: rtvk's summary line
    (`in S s`: the render alone) and Cycles' own report ("Rendered N samples in S seconds": path
    tracing alone, not Blender's start-up nor the scene's synchronisation).
-5. The time each needs to reach equal errors, interpolated in log-log between measured points,
+5. Each reference's own error taken out of its renderer's points (it adds sigma_ref^2 / N to
+   every one: up to a fifth of the last points' error with N 32 times their samples), then the
+   time each needs to reach equal errors, interpolated in log-log between measured points,
    at errors spaced over the range both curves cover, and Cycles' time over rtvk's (above 1: rtvk
    gets there sooner).
 
@@ -164,8 +167,12 @@ def parse():
     ap.add_argument("--spp-factor", type=int, default=4, choices=(2, 4),
                     help="samples per pixel grow by this factor (4: rtvk's pixels stratify whole)")
     ap.add_argument("--modes", default="lights,nee")
-    ap.add_argument("--rtvk-reference")
+    ap.add_argument("--rtvk-reference", help="rtvk's reference, made with --sampling"
+                    " --rtvk-reference-mode at --rtvk-reference-spp (default: rendered so)")
     ap.add_argument("--rtvk-reference-spp", type=int, default=32768)
+    ap.add_argument("--rtvk-reference-mode", default="lights")
+    ap.add_argument("--from-json", help="a compare-cycles.json to measure again from, rendering"
+                    " nothing but the references (when absent)")
     ap.add_argument("--cycles-reference-spp", type=int, default=8192)
     ap.add_argument("--blender", default="blender")
     ap.add_argument("--agree", type=float, default=0.03)
@@ -177,8 +184,10 @@ def references(args):
         args.rtvk_reference = os.path.join(args.outdir, "rtvk-ref-%d-%d.exr" % (
             args.width, args.rtvk_reference_spp))
         if not os.path.exists(args.rtvk_reference):
-            t = rtvk_render(args, "lights", args.rtvk_reference_spp, 0, args.rtvk_reference)
-            print("rtvk reference: %d spp, lights, %.1f s" % (args.rtvk_reference_spp, t))
+            t = rtvk_render(args, args.rtvk_reference_mode, args.rtvk_reference_spp, 0,
+                            args.rtvk_reference)
+            print("rtvk reference: %d spp, %s, %.1f s" % (args.rtvk_reference_spp,
+                                                         args.rtvk_reference_mode, t))
     cycles_ref = os.path.join(args.outdir, "cycles-ref-%d-%d.exr" % (args.width,
                                                                      args.cycles_reference_spp))
     if not os.path.exists(cycles_ref):
@@ -186,6 +195,47 @@ def references(args):
         print("Cycles reference: %d spp, %.1f s (%.1f s with Blender's start)" % (
             args.cycles_reference_spp, t, wall))
     return cycles_ref
+
+
+def measure(args, rtvk_ref, cyc_ref):
+    """The curves, rtvk's modes' and Cycles' taking turns; with the load average around them."""
+    makers = {}
+    for mode in args.modes.split(","):
+        out = os.path.join(args.outdir, "rtvk-%s.exr" % mode)
+        makers["rtvk/" + mode] = (
+            lambda n, mode=mode, out=out: (rtvk_render(args, mode, n, SEED, out), {"out": out}),
+            rtvk_ref)
+    out = os.path.join(args.outdir, "cycles.exr")
+
+    def one_cycles(n):
+        t, wall = cycles_render(args, n, SEED, out)
+        return t, {"out": out, "process_seconds": wall}
+
+    makers["cycles/cycles"] = (one_cycles, cyc_ref)
+    load_before = os.getloadavg()
+    measured = curves(makers, args.seconds, args.spp_factor)
+    return load_before, measured, os.getloadavg()
+
+
+def without_reference_noise(measured, own, prefix, reference_spp):
+    """Takes each reference's own error out of its renderer's points. A point's error against a
+    reference of N samples of an independent seed is sigma^2 / n + sigma_ref^2 / N (the mean of the
+    two images' variances; the bias is gone at these counts); sigma_ref^2 is the per-sample
+    variance of the reference's estimator, measured on the curve of that same estimator (`own`)
+    at its most samples: mse / (1 / n + 1 / N). Keeps the measured value as mse_measured."""
+    if own not in measured:
+        print("%s: no curve of the reference's estimator; its error is left in" % own)
+        return
+    last = measured[own][-1]
+    share = (last["mse"] / (1 / last["spp"] + 1 / reference_spp)) / reference_spp
+    for name, pts in measured.items():
+        if not name.startswith(prefix):
+            continue
+        for p in pts:
+            p["mse_measured"] = p["mse"]
+            p["mse"] = max(p["mse"] - share, 0.1 * p["mse"])
+        print("%s: its reference's own error %.3e taken out (%.0f%% of its last point's)" % (
+            name, share, 100 * share / pts[-1]["mse_measured"]))
 
 
 def main():
@@ -202,24 +252,19 @@ def main():
     if not regions_agree(args, rtvk_ref, cyc_ref, w, h):
         sys.exit("compare-cycles.py: the two converged images disagree beyond --agree %g: find"
                  " why (units, camera, materials) before measuring" % args.agree)
-    makers = {}
-    for mode in args.modes.split(","):
-        out = os.path.join(args.outdir, "rtvk-%s.exr" % mode)
-        makers["rtvk/" + mode] = (
-            lambda n, mode=mode, out=out: (rtvk_render(args, mode, n, SEED, out), {"out": out}),
-            rtvk_ref)
-    out = os.path.join(args.outdir, "cycles.exr")
-
-    def one_cycles(n):
-        t, wall = cycles_render(args, n, SEED, out)
-        return t, {"out": out, "process_seconds": wall}
-
-    makers["cycles/cycles"] = (one_cycles, cyc_ref)
-    load_before = os.getloadavg()
-    measured = curves(makers, args.seconds, args.spp_factor)
-    load_after = os.getloadavg()
+    if args.from_json:
+        with open(args.from_json) as f:
+            old = json.load(f)
+        measured, load_before, load_after = old["curves"], old["load_before"], old["load_after"]
+        measured = {n: [dict(p, mse=p.get("mse_measured", p["mse"])) for p in pts]
+                    for n, pts in measured.items()}
+    else:
+        load_before, measured, load_after = measure(args, rtvk_ref, cyc_ref)
     print("load average (1, 5, 15 min) before the curves %.2f %.2f %.2f, after %.2f %.2f %.2f" %
-          (load_before + load_after))
+          (tuple(load_before) + tuple(load_after)))
+    without_reference_noise(measured, "rtvk/" + args.rtvk_reference_mode, "rtvk/",
+                            args.rtvk_reference_spp)
+    without_reference_noise(measured, "cycles/cycles", "cycles/", args.cycles_reference_spp)
     summary = {"width": args.width, "threads": args.threads, "curves": measured,
                "load_before": load_before, "load_after": load_after, "equal_error": {}}
     for mode in args.modes.split(","):
