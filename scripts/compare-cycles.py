@@ -39,6 +39,7 @@ import json
 import math
 import os
 import re
+import resource
 import subprocess
 import sys
 import time
@@ -62,8 +63,16 @@ def rtvk_render(args, mode, spp, seed, out):
     cmd = [args.rtvk, "render", "cornell-box", "--width", str(args.width), "--spp", str(spp),
            "--sampling", mode, "--backend", "cpu", "--threads", str(args.threads), "--seed",
            str(seed), "-o", out]
+    before = cpu_of_children()
     err = subprocess.run(cmd, check=True, capture_output=True, text=True).stderr
+    args.last_cpu_seconds = cpu_of_children() - before
     return float(re.search(r" in ([0-9.]+) s -> ", err).group(1))
+
+
+def cpu_of_children():
+    """User and system CPU seconds of the finished child processes so far."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
 
 
 def cycles_render(args, spp, seed, out):
@@ -71,15 +80,23 @@ def cycles_render(args, spp, seed, out):
            os.path.join(HERE, "blender-cornell.py"), "--", args.scene_json, out, "--width",
            str(args.width), "--spp", str(spp), "--seed", str(seed), "--threads",
            str(args.threads)]
-    start = time.perf_counter()
+    start, before = time.perf_counter(), cpu_of_children()
     log = subprocess.run(cmd, check=True, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          text=True).stdout
     wall = time.perf_counter() - start
+    args.last_cpu_seconds = cpu_of_children() - before
     m = re.search(r"^Rendered (\d+) samples in ([0-9.]+) seconds$", log, re.M)
     if not m or int(m.group(1)) != spp:
         sys.exit("compare-cycles.py: no 'Rendered %d samples in S seconds' in Cycles' log (run "
                  "with --debug-cycles):\n%s" % (spp, log[-2000:]))
     return float(m.group(2)), wall
+
+
+def blender_version(args):
+    """Blender's version, as `blender --version` prints it first (e.g. 3.4.1)."""
+    out = subprocess.run([args.blender, "--version"], capture_output=True, text=True).stdout
+    m = re.search(r"Blender (\S+)", out)
+    return m.group(1) if m else "?"
 
 
 def regions_agree(args, a, b, width, height):
@@ -130,6 +147,16 @@ def curves(makers, seconds, factor):
                 active.remove(name)
         spp *= factor
     return points
+
+
+def by_marginal_cpu(points):
+    """The points past 1 spp, each timed by its process's CPU time less the 1-spp process's
+    (empty when the points carry no CPU times)."""
+    if not points or "process_cpu_seconds" not in points[0]:
+        return []
+    first = points[0]["process_cpu_seconds"]
+    return [dict(p, seconds=p["process_cpu_seconds"] - first) for p in points[1:]
+            if p["process_cpu_seconds"] > first]
 
 
 def log_time_at(points, e):
@@ -203,13 +230,15 @@ def measure(args, rtvk_ref, cyc_ref):
     for mode in args.modes.split(","):
         out = os.path.join(args.outdir, "rtvk-%s.exr" % mode)
         makers["rtvk/" + mode] = (
-            lambda n, mode=mode, out=out: (rtvk_render(args, mode, n, SEED, out), {"out": out}),
+            lambda n, mode=mode, out=out: (rtvk_render(args, mode, n, SEED, out), {
+                "out": out, "process_cpu_seconds": args.last_cpu_seconds}),
             rtvk_ref)
     out = os.path.join(args.outdir, "cycles.exr")
 
     def one_cycles(n):
         t, wall = cycles_render(args, n, SEED, out)
-        return t, {"out": out, "process_seconds": wall}
+        return t, {"out": out, "process_seconds": wall,
+                   "process_cpu_seconds": args.last_cpu_seconds}
 
     makers["cycles/cycles"] = (one_cycles, cyc_ref)
     load_before = os.getloadavg()
@@ -266,13 +295,22 @@ def main():
                             args.rtvk_reference_spp)
     without_reference_noise(measured, "cycles/cycles", "cycles/", args.cycles_reference_spp)
     summary = {"width": args.width, "threads": args.threads, "curves": measured,
-               "load_before": load_before, "load_after": load_after, "equal_error": {}}
+               "load_before": load_before, "load_after": load_after, "equal_error": {},
+               "equal_error_by_cpu": {}}
     for mode in args.modes.split(","):
         rows = equal_error(measured["cycles/cycles"], measured["rtvk/" + mode])
         summary["equal_error"][mode] = rows
         for r in rows:
             print("mse %.3e: Cycles %.3f s, rtvk %s %.3f s: Cycles takes %.2fx rtvk's time" % (
                 r["mse"], r["cycles_seconds"], mode, r["rtvk_seconds"], r["cycles_over_rtvk"]))
+        # By CPU time, which other work on the machine changes little: each process's user and
+        # system time less that of its 1-sample render (start-up, scene, BVH: Blender's is 2 s).
+        marginal = {n: by_marginal_cpu(measured[n]) for n in ("cycles/cycles", "rtvk/" + mode)}
+        if all(marginal.values()):
+            rows = equal_error(marginal["cycles/cycles"], marginal["rtvk/" + mode])
+            summary["equal_error_by_cpu"][mode] = rows
+            print("by CPU time, Cycles' over rtvk %s's: %s" % (mode, ", ".join(
+                "%.2f (mse %.2e)" % (r["cycles_over_rtvk"], r["mse"]) for r in rows)))
     for name, pts in measured.items():
         p = pts[-1]
         print("%-14s at %d spp: %.4f s a sample, mse x spp %.4f" % (
@@ -283,7 +321,8 @@ def main():
     plot.COLORS["cycles"] = "#e67e22"
     with open(os.path.join(args.outdir, "compare-cycles.svg"), "w") as f:
         f.write(plot.svg(measured, "cornell-box, %d wide, %d threads: rtvk and Cycles" % (
-            args.width, args.threads), {"rtvk": "rtvk CPU", "cycles": "Cycles"}))
+            args.width, args.threads), {"rtvk": "rtvk CPU",
+                                        "cycles": "Blender " + blender_version(args)}))
 
 
 if __name__ == "__main__":
