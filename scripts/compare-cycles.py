@@ -267,13 +267,8 @@ def without_reference_noise(measured, own, prefix, reference_spp):
             name, share, 100 * share / pts[-1]["mse_measured"]))
 
 
-def main():
-    args = parse()
-    os.makedirs(args.outdir, exist_ok=True)
-    args.scene_json = os.path.join(args.outdir, "cornell-box.json")
-    with open(args.scene_json, "w") as f:
-        subprocess.run([args.rtvk, "scene", "dump", "cornell-box"], check=True, stdout=f)
-    cycles_ref = references(args)
+def check_references(args, cycles_ref):
+    """Stops unless the two references have one size and agree region by region."""
     w, h, rtvk_ref = exr_pixels.read_rgb(args.rtvk_reference)
     w2, h2, cyc_ref = exr_pixels.read_rgb(cycles_ref)
     if (w, h) != (w2, h2):
@@ -281,6 +276,25 @@ def main():
     if not regions_agree(args, rtvk_ref, cyc_ref, w, h):
         sys.exit("compare-cycles.py: the two converged images disagree beyond --agree %g: find"
                  " why (units, camera, materials) before measuring" % args.agree)
+
+
+def main():
+    args = parse()
+    os.makedirs(args.outdir, exist_ok=True)
+    args.scene_json = os.path.join(args.outdir, "cornell-box.json")
+    with open(args.scene_json, "w") as f:
+        subprocess.run([args.rtvk, "scene", "dump", "cornell-box"], check=True, stdout=f)
+    if args.from_json:  # the run's own references, when still there; nothing rendered
+        cycles_ref = os.path.join(args.outdir, "cycles-ref-%d-%d.exr" % (
+            args.width, args.cycles_reference_spp))
+        have = args.rtvk_reference and os.path.exists(args.rtvk_reference) and os.path.exists(
+            cycles_ref)
+    else:
+        cycles_ref, have = references(args), True
+    if have:
+        check_references(args, cycles_ref)
+    else:
+        print("the references are not both there: their agreement is not checked again")
     if args.from_json:
         with open(args.from_json) as f:
             old = json.load(f)
@@ -288,7 +302,8 @@ def main():
         measured = {n: [dict(p, mse=p.get("mse_measured", p["mse"])) for p in pts]
                     for n, pts in measured.items()}
     else:
-        load_before, measured, load_after = measure(args, rtvk_ref, cyc_ref)
+        load_before, measured, load_after = measure(args, exr_pixels.read_rgb(
+            args.rtvk_reference)[2], exr_pixels.read_rgb(cycles_ref)[2])
     print("load average (1, 5, 15 min) before the curves %.2f %.2f %.2f, after %.2f %.2f %.2f" %
           (tuple(load_before) + tuple(load_after)))
     without_reference_noise(measured, "rtvk/" + args.rtvk_reference_mode, "rtvk/",
