@@ -100,7 +100,7 @@ for s in cornell-box rest-of-life-final; do
   timeout 150 $rtvk render --backend gpu --scene $s --width 600 --spp 32768 --sampling lights -o "$out/ref-$s-600.exr"
 done
 timeout 150 python3 scripts/plot-sampling-noise.py $rtvk "$out/ref-cornell-box-600.exr" /tmp/noise --width 600 \
-  --backends gpu --seconds 1 && cp /tmp/noise/sampling-noise.json "$out/noise-gpu.json"
+  --backends gpu --seconds 1 && cp /tmp/noise/sampling-noise-cornell-box.json "$out/noise-gpu.json"
 timeout 120 $rtvk render --backend gpu --scene rest-of-life-final --spp 10000 -o "$out/rest-of-life-final.png"
 bench cornell-plain-gpu --scene cornell-box --backend gpu --spp 200 --sampling plain --repeat 3
 bench cornell-lights-gpu --scene cornell-box --backend gpu --spp 200 --sampling lights --repeat 3
