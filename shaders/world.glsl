@@ -30,6 +30,8 @@ layout(constant_id = RTVK_SPEC_UV) const bool with_uv = false;
 layout(constant_id = RTVK_SPEC_STACK) const uint stack_entries = 0u;
 // Set when a walk found its stack full: it stopped, and render_body.glsl drops the sample.
 bool stack_overflowed = false;
+// A shadow ray's search whose first hit decides it (shading.glsl): it ends at that hit.
+bool first_hit_ends = false;
 
 // Where the sphere in slot k is at `time` (sphere::center_at).
 precise vec3 center_at(uint k, float time) {
@@ -194,15 +196,9 @@ uint sort_key(bool entered, float t) {
 // As bvh_world::hit, over the same four-wide tree: all four children's boxes tested at once, the
 // nearest entered child visited next and the others remembered with their entry distances,
 // remembered children behind the closest hit dropped, ties to the later sphere, the record
-// filled once for the winner. The loop is flat -- each trip visits one node or leaf, or drops one
-// remembered child that is now behind the closest hit -- so the invocations of a SIMD group
-// (lavapipe's 8 lanes, a warp) step together instead of waiting for each other in nested loops;
-// each trip counts one iteration against the loop budget. (It takes 13 to 15% less time on
-// lavapipe than the binary tree it replaced: docs/benchmarks.md.)
-// Set while a shadow ray is searched in a scene whose every hit blocks it (shading.glsl): the
-// search ends at the first hit it finds, which decides the shadow as the nearest would.
-bool first_hit_ends = false;
-
+// filled once for the winner. The loop is flat (each trip visits one node or leaf, or drops one
+// remembered child now behind the closest hit), so a SIMD group's invocations step together,
+// each trip one iteration of the loop budget (13 to 15% faster than a binary tree on lavapipe).
 bool hit_bvh(ray r, float t_min, float t_max, precise inout hit_record rec, inout uint iterations) {
   if (pc.sphere_count + pc.quad_count + pc.triangle_count + pc.disk_count + pc.instance_count == 0u)
     return false;
