@@ -12,7 +12,7 @@ object rests on the plane y = 0 (the scene's ground, which is not in the file):
 - Sphere: radius SPHERE_RADIUS centered at SPHERE_CENTER, red plastic under a clear coat
   (KHR_materials_clearcoat). tests/cpu/test_showcase.cpp finds its shadow on the ground.
 - Ring: an upright torus (major radius 0.36, minor 0.12) turned 35 degrees about y, gold
-  (metallic 1, roughness 0.25).
+  (metallic 1, roughness 0.35).
 - Block: a 0.6 m cube turned 25 degrees about y, blue rough plastic (roughness 0.6), flat faces.
 
 Python 3 only.
@@ -115,10 +115,10 @@ def build():
             "baseColorFactor": [0.7, 0.06, 0.04, 1.0], "metallicFactor": 0.0,
             "roughnessFactor": 0.45},
          "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0,
-                                                    "clearcoatRoughnessFactor": 0.05}}},
+                                                    "clearcoatRoughnessFactor": 0.2}}},
         {"name": "gold", "pbrMetallicRoughness": {
             "baseColorFactor": [1.0, 0.766, 0.336, 1.0], "metallicFactor": 1.0,
-            "roughnessFactor": 0.25}},
+            "roughnessFactor": 0.35}},
         {"name": "blue plastic", "pbrMetallicRoughness": {
             "baseColorFactor": [0.1, 0.25, 0.6, 1.0], "metallicFactor": 0.0,
             "roughnessFactor": 0.6}},

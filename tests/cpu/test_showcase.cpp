@@ -131,10 +131,11 @@ double median(std::vector<double> v) {
 // the ring's and the block's, scripts/make-showcase-model.py) are lit. The camera must see the
 // ground there (its ray passes the objects too). Lit ground is albedo / pi times the map's
 // irradiance (within 5%); in the shadow the sun's share is gone: (lit - shadow) / lit is
-// sun / (sun + sky) = 0.923 within 0.015. Medians over each region: the gold ring's caustics (the
-// sun seen in it from the ground, found by BSDF samples alone) put a few bright pixels in the
-// shadow, which moved its mean from 0.033 to 0.045-0.067 by the seed; the medians over seeds 0, 3,
-// 5 and 7 gave 0.924 to 0.929 (64 samples: 0.922; without the ring and block: 0.928).
+// sun / (sun + sky) = 0.923 within 0.015. Medians over each region: the coat's and the gold
+// ring's caustics (the sun seen in them from the ground, found by BSDF samples alone) put a few
+// bright pixels in the shadow, which moved its mean by the seed (0.045 to 0.067 against 0.033
+// without the ring and the block, with a glossier coat and ring); the medians over seeds 0, 3, 5
+// and 7 gave 0.923 to 0.928.
 TEST(Showcase, TheSunsShadowFallsWhereTheGeometrySays) {
   scene s = showcase_scene();
   s.render.width = 160;
