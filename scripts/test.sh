@@ -134,7 +134,7 @@ grep -qF "$want" <<<"$listing" || { echo "rtvk: expected a lavapipe of $want (ab
 # in LLVM's CoroSplit pass over lavapipe's compute coroutine. The kernels' probe (seconds) still
 # runs here. PBR on the hardware paths was checked on an NVIDIA H200 instead (docs/materials.md,
 # docs/benchmarks.md).
-pbr_renders='^(GpuPbr\.(TheGalleryMatchesTheCpu|AWhiteSphereInAWhiteFurnaceIsWhite|AVolumeAttenuatesByBeerLambert|TheHardwarePathsGiveTheComputeBvhsExactSums)|GpuGltfSamples\..*|GpuNee\.ThePbrGalleryMatchesTheCpu)$'
+pbr_renders='^(GpuPbr\.(TheGalleryMatchesTheCpu|AWhiteSphereInAWhiteFurnaceIsWhite|AVolumeAttenuatesByBeerLambert|TheHardwarePathsGiveTheComputeBvhsExactSums)|GpuGltfSamples\..*|GpuNee\.ThePbrGalleryMatchesTheCpu|GpuShowcase\..*)$'
 timed "GPU tests on $want" on_second tests second ci -L '^gpu' -E "$pbr_renders"
 
 echo "== asan: the host tests with no Vulkan driver, the sanitize GPU tests on both lavapipes"

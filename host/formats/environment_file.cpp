@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "builtin_showcase.h"
 #include "errors.h"
 #include "input_file.h"
 #include "scene_file.h"
@@ -128,6 +129,7 @@ std::vector<float> decode_hdr(const std::string& bytes, const std::string& where
 
 std::shared_ptr<const environment_image> load_environment_image(const std::filesystem::path& file,
                                                                 const std::string& name) {
+  if (file == builtin_sky_sun) return sky_sun_image();  // rtvk's own, drawn rather than read
   const std::string bytes = read_regular_file(file, max_environment_file_bytes, name);
   return decode_environment_image(bytes, name + " " + file.string());
 }

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "builtin_showcase.h"
 #include "errors.h"
 #include "format.h"
 #include "input_file.h"
@@ -134,8 +135,10 @@ void read_environment(const scene_reader& r, const json& root, scene& s) {
   environment_map e;
   e.file = f.get<std::string>();
   const std::string field = r.file() + ": " + p + "/file";
-  const std::filesystem::path file = r.base() / e.file;
-  r.guard().check(file, field, e.file);
+  // builtin:sky-sun is rtvk's own map, drawn rather than read: no file to look for or confine.
+  const bool own = e.file == builtin_sky_sun;
+  const std::filesystem::path file = own ? std::filesystem::path(e.file) : r.base() / e.file;
+  if (!own) r.guard().check(file, field, e.file);
   e.image = load_environment_image(file, field);
   if (j.contains("rotation")) e.rotation = r.number_in(j["rotation"], p + "/rotation", -3600, 3600);
   if (j.contains("strength")) e.strength = r.number_in(j["strength"], p + "/strength", 0, 1e9);
@@ -268,7 +271,14 @@ bool names_scene_file(const std::string& value) {
          !mesh_kind(value).empty();
 }
 
+std::vector<std::string> scene_names() {
+  std::vector<std::string> names = builtin_scene_names();
+  for (const std::string& n : format_scene_names()) names.push_back(n);
+  return names;
+}
+
 scene load_scene(const std::string& value, const file_access& access) {
+  if (value == "showcase") return showcase_scene();
   if (!names_scene_file(value)) return builtin_scene(value);
   if (!mesh_kind(value).empty()) return mesh_scene(value, access);
   return load_scene_file(value, access);

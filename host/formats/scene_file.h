@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "confined_path.h"
 #include "scene.h"
@@ -31,13 +32,18 @@ std::string dump_camera_json(const camera_pose& pose);
 // --scene VALUE names a file (rather than a built-in) when it ends in .json or contains a '/'.
 bool names_scene_file(const std::string& value);
 
+// Every built-in scene's name, as `rtvk scene list` prints them: the books' (builtin_scene_names)
+// and those made here, which read a model (format_scene_names: showcase).
+std::vector<std::string> scene_names();
+
 // The built-in scene or the file that `value` names (a scene file or a mesh file, the files it
 // names confined as `access` says).
 scene load_scene(const std::string& value, const file_access& access = {});
 
 // Reads a Radiance .hdr (stb_image) or OpenEXR .exr file (told apart by content) as an
-// environment image. Throws usage_error naming `name` (the field or flag) and the file: missing,
-// unreadable, not an HDR image, truncated, with a texel not finite or negative, or too large.
+// environment image; "builtin:sky-sun" is the test environment, drawn (sky_sun_image). Throws
+// usage_error naming `name` (the field or flag) and the file: missing, unreadable, not an HDR
+// image, truncated, with a texel not finite or negative, or too large.
 std::shared_ptr<const environment_image> load_environment_image(const std::filesystem::path& file,
                                                                 const std::string& name);
 

@@ -51,8 +51,9 @@ scene builtin_scene(std::string_view name) {
   }
   std::string choices;
   for (const auto& n : builtin_scene_names()) choices += (choices.empty() ? "" : ", ") + n;
-  throw usage_error("--scene: unknown scene '" + std::string(name) + "' (built-in: " + choices +
-                    ", spheres:N; or a .json scene file, or an .obj, .gltf or .glb mesh)");
+  throw usage_error(
+      "--scene: unknown scene '" + std::string(name) + "' (built-in: " + choices +
+      ", spheres:N, showcase; or a .json scene file, or an .obj, .gltf or .glb mesh)");
 }
 
 }  // namespace rtvk

@@ -94,7 +94,8 @@ TEST(CliBook, DumpedSceneRendersTheIdenticalImage) {
   EXPECT_EQ(
       run_rtvk({"scene", "list"}).out,
       "seed\nmaterials\nbook-final\nbouncing-spheres\nquads\ncheckered-spheres\nperlin-spheres\n"
-      "simple-light\ncornell-box\ncornell-smoke\nnext-week-final\nrest-of-life-final\nspheres:N (N "
+      "simple-light\ncornell-box\ncornell-smoke\nnext-week-final\nrest-of-life-final\nshowcase\n"
+      "spheres:N (N "
       "from 1 to "
       "4000000)\n");
 }

@@ -54,6 +54,7 @@ foreach(layer IN LISTS layers)
   endforeach()
 endforeach()
 set(owner_version.h base)             # generated from host/base/version.h.in
+set(owner_showcase_glb.h formats)     # generated from docs/scenes/showcase.glb (formats/CMakeLists.txt)
 # shaders/shared (the structs that cross to the GPU and the shared kernels), through the
 # rtvk_shared target that base links: below every layer, and no host header may take a name there.
 file(GLOB shared_headers RELATIVE ${ROOT}/shaders/shared ${ROOT}/shaders/shared/*.h)

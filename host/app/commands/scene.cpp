@@ -23,7 +23,7 @@ command_action add_scene_command(CLI::App& app) {
     if (dump->parsed()) {
       std::fputs(dump_scene_json(load_scene(*name, paths->access())).c_str(), stdout);
     } else if (list->parsed()) {
-      for (const auto& n : builtin_scene_names()) std::printf("%s\n", n.c_str());
+      for (const auto& n : scene_names()) std::printf("%s\n", n.c_str());
       std::printf("spheres:N (N from 1 to %u)\n", unsigned(max_scene_spheres));
     }
     return 0;
