@@ -177,6 +177,21 @@ TEST(LightTreeUnbiased, LampsPlacedByInstancesConvergeToThePlainImage) {
   ASSERT_EQ(group_lamps(s).size(), 5u);  // two quads and spheres each, the stretched quad
   const std::vector<light_record> lamps = scene_lamps(s);
   ASSERT_EQ(lamps.size(), 5u);
+  // In world space: each placed quad's center (the group's origin) at its instance's offset, each
+  // sphere's center where the instance puts (0, -30, 0).
+  const std::size_t quads[3] = {1, 3, 4}, spheres[2] = {0, 2};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const light_record& q = lamps[quads[i]];
+    EXPECT_EQ(q.kind, uint(RTVK_LIGHT_QUAD));
+    EXPECT_NEAR(glm::length(q.a + 0.5 * (q.u + q.v) - s.instances[i].placement.offset), 0, 1e-9);
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    const light_record& sp = lamps[spheres[i]];
+    EXPECT_EQ(sp.kind, uint(RTVK_LIGHT_SPHERE));
+    EXPECT_NEAR(glm::length(sp.a - s.instances[i].placement.apply_point(point3(0, -30, 0))), 0,
+                1e-9);
+    EXPECT_NEAR(sp.radius, i == 0 ? 18 : 12, 1e-9);  // scaled by 1.5, then by 1 (mirrored)
+  }
   EXPECT_NEAR(lamps[0].a.y, 500 - 45 * std::cos(150 * 3.14159265358979323846 / 180), 1e-9);
   expect_same_mean(s, 256, 64);
 }
