@@ -130,12 +130,15 @@ item_iter split(item_iter first, item_iter last, const bounds& all, bool heurist
       return std::min(buckets - 1, int(buckets * (b.centroid[axis] - clo[axis]) / extent[axis]));
     };
     for (item_iter i = first; i != last; ++i) bucket[slot(*i)] = merged(bucket[slot(*i)], *i);
+    // The buckets above each cut, merged from the top down once; those below as the cut rises.
+    bounds above[buckets];
+    for (int k = buckets - 1; k > 0; --k)
+      above[k] = k + 1 < buckets ? merged(bucket[k], above[k + 1]) : bucket[k];
+    bounds below;
     for (int cut = 1; cut < buckets; ++cut) {
-      bounds below, above;
-      for (int k = 0; k < cut; ++k) below = merged(below, bucket[k]);
-      for (int k = cut; k < buckets; ++k) above = merged(above, bucket[k]);
-      const double c = widest / extent[axis] * (cost(below) + cost(above));
-      if (below.power > 0 && above.power > 0 && c < best)
+      below = merged(below, bucket[cut - 1]);
+      const double c = widest / extent[axis] * (cost(below) + cost(above[cut]));
+      if (below.power > 0 && above[cut].power > 0 && c < best)
         best = c, best_axis = axis, best_cut = cut;
     }
   }
