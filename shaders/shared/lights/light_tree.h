@@ -64,7 +64,7 @@ inline precise real sin_less(real sin_a, real cos_a, real sin_b, real cos_b) {
 // angle left between its cone and the way to p once the box's own angular size is taken off,
 // times the same at p's normal. 0 where no lamp of it can face p.
 inline precise real light_node_importance(light_node nd, real3 p, real3 n) {
-  if (!(nd.power > 0.0)) return real(0.0);
+  if (!(nd.power > 0.0f)) return real(0.0);
   precise real3 lo = real3(nd.lo);
   precise real3 hi = real3(nd.hi);
   precise real3 half_size = (hi - lo) * real(0.5);
@@ -116,7 +116,7 @@ inline precise real light_tree_first(LIGHTS_PARAM uint k, real3 p, real3 n) {
 // step rescales u to the child's share, so one number serves the whole descent.
 inline uint light_tree_draw(LIGHTS_PARAM real3 p, real3 n, real u, precise OUT(real) pmf) {
   pmf = real(0.0);
-  if (!(LIGHT_NODE(0u).power > 0.0)) return 0u;
+  if (!(LIGHT_NODE(0u).power > 0.0f)) return 0u;
   uint k = 0u;
   precise real prob = real(1.0);
   for (uint depth = 0u; depth <= light_tree_depth; ++depth) {
@@ -196,7 +196,7 @@ inline bool light_node_holds(light_node nd, real3 x, real slack) {
 inline bool light_tree_find(LIGHTS_PARAM real3 origin, real3 d, real time, real t_hit,
                             OUT(uint) leaf) {
   leaf = 0u;
-  if (!(LIGHT_NODE(0u).power > 0.0)) return false;
+  if (!(LIGHT_NODE(0u).power > 0.0f)) return false;
   precise real3 x = origin + d * t_hit;
   precise real tolerance = real(1e-3) * t_hit + real(1e-6);
   // The boxes are floats: grow them by a few of their units in the last place too.
