@@ -8,11 +8,16 @@
                                         DIR) N times on a grid: knots-instanced.json (one group,
                                         N instances) and knots-copied.json (N meshes, each placed)
 
+  make-mesh.py lamps N OUT.obj         N small triangles scattered in a slab 10 wide, 10 deep and
+                                        1 high about (0, 3.5, 0), each turned its own way: the
+                                        emissive cloud of docs/scenes/many-lamps-slab.json
+
 The mesh depends only on its arguments, so a benchmark run anywhere reads the same triangles.
 """
 import json
 import math
 import os
+import random
 import sys
 
 
@@ -83,9 +88,25 @@ def knots(n, mesh, folder):
             json.dump(scene, out, indent=1)
 
 
+def lamps(n, out):
+    # Each a triangle of edges up to 0.12 about a point of the slab; Python's Mersenne Twister from
+    # a fixed seed, so the same N gives the same triangles everywhere.
+    rng = random.Random(46)
+    with open(out, "w") as f:
+        f.write("# %d small triangles: scripts/make-mesh.py lamps %d\n" % (n, n))
+        for _ in range(n):
+            c = (rng.uniform(-5, 5), rng.uniform(3, 4), rng.uniform(-5, 5))
+            for _ in range(3):
+                f.write("v %.6f %.6f %.6f\n" % tuple(c[k] + rng.uniform(-0.06, 0.06) for k in range(3)))
+        for k in range(n):
+            f.write("f %d %d %d\n" % (3 * k + 1, 3 * k + 2, 3 * k + 3))
+
+
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "knot":
         knot(int(sys.argv[2]), sys.argv[3])
+    elif len(sys.argv) == 4 and sys.argv[1] == "lamps":
+        lamps(int(sys.argv[2]), sys.argv[3])
     elif len(sys.argv) == 5 and sys.argv[1] == "knots":
         knots(int(sys.argv[2]), sys.argv[3], sys.argv[4])
     else:

@@ -44,6 +44,7 @@ layout(push_constant) uniform push_block {
 #include "scene_buffers.glsl"
 #include "appearance_buffers.glsl"
 #include "punctual_buffers.glsl"
+#include "light_tree_buffers.glsl"
 
 // Whether the scene has punctual lights: next-event estimation draws them (lights/nee.h), else
 // their code is compiled out.

@@ -131,8 +131,9 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
   // Every multiply precise (ShaderPrecision): times 1 where the hit has no vertex colors, exact.
   precise vec3 albedo =
       (any_textures ? material_color(m.albedo, m.texture, rec) : m.albedo) * rec.color.xyz;
-  // The lights' densities loop over every light (pdf.h): lavapipe counts those trips too.
-  iterations += light_count();
+  // The lights' densities loop over every light (pdf.h): lavapipe counts those trips too. Next-event
+  // estimation's light tree counts its own (light_tree_trips, added after the step).
+  if (!nee) iterations += light_count();
   // Next-event estimation's draw toward the environment: its two binary searches.
   if (nee && any_environment) iterations += environment_sample_trips();
   if (pbr) {
@@ -140,13 +141,23 @@ bool ray_color_step(precise inout path_state p, precise out vec3 c, inout uint i
     gpu_pbr q = pbrs[m.pbr];
     pbr_texels t = any_textures ? pbr_texels_at(q, rec) : pbr_no_texels();
     iterations += uint(pbr_map_count);  // pbr_texels_at's loop: lavapipe counts its trips
-    if (nee)
-      return path_hit_pbr_nee(p, rec, pbr_surface_from(q, albedo, rec, t),
-                              pbr_shading_normal(q, rec, t, wo), pbr_coat_normal(q, rec, t, wo), c);
+    if (nee) {
+      bool ended = path_hit_pbr_nee(p, rec, pbr_surface_from(q, albedo, rec, t),
+                                    pbr_shading_normal(q, rec, t, wo),
+                                    pbr_coat_normal(q, rec, t, wo), c);
+      iterations += light_tree_trips;
+      light_tree_trips = 0u;
+      return ended;
+    }
     return path_hit_pbr(p, rec, pbr_surface_from(q, albedo, rec, t), pbr_shading_normal(q, rec, t, wo),
                         pbr_coat_normal(q, rec, t, wo), c);
   }
-  if (nee) return path_hit_nee(p, rec, m.type, m.flags, albedo, m.fuzz, m.ir, c);
+  if (nee) {
+    bool ended = path_hit_nee(p, rec, m.type, m.flags, albedo, m.fuzz, m.ir, c);
+    iterations += light_tree_trips;  // the light tree's draw and the lamp hit's point query
+    light_tree_trips = 0u;
+    return ended;
+  }
   return path_hit(p, rec, m.type, m.flags, albedo, m.fuzz, m.ir, c);
 }
 

@@ -13,6 +13,7 @@ scene_shading::scene_shading(const scene& s, bool sample_lights, bool nee_)
     media.push_back(geometry_of(s.media[k], std::uint32_t(k)));
   if (sample_lights) lights = scene_lights(s);
   if (nee) lights = scene_lamps(s);
+  if (nee) light_nodes = build_light_tree(lights, s.motion);
   if (nee) punctual = punctual_records(s.punctual_lights);
   for (const material& m : materials) pbr.push_back(pbr_record_of(m.pbr));
   if (s.environment) environment.emplace(*s.environment);

@@ -4,6 +4,7 @@
 
 #include "hittable.h"
 #include "light_sources.h"
+#include "light_tree_builder.h"
 #include "material.h"
 #include "medium.h"
 #include "pbr_shading.h"
@@ -21,12 +22,13 @@ namespace rtvk {
 // none: plain; under next-event estimation (`nee`), the lamps only (nee.h).
 struct scene_shading {
   explicit scene_shading(const scene& s, bool sample_lights = false, bool nee = false);
-  bool nee = false;                       // ray_color is ray_color_nee
-  std::vector<material> materials;        // by index
-  packed_textures textures;               // records and texels
-  perlin_tables perlin;                   // the noise's lattice (the scene's noise seed)
-  std::vector<medium_geometry> media;     // in scene order
-  std::vector<light_record> lights;       // what scattering aims at; empty: plain sampling
+  bool nee = false;                              // ray_color is ray_color_nee
+  std::vector<material> materials;               // by index
+  packed_textures textures;                      // records and texels
+  perlin_tables perlin;                          // the noise's lattice (the scene's noise seed)
+  std::vector<medium_geometry> media;            // in scene order
+  std::vector<light_record> lights;              // what scattering aims at; empty: plain sampling
+  std::vector<gpu::gpu_light_node> light_nodes;  // nee: the light tree over `lights`' lamps
   std::vector<pbr_record> pbr;            // by material index: a PBR material's parameters (the
                                           // others' are the defaults, unread)
   std::vector<punctual_record> punctual;  // the punctual lights (next-event estimation draws them)
@@ -35,7 +37,9 @@ struct scene_shading {
     return {textures.records.data(), textures.texels.data(), perlin.vectors.data(),
             perlin.perm.data()};
   }
-  light_table light_list() const { return {lights.data(), uint(lights.size())}; }
+  light_table light_list() const {
+    return {lights.data(), uint(lights.size()), light_nodes.empty() ? nullptr : light_nodes.data()};
+  }
   punctual_table punctual_list() const { return {punctual.data(), uint(punctual.size())}; }
 };
 

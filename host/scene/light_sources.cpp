@@ -1,4 +1,5 @@
 #include "light_sources.h"
+#include "object_group.h"
 #include "punctual.h"
 
 #include <algorithm>
@@ -51,19 +52,6 @@ light_record as_lamp(light_record l, const scene& s, int index, bool colored) {
 
 bool has_colors(const scene& s, const triangle& t) {
   return t.shading >= 0 && s.shading[std::size_t(t.shading)].has_color;
-}
-
-// A lamp's power up to a constant common to all: the luminance it emits times its area, times 2
-// where both sides emit (a sphere's one side is its whole surface). Uneven lamps: 0, never drawn.
-double lamp_power(const light_record& l) {
-  if ((l.flags & RTVK_LIGHT_UNEVEN) != 0u) return 0;
-  const double luminance = 0.2126 * l.emission.x + 0.7152 * l.emission.y + 0.0722 * l.emission.z;
-  const double pi = 3.14159265358979323846;
-  const double area = l.kind == RTVK_LIGHT_SPHERE ? 4 * pi * l.radius * l.radius : l.area;
-  const double sides =
-      l.kind != RTVK_LIGHT_SPHERE && (l.flags & RTVK_LIGHT_ONE_SIDED) == 0u ? 2 : 1;
-  const double p = std::max(0.0, luminance) * area * sides;
-  return std::isfinite(p) ? p : 0;
 }
 
 // Vose's alias table over the lamps (the first `count` of `lights`), by power: each gets its
@@ -133,6 +121,17 @@ std::uint32_t search_trips(std::uint64_t n) {
 
 }  // namespace
 
+double lamp_power(const light_record& l) {
+  if ((l.flags & RTVK_LIGHT_UNEVEN) != 0u) return 0;
+  const double luminance = 0.2126 * l.emission.x + 0.7152 * l.emission.y + 0.0722 * l.emission.z;
+  const double area =
+      l.kind == RTVK_LIGHT_SPHERE ? 4 * std::numbers::pi * l.radius * l.radius : l.area;
+  const double sides =
+      l.kind != RTVK_LIGHT_SPHERE && (l.flags & RTVK_LIGHT_ONE_SIDED) == 0u ? 2 : 1;
+  const double p = std::max(0.0, luminance) * area * sides;
+  return std::isfinite(p) ? p : 0;
+}
+
 std::vector<light_record> scene_lights(const scene& s) {
   std::vector<light_record> out;
   for (const sphere& sp : s.spheres)
@@ -154,9 +153,39 @@ std::vector<light_record> scene_lights(const scene& s) {
   return out;
 }
 
+std::vector<light_record> group_lamps(const scene& s) {
+  std::vector<light_record> out;
+  for (const instance& i : s.instances) {
+    const object_group& g = s.groups[i.group];
+    const transform& t = i.placement;
+    for (const sphere& sp : g.spheres)
+      if (is_lamp(s, sp.material))
+        if (const std::optional<sphere> w = placed(sp, t))  // none: an ellipsoid
+          out.push_back(as_lamp(sphere_light(*w), s, sp.material, false));
+    for (const quad& q : g.quads)
+      if (is_lamp(s, q.material)) {
+        const quad w = placed(q, t);
+        out.push_back(as_lamp(flat_light(RTVK_LIGHT_QUAD, w.Q, w.u, w.v), s, q.material, false));
+      }
+    for (const triangle& tri : g.triangles)
+      if (is_lamp(s, tri.material)) {
+        const triangle w = placed(tri, t);
+        const bool colored = tri.shading >= 0 && g.shading[std::size_t(tri.shading)].has_color;
+        out.push_back(
+            as_lamp(flat_light(RTVK_LIGHT_TRIANGLE, w.p[0], w.p[1] - w.p[0], w.p[2] - w.p[0]), s,
+                    tri.material, colored));
+      }
+  }
+  return out;
+}
+
 std::vector<light_record> scene_lamps(const scene& s) {
   std::vector<light_record> out = scene_lights(s);
   std::erase_if(out, [](const light_record& l) { return (l.flags & RTVK_LIGHT_EMITS) == 0u; });
+  const std::vector<light_record> placed_lamps = group_lamps(s);
+  if (placed_lamps.empty()) return out;
+  out.insert(out.end(), placed_lamps.begin(), placed_lamps.end());
+  build_alias_table(out, out.size());  // over them all
   return out;
 }
 
@@ -173,12 +202,7 @@ bool samples_lights(std::size_t lights, sampling_mode m) {
 
 void check_sampling(const scene& s, const render_settings& rs, const std::string& what) {
   if (rs.sampling == sampling_mode::nee) {
-    const std::size_t lamps = scene_lamps(s).size();
-    if (lamps > RTVK_MAX_LIGHTS)
-      throw std::invalid_argument(what + " nee: the scene has " + std::to_string(lamps) +
-                                  " lamps; next-event estimation draws from at most " +
-                                  std::to_string(RTVK_MAX_LIGHTS));
-    return;
+    return;  // any number of lamps: the light tree draws them in its depth of steps
   }
   if (rs.sampling != sampling_mode::lights) return;
   const std::size_t n = scene_lights(s).size();

@@ -16,8 +16,18 @@ namespace rtvk {
 // (shaders/shared/pdf.h); the GPU gets them as gpu_light.
 std::vector<light_record> scene_lights(const scene& s);
 
-// The lamps of scene_lights (its first entries, RTVK_LIGHT_EMITS): what next-event estimation
-// draws (shaders/shared/lights/nee.h).
+// The lamps inside groups, each placed by every instance of its group into scene space (an
+// instance's transform is static and affine: quads and triangles stay exact; a sphere only under
+// a rotation and one scale, else it is left out, its light still found by the paths that hit it).
+// In instance order, then spheres, quads, triangles.
+std::vector<light_record> group_lamps(const scene& s);
+
+// A lamp's power up to a constant common to all: the luminance it emits times its area, times 2
+// where both sides emit (a sphere's one side is its whole surface). Uneven lamps: 0, never drawn.
+double lamp_power(const light_record& l);
+
+// What next-event estimation draws (shaders/shared/lights/nee.h): the lamps of scene_lights (its
+// first entries, RTVK_LIGHT_EMITS), then group_lamps; the alias table over them all.
 std::vector<light_record> scene_lamps(const scene& s);
 
 // `auto` made definite where it is not what samples_lights says: next-event estimation where the

@@ -50,7 +50,10 @@
 #define RTVK_BINDING_ENVIRONMENT_CDF 29
 // storage buffer: gpu_punctual[], the point, spot and directional lights (punctual.h); likewise
 #define RTVK_BINDING_PUNCTUAL 30
-#define RTVK_SCENE_BINDINGS_END 31  // past the list: a pipeline that adds to it starts here
+// storage buffer: gpu_light_node[], next-event estimation's light tree over the lamps of
+// RTVK_BINDING_LIGHTS (light_tree.h); one unused element (power 0) when none can be drawn
+#define RTVK_BINDING_LIGHT_TREE 31
+#define RTVK_SCENE_BINDINGS_END 32  // past the list: a pipeline that adds to it starts here
 
 // tonemap.comp: a band's sums in, its RGBA8 bytes out.
 #define RTVK_TONEMAP_SUMS 2         // storage buffer: pixel_sum[], the render's RTVK_BINDING_IMAGE

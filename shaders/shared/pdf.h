@@ -13,6 +13,7 @@
 #include "appearance_types.h"
 #include "hit_sphere.h"
 #include "kernel_lang.h"
+#include "lights_types.h"
 #include "random.h"
 #include "ray.h"
 
@@ -38,17 +39,22 @@ struct light_record {
 struct light_table {
   const light_record* lights = nullptr;  // by index
   uint count = 0;                        // 0: plain sampling, no light is aimed at
+  // Next-event estimation's light tree over the lamps (light_tree.h; node 0 the root); null
+  // elsewhere.
+  const gpu::gpu_light_node* nodes = nullptr;
 };
 #define LIGHTS_PARAM const light_table &lights_in,
 #define LIGHTS lights_in,
 #define LIGHT_AT(k) lights_in.lights[k]
 #define LIGHT_COUNT lights_in.count
+#define LIGHT_NODE(k) lights_in.nodes[k]
 #else
 #define light_record gpu_light
 #define LIGHTS_PARAM
 #define LIGHTS
 #define LIGHT_AT(k) lights[k]
 #define LIGHT_COUNT light_count()
+#define LIGHT_NODE(k) light_nodes[k]
 #endif
 
 const real inv_pi = real(0.31830988618379067154);

@@ -39,6 +39,9 @@ struct path_state {
   precise real mis_pdf;           // the BSDF's density for p.r's direction at the vertex it left,
                                   // per steradian; 0 where no light sample could have drawn it
   precise real3 mis_origin;       // that vertex (p.r's origin moves past see-through surfaces)
+  precise real3 mis_at;           // where that vertex drew its light sample (the light tree's
+                                  // point: a hair from mis_origin)
+  precise real3 mis_normal;       // its normal there (zero in a medium)
   ray shadow;                     // the shadow ray of the last light sample, when shadow_reach > 0
   precise real shadow_reach;      // how far it must go unblocked; 0: no shadow ray pending
   precise real3 shadow_radiance;  // what the path gathers when nothing blocks it
@@ -55,6 +58,8 @@ inline path_state start_path(ray r, random_stream s) {
   p.s = s;
   p.mis_pdf = real(0.0);
   p.mis_origin = r.origin;
+  p.mis_at = r.origin;
+  p.mis_normal = real3(0.0);
   p.shadow = r;
   p.shadow_reach = real(0.0);
   p.shadow_radiance = real3(0.0);

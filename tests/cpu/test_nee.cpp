@@ -280,33 +280,5 @@ TEST(NeeUnbiased, TheSmokyCornellBoxConvergesToTheMixturesImage) {
         << nee.mean[c] << " +- " << nee.error[c];
 }
 
-// More lamps than next-event estimation draws from (256, until the light tree): refused naming the
-// count; 256 are drawn.
-TEST(NeeSampling, MoreThan256LampsAreRefusedNamingTheCount) {
-  scene s = test::small_scene("cornell-box", 8, 1);
-  s.render.sampling = sampling_mode::nee;
-  const int lamp = int(s.materials.size());
-  s.materials.push_back({"many", {material_type::diffuse_light, color(1), 0, 1.5}});
-  for (int k = 0; k < 256; ++k)
-    s.quads.push_back({point3(k, 600, 0), vec3(0.5, 0, 0), vec3(0, 0, 0.5), lamp});
-  s.quads.erase(std::remove_if(s.quads.begin(), s.quads.end(),
-                               [&](const quad& q) {
-                                 return q.material != lamp &&
-                                        s.materials[std::size_t(q.material)].m.type ==
-                                            material_type::diffuse_light;
-                               }),
-                s.quads.end());
-  EXPECT_NO_THROW(check_sampling(s, s.render, "--sampling"));
-  s.quads.push_back({point3(-1, 600, 0), vec3(0.5, 0, 0), vec3(0, 0, 0.5), lamp});
-  try {
-    check_sampling(s, s.render, "--sampling");
-    FAIL() << "no refusal";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("--sampling nee: the scene has 257 lamps"),
-              std::string::npos)
-        << e.what();
-  }
-}
-
 }  // namespace
 }  // namespace rtvk

@@ -10,6 +10,7 @@
 #include "hit_sphere.h"
 #include "kernel_probe.h"
 #include "light_probe.h"
+#include "light_tree_probe.h"
 #include "pbr_probe.h"
 #include "punctual_probe.h"
 #include "random.h"
@@ -69,6 +70,27 @@ void run_punctual_probe(const std::vector<gpu::gpu_punctual>& lights,
   // The shader reads the count from the first element (0 in an unused one).
   const k::punctual_table t{records.data(), lights.empty() ? 0u : lights[0].count};
   k::run_punctual_probe(t, e);
+}
+
+void run_light_tree_probe(const std::vector<gpu::gpu_light>& lamps,
+                          const std::vector<gpu::gpu_light_node>& nodes,
+                          gpu::light_tree_probe_entry& e) {
+  std::vector<k::light_record> records;
+  for (const gpu::gpu_light& g : lamps) {
+    k::light_record r;
+    r.a = g.a;
+    r.kind = g.kind;
+    r.u = g.u;
+    r.radius = g.radius;
+    r.v = g.v;
+    r.area = g.area;
+    r.normal = g.normal;
+    r.flags = g.flags;
+    r.emission = g.emission;
+    records.push_back(r);
+  }
+  const k::light_table t{records.data(), uint(records.size()), nodes.data()};
+  k::run_light_tree_probe(t, e);
 }
 
 void run_environment_probe(const std::uint32_t* texels, const float* table,

@@ -58,6 +58,12 @@ bool pbr_sample(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 u, glm::v
 float pbr_pdf(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi);
 glm::vec3 pbr_eval(const gpu::pbr_probe_entry& e, glm::vec3 wo, glm::vec3 wi);
 
+// run_light_tree_probe (tests/gpu/probes/light_tree_probe.h) in float over `lamps` and `nodes`:
+// what light_tree_probe.comp computes.
+void run_light_tree_probe(const std::vector<gpu::gpu_light>& lamps,
+                          const std::vector<gpu::gpu_light_node>& nodes,
+                          gpu::light_tree_probe_entry& e);
+
 // run_punctual_probe (tests/gpu/probes/punctual_probe.h) in float over `lights` (their count
 // the elements', as the shader reads it): what punctual_probe.comp computes.
 void run_punctual_probe(const std::vector<gpu::gpu_punctual>& lights, gpu::punctual_probe_entry& e);

@@ -83,7 +83,8 @@ render_push make_push(const sky& background, const render_settings& rs, const re
     throw std::invalid_argument("--sampling lights: the scene has " +
                                 std::to_string(objects.light_count()) + " lights to aim at");
   push.light_count = lights ? objects.light_count() : 0u;
-  // Next-event estimation draws the lamps, the table's first entries (check_sampling bounded them).
+  // Next-event estimation draws the lamps through the light tree (any number): the count only says
+  // whether there are some.
   const bool nee = uses_nee(rs.sampling);
   if (nee) push.light_count = objects.lamp_count();
   push.strata = pixel_strata(rs, lights);

@@ -7,6 +7,7 @@
 #include <cstring>
 #include "bvh.h"
 #include "elapsed.h"
+#include "light_tree_builder.h"
 #include "packing.h"
 #include "scene_tree.h"
 #include "wide_bvh.h"
@@ -87,6 +88,8 @@ std::vector<array_entry> arrays_of(const gpu_scene::host_arrays& a) {
             "the environment map's upload copy", a.environment_texels),
       entry(RTVK_BINDING_ENVIRONMENT_CDF, r::appearance, "the environment map's sampling table",
             "the environment table's upload copy", a.environment_table),
+      entry(RTVK_BINDING_LIGHT_TREE, r::appearance, "the light tree",
+            "the light tree's upload copy", a.light_nodes),
   };
 }
 
@@ -150,7 +153,14 @@ gpu_scene::host_arrays gpu_scene::build(const scene& s, bool use_bvh) {
   a.textures = to_gpu_textures(s, a.texels);
   a.perlin = {to_gpu_perlin(make_perlin(s.noise_seed))};
   a.media = to_gpu_media(s);
-  a.lights = to_gpu_lights(scene_lights(s));
+  // Lights sampling aims at scene_lights; next-event estimation draws their lamps and those
+  // inside groups, appended (the books' scenes have none: their array is what it was).
+  std::vector<light_record> lights = scene_lights(s);
+  const std::vector<light_record> placed_lamps = group_lamps(s);
+  lights.insert(lights.end(), placed_lamps.begin(), placed_lamps.end());
+  a.lights = to_gpu_lights(lights);
+  a.group_lamps = std::uint32_t(placed_lamps.size());
+  a.light_nodes = build_light_tree(lights, s.motion);
   a.pbr = to_gpu_pbrs(s);
   if (!a.pbr.empty()) a.bsdf_tables.assign(std::begin(bsdf_table_data), std::end(bsdf_table_data));
   a.punctual = to_gpu_punctuals(s);
@@ -171,7 +181,7 @@ gpu_scene::gpu_scene(const gpu_context& ctx, const host_arrays& a)
       own_(a.own),
       instance_count_(std::uint32_t(a.instances.size())),
       medium_count_(std::uint32_t(a.media.size())),
-      light_count_(std::uint32_t(a.lights.size())),
+      light_count_(std::uint32_t(a.lights.size()) - a.group_lamps),
       lamp_count_(std::uint32_t(
           std::count_if(a.lights.begin(), a.lights.end(),
                         [](const gpu_light& l) { return (l.flags & RTVK_LIGHT_EMITS) != 0u; }))),

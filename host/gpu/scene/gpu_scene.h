@@ -47,9 +47,13 @@ class gpu_scene {
     std::vector<std::uint32_t> texels;  // the images', one after another
     std::vector<gpu_perlin> perlin;     // one: the noise's tables
     std::vector<gpu_medium> media;      // in scene order
-    std::vector<gpu_light> lights;      // scene_lights, what lights sampling aims at
-    std::vector<gpu_pbr> pbr;           // the PBR materials' parameters (gpu_material::pbr)
-    std::vector<float> bsdf_tables;     // pbr.h's tables (bsdf_tables.h), where `pbr` is not empty
+    // scene_lights, what lights sampling aims at, then group_lamps (next-event estimation's only)
+    std::vector<gpu_light> lights;
+    std::uint32_t group_lamps = 0;  // the last entries of `lights` that are group_lamps
+    // next-event estimation's light tree over the lamps of `lights` (build_light_tree)
+    std::vector<gpu_light_node> light_nodes;
+    std::vector<gpu_pbr> pbr;        // the PBR materials' parameters (gpu_material::pbr)
+    std::vector<float> bsdf_tables;  // pbr.h's tables (bsdf_tables.h), where `pbr` is not empty
     // The punctual lights (punctual.h), each with their count; one unused element (count 0)
     // when the scene has none.
     std::vector<gpu_punctual> punctual;
@@ -98,8 +102,8 @@ class gpu_scene {
   kind_counts own_;                    // of them, the scene's own
   std::uint32_t instance_count_;       // instances
   std::uint32_t medium_count_;         // media
-  std::uint32_t light_count_;          // lights
-  std::uint32_t lamp_count_;           // of those, lamps (first)
+  std::uint32_t light_count_;          // lights sampling aims at (scene_lights)
+  std::uint32_t lamp_count_;           // lamps next-event estimation draws (the groups' too)
   bool with_uv_;                       // RTVK_SPEC_UV
   bool any_textures_;                  // RTVK_SPEC_TEXTURES
   bool any_pbr_;                       // RTVK_SPEC_PBR

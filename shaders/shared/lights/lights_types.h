@@ -38,6 +38,37 @@ static_assert(offsetof(gpu_punctual, cone_gap) == 48);
 static_assert(offsetof(gpu_punctual, count) == 52);
 static_assert(sizeof(gpu_punctual) == 64);
 #endif
+
+// std430 array element: one node of the light tree, 64 bytes (light_tree.h descends it; host/
+// scene/light_tree.cpp builds it over the lamps next-event estimation draws). Node 0 is the root;
+// an interior node's first child is the next node, its second `second`. Each node bounds the
+// lamps under it: where they are, which way they emit (a cone of normals widened by how far
+// past them the light leaves), and their power. The array holds one unused element (power 0) when
+// no lamp can be drawn.
+struct gpu_light_node {
+  vec3 lo;      // the lamps' bounding box, low corner (scene units)
+  float power;  // their summed power (lamp_power's units); 0: nothing to draw
+  vec3 hi;      // the box's high corner
+  float cos_o;  // cos theta_o: the cone about `axis` holding every lamp's normal; -1: all ways
+  vec3 axis;    // the cone's unit axis
+  float cos_e;  // cos theta_e: how far past its normal a lamp's light leaves (0: a half space)
+  uint second;  // interior: the second child's index; leaf: the trail (bit d: the second child
+                // was taken at depth d)
+  uint lamp;    // leaf: the lamp's index in the light table
+  uint leaf;    // 1: a leaf (one lamp); 0: interior
+  uint pad0;    // unused
+};
+#ifdef __cplusplus
+static_assert(offsetof(gpu_light_node, power) == 12);
+static_assert(offsetof(gpu_light_node, hi) == 16);
+static_assert(offsetof(gpu_light_node, cos_o) == 28);
+static_assert(offsetof(gpu_light_node, axis) == 32);
+static_assert(offsetof(gpu_light_node, cos_e) == 44);
+static_assert(offsetof(gpu_light_node, second) == 48);
+static_assert(offsetof(gpu_light_node, lamp) == 52);
+static_assert(offsetof(gpu_light_node, leaf) == 56);
+static_assert(sizeof(gpu_light_node) == 64);
+#endif
 RTVK_GPU_TYPES_END
 
 #endif  // RTVK_LIGHTS_TYPES_H

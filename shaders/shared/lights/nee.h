@@ -10,10 +10,11 @@
 // directional, suns) and its environment map (environment.h, by its own importance sampler),
 // each kind present drawn alike (a third each where all are); among the punctual lights, each
 // alike. The lamps are pdf.h's records with RTVK_LIGHT_EMITS (the first
-// LIGHT_COUNT of the table in this mode), each chosen in proportion to its power through an alias
-// table (gpu_light::pmf, alias_q, alias; host/scene/light_sources.cpp builds it). A lamp whose
-// emission varies over it (RTVK_LIGHT_UNEVEN) is never drawn: its light comes whole from the paths
-// that hit it.
+// LIGHT_COUNT of the table in this mode), each chosen through the light tree (light_tree.h;
+// host/scene/ light_tree.cpp builds it) by its importance seen from the vertex: its power, distance
+// and orientation, in the tree's depth of steps whatever the number of lamps. A lamp whose emission
+// varies over it (RTVK_LIGHT_UNEVEN) is never drawn: its light comes whole from the paths that hit
+// it.
 //
 // The shadow ray is not traced here: the step leaves it in the path state (path_state::shadow) and
 // each backend traces it before the path goes on (host/cpu/shading.cpp at once; the GPU in a trip
@@ -23,6 +24,7 @@
 #include "environment.h"
 #include "kernel_lang.h"
 #include "light_sample.h"
+#include "light_tree.h"
 #include "pdf.h"
 #include "punctual.h"
 #include "ray_color.h"
@@ -74,24 +76,6 @@ inline precise real power_heuristic(real a, real b) {
   return sum > real(0.0) ? a2 / sum : real(0.0);
 }
 
-// Where a ray from `origin` along the unit direction `d` meets lamp l, or -1 where it misses it
-// (at the ray's `time`: a sphere's center moves).
-inline precise real lamp_distance(light_record l, real3 origin, real3 d, real time) {
-  if (l.kind == uint(RTVK_LIGHT_SPHERE)) {
-    precise real3 oc = moved_center(l.a, l.u, time) - origin;
-    precise real b = dot3(d, oc);
-    precise real disc = b * b - (dot3(oc, oc) - l.radius * l.radius);
-    if (disc < real(0.0)) return real(-1.0);
-    precise real root = sqrt(disc);
-    precise real near = b - root;
-    precise real far = b + root;
-    return near > real(0.0) ? near : far;
-  }
-  precise real facing = dot3(d, l.normal);
-  if (facing == real(0.0)) return real(-1.0);
-  return dot3(l.a - origin, l.normal) / facing;
-}
-
 // Lamp l seen from `origin`: a point drawn on it (pdf.h's light_random, the book's samplers),
 // with its density per steradian and the radiance it sends toward origin (none from a one-sided
 // lamp's back, none from an uneven lamp).
@@ -122,14 +106,27 @@ inline precise real3 nee_kinds(NEE_PARAM_ONLY) {
   return real3(lamps, punctual, environment) / n;
 }
 
-// A light drawn for the vertex at `origin` from stream s (Owen-scrambled Sobol numbers): its kind,
-// then a lamp by the alias table
-// or a punctual light alike (one number: the kind by where it falls, the rest scaled back to
-// [0, 1) for the choice within), then a point or direction on it (two numbers; the environment's
-// by its sampler); choice: the probability of having drawn that light. No sample (pdf 0) without
-// lights to draw.
-inline light_sample nee_draw(NEE_PARAM real3 origin, real time, random_stream s,
-                             precise OUT(real) choice) {
+// The lamp drawn by one uniform number u in [0, 1) for the vertex at `origin` with normal n (zero:
+// a medium's): through the light tree where the table has one (light_tree.h: by each lamp's
+// importance seen from there), else by the alias table (gpu_light::pmf, alias_q, alias: by power
+// alone). Its probability in `pmf`; 0 where none can be drawn.
+inline uint nee_lamp_pick(LIGHTS_PARAM real3 origin, real3 n, real u, precise OUT(real) pmf) {
+  if (LIGHT_TREE_PRESENT) return light_tree_draw(LIGHTS origin, n, u, pmf);
+  precise real pick = u * real(LIGHT_COUNT);
+  uint k = min(uint(pick), LIGHT_COUNT - 1u);
+  precise real within = pick - real(k);
+  if (!(within < LIGHT_AT(k).alias_q)) k = LIGHT_AT(k).alias;
+  pmf = LIGHT_AT(k).pmf;
+  return k;
+}
+
+// A light drawn for the vertex at `origin` (unit normal n; zero in a medium) from stream s
+// (Owen-scrambled Sobol numbers): its kind, then a lamp (nee_lamp_pick) or a punctual light alike
+// (one number: the kind by where it falls, the rest scaled back to [0, 1) for the choice within),
+// then a point or direction on it (two numbers; the environment's by its sampler); choice: the
+// probability of having drawn that light. No sample (pdf 0) without lights to draw.
+inline light_sample nee_draw_at(NEE_PARAM real3 origin, real3 n, real time, random_stream s,
+                                precise OUT(real) choice) {
   choice = real(0.0);
   precise real3 kinds = nee_kinds(NEE_LIGHTS_ONLY);
   // Low-discrepancy numbers (sobol.h): the pick in one dimension, the point on the light a pair
@@ -139,11 +136,9 @@ inline light_sample nee_draw(NEE_PARAM real3 origin, real time, random_stream s,
   real a = ab.x;
   real b = ab.y;
   if (u < kinds.x) {
-    precise real pick = (u / kinds.x) * real(LIGHT_COUNT);
-    uint k = min(uint(pick), LIGHT_COUNT - 1u);
-    precise real within = pick - real(k);
-    if (!(within < LIGHT_AT(k).alias_q)) k = LIGHT_AT(k).alias;
-    choice = kinds.x * LIGHT_AT(k).pmf;
+    precise real pmf;
+    uint k = nee_lamp_pick(LIGHTS origin, n, min(u / kinds.x, real(0.99999994)), pmf);
+    choice = kinds.x * pmf;
     if (!(choice > real(0.0))) return no_light_sample();
     return lamp_sample(LIGHT_AT(k), origin, time, a, b);
   }
@@ -157,6 +152,12 @@ inline light_sample nee_draw(NEE_PARAM real3 origin, real time, random_stream s,
   if (!(kinds.z > real(0.0))) return no_light_sample();
   choice = kinds.z;
   return environment_sample(ENV real2(a, b));
+}
+
+// nee_draw_at without a normal: every lamp's importance as from a point in a medium.
+inline light_sample nee_draw(NEE_PARAM real3 origin, real time, random_stream s,
+                             precise OUT(real) choice) {
+  return nee_draw_at(NEE_LIGHTS origin, real3(0.0), time, s, choice);
 }
 
 // The density (per steradian, times the lamp's pmf) with which nee_draw at `origin` would have
@@ -174,6 +175,21 @@ inline precise real nee_lamp_pdf(LIGHTS_PARAM real3 origin, real3 d, real time, 
     return light_pdf(l, origin, d, time) * l.pmf;
   }
   return real(0.0);
+}
+
+// The density with which nee_draw_at at `at` (normal n) would have drawn the point that the ray
+// from `origin` along unit direction d hit at distance t_hit (origin: where the path left the
+// vertex, a hair from `at`): the tree's probability of the lamp lying there (light_tree_find,
+// then its trail) times that lamp's density per steradian; without a tree, nee_lamp_pdf's.
+inline precise real nee_lamp_pdf_at(LIGHTS_PARAM real3 at, real3 n, real3 origin, real3 d,
+                                    real time, real t_hit) {
+  if (!LIGHT_TREE_PRESENT) return nee_lamp_pdf(LIGHTS origin, d, time, t_hit);
+  uint leaf;
+  if (!light_tree_find(LIGHTS origin, d, time, t_hit, leaf)) return real(0.0);
+  light_node nd = LIGHT_NODE(leaf);
+  precise real pmf = light_tree_trail_pmf(LIGHTS at, n, nd.second);
+  if (!(pmf > real(0.0))) return real(0.0);
+  return light_pdf(LIGHT_AT(nd.lamp), origin, d, time) * pmf;
 }
 
 // The light sample ls (chosen with probability `choice`) weighed by the BSDF at the vertex: f is
@@ -204,7 +220,8 @@ inline precise real nee_hit_weight(NEE_PARAM path_state p, real3 point) {
   precise real3 d = unit_vector(p.r.direction);
   precise real distance = length3(point - p.mis_origin);
   precise real lamps = nee_kinds(NEE_LIGHTS_ONLY).x;
-  precise real light = lamps * nee_lamp_pdf(LIGHTS p.mis_origin, d, p.r.time, distance);
+  precise real light =
+      lamps * nee_lamp_pdf_at(LIGHTS p.mis_at, p.mis_normal, p.mis_origin, d, p.r.time, distance);
   return power_heuristic(p.mis_pdf, light);
 }
 
@@ -278,7 +295,8 @@ inline bool path_hit_nee(NEE_PARAM precise INOUT(path_state) p, hit_record rec, 
     bool isotropic = type == RTVK_MATERIAL_ISOTROPIC;
     precise real3 origin = isotropic ? rec.p : rec.p + rec.offset * rec.normal;
     precise real choice;
-    light_sample ls = nee_draw(NEE_LIGHTS origin, p.r.time, s, choice);
+    precise real3 normal = isotropic ? real3(0.0) : rec.normal;
+    light_sample ls = nee_draw_at(NEE_LIGHTS origin, normal, p.r.time, s, choice);
     precise real bsdf_pdf = material_pdf(type, rec.normal, ls.wi);
     precise real3 f = albedo * bsdf_pdf;  // albedo / pi times the cosine, or albedo / 4 pi
     nee_queue(p, isotropic ? rec.p : scatter_origin(rec, ls.wi), ls, choice, f, bsdf_pdf);
@@ -289,6 +307,8 @@ inline bool path_hit_nee(NEE_PARAM precise INOUT(path_state) p, hit_record rec, 
     }
     p.mis_pdf = material_pdf(type, rec.normal, p.r.direction);
     p.mis_origin = p.r.origin;
+    p.mis_at = origin;
+    p.mis_normal = normal;
     p.throughput *= attenuation;
     ++p.depth;
   }

@@ -31,7 +31,7 @@ inline bool path_hit_pbr_nee(NEE_PARAM precise INOUT(path_state) p, hit_record r
   random_stream s = at_bounce(p.s, p.depth + 1u);
   precise real3 origin = rec.p + rec.offset * rec.normal;
   precise real choice;
-  light_sample ls = nee_draw(NEE_LIGHTS origin, p.r.time, s, choice);
+  light_sample ls = nee_draw_at(NEE_LIGHTS origin, rec.normal, p.r.time, s, choice);
   precise real3 u =
       real3(real(rnd(s, dim_pbr_lobe)), real(rnd(s, dim_pbr_a)), real(rnd(s, dim_pbr_b)));
   precise real3 wi;
@@ -67,6 +67,8 @@ inline bool path_hit_pbr_nee(NEE_PARAM precise INOUT(path_state) p, hit_record r
   p.mis_pdf = delta ? real(0.0) : pdf_bsdf;
   p.r = ray(scatter_origin(rec, direction), direction, p.r.time);
   p.mis_origin = p.r.origin;
+  p.mis_at = origin;
+  p.mis_normal = rec.normal;
   p.throughput *= weight;
   ++p.depth;
   if (!nee_roulette(p, s)) nee_end(p);

@@ -96,6 +96,24 @@ std::vector<pbr_probe_entry> run_pbr_probe(gpu_context& ctx, std::vector<pbr_pro
   return entries;
 }
 
+std::vector<light_tree_probe_entry> run_light_tree_probe(
+    gpu_context& ctx, const std::vector<gpu_light>& lamps, const std::vector<gpu_light_node>& nodes,
+    std::vector<light_tree_probe_entry> entries) {
+  gpu_buffer l(ctx, lamps.size() * sizeof(gpu_light), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+               memory_use::upload);
+  l.write(lamps.data(), lamps.size() * sizeof(gpu_light));
+  gpu_buffer n(ctx, nodes.size() * sizeof(gpu_light_node), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+               memory_use::upload);
+  n.write(nodes.data(), nodes.size() * sizeof(gpu_light_node));
+  const buffer_binding more[] = {
+      {RTVK_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, l.get()},
+      {RTVK_BINDING_LIGHT_TREE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, n.get()}};
+  run_in_place(ctx, light_tree_probe_shader(), entries.data(),
+               entries.size() * sizeof(light_tree_probe_entry),
+               std::uint32_t((entries.size() + 63) / 64), nullptr, nullptr, more);
+  return entries;
+}
+
 std::vector<punctual_probe_entry> run_punctual_probe(gpu_context& ctx,
                                                      const std::vector<gpu_punctual>& lights,
                                                      std::vector<punctual_probe_entry> entries) {

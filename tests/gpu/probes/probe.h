@@ -47,6 +47,13 @@ std::vector<environment_probe_entry> run_environment_probe(
     gpu_context& ctx, const std::vector<std::uint32_t>& texels, const std::vector<float>& table,
     std::vector<environment_probe_entry> entries);
 
+// Runs light_tree_probe.comp over `lamps` and `nodes` (at RTVK_BINDING_LIGHTS and
+// RTVK_BINDING_LIGHT_TREE, as gpu_scene binds them): fills the outputs of each entry with
+// light_tree.h's answers (run_light_tree_probe in light_tree_probe.h).
+std::vector<light_tree_probe_entry> run_light_tree_probe(
+    gpu_context& ctx, const std::vector<gpu_light>& lamps, const std::vector<gpu_light_node>& nodes,
+    std::vector<light_tree_probe_entry> entries);
+
 // Runs punctual_probe.comp over `lights` (at RTVK_BINDING_PUNCTUAL, as gpu_scene binds them):
 // fills the outputs of each entry with punctual.h's answers (run_punctual_probe in
 // punctual_probe.h).

@@ -7,6 +7,7 @@
 #include "hit_probe_spv.h"
 #include "kernel_probe_spv.h"
 #include "light_probe_spv.h"
+#include "light_tree_probe_spv.h"
 #include "pbr_probe_spv.h"
 #include "probe_spv.h"
 #include "punctual_probe_spv.h"
@@ -36,6 +37,9 @@ std::span<const std::uint32_t> light_probe_shader() {
 }
 std::span<const std::uint32_t> pbr_probe_shader() {
   return pbr_probe_spv;
+}
+std::span<const std::uint32_t> light_tree_probe_shader() {
+  return light_tree_probe_spv;
 }
 std::span<const std::uint32_t> punctual_probe_shader() {
   return punctual_probe_spv;

@@ -13,6 +13,7 @@ std::span<const std::uint32_t> world_probe_shader();        // world_probe.comp
 std::span<const std::uint32_t> kernel_probe_shader();       // kernel_probe.comp
 std::span<const std::uint32_t> light_probe_shader();        // light_probe.comp
 std::span<const std::uint32_t> pbr_probe_shader();          // pbr_probe.comp
+std::span<const std::uint32_t> light_tree_probe_shader();   // light_tree_probe.comp
 std::span<const std::uint32_t> punctual_probe_shader();     // punctual_probe.comp
 std::span<const std::uint32_t> environment_probe_shader();  // environment_probe.comp
 std::span<const std::uint32_t> sobol_probe_shader();        // sobol_probe.comp

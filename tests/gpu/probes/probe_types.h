@@ -305,6 +305,34 @@ static_assert(offsetof(punctual_probe_entry, sun_radiance) == 80);
 static_assert(sizeof(punctual_probe_entry) == 96);
 #endif
 
+// std430 array element for light_tree_probe.comp (light_tree_probe.h): a shading point, its
+// normal and a uniform number for light_tree_draw, and a ray (from p along d to t_hit) for the
+// point query; the lamp drawn with its probability, and the leaf found with its trail's.
+struct light_tree_probe_entry {
+  vec3 p;          // in: the shading point
+  float u;         // in: light_tree_draw's number in [0, 1)
+  vec3 n;          // in: its unit normal, or zero
+  float t_hit;     // in: where the ray along d hit a lamp
+  vec3 d;          // in: the ray's unit direction from p
+  uint lamp;       // out: the lamp drawn
+  float pmf;       // out: its probability
+  uint found;      // out: 1 where light_tree_find found a leaf
+  uint leaf;       // out: that leaf
+  float leaf_pmf;  // out: light_tree_trail_pmf of its trail from (p, n)
+};
+#ifdef __cplusplus
+static_assert(offsetof(light_tree_probe_entry, u) == 12);
+static_assert(offsetof(light_tree_probe_entry, n) == 16);
+static_assert(offsetof(light_tree_probe_entry, t_hit) == 28);
+static_assert(offsetof(light_tree_probe_entry, d) == 32);
+static_assert(offsetof(light_tree_probe_entry, lamp) == 44);
+static_assert(offsetof(light_tree_probe_entry, pmf) == 48);
+static_assert(offsetof(light_tree_probe_entry, found) == 52);
+static_assert(offsetof(light_tree_probe_entry, leaf) == 56);
+static_assert(offsetof(light_tree_probe_entry, leaf_pmf) == 60);
+static_assert(sizeof(light_tree_probe_entry) == 64);
+#endif
+
 // std430 array element for environment_probe.comp (environment_probe.h): a query direction and
 // two uniform numbers in; environment.h's radiance and density of the query, and its sample from
 // the numbers with the density of its direction, out.
