@@ -76,7 +76,7 @@ path_state pixel_path(camera_ubo cam, uvec2 pixel, uint j, uint sample_index) {
   // Strata come with lights sampling only (pixel_strata): plain pipelines compile them out.
   ray r = sample_ray(cam, cam.image_width, cam.image_height, pixel.x, j, s, jitter, any_lens,
                      sample_lights ? pc.strata : 1u, sample_index);
-  return start_path(r, s);
+  return start_path(r, s, pc.max_depth);
 }
 
 // Adds x, a 96-bit integer as (low, high, top) words, to a channel's sum: (low, high) and top.

@@ -56,7 +56,7 @@ color ray_color_nee(const ray& r_in, const hittable& world, const scene_shading&
                        shading.environment ? shading.environment->view() : environment_table{}};
   const punctual_table& punctual = nee.punctual;
   const environment_table& env = nee.environment;
-  path_state p = start_path(r_in, rnd);
+  path_state p = start_path(r_in, rnd, uint(max_depth));
   while (!path_ends_unlit(p, uint(max_depth))) {
     hit_record rec{};
     bool hit = world.hit(p.r, t_min, infinity, rec);

@@ -42,7 +42,7 @@ color ray_color(const ray& r_in, const hittable& world, const scene_shading& sha
   const double infinity = std::numeric_limits<double>::infinity();
   const texture_tables tables = shading.tables();
   const light_table lights = shading.light_list();
-  path_state p = start_path(r_in, rnd);
+  path_state p = start_path(r_in, rnd, uint(max_depth));
   while (!path_ends_unlit(p, uint(max_depth))) {
     hit_record rec{};
     bool hit = world.hit(p.r, t_min, infinity, rec);

@@ -33,6 +33,7 @@ struct path_state {
   precise real3 throughput;  // product of the attenuations so far
   precise real3 radiance;    // light gathered so far from emissive surfaces along the path
   uint depth;                // bounces so far
+  uint max_depth;            // the rays it may trace (the render's bounce limit)
   uint passes;               // surfaces passed through so far (path_passes)
   random_stream s;           // the path's random numbers (pixel, sample)
   // Next-event estimation's (lights/nee.h; unused in the other modes):
@@ -48,12 +49,13 @@ struct path_state {
   uint shadow_passes;             // see-through surfaces the shadow ray passed so far
 };
 
-inline path_state start_path(ray r, random_stream s) {
+inline path_state start_path(ray r, random_stream s, uint max_depth) {
   path_state p;
   p.r = r;
   p.throughput = real3(1.0);
   p.radiance = real3(0.0);
   p.depth = 0u;
+  p.max_depth = max_depth;
   p.passes = 0u;
   p.s = s;
   p.mis_pdf = real(0.0);

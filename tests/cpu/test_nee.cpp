@@ -280,5 +280,26 @@ TEST(NeeUnbiased, TheSmokyCornellBoxConvergesToTheMixturesImage) {
         << nee.mean[c] << " +- " << nee.error[c];
 }
 
+// The bounce limit cuts every mode alike: a path's last vertex, whose BSDF ray is never traced,
+// draws no light sample either (its weight against that untraced ray would leave out the BSDF's
+// share of the light), so at depths 2 and 3 the Cornell box under `nee` equals the mixture's
+// image within 4 standard errors, as at depth 50. Measured before the rule: 12% to 17% brighter
+// than the mixture at depth 2 (many standard errors).
+TEST(NeeUnbiased, TheLastVertexCountsAsInTheOtherModesAtEveryDepth) {
+  for (int depth : {2, 3}) {
+    scene s = test::small_scene("cornell-box", 12, 32);
+    s.render.spp = 32;
+    s.render.max_depth = depth;
+    s.render.sampling = sampling_mode::lights;
+    const estimate lights = over_seeds(s, 16);
+    s.render.sampling = sampling_mode::nee;
+    const estimate nee = over_seeds(s, 16);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(nee.mean[c], lights.mean[c], 4 * std::hypot(nee.error[c], lights.error[c]))
+          << "depth " << depth << ", channel " << c << ": lights " << lights.mean[c] << " +- "
+          << lights.error[c] << ", nee " << nee.mean[c] << " +- " << nee.error[c];
+  }
+}
+
 }  // namespace
 }  // namespace rtvk

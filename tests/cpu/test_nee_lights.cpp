@@ -26,7 +26,7 @@ scene floor_scene(double albedo) {
   s.render.width = 9;
   s.render.aspect = 1;
   s.render.spp = 1;
-  s.render.max_depth = 1;
+  s.render.max_depth = 2;  // the floor's light sample; its BSDF ray meets the black sky
   s.render.sampling = sampling_mode::nee;
   s.sky = {color(0), color(0)};
   s.materials = {{"floor", {material_type::lambertian, color(albedo), 0, 1.5}}};

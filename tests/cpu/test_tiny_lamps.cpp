@@ -19,10 +19,8 @@ const double pi_lamps = 3.14159265358979323846;
 // 120-degree view (the floor within 0.87 of the axis), in the dark: each pixel is the floor's
 // direct light (nothing else reflects). The camera stands under the lamp so that no camera ray
 // meets it (a sample that saw a lamp of radiance I / (pi r^2) would not vanish as r shrinks).
-// Depth 2, not 1: at a path's last vertex next-event estimation weighs its light sample against a
-// BSDF sample that is never traced, so at depth 1 a sphere lamp of radius 0.2 came out 0.07%
-// (21 standard errors) below the point light, while at depth 2 it agreed within one (0.05 and
-// 0.01 agreed at both depths: the BSDF's share of a small lamp's light is small).
+// Depth 2: the floor's vertex takes its light sample and its BSDF ray is traced (a path's last
+// vertex takes none: NeeUnbiased.TheLastVertexCountsAsInTheOtherModesAtEveryDepth).
 scene lamp_floor() {
   scene s;
   s.name = "lamp floor";

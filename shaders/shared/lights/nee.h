@@ -199,6 +199,10 @@ inline precise real nee_lamp_pdf_at(LIGHTS_PARAM real3 at, real3 n, real3 origin
 inline void nee_queue(precise INOUT(path_state) p, real3 origin, light_sample ls, real choice,
                       real3 f, real bsdf_pdf) {
   if (!(ls.pdf > real(0.0)) || !(choice > real(0.0))) return;
+  // The path's last vertex (its BSDF ray will not be traced) takes no light sample: the bounce
+  // limit cuts the light it gathers as the other modes' paths are cut, and a light sample weighed
+  // against a BSDF ray never traced would leave out that ray's share.
+  if (p.depth + 1u >= p.max_depth) return;
   precise real light_pdf_ = choice * ls.pdf;
   precise real w = ls.delta ? real(1.0) : power_heuristic(light_pdf_, bsdf_pdf);
   precise real3 add = p.throughput * f * ls.radiance * (w / light_pdf_);
