@@ -15,6 +15,7 @@
 #include "nee.h"
 #include "render_cpu.h"
 #include "render_helpers.h"
+#include "seed_estimates.h"
 
 namespace rtvk {
 namespace {
@@ -121,28 +122,9 @@ TEST(LightTree, DrawsFollowTheProbabilitiesByChiSquare) {
   EXPECT_LT(chi2, df + 5 * std::sqrt(2.0 * df)) << "df " << df;
 }
 
-// Each channel's image mean and its standard error over `runs` seeds (as NeeUnbiased measures).
-struct estimate {
-  color mean{0};
-  color error{0};
-};
-
-estimate over_seeds(scene s, int runs) {
-  const camera cam = test::scene_camera(s);
-  std::vector<color> means;
-  for (int k = 0; k < runs; ++k) {
-    s.render.seed = std::uint32_t(3000 + k);
-    const framebuffer fb = render_cpu(cam, s, s.render);
-    color m(0);
-    for (int y = 0; y < fb.height(); ++y)
-      for (int x = 0; x < fb.width(); ++x) m += fb.at(x, y);
-    means.push_back(m / double(fb.width() * fb.height()));
-  }
-  estimate out;
-  for (const color& m : means) out.mean += m / double(runs);
-  for (const color& m : means) out.error += (m - out.mean) * (m - out.mean);
-  for (int c = 0; c < 3; ++c) out.error[c] = std::sqrt(out.error[c] / (runs - 1) / runs);
-  return out;
+using estimate = test::seed_estimate;
+estimate over_seeds(const scene& s, int runs) {
+  return test::over_seeds(s, runs, 3000);
 }
 
 void expect_same_mean(scene s, int plain_spp, int nee_spp) {

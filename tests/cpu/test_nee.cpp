@@ -14,6 +14,7 @@
 #include "pbr_scenes.h"
 #include "render_cpu.h"
 #include "render_helpers.h"
+#include "seed_estimates.h"
 
 namespace rtvk {
 namespace {
@@ -156,39 +157,9 @@ scene cornell(int width, int spp, sampling_mode m) {
   return s;
 }
 
-// Each channel's image mean and its standard error over `runs` seeds, and the root-mean-square
-// difference of one seed's image from `reference` (when given): the error a render carries.
-struct estimate {
-  color mean{0};
-  color error{0};
-  double rms = 0;
-};
-
-estimate over_seeds(scene s, int runs, const framebuffer* reference = nullptr) {
-  const camera cam = test::scene_camera(s);
-  std::vector<color> means;
-  double squares = 0;
-  for (int k = 0; k < runs; ++k) {
-    s.render.seed = std::uint32_t(2000 + k);
-    const framebuffer fb = render_cpu(cam, s, s.render);
-    color m(0);
-    for (int y = 0; y < fb.height(); ++y)
-      for (int x = 0; x < fb.width(); ++x) {
-        m += fb.at(x, y);
-        if (reference) {
-          const color d = fb.at(x, y) - reference->at(x, y);
-          squares += glm::dot(d, d) / 3;
-        }
-      }
-    means.push_back(m / double(fb.width() * fb.height()));
-  }
-  estimate out;
-  for (const color& m : means) out.mean += m / double(runs);
-  for (const color& m : means) out.error += (m - out.mean) * (m - out.mean);
-  for (int c = 0; c < 3; ++c) out.error[c] = std::sqrt(out.error[c] / (runs - 1) / runs);
-  const double pixels = double(cam.image_width()) * double(cam.image_height());
-  out.rms = std::sqrt(squares / (pixels * runs));
-  return out;
+using estimate = test::seed_estimate;
+estimate over_seeds(const scene& s, int runs, const framebuffer* reference = nullptr) {
+  return test::over_seeds(s, runs, 2000, reference);
 }
 
 // Unbiased, and better: the Cornell box's mean under next-event estimation equals the book's

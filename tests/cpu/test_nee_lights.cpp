@@ -8,6 +8,7 @@
 #include "environment_scenes.h"
 #include "render_cpu.h"
 #include "render_helpers.h"
+#include "seed_estimates.h"
 
 namespace rtvk {
 namespace {
@@ -93,28 +94,9 @@ TEST(NeeLights, AWhiteSphereInAUniformEnvironmentIsItsRadiance) {
 }
 
 // Each channel's image mean and its standard error over 24 seeds.
-struct estimate {
-  color mean{0};
-  color error{0};
-};
-
-estimate over_seeds(scene s) {
-  const int runs = 24;
-  const camera cam = test::scene_camera(s);
-  std::vector<color> means;
-  for (int k = 0; k < runs; ++k) {
-    s.render.seed = std::uint32_t(3000 + k);
-    const framebuffer fb = render_cpu(cam, s, s.render);
-    color m(0);
-    for (int y = 0; y < fb.height(); ++y)
-      for (int x = 0; x < fb.width(); ++x) m += fb.at(x, y);
-    means.push_back(m / double(fb.width() * fb.height()));
-  }
-  estimate out;
-  for (const color& m : means) out.mean += m / double(runs);
-  for (const color& m : means) out.error += (m - out.mean) * (m - out.mean);
-  for (int c = 0; c < 3; ++c) out.error[c] = std::sqrt(out.error[c] / (runs - 1) / runs);
-  return out;
+using estimate = test::seed_estimate;
+estimate over_seeds(const scene& s) {
+  return test::over_seeds(s, 24, 3000);
 }
 
 // Three spheres (diffuse, metal, glass) on a floor under a map with one bright texel (50 times
