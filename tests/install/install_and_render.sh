@@ -99,8 +99,8 @@ expect "bench compare devices merge render scene view" rtvk ""
 expect "--samples --sampling --scene --scene-root --seed --shutter --spp" rtvk render --s
 expect "--spp" rtvk render --scene seed --sp
 expect "auto both cpu gpu" rtvk render --backend ""
-expect "seed simple-light spheres:" rtvk render --scene s
-expect "a.json book-final bouncing-spheres checkered-spheres cornell-box cornell-smoke materials next-week-final perlin-spheres quads rest-of-life-final seed simple-light spheres:" rtvk bench --scene ""
+expect "seed showcase simple-light spheres:" rtvk render --scene s
+expect "a.json book-final bouncing-spheres checkered-spheres cornell-box cornell-smoke materials next-week-final perlin-spheres quads rest-of-life-final seed showcase simple-light spheres:" rtvk bench --scene ""
 expect "b.png d.ppm" rtvk compare ""
 expect "c.exr" rtvk merge -q ""
 expect "dump" rtvk scene d

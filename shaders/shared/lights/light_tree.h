@@ -103,7 +103,8 @@ inline precise real light_tree_first(LIGHTS_PARAM uint k, real3 p, real3 n) {
   light_node second = LIGHT_NODE(LIGHT_NODE(k).second);
   precise real a = light_node_importance(first, p, n);
   precise real b = light_node_importance(second, p, n);
-  if (!(a + b > real(0.0))) {
+  precise real both = a + b;
+  if (!(both > real(0.0))) {
     a = real(first.power);
     b = real(second.power);
   }
@@ -133,8 +134,10 @@ inline uint light_tree_draw(LIGHTS_PARAM real3 p, real3 n, real u, precise OUT(r
       u = u / first;
       k = k + 1u;
     } else {
-      prob *= real(1.0) - first;
-      u = (u - first) / (real(1.0) - first);
+      precise real rest = real(1.0) - first;
+      precise real past = u - first;
+      prob *= rest;
+      u = past / rest;
       k = nd.second;
     }
     u = min(u, real(0.99999994));
@@ -212,7 +215,8 @@ inline bool light_tree_find(LIGHTS_PARAM real3 origin, real3 d, real time, real 
     if (!light_node_holds(nd, x, slack)) continue;
     if (nd.leaf != 0u) {
       precise real t = lamp_distance(LIGHT_AT(nd.lamp), origin, d, time);
-      if (!(abs(t - t_hit) > tolerance)) {
+      precise real off = t - t_hit;
+      if (!(abs(off) > tolerance)) {
         leaf = k;
         return true;
       }
