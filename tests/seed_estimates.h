@@ -1,8 +1,11 @@
 #pragma once
 // The statistics the unbiasedness tests compare modes by: an image's mean over renders at many
 // seeds, with its standard error, and how far one render's pixels lie from a reference.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "render_cpu.h"
@@ -44,6 +47,17 @@ inline seed_estimate over_seeds(scene s, int runs, std::uint32_t first_seed,
   const double pixels = double(cam.image_width()) * double(cam.image_height());
   out.rms = std::sqrt(squares / (pixels * runs));
   return out;
+}
+
+// Each channel of a's mean within 4 standard errors (of their difference) of b's: two estimators
+// of one image agree (with 16 or more seeds each, Student's t stays near the normal's 4 sigma).
+inline void expect_same_means(const seed_estimate& a, const std::string& a_name,
+                              const seed_estimate& b, const std::string& b_name,
+                              const std::string& where = "") {
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(a.mean[c], b.mean[c], 4 * std::hypot(a.error[c], b.error[c]))
+        << where << "channel " << c << ": " << b_name << " " << b.mean[c] << " +- " << b.error[c]
+        << ", " << a_name << " " << a.mean[c] << " +- " << a.error[c];
 }
 
 }  // namespace rtvk::test

@@ -196,10 +196,7 @@ TEST(NeeUnbiased, ThePbrGalleryConvergesToThePlainImage) {
   const estimate plain = over_seeds(s, 24);
   s.render.sampling = sampling_mode::nee;
   const estimate nee = over_seeds(s, 24);
-  for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(nee.mean[c], plain.mean[c], 4 * std::hypot(nee.error[c], plain.error[c]))
-        << "channel " << c << ": plain " << plain.mean[c] << " +- " << plain.error[c] << ", nee "
-        << nee.mean[c] << " +- " << nee.error[c];
+  test::expect_same_means(nee, "nee", plain, "plain");
 }
 
 // Shadow rays pass what paths pass: a masked quad of alpha 0 between the lamp and the room, as wide
@@ -245,10 +242,7 @@ TEST(NeeUnbiased, TheSmokyCornellBoxConvergesToTheMixturesImage) {
   s.render.sampling = sampling_mode::nee;
   EXPECT_NO_THROW(check_sampling(s, s.render, "--sampling"));
   const estimate nee = over_seeds(s, 16);
-  for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(nee.mean[c], lights.mean[c], 4 * std::hypot(nee.error[c], lights.error[c]))
-        << "channel " << c << ": lights " << lights.mean[c] << " +- " << lights.error[c] << ", nee "
-        << nee.mean[c] << " +- " << nee.error[c];
+  test::expect_same_means(nee, "nee", lights, "lights");
 }
 
 // The bounce limit cuts every mode alike: a path's last vertex, whose BSDF ray is never traced,
@@ -265,10 +259,7 @@ TEST(NeeUnbiased, TheLastVertexCountsAsInTheOtherModesAtEveryDepth) {
     const estimate lights = over_seeds(s, 16);
     s.render.sampling = sampling_mode::nee;
     const estimate nee = over_seeds(s, 16);
-    for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(nee.mean[c], lights.mean[c], 4 * std::hypot(nee.error[c], lights.error[c]))
-          << "depth " << depth << ", channel " << c << ": lights " << lights.mean[c] << " +- "
-          << lights.error[c] << ", nee " << nee.mean[c] << " +- " << nee.error[c];
+    test::expect_same_means(nee, "nee", lights, "lights", "depth " + std::to_string(depth) + ", ");
   }
 }
 
