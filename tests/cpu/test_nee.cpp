@@ -140,7 +140,8 @@ TEST(NeeDensity, LampsAreDrawnInProportionToTheirPower) {
   for (int i = 0; i < n; ++i) {
     double choice = 0;
     const random_stream stream(hash32(std::uint32_t(i)), 1u, 0u, std::uint32_t(i), false);
-    nee_draw(table, punctual_table{}, environment_table{}, point3(0, 50, 0), 0, stream, choice);
+    nee_draw_at(table, punctual_table{}, environment_table{}, point3(0, 50, 0), vec3(0), 0, stream,
+                choice);
     for (std::size_t k = 0; k < 5; ++k)
       if (choice == lamps[k].pmf) ++drawn[k];
   }

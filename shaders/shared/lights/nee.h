@@ -95,7 +95,7 @@ inline light_sample lamp_sample(light_record l, real3 origin, real time, real r1
   return ls;
 }
 
-// The probabilities that nee_draw draws from the lamps, the punctual lights and the environment:
+// The probabilities that nee_draw_at draws from the lamps, the punctual lights and the environment:
 // each kind present alike.
 inline precise real3 nee_kinds(NEE_PARAM_ONLY) {
   real lamps = LIGHT_COUNT > 0u ? real(1.0) : real(0.0);
@@ -154,13 +154,7 @@ inline light_sample nee_draw_at(NEE_PARAM real3 origin, real3 n, real time, rand
   return environment_sample(ENV real2(a, b));
 }
 
-// nee_draw_at without a normal: every lamp's importance as from a point in a medium.
-inline light_sample nee_draw(NEE_PARAM real3 origin, real time, random_stream s,
-                             precise OUT(real) choice) {
-  return nee_draw_at(NEE_LIGHTS origin, real3(0.0), time, s, choice);
-}
-
-// The density (per steradian, times the lamp's pmf) with which nee_draw at `origin` would have
+// The density (per steradian, times the lamp's pmf) with which nee_draw_at at `origin` would have
 // drawn the point that the ray along unit direction d hit at distance t_hit: that of the lamp
 // whose surface lies there (its own test of the ray agreeing within a thousandth), 0 where none
 // does (a lamp not drawn: uneven, in a group, or no lamp at all).
