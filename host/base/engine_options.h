@@ -9,11 +9,19 @@ namespace rtvk {
 // ray queries from that compute shader (rt-query) or a ray-tracing pipeline (rt-pipeline).
 enum class gpu_traversal { compute, ray_query, ray_pipeline };
 
-// How a backend does the work, as opposed to what it draws: none of this changes the image.
+// The CPU's two modes (--backend cpu and --backend reference): the double-precision reference,
+// the lesson's exact image and what the GPU is compared against; or the fast mode, the shared
+// kernels in float over the GPU's arrays with Embree finding the hits (host/fast), whose images
+// are the GPU's within the GPU's tolerances.
+enum class cpu_precision { reference, fast };
+
+// How a backend does the work, as opposed to what it draws: none of this changes the image, but
+// for the CPU's precision, which changes it by float's rounding.
 struct engine_options {
   bool use_bvh = true;  // false: test every sphere for every ray (--accel none)
-  gpu_traversal traversal = gpu_traversal::compute;  // the GPU's; the CPU always walks its BVH
-  int threads = 0;                                   // CPU worker threads; 0: one per core
+  gpu_traversal traversal = gpu_traversal::compute;    // the GPU's; the CPU always walks its BVH
+  int threads = 0;                                     // CPU worker threads; 0: one per core
+  cpu_precision precision = cpu_precision::reference;  // the CPU's mode
   bool count_rays = false;  // fill render_stats::rays (costs a little on the GPU)
   // Polled between passes (a CPU row, a GPU submission); when it returns true the render stops
   // and throws render_cancelled. Empty: never cancelled.

@@ -10,7 +10,9 @@
 
 #include "elapsed.h"
 #include "errors.h"
+#include "fast_render.h"
 #include "light_sources.h"
+#include "packing.h"
 #include "parallel.h"
 #include "random.h"
 #include "shading.h"
@@ -85,6 +87,34 @@ std::unique_ptr<hittable> timed_world(const scene& s, const engine_options& engi
   return world;
 }
 
+// The fast mode's render of the window (host/fast): the scene's arrays as the GPU gets them, and
+// the settings as its push constants hold them.
+framebuffer render_fast(const camera& cam, const scene& s, const render_settings& rs,
+                        const render_window& win, const progress_callback& progress,
+                        const engine_options& engine, render_stats* stats) {
+  const auto build_start = std::chrono::steady_clock::now();
+  const gpu::scene_arrays arrays = gpu::build_scene_arrays(s, false);  // Embree builds the trees
+  const double build_seconds = seconds_since(build_start);
+  fast_settings f;
+  f.camera = gpu::to_ubo(cam);
+  f.horizon = glm::vec3(s.sky.horizon);
+  f.zenith = glm::vec3(s.sky.zenith);
+  f.seed = rs.seed;
+  f.max_depth = std::uint32_t(rs.max_depth);
+  f.sample_lights = samples_lights(s, rs);
+  f.nee = uses_nee(rs.sampling);
+  f.strata = pixel_strata(rs, f.sample_lights);
+  f.jitter = rs.jitter;
+  f.motion_begin = float(s.motion.lo);
+  f.motion_end = float(s.motion.hi);
+  if (stats) *stats = {};
+  framebuffer fb = render_fast_window(
+      arrays, f, {win.x, win.y, win.width, win.height, win.sample_begin, win.sample_end}, progress,
+      engine, stats);
+  if (stats) stats->build_seconds += build_seconds;
+  return fb;
+}
+
 }  // namespace
 
 int worker_threads(int threads) {
@@ -104,6 +134,8 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
                               const engine_options& engine, render_stats* stats) {
   check_window(win, cam.image_width(), cam.image_height());
   check_motion_span(s.motion, scene_moves(s), cam);
+  if (engine.precision == cpu_precision::fast)
+    return render_fast(cam, s, rs, win, progress, engine, stats);
   double build_seconds = 0;
   const std::unique_ptr<hittable> world = timed_world(s, engine, build_seconds);
   const bool lights = samples_lights(s, rs);

@@ -45,7 +45,9 @@ TEST(Cli, RenderWritesTheLessonsImage) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(count_lines(r.err), 1) << r.err;  // the one summary line
     EXPECT_NE(r.err.find("cpu"), std::string::npos) << r.err;
-    EXPECT_EQ(test::slurp(out), lesson::render_seed_p3(aspect, width)) << aspect_flag;
+    // Compared as a whole: on a difference GoogleTest's line diff of two 100,000-line files would
+    // take more memory than a CI machine has.
+    EXPECT_TRUE(test::slurp(out) == lesson::render_seed_p3(aspect, width)) << aspect_flag;
   }
 }
 

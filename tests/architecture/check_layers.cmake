@@ -18,19 +18,21 @@ set(may_use_formats/gltf "formats/gltf;formats;formats/obj;formats/gltf_ext;scen
 set(may_use_formats/colmap "formats/colmap;camera;base;shared")
 set(may_use_formats/gltf_ext "formats/gltf_ext;scene;shapes;camera;base;shared")
 set(may_use_accel "accel;scene;shapes;camera;base;shared")
-set(may_use_cpu "cpu;accel;scene;shapes;camera;base;shared")
+set(may_use_packed "packed;accel;scene;shapes;camera;base;shared")
+set(may_use_fast "fast;packed;accel;scene;shapes;camera;base;shared")
+set(may_use_cpu "cpu;fast;packed;accel;scene;shapes;camera;base;shared")
 set(may_use_image "image;scene;shapes;camera;base;shared")
 set(may_use_gpu/vulkan "gpu/vulkan;base;shared")
 set(may_use_gpu/pipeline "gpu/pipeline;gpu/vulkan;base;shared")
-set(may_use_gpu/scene "gpu/scene;gpu/pipeline;gpu/vulkan;accel;scene;shapes;camera;base;shared")
+set(may_use_gpu/scene "gpu/scene;packed;gpu/pipeline;gpu/vulkan;accel;scene;shapes;camera;base;shared")
 set(gpu_layers "gpu/render;gpu/scene;gpu/pipeline;gpu/vulkan")
-set(may_use_gpu/render "${gpu_layers};accel;scene;shapes;camera;base;shared")
+set(may_use_gpu/render "${gpu_layers};packed;accel;scene;shapes;camera;base;shared")
 set(may_use_view "view;cpu;${gpu_layers};accel;scene;shapes;camera;base;shared")
 set(may_use_app/jobs "app/jobs;cpu;image;${gpu_layers};accel;formats;formats/calibration;formats/colmap;scene;shapes;camera;base;shared")
 set(may_use_app/commands
     "app/commands;app/jobs;view;cpu;image;${gpu_layers};accel;formats;formats/calibration;formats/colmap;scene;shapes;camera;base;shared")
 set(may_use_app "app;app/commands;app/jobs;image;base;shared")
-set(layers base camera shapes scene formats/obj formats/gltf_ext formats/calibration formats formats/gltf formats/colmap accel cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
+set(layers base camera shapes scene formats/obj formats/gltf_ext formats/calibration formats formats/gltf formats/colmap accel packed fast cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
            app/jobs app/commands app)
 
 # A new folder of sources must be given its place in the map above.

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+
+#include "errors.h"
 
 namespace rtvk {
 
@@ -77,6 +80,14 @@ bool aovs_agree(const std::vector<gpu::gpu_aov>& gpu, const std::vector<gpu::gpu
                "%.2g relative (allowed 1e-4)\n",
                label.c_str(), ok ? "alike" : "DIFFERENT", elsewhere, n, on_edges, worst);
   return ok;
+}
+
+unsigned aov_flag(const std::string& list) {
+  if (list.empty()) return 0;
+  const std::optional<unsigned> parsed = parse_aov_list(list);
+  if (!parsed)
+    throw usage_error("--aov " + list + ": expected a comma-separated list of " + aov_names());
+  return *parsed;
 }
 
 }  // namespace rtvk

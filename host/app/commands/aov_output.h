@@ -18,6 +18,9 @@ aov_image aov_from(const std::vector<gpu::gpu_aov>& found, const object_ids& ids
 // extension, then the AOV's name).
 std::string aov_path(const std::string& output, aov_bit which);
 
+// --aov's list as an aov_bit mask (0 where empty); throws usage_error naming the flag.
+unsigned aov_flag(const std::string& list);
+
 // --backend both: whether the device's AOVs are the CPU's -- the same object and material at
 // every pixel but on an edge of the CPU's id image (a pixel whose neighbor shows another object
 // or material: where a ray grazes two surfaces, float and double may pick either), the same

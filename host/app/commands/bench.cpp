@@ -18,6 +18,7 @@
 #include "interrupt.h"
 #include "light_sources.h"
 #include "pipeline_cache.h"
+#include "precision_flag.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "render_memory.h"
@@ -33,6 +34,7 @@ struct bench_options {
   std::string backend = "all";       // cpu, gpu or all
   int threads = 0;                   // CPU threads; 0: one per core
   std::string accel = "bvh";         // bvh, none, rt-query, rt-pipeline or auto
+  std::string precision = "auto";    // the CPU's mode: auto, fast, reference or both
   gpu_flags gpu;                     // --device, --validate, --gpu-timeout
   int repeat = 1;                    // timed runs per backend, after one warm-up
   std::string json;                  // write the records here too
@@ -46,7 +48,8 @@ struct bench_record {
   std::uint64_t rays = 0;
   std::uint64_t dropped = 0;  // samples with a NaN or infinite channel (added black)
   std::string sampling;       // plain, lights or nee
-  std::string accel;          // what found the hits: bvh, none, rt-query, rt-pipeline
+  std::string accel;          // what found the hits: bvh, none, rt-query, rt-pipeline, embree
+  std::string precision;      // CPU: fast or reference (--precision); the GPU's: float
   double seconds = 0;         // the whole render, BVH build included (CPU; the GPU builds it once)
   double build_seconds = 0;   // of which building the BVH
   double setup_seconds = -1;  // GPU: setting up the engine (limits, BVH, uploads), once a run
@@ -78,7 +81,7 @@ void print(const bench_record& r) {
       : r.sampling == "nee"  ? ", nee sampling"
                              : "",
       double(r.rays) / 1e6, r.seconds, setup, r.mrays_per_s(),
-      (r.device + ", accel " + r.accel).c_str(),
+      (r.device + ", accel " + r.accel + (r.backend == "cpu" ? ", " + r.precision : "")).c_str(),
       r.backend == "cpu" ? (", " + std::to_string(r.threads) + " threads").c_str() : "");
   if (r.dropped > 0)
     std::printf("     %llu samples were NaN or infinite and added black\n",
@@ -145,7 +148,8 @@ bench_record record_for(const scene& s, const camera& cam) {
 void bench_cpu(const bench_options& o, bench_record b, const camera& cam, const scene& s,
                const engine_options& engine, std::vector<bench_record>& records) {
   b.backend = "cpu";
-  b.accel = engine.use_bvh ? "bvh" : "none";
+  b.precision = engine.precision == cpu_precision::fast ? "fast" : "reference";
+  b.accel = engine.precision == cpu_precision::fast ? "embree" : engine.use_bvh ? "bvh" : "none";
   b.device = cpu_model();
   b.threads = worker_threads(o.threads);
   measure(
@@ -167,6 +171,7 @@ void bench_gpu(const bench_options& o, bench_record b, const camera& cam, const 
   }
   if (!ctx) return;
   b.backend = "gpu";
+  b.precision = "float";
   const auto& d = ctx->device();
   b.device = d.name + ", driver " + gpu::driver_string(d) +
              (g.validate ? ", validation layer on" : "");  // slower: the record says so
@@ -208,6 +213,7 @@ void write_json(const std::string& path, const std::vector<bench_record>& record
                    {"rays", r.rays},
                    {"sampling", r.sampling},
                    {"accel", r.accel},
+                   {"precision", r.precision},
                    {"dropped_samples", r.dropped},
                    {"seconds", r.seconds},
                    {"build_seconds", r.build_seconds},
@@ -240,7 +246,18 @@ int run_bench(bench_options& o) {
   const engine_options engine = engine_from(o);
   const bench_record base = record_for(s, cam);
   std::vector<bench_record> records;
-  if (o.backend == "cpu" || o.backend == "all") bench_cpu(o, base, cam, s, engine, records);
+  if (o.backend == "cpu" || o.backend == "all") {
+    // --precision both: the fast mode, then the reference, in the same run.
+    const std::vector<cpu_precision> modes =
+        o.precision == "both"
+            ? std::vector<cpu_precision>{cpu_precision::fast, cpu_precision::reference}
+            : std::vector<cpu_precision>{precision_for(o.precision, o.scene)};
+    for (const cpu_precision mode : modes) {
+      engine_options cpu = engine;
+      cpu.precision = mode;
+      bench_cpu(o, base, cam, s, cpu, records);
+    }
+  }
   if (o.backend == "gpu" || o.backend == "all") bench_gpu(o, base, cam, s, engine, records);
   if (!o.json.empty()) write_json(o.json, records);
   return 0;
@@ -265,6 +282,7 @@ command_action add_bench_command(CLI::App& app) {
   cmd->add_option("--accel", o->accel, accel_flag_help)
       ->check(CLI::IsMember(accel_words()))
       ->capture_default_str();
+  add_precision_option(*cmd, o->precision, true);
   o->gpu.add_to(*cmd);
   cmd->add_option("--repeat", o->repeat, "Timed runs per backend")
       ->check(CLI::Range(1, 1000))

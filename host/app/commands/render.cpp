@@ -26,6 +26,7 @@
 #include "light_sources.h"
 #include "partial_image.h"
 #include "pipeline_cache.h"
+#include "precision_flag.h"
 #include "progress.h"
 #include "quantize.h"
 #include "render_aov.h"
@@ -45,22 +46,24 @@ namespace rtvk {
 namespace {
 
 struct render_options {
-  std::string scene = "seed";     // built-in scene name or .json file
-  std::string backend = "cpu";    // cpu, gpu, auto or both
-  job_request jobs;               // cameras, frames, region, samples and the -o pattern
-  std::string ppm_format = "P3";  // P3 (ASCII, as the lesson) or P6 (binary)
-  bool quiet = false;             // no summary line, no progress bar
-  std::string accel = "bvh";      // bvh, none, rt-query, rt-pipeline or auto (accel_words)
-  int threads = 0;                // CPU threads; 0: one per core
-  gpu_flags gpu;                  // --device, --validate, --gpu-timeout
-  scene_flags flags;              // --width, --spp, --lookfrom, ...
-  std::string aov;                // --aov: comma-separated aov_names()
+  std::string scene = "seed";      // built-in scene name or .json file
+  std::string backend = "cpu";     // cpu, gpu, auto or both
+  job_request jobs;                // cameras, frames, region, samples and the -o pattern
+  std::string ppm_format = "P3";   // P3 (ASCII, as the lesson) or P6 (binary)
+  bool quiet = false;              // no summary line, no progress bar
+  std::string accel = "bvh";       // bvh, none, rt-query, rt-pipeline or auto (accel_words)
+  int threads = 0;                 // CPU threads; 0: one per core
+  std::string precision = "auto";  // the CPU's mode: auto, fast or reference (precision_flag.h)
+  gpu_flags gpu;                   // --device, --validate, --gpu-timeout
+  scene_flags flags;               // --width, --spp, --lookfrom, ...
+  std::string aov;                 // --aov: comma-separated aov_names()
 };
 
 engine_options engine_from(const render_options& o) {
   engine_options e;
   e.use_bvh = o.accel != "none";  // the CPU walks its BVH on every other path
   e.threads = o.threads;
+  e.precision = precision_for(o.precision, o.scene);
   e.cancelled = interrupt_requested();
   return e;
 }
@@ -307,7 +310,8 @@ int render_all(const run_context& run, const std::vector<render_job>& jobs) {
     const framebuffer fb = draw_cpu(run, job, &stats);
     const double seconds = seconds_since(start);
     write_job(run, job, fb);
-    summarize(run, job, "cpu", seconds, stats.dropped_samples);
+    summarize(run, job, engine_from(o).precision == cpu_precision::fast ? "cpu (fast)" : "cpu",
+              seconds, stats.dropped_samples);
   }
   return 0;
 }
@@ -320,13 +324,7 @@ int run_render(render_options o) {
     throw usage_error("--accel " + o.accel +
                       ": the device's hardware ray tracing; needs --backend gpu, auto or both");
   const output_pattern output(o.jobs.output, "--output");  // refused before the scene loads
-  unsigned aovs = 0;
-  if (!o.aov.empty()) {
-    const std::optional<unsigned> parsed = parse_aov_list(o.aov);
-    if (!parsed)
-      throw usage_error("--aov " + o.aov + ": expected a comma-separated list of " + aov_names());
-    aovs = *parsed;
-  }
+  const unsigned aovs = aov_flag(o.aov);
   scene s = load_scene(o.scene, o.flags.access());
   check_scene(s);
   // What the loaders drew otherwise than the files ask (a missing MTL drawn gray), said once.
@@ -370,6 +368,7 @@ void add_engine_options(CLI::App& cmd, render_options& o) {
   cmd.add_option("--threads", o.threads, "CPU threads (0: one per core)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
+  add_precision_option(cmd, o.precision);
 }
 
 }  // namespace
@@ -382,7 +381,8 @@ command_action add_render_command(CLI::App& app) {
          "Built-in scene (see rtvk scene list), a .json scene file or a mesh (.obj, .gltf, .glb)")
       ->capture_default_str();
   cmd->add_option("--backend", o->backend,
-                  "cpu (reference), gpu (Vulkan), auto (gpu if a device exists, else cpu), "
+                  "cpu (--precision: fast or reference), gpu (Vulkan), auto (gpu if a device "
+                  "exists, else cpu), "
                   "both (gpu, checked against cpu)")
       ->check(CLI::IsMember({"cpu", "gpu", "auto", "both"}))
       ->capture_default_str();

@@ -1,0 +1,106 @@
+// The fast mode's pixel loop: host/cpu/render_cpu.cpp's, in float over the GPU's arrays. Each
+// pixel's sample draws the numbers the GPU's and the reference's draw (pixel_sample_stream), so
+// the three images differ only by the precision of the arithmetic.
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <thread>
+
+#include "camera_rays.h"
+#include "elapsed.h"
+#include "errors.h"
+#include "fast_render.h"
+#include "fast_shading.h"
+#include "parallel.h"
+
+namespace rtvk {
+namespace {
+
+using namespace rtvk::fast;
+
+// What every pixel of one render reads.
+struct pixel_inputs {
+  const fast::world& world;
+  const shading_tables& tables;
+  camera_frame camera;  // the camera buffer's fields, as get_ray reads them
+  const fast_settings& settings;
+  const fast_window& win;
+};
+
+// A sample's color can be added where it is finite (NaN and infinities are dropped, as on the GPU).
+bool finite_sample(real3 c) {
+  return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+}
+
+// The mean of pixel (i, y)'s samples, y counted from the top.
+glm::dvec3 pixel_color(const pixel_inputs& in, int i, int y, std::uint64_t& dropped,
+                       std::uint64_t& rays) {
+  const fast_settings& s = in.settings;
+  const uint width = s.camera.image_width, height = s.camera.image_height;
+  const uint j = height - 1u - uint(y);  // the lesson counts rows from the bottom
+  glm::dvec3 sum(0);
+  for (int sample = in.win.sample_begin; sample < in.win.sample_end; ++sample) {
+    const random_stream hashed =
+        pixel_sample_stream(s.seed, uint(y) * width + uint(i), uint(sample));
+    const random_stream rnd = s.nee ? with_low_discrepancy(hashed) : hashed;
+    const ray r = sample_ray(in.camera, width, height, uint(i), j, rnd, s.jitter, true,
+                             s.sample_lights ? s.strata : 1u, uint(sample));
+    const real3 c = fast::ray_color(r, in.world, in.tables, s.max_depth, rnd, rays);
+    if (finite_sample(c))
+      sum += glm::dvec3(c);
+    else
+      ++dropped;
+  }
+  return sum / double(in.win.sample_end - in.win.sample_begin);
+}
+
+camera_frame frame_of(const gpu::camera_ubo& u) {
+  camera_frame f{};
+#define RTVK_UNPACK_CAMERA_FIELD(type, name) f.name = u.name;
+  RTVK_CAMERA_FIELDS(RTVK_UNPACK_CAMERA_FIELD)
+#undef RTVK_UNPACK_CAMERA_FIELD
+  return f;
+}
+
+}  // namespace
+
+framebuffer render_fast_window(const gpu::scene_arrays& arrays, const fast_settings& settings,
+                               const fast_window& win, const std::function<void(int)>& progress,
+                               const engine_options& engine, render_stats* stats) {
+  const auto build_start = std::chrono::steady_clock::now();
+  const fast::world world(arrays, settings.motion_begin, settings.motion_end);
+  const double build_seconds = seconds_since(build_start);
+  const shading_tables tables(arrays, settings);
+  const pixel_inputs in{world, tables, frame_of(settings.camera), settings, win};
+  framebuffer fb(win.width, win.height);
+  const std::size_t width = std::size_t(win.width), pixels = width * std::size_t(win.height);
+  std::atomic<std::size_t> pixels_done{0};
+  std::atomic<std::uint64_t> dropped{0}, rays{0};
+  const std::thread::id caller = std::this_thread::get_id();
+  const int threads =
+      engine.threads > 0 ? engine.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  parallel_for(pixels, threads, 256, [&](std::size_t begin, std::size_t end) {
+    if (engine.cancelled && engine.cancelled()) return;  // the rows left stay undone
+    std::uint64_t chunk_dropped = 0, chunk_rays = 0;
+    for (std::size_t p = begin; p < end; ++p) {
+      const int row = int(p / width), column = int(p % width);
+      fb.at(column, row) = pixel_color(in, win.x + column, win.y + row, chunk_dropped, chunk_rays);
+    }
+    dropped += chunk_dropped;
+    rays += chunk_rays;
+    const std::size_t done = pixels_done.fetch_add(end - begin) + (end - begin);
+    if (progress && std::this_thread::get_id() == caller) progress(int(done / width));
+  });
+  if (pixels_done.load() < pixels)
+    throw render_cancelled("stopped after " + std::to_string(pixels_done.load() / width) + " of " +
+                           std::to_string(win.height) + " rows");
+  if (stats) {
+    stats->rays = rays.load();
+    stats->dropped_samples = dropped.load();
+    stats->build_seconds += build_seconds;  // Embree's trees, after the arrays
+  }
+  return fb;
+}
+
+}  // namespace rtvk
