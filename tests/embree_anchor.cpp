@@ -14,6 +14,7 @@
 
 #include "bvh_world.h"
 #include "camera.h"
+#include "embree_anchor_fast.h"
 #include "mesh_helpers.h"
 
 namespace rtvk {
@@ -115,6 +116,24 @@ void BM_Embree(benchmark::State& state) {
   rtcReleaseDevice(device);
 }
 
+// The fast mode's world over the same triangles (packed as the GPU gets them) and rays.
+void BM_RtvkFast(benchmark::State& state) {
+  const workload& w = load(std::size_t(state.range(0)), state.range(1) != 0);
+  scene s;
+  s.materials.push_back({"m", material{}});
+  test::add_triangles(s, w.mesh, 0);
+  const gpu::scene_arrays arrays = gpu::build_scene_arrays(s, false);
+  const anchor::fast_tracer tracer(arrays);
+  std::vector<float> rays;
+  for (const ray& r : w.rays)
+    for (const vec3 v : {r.origin, r.direction})
+      for (int k = 0; k < 3; ++k) rays.push_back(float(v[k]));
+  std::size_t hits = 0;
+  for (auto _ : state) hits += tracer.trace(rays);
+  state.SetItemsProcessed(std::int64_t(state.iterations() * w.rays.size()));
+  state.counters["hit_share"] = double(hits) / double(state.iterations() * w.rays.size());
+}
+
 // (triangles, coherent)
 void sizes(benchmark::internal::Benchmark* b) {
   for (const std::int64_t n : {10'000, 100'000, 1'000'000})
@@ -123,6 +142,7 @@ void sizes(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_Rtvk)->Apply(sizes);
 BENCHMARK(BM_Embree)->Apply(sizes);
+BENCHMARK(BM_RtvkFast)->Apply(sizes);
 
 }  // namespace
 }  // namespace rtvk

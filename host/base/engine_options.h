@@ -28,6 +28,12 @@ struct engine_options {
   std::function<bool()> cancelled = {};
 };
 
+// Whether a CPU render runs the fast mode: asked for, and not --accel none (the lesson's list of
+// every object, which only the reference has).
+inline bool runs_fast(const engine_options& e) {
+  return e.precision == cpu_precision::fast && e.use_bvh;
+}
+
 // What finds the hits, in --accel's words: "bvh", "none", "rt-query" or "rt-pipeline".
 inline const char* accel_word(const engine_options& e) {
   switch (e.traversal) {

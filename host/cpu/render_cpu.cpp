@@ -134,8 +134,7 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
                               const engine_options& engine, render_stats* stats) {
   check_window(win, cam.image_width(), cam.image_height());
   check_motion_span(s.motion, scene_moves(s), cam);
-  if (engine.precision == cpu_precision::fast)
-    return render_fast(cam, s, rs, win, progress, engine, stats);
+  if (runs_fast(engine)) return render_fast(cam, s, rs, win, progress, engine, stats);
   double build_seconds = 0;
   const std::unique_ptr<hittable> world = timed_world(s, engine, build_seconds);
   const bool lights = samples_lights(s, rs);

@@ -68,8 +68,7 @@ class world {
   bool native(unsigned k) const;
   void attach(tree& t, RTCGeometry g, unsigned id);
   void record(const RTCRayHit& h, const ray& r, hit_record& rec) const;
-  void record_in(const tree& t, unsigned geometry, std::uint32_t prim, const ray& r, real t_hit,
-                 hit_record& rec) const;
+  void record_in(const tree& t, const RTCHit& hit, const ray& r, real t_hit, hit_record& rec) const;
 
   RTCDevice device_ = nullptr;
   std::vector<geometry_data> data_;  // one per user geometry, kept where Embree points

@@ -148,8 +148,9 @@ bench_record record_for(const scene& s, const camera& cam) {
 void bench_cpu(const bench_options& o, bench_record b, const camera& cam, const scene& s,
                const engine_options& engine, std::vector<bench_record>& records) {
   b.backend = "cpu";
-  b.precision = engine.precision == cpu_precision::fast ? "fast" : "reference";
-  b.accel = engine.precision == cpu_precision::fast ? "embree" : engine.use_bvh ? "bvh" : "none";
+  const bool fast = runs_fast(engine);
+  b.precision = fast ? "fast" : "reference";
+  b.accel = fast ? "embree" : engine.use_bvh ? "bvh" : "none";
   b.device = cpu_model();
   b.threads = worker_threads(o.threads);
   measure(

@@ -310,8 +310,8 @@ int render_all(const run_context& run, const std::vector<render_job>& jobs) {
     const framebuffer fb = draw_cpu(run, job, &stats);
     const double seconds = seconds_since(start);
     write_job(run, job, fb);
-    summarize(run, job, engine_from(o).precision == cpu_precision::fast ? "cpu (fast)" : "cpu",
-              seconds, stats.dropped_samples);
+    summarize(run, job, runs_fast(engine_from(o)) ? "cpu (fast)" : "cpu", seconds,
+              stats.dropped_samples);
   }
   return 0;
 }
