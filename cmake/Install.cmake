@@ -7,12 +7,16 @@ include_guard(GLOBAL)
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
-# Everything `cmake --install` installs, built without the rest of the project: a whole build of
+# Everything `cmake --install` installs (rtvk, librtvk.so and the Python module with the files
+# below), built without the rest of the project: a whole build of
 # the release preset also compiles the test suite and the benchmarks, more than half of its
 # compile time. scripts/render.sh builds this target, so the README's install works right after
 # it.
 add_custom_target(rtvk_install_files)
-add_dependencies(rtvk_install_files rtvk)
+add_dependencies(rtvk_install_files rtvk rtvk_library)
+if(TARGET rtvk_python)
+  add_dependencies(rtvk_install_files rtvk_python)
+endif()
 
 set(_rtvk_doc ${PROJECT_SOURCE_DIR}/host/app/doc)
 if(CMAKE_CROSSCOMPILING)

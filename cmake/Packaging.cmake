@@ -24,7 +24,7 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS libvulkan1)
 # The completion in /usr/share/bash-completion/completions is loaded by bash-completion's
 # framework, which a minimal system lacks.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "mesa-vulkan-drivers, bash-completion")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "mesa-vulkan-drivers, bash-completion, python3-numpy")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS vulkan-validationlayers)
 
 include(CPack)

@@ -4,6 +4,7 @@ half) in scripts/compare-cycles.py. Compressions NONE, ZIPS and ZIP; pixel types
 no tiles, no multi-part files.
 
   width, height, rgb = read_rgb("x.exr")   # rgb: a flat list, r g b per pixel, rows top down
+  width, height, planes = read_channels("x.exr")   # every channel by name (UINT ones too)
 """
 import array
 import struct
@@ -51,7 +52,8 @@ def _unzip(block, size):
     return bytes(out)
 
 
-def read_rgb(path):
+def read_channels(path):
+    """Every channel of the file, by name: a flat list a channel, rows top down."""
     with open(path, "rb") as f:
         data = f.read()
     attrs, pos = _header(data)
@@ -66,7 +68,7 @@ def read_rgb(path):
     lines = _LINES[compression]
     chunks = (height + lines - 1) // lines
     offsets = struct.unpack_from("<%dQ" % chunks, data, pos)
-    planes = {name: [0.0] * (width * height) for name, _ in chans}
+    planes = {name: [0] * (width * height) for name, _ in chans}
     for off in offsets:
         y, size = struct.unpack_from("<ii", data, off)
         block = data[off + 8:off + 8 + size]
@@ -77,10 +79,15 @@ def read_rgb(path):
         p = 0
         for row in range(y - y0, y - y0 + n):
             for (name, t), s in zip(chans, sizes):
-                vals = array.array("e" if t == 1 else "f")
+                vals = array.array({0: "I", 1: "e"}.get(t, "f"))  # UINT, HALF, FLOAT
                 vals.frombytes(block[p:p + width * s])
                 p += width * s
                 planes[name][row * width:(row + 1) * width] = vals.tolist()
+    return width, height, planes
+
+
+def read_rgb(path):
+    width, height, planes = read_channels(path)
     r, g, b = (planes[c] for c in ("R", "G", "B"))
     rgb = [0.0] * (3 * width * height)
     rgb[0::3], rgb[1::3], rgb[2::3] = r, g, b

@@ -6,8 +6,9 @@
 #   install-deps.sh --test   also what only the tests use: Slurm, for the farm job files' test,
 #                            man-db, to read the installed man page, Xvfb, an X server
 #                            without a screen for rtvk view's window, xdotool, to drive it, and
-#                            twm, a window manager to minimize it, and python3-opencv, the
-#                            calibrated cameras' oracle (cv2.projectPoints)
+#                            twm, a window manager to minimize it, python3-opencv, the
+#                            calibrated cameras' oracle (cv2.projectPoints), and python3-pytest,
+#                            which runs the Python module's tests
 set -euo pipefail
 
 packages=(
@@ -19,10 +20,11 @@ packages=(
   clang libclang-rt-14-dev
   libopenexr-dev libtinyobjloader-dev libtinygltf-dev libembree-dev
   libdraco-dev libmeshoptimizer-dev
+  pybind11-dev python3-dev python3-numpy
   help2man dpkg-dev file
 )
 if [ "${1:-}" = "--test" ]; then
-  packages+=(slurm-wlm man-db xvfb xdotool twm python3-opencv)
+  packages+=(slurm-wlm man-db xvfb xdotool twm python3-opencv python3-pytest)
 fi
 
 missing=()

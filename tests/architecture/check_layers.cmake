@@ -32,8 +32,11 @@ set(may_use_app/jobs "app/jobs;cpu;image;${gpu_layers};accel;formats;formats/cal
 set(may_use_app/commands
     "app/commands;app/jobs;view;cpu;image;${gpu_layers};accel;formats;formats/calibration;formats/colmap;scene;shapes;camera;base;shared")
 set(may_use_app "app;app/commands;app/jobs;image;base;shared")
+set(may_use_lib
+    "lib;app/commands;app/jobs;view;cpu;fast;packed;image;${gpu_layers};accel;formats;formats/calibration;formats/colmap;scene;shapes;camera;base;shared")
+set(may_use_python "python;lib")
 set(layers base camera shapes scene formats/obj formats/gltf_ext formats/calibration formats formats/gltf formats/colmap accel packed fast cpu image gpu/vulkan gpu/pipeline gpu/scene gpu/render view
-           app/jobs app/commands app)
+           app/jobs app/commands app lib python)
 
 # A new folder of sources must be given its place in the map above.
 file(GLOB_RECURSE all_sources RELATIVE ${ROOT}/host ${ROOT}/host/*.h ${ROOT}/host/*.cpp)

@@ -35,6 +35,11 @@ for f in ./usr/bin/rtvk ./usr/share/man/man1/rtvk.1.gz ./usr/share/bash-completi
   ./usr/share/doc/rtvk/README.md; do
   grep -qx "$f" "$tmp/files" || fail "the package lacks $f"
 done
-! grep -Ev '^\./usr/(bin/rtvk|share/(man/man1/rtvk\.1\.gz|bash-completion/completions/rtvk|doc/rtvk/.*))$' \
+for f in ./usr/include/rtvk/rtvk.h ./usr/lib/python3/dist-packages/rtvk.pyi; do
+  grep -qx "$f" "$tmp/files" || fail "the package lacks $f"
+done
+grep -Eq '^\./usr/lib/python3/dist-packages/rtvk\.cpython-.*\.so$' "$tmp/files" \
+  || fail "the package lacks the Python module"
+! grep -Ev '^\./usr/(bin/rtvk|share/(man/man1/rtvk\.1\.gz|bash-completion/completions/rtvk|doc/rtvk/.*)|include/rtvk/rtvk\.h|lib/(librtvk\.so.*|cmake/rtvk/rtvk.*\.cmake|python3/dist-packages/rtvk(\.pyi|\.cpython-.*\.so)))$' \
   "$tmp/files" | grep -v '/$' | grep . || fail "the package holds files that are not rtvk's (above)"
 echo "PASS: $(basename "$deb"): Depends: $(field Depends)"

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# `cmake --install` into a fresh prefix: only rtvk's files arrive (no libraries, headers or
-# tests), the man page, docs and bash completion are there and true to the CLI, and the installed
-# rtvk renders from another folder, with the source and build trees hidden where a private mount
-# namespace can hide them, the same bytes as the build tree's rtvk.
+# `cmake --install` into a fresh prefix: only rtvk's files arrive (the executable, its library
+# with its header and CMake package, the Python module; no test or third-party file), the man
+# page, docs and bash completion are there and true to the CLI, the installed rtvk renders from
+# another folder, with the source and build trees hidden where a private mount namespace can hide
+# them, the same bytes as the build tree's rtvk, the docs' C++ example builds against the
+# installed package and renders, and the installed module imports and renders.
 #   install_and_render.sh CMAKE BUILD_DIR SOURCE_DIR
 set -euo pipefail
 export LC_ALL=C  # the completion candidates are compared sorted
@@ -24,6 +26,8 @@ grep -E '^-- (Installing|Up-to-date):' "$tmp/install.log" | sed -E 's/^-- [^:]*:
   case ${f#"$prefix"/} in
     bin/rtvk | share/man/man1/rtvk.1.gz | share/bash-completion/completions/rtvk) ;;
     share/doc/rtvk/README.md | share/doc/rtvk/docs | share/doc/rtvk/docs/*) ;;
+    include/rtvk/rtvk.h | lib/librtvk.so* | lib/cmake/rtvk/rtvk*.cmake) ;;
+    lib/python3*/dist-packages/rtvk.cpython-*.so | lib/python3*/dist-packages/rtvk.pyi) ;;
     *) fail "installed a file that is not rtvk's: $f" ;;
   esac
 done
@@ -148,5 +152,22 @@ for backend in "${backends[@]}"; do
   cmp "$work/seed.png" "$tmp/reference.png" || fail "the installed rtvk's $backend image differs"
   rm "$work/seed.png" "$tmp/reference.png"
 done
+# The docs' C++ example against the installed package: find_package(rtvk CONFIG), rtvk::rtvk.
+"$cmake" -S "$src/docs/examples/cpp" -B "$tmp/example" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" \
+  >"$tmp/example.log" 2>&1 || { cat "$tmp/example.log"; fail "configuring the C++ example"; }
+"$cmake" --build "$tmp/example" >>"$tmp/example.log" 2>&1 \
+  || { cat "$tmp/example.log"; fail "building the C++ example against the package"; }
+LD_LIBRARY_PATH=$prefix/lib "$tmp/example/render_views" cornell-box cpu >"$tmp/example.out" \
+  || fail "the C++ example did not render: $(cat "$tmp/example.out")"
+cat "$tmp/example.out"
+grep -q '^view 2: 64x48, mean 0\.[0-9]*, objects at [1-9]' "$tmp/example.out" \
+  || fail "the C++ example printed no third view with objects"
+# The installed Python module, from the prefix's own path.
+pydir=$(echo "$prefix"/lib/python3*/dist-packages)
+[[ -f $pydir/rtvk.pyi ]] || fail "no rtvk.pyi beside the module"
+shape=$(cd "$work" && PYTHONPATH=$pydir /usr/bin/python3 -c \
+  "import rtvk; print(rtvk.Renderer(rtvk.Scene('seed')).render(rtvk.Camera.from_scene('seed')).shape)") \
+  || fail "the installed module does not render"
+[[ $shape == "(225, 400, 3)" ]] || fail "the installed module's image is $shape"
 echo "PASS: installed into $prefix; ${backends[*]} renders from $work equal the build tree's" \
   "${hide[*]:+(source and build trees hidden)}"

@@ -20,15 +20,6 @@ double checked(double v, bool ok, const std::string& flag, const std::string& ex
   return v;
 }
 
-// An aspect ratio that gives exactly `height` rows at `width` (camera's max(1, int(w / a))):
-// width / height itself can round to one row fewer.
-double exact_aspect(int width, int height) {
-  double a = double(width) / height;
-  while (int(width / a) < height) a = std::nextafter(a, 0.0);
-  while (int(width / a) > height) a = std::nextafter(a, 1e300);
-  return a;
-}
-
 // The image size a calibration was made at, unless --width or --aspect says otherwise: with
 // --width alone the intrinsics scale to it (camera_lens.cpp).
 void calibrated_size(const scene_overrides& o, scene& s, int width, int height) {
@@ -209,6 +200,13 @@ void apply_model(const scene_overrides& o, const std::optional<calibration>& cal
 }
 
 }  // namespace
+
+double exact_aspect(int width, int height) {
+  double a = double(width) / height;
+  while (int(width / a) < height) a = std::nextafter(a, 0.0);
+  while (int(width / a) > height) a = std::nextafter(a, 1e300);
+  return a;
+}
 
 void scene_overrides::apply_cameras(scene& s) const {
   if (colmap && calibration)

@@ -51,4 +51,8 @@ struct scene_overrides {
                      double frame_time = 0) const;
 };
 
+// An aspect ratio that gives exactly `height` rows at `width` (camera's max(1, int(w / a))):
+// width / height itself can round to one row fewer.
+double exact_aspect(int width, int height);
+
 }  // namespace rtvk

@@ -1,0 +1,78 @@
+// The library's cameras made from numbers: a look-at pose, or a calibrated camera as OpenCV and
+// COLMAP hold one (a world-to-camera matrix and intrinsics).
+#include <cmath>
+
+#include "api_impl.h"
+
+namespace rtvk::api {
+namespace {
+
+vec3 vec(const std::array<double, 3>& v) {
+  return {v[0], v[1], v[2]};
+}
+
+// The camera of `pose` drawing exactly width x height pixels.
+Camera make(const camera_pose& pose, int width, int height) {
+  if (width < 1 || height < 1)
+    throw bad_input("camera size " + std::to_string(width) + "x" + std::to_string(height) +
+                    ": expected at least 1x1 pixels");
+  Camera c;
+  c.impl_ = std::make_shared<const Camera::impl>(
+      Camera::impl{camera(pose, exact_aspect(width, height), width)});
+  return c;
+}
+
+}  // namespace
+
+Camera Camera::look_at(const std::array<double, 3>& lookfrom, const std::array<double, 3>& lookat,
+                       int width, int height, double vfov, const std::array<double, 3>& vup,
+                       double aperture, double focus_dist, const std::string& projection) {
+  return translate([&] {
+    camera_pose pose;
+    pose.lookfrom = vec(lookfrom);
+    pose.lookat = vec(lookat);
+    pose.vup = vec(vup);
+    pose.vfov = vfov;
+    pose.aperture = aperture;
+    pose.focus_dist = focus_dist;
+    const std::optional<rtvk::projection> p = projection_from_name(projection);
+    if (!p || is_calibrated(*p))
+      throw bad_input("projection " + projection +
+                      ": expected perspective, orthographic, equirectangular, "
+                      "fisheye-equidistant or fisheye-equisolid (Camera.from_opencv makes the "
+                      "calibrated models)");
+    pose.projection = *p;
+    return make(pose, width, height);
+  });
+}
+
+// OpenCV's camera maps world points p to R p + t and looks down its +z with +y down: its center
+// is -R^T t, it looks along R's third row, and its up is minus the second (colmap_pose's rule).
+Camera Camera::from_opencv(const std::array<double, 16>& m, double fx, double fy, double cx,
+                           double cy, int width, int height, const std::vector<double>& distortion,
+                           const std::string& model) {
+  return translate([&] {
+    for (const double x : m)
+      if (!std::isfinite(x)) throw bad_input("world_to_camera: a value is not finite");
+    const vec3 row_x(m[0], m[1], m[2]), row_y(m[4], m[5], m[6]), row_z(m[8], m[9], m[10]);
+    const vec3 t(m[3], m[7], m[11]);
+    if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1)
+      throw bad_input("world_to_camera: the last row must be 0, 0, 0, 1");
+    camera_pose pose;
+    pose.lookfrom = -(t.x * row_x + t.y * row_y + t.z * row_z);
+    pose.lookat = pose.lookfrom + row_z;
+    pose.vup = -row_y;
+    if (model != "opencv" && model != "opencv-fisheye")
+      throw bad_input("model " + model + ": expected opencv or opencv-fisheye");
+    pose.projection = model == "opencv" ? projection::opencv : projection::opencv_fisheye;
+    const std::size_t most = model == "opencv" ? 8 : 4;
+    if (distortion.size() > most)
+      throw bad_input("distortion: the " + model + " model takes at most " + std::to_string(most) +
+                      " coefficients, got " + std::to_string(distortion.size()));
+    pose.intrinsics = {width, height, fx, fy, cx, cy, {}, 0};
+    std::copy(distortion.begin(), distortion.end(), pose.intrinsics.k.begin());
+    return make(pose, width, height);
+  });
+}
+
+}  // namespace rtvk::api
