@@ -1,5 +1,5 @@
 """rtvk: the ray tracer's scenes, cameras and renderers, with NumPy images (docs/python.md)."""
-from typing import Any, Sequence, overload
+from typing import Any, Callable, Sequence, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -63,6 +63,9 @@ class Camera:
         model: str = "opencv",
     ) -> Camera:
         """A calibrated camera: 4x4 world-to-camera [R|t] (+z forward, +y down), 3x3 K."""
+    @staticmethod
+    def from_colmap(folder: str, names: Sequence[str] = ()) -> dict[str, Camera]:
+        """The registered images of a COLMAP model as {name: Camera} (`names`: only those)."""
     @property
     def width(self) -> int: ...
     @property
@@ -89,6 +92,7 @@ class Renderer:
         max_depth: int = 0,
         seed: int = -1,
         aovs: Sequence[str] = ...,
+        progress: Callable[[float], None] | None = None,
     ) -> Image | tuple[Image, Aovs]: ...
     @overload
     def render(
@@ -98,6 +102,7 @@ class Renderer:
         max_depth: int = 0,
         seed: int = -1,
         aovs: Sequence[str] = ...,
+        progress: Callable[[float], None] | None = None,
     ) -> list[Any]: ...
     @property
     def description(self) -> str: ...

@@ -1,8 +1,10 @@
 // The library's cameras made from numbers: a look-at pose, or a calibrated camera as OpenCV and
 // COLMAP hold one (a world-to-camera matrix and intrinsics).
+#include <algorithm>
 #include <cmath>
 
 #include "api_impl.h"
+#include "colmap_model.h"
 
 namespace rtvk::api {
 namespace {
@@ -72,6 +74,23 @@ Camera Camera::from_opencv(const std::array<double, 16>& m, double fx, double fy
     pose.intrinsics = {width, height, fx, fy, cx, cy, {}, 0};
     std::copy(distortion.begin(), distortion.end(), pose.intrinsics.k.begin());
     return make(pose, width, height);
+  });
+}
+
+std::vector<std::pair<std::string, Camera>> Camera::from_colmap(
+    const std::string& folder, const std::vector<std::string>& names) {
+  return translate([&] {
+    const std::vector<colmap_view> views = read_colmap_model(folder);
+    for (const std::string& n : names)
+      if (std::none_of(views.begin(), views.end(),
+                       [&](const colmap_view& v) { return v.name == n; }))
+        throw bad_input("camera " + n + ": the COLMAP model in " + folder +
+                        " has no view of that name");
+    std::vector<std::pair<std::string, Camera>> out;
+    for (const colmap_view& v : views)
+      if (names.empty() || std::find(names.begin(), names.end(), v.name) != names.end())
+        out.emplace_back(v.name, make(v.pose, v.pose.intrinsics.width, v.pose.intrinsics.height));
+    return out;
   });
 }
 

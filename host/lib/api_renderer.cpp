@@ -56,10 +56,22 @@ struct Renderer::impl {
   }
 
   std::vector<framebuffer> draw(const std::vector<camera>& views, const render_settings& rs,
-                                const render_window& win) {
-    if (engine) return engine->render_views(views, rs, win);
+                                const render_window& win,
+                                const std::function<void(double)>& progress) {
+    if (engine) {
+      const auto samples = [&](int done) { progress(double(done) / win.samples()); };
+      return engine->render_views(
+          views, rs, win, progress ? gpu::sample_progress(samples) : gpu::sample_progress{});
+    }
     std::vector<framebuffer> out;
-    for (const camera& c : views) out.push_back(render_cpu_window(c, s, rs, win, {}, options()));
+    for (std::size_t k = 0; k < views.size(); ++k) {
+      const auto rows = [&](int done) {
+        progress((double(k) + double(done) / win.height) / double(views.size()));
+      };
+      out.push_back(render_cpu_window(views[k], s, rs, win,
+                                      progress ? progress_callback(rows) : progress_callback{},
+                                      options()));
+    }
     return out;
   }
 
@@ -155,7 +167,7 @@ std::vector<Image> Renderer::render(const std::vector<Camera>& cameras,
       throw bad_input("seed " + std::to_string(options.seed) + ": expected 0 to 4294967295");
     const render_window win = whole_render(views[0].image_width(), views[0].image_height(), rs.spp);
     impl_->cancel = options.cancelled;
-    const std::vector<framebuffer> drawn = impl_->draw(views, rs, win);
+    const std::vector<framebuffer> drawn = impl_->draw(views, rs, win, options.progress);
     std::vector<Image> out;
     for (std::size_t k = 0; k < views.size(); ++k) {
       if (options.aovs == 0) {

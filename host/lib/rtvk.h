@@ -18,6 +18,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 // What librtvk.so exports: this header's classes and functions, nothing else of rtvk's.
@@ -85,6 +86,12 @@ class RTVK_API Camera {
                             double cx, double cy, int width, int height,
                             const std::vector<double>& distortion = {},
                             const std::string& model = "opencv");
+  // The registered images of a COLMAP model (DIR/cameras.txt and images.txt, or the .bin pair),
+  // in its images file's order: each view's name (as `rtvk render --colmap` names the camera)
+  // and its camera, at the size its COLMAP camera was calibrated at. `names`: only those views
+  // (an unknown one is bad input); empty: all of them.
+  static std::vector<std::pair<std::string, Camera>> from_colmap(
+      const std::string& folder, const std::vector<std::string>& names = {});
   int width() const;
   int height() const;
 
@@ -121,6 +128,9 @@ struct RTVK_API RenderOptions {
   // Polled between passes (a CPU chunk, a GPU submission): true stops the render, which throws
   // `cancelled`. Empty: never.
   std::function<bool()> cancelled;
+  // Called from the calling thread as the render goes, with the share done (0 to 1) of the
+  // images asked for. Empty: not called.
+  std::function<void(double)> progress;
 };
 
 // Renders a scene on one backend: "cpu" (precision "auto", "fast" or "reference": --precision),

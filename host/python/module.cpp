@@ -78,7 +78,7 @@ unsigned aov_bits(const std::vector<std::string>& names) {
 
 // Renders with the GIL released; the cancel poll takes it back to ask Python about signals.
 py::object render(Renderer& r, const py::object& cameras, int spp, int max_depth, std::int64_t seed,
-                  const std::vector<std::string>& aov_names) {
+                  const std::vector<std::string>& aov_names, const py::object& progress) {
   const bool several = py::isinstance<py::list>(cameras) || py::isinstance<py::tuple>(cameras);
   std::vector<Camera> views;
   if (several)
@@ -100,6 +100,13 @@ py::object render(Renderer& r, const py::object& cameras, int spp, int max_depth
     if (PyErr_CheckSignals() != 0) interrupted->store(true);
     return interrupted->load();
   };
+  // The progress callback runs on the calling thread, which holds no GIL while rendering.
+  if (!progress.is_none())
+    o.progress = [callback = progress.ptr()](double done) {  // borrowed: no reference counted
+      py::gil_scoped_acquire gil;                            // without the GIL
+      py::handle f(callback);
+      f(done);
+    };
   std::vector<Image> drawn;
   try {
     py::gil_scoped_release release;
@@ -204,6 +211,18 @@ PYBIND11_MODULE(rtvk, m) {
           "A calibrated camera as OpenCV holds one: the 4x4 world-to-camera matrix ([R|t]; +z "
           "forward, +y down), the 3x3 camera matrix K, the image size and the distortion "
           "coefficients (opencv: k1, k2, p1, p2[, k3[, k4, k5, k6]]; opencv-fisheye: k1..k4).")
+      .def_static(
+          "from_colmap",
+          [](const std::string& folder, const std::vector<std::string>& names) {
+            py::dict views;  // in the images file's order (dicts keep insertion order)
+            for (auto& [name, camera] : Camera::from_colmap(folder, names))
+              views[py::str(name)] = camera;
+            return views;
+          },
+          py::arg("folder"), py::arg("names") = std::vector<std::string>{},
+          "Every registered image of a COLMAP model (cameras.txt and images.txt, or the .bin "
+          "pair) as {name: Camera}, each at its calibrated size, named as `rtvk render "
+          "--colmap` names them; `names`: only those.")
       .def_property_readonly("width", &Camera::width)
       .def_property_readonly("height", &Camera::height);
 
@@ -216,9 +235,10 @@ PYBIND11_MODULE(rtvk, m) {
            "RTVK_DEVICE, else the best); precision (cpu): 'auto', 'fast' or 'reference'.")
       .def("render", &render, py::arg("camera"), py::arg("spp") = 0, py::arg("max_depth") = 0,
            py::arg("seed") = -1, py::arg("aovs") = std::vector<std::string>{},
+           py::arg("progress") = py::none(),
            "Renders `camera` (a Camera, or a list of them: one image each). Returns a float32 "
            "array (height, width, 3) of scene-linear color; with `aovs` (depth, normal, albedo, "
            "object-id, material-id), a tuple (image, dict of arrays). spp, max_depth, seed: 0 "
-           "(-1 for seed) keeps the scene's.")
+           "(-1 for seed) keeps the scene's. progress: called with the share done, 0 to 1.")
       .def_property_readonly("description", &Renderer::description);
 }

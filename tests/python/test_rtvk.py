@@ -182,3 +182,57 @@ def test_the_docs_example_writes_its_dataset(tmp_path):
     for w2c in data["world_to_camera"]:
         p = data["K"] @ (w2c @ np.append(target, 1))[:3]
         assert np.allclose(p[:2] / p[2], [15.5, 11.5], atol=1e-6)
+
+
+def test_a_colmap_models_views_are_the_clis(tmp_path, small_file):
+    # A model of one pinhole camera and two registered images looking into the box (the CLI
+    # renders one image size a run; tests/data/colmap mixes sizes on purpose).
+    folder = tmp_path / "model"
+    folder.mkdir()
+    (folder / "cameras.txt").write_text("1 PINHOLE 40 30 45 45 20 15\n")
+    (folder / "images.txt").write_text(
+        "1 1 0 0 0 -278 -278 800 1 front.png\n\n"
+        "2 0.9961947 0 0.0871557 0 -200 -278 820 1 side/left.png\n\n")
+    views = rtvk.Camera.from_colmap(str(folder))
+    assert list(views) == ["front", "side_left"]
+    assert (views["front"].width, views["front"].height) == (40, 30)
+    with pytest.raises(ValueError, match="no view of that name"):
+        rtvk.Camera.from_colmap(str(folder), ["nope"])
+    image = rtvk.Renderer(rtvk.Scene(small_file)).render(views["side_left"])
+    w, h, planes = cli_exr(tmp_path, small_file, "--colmap", str(folder), "--camera", "side_left")
+    assert (w, h) == (40, 30)
+    assert np.array_equal(image, rgb_of(w, h, planes))
+    assert image.mean() > 0.01  # it sees the box
+
+
+def test_ctrl_c_stops_a_render_with_keyboard_interrupt(tmp_path):
+    # A render of minutes, interrupted after a second: the module raises KeyboardInterrupt at the
+    # next pass, and the process is free to go on.
+    script = tmp_path / "long.py"
+    script.write_text(
+        "import time, rtvk\n"
+        "r = rtvk.Renderer(rtvk.Scene('book-final'))\n"
+        "print('ready', flush=True)\n"
+        "start = time.time()\n"
+        "try:\n"
+        "    r.render(rtvk.Camera.from_scene('book-final'), spp=5000)\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted after %.1f s' % (time.time() - start), flush=True)\n")
+    p = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True,
+                         env=dict(os.environ))
+    assert p.stdout.readline().strip() == "ready"
+    import signal
+    import time
+    time.sleep(1.0)
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=30)
+    assert p.returncode == 0 and out.startswith("interrupted after"), out
+    assert float(out.split()[2]) < 5  # a chunk of 256 pixels at 5,000 samples, then it stops
+
+
+def test_progress_is_reported_as_the_render_goes():
+    seen = []
+    rtvk.Renderer(rtvk.Scene.from_dict(SMALL)).render(
+        rtvk.Camera.look_at((278, 278, -800), (278, 278, 0), 48, 40, vfov=40), spp=2,
+        progress=seen.append)
+    assert seen and seen == sorted(seen) and 0 < seen[-1] <= 1.0
