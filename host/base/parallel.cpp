@@ -1,6 +1,11 @@
 #include "parallel.h"
 
+#include "errors.h"
+
 #include <algorithm>
+#include <atomic>
+#include <string>
+#include <thread>
 
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/global_control.h>
@@ -31,6 +36,22 @@ void parallel_for(std::size_t count, int threads, std::size_t grain, const chunk
         [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); },
         tbb::simple_partitioner());
   });
+}
+
+void parallel_pixels(int width, int height, int threads, const std::function<bool()>& cancelled,
+                     const std::function<void(int rows_done)>& progress, const chunk_function& body) {
+  const std::size_t w = std::size_t(width), pixels = w * std::size_t(height);
+  std::atomic<std::size_t> done{0};
+  const std::thread::id caller = std::this_thread::get_id();
+  parallel_for(pixels, threads, 256, [&](std::size_t begin, std::size_t end) {
+    if (cancelled && cancelled()) return;  // the rows left stay undone
+    body(begin, end);
+    const std::size_t now = done.fetch_add(end - begin) + (end - begin);
+    if (progress && std::this_thread::get_id() == caller) progress(int(now / w));
+  });
+  if (done.load() < pixels)
+    throw render_cancelled("stopped after " + std::to_string(done.load() / w) + " of " +
+                           std::to_string(height) + " rows");
 }
 
 }  // namespace rtvk

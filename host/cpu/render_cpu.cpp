@@ -142,34 +142,24 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
   const scene_shading shading(s, lights, nee);
   const pixel_inputs in{cam, s.sky, rs, shading, win, pixel_strata(rs, lights), nee};
   framebuffer fb(win.width, win.height);
-  const std::size_t width = std::size_t(win.width), pixels = width * std::size_t(win.height);
-  std::atomic<std::size_t> pixels_done{0};
+  const std::size_t width = std::size_t(win.width);
   std::atomic<std::uint64_t> rays{0};
   std::atomic<std::uint64_t> dropped{0};
-  const std::thread::id caller = std::this_thread::get_id();
-
-  // Chunks of a few hundred pixels in reading order: enough work to amortize a task, small
-  // enough that every thread stays busy to the end and progress moves smoothly.
-  parallel_for(
-      pixels, worker_threads(engine.threads), 256, [&](std::size_t begin, std::size_t end) {
-        if (engine.cancelled && engine.cancelled()) return;  // the rows left stay undone
-        const counting_world counted(*world);
-        // Counting costs a virtual call per ray: only when someone asked for it.
-        const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
-        std::uint64_t chunk_dropped = 0;
-        for (std::size_t p = begin; p < end; ++p) {
-          const int row = int(p / width), column = int(p % width);
-          fb.at(column, row) = pixel_color(in, target, win.x + column, win.y + row, chunk_dropped);
-        }
-        rays += counted.rays;
-        dropped += chunk_dropped;
-        const std::size_t done = pixels_done.fetch_add(end - begin) + (end - begin);
-        // The progress bar is drawn by the calling thread only, which works on chunks too.
-        if (progress && std::this_thread::get_id() == caller) progress(int(done / width));
-      });
-  if (pixels_done.load() < pixels)
-    throw render_cancelled("stopped after " + std::to_string(pixels_done.load() / width) + " of " +
-                           std::to_string(win.height) + " rows");
+  parallel_pixels(win.width, win.height, worker_threads(engine.threads), engine.cancelled,
+                  progress, [&](std::size_t begin, std::size_t end) {
+                    const counting_world counted(*world);
+                    // Counting costs a virtual call per ray: only when someone asked for it.
+                    const hittable& target =
+                        engine.count_rays ? static_cast<const hittable&>(counted) : *world;
+                    std::uint64_t chunk_dropped = 0;
+                    for (std::size_t p = begin; p < end; ++p) {
+                      const int row = int(p / width), column = int(p % width);
+                      fb.at(column, row) =
+                          pixel_color(in, target, win.x + column, win.y + row, chunk_dropped);
+                    }
+                    rays += counted.rays;
+                    dropped += chunk_dropped;
+                  });
   if (stats) {
     stats->rays = rays.load();
     stats->dropped_samples = dropped.load();

@@ -4,12 +4,9 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <string>
-#include <thread>
 
 #include "camera_rays.h"
 #include "elapsed.h"
-#include "errors.h"
 #include "fast_render.h"
 #include "fast_shading.h"
 #include "parallel.h"
@@ -74,27 +71,19 @@ framebuffer render_fast_window(const gpu::scene_arrays& arrays, const fast_setti
   const shading_tables tables(arrays, settings);
   const pixel_inputs in{world, tables, frame_of(settings.camera), settings, win};
   framebuffer fb(win.width, win.height);
-  const std::size_t width = std::size_t(win.width), pixels = width * std::size_t(win.height);
-  std::atomic<std::size_t> pixels_done{0};
+  const std::size_t width = std::size_t(win.width);
   std::atomic<std::uint64_t> dropped{0}, rays{0};
-  const std::thread::id caller = std::this_thread::get_id();
-  const int threads =
-      engine.threads > 0 ? engine.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  parallel_for(pixels, threads, 256, [&](std::size_t begin, std::size_t end) {
-    if (engine.cancelled && engine.cancelled()) return;  // the rows left stay undone
-    std::uint64_t chunk_dropped = 0, chunk_rays = 0;
-    for (std::size_t p = begin; p < end; ++p) {
-      const int row = int(p / width), column = int(p % width);
-      fb.at(column, row) = pixel_color(in, win.x + column, win.y + row, chunk_dropped, chunk_rays);
-    }
-    dropped += chunk_dropped;
-    rays += chunk_rays;
-    const std::size_t done = pixels_done.fetch_add(end - begin) + (end - begin);
-    if (progress && std::this_thread::get_id() == caller) progress(int(done / width));
-  });
-  if (pixels_done.load() < pixels)
-    throw render_cancelled("stopped after " + std::to_string(pixels_done.load() / width) + " of " +
-                           std::to_string(win.height) + " rows");
+  parallel_pixels(win.width, win.height, engine.threads, engine.cancelled, progress,
+                  [&](std::size_t begin, std::size_t end) {
+                    std::uint64_t chunk_dropped = 0, chunk_rays = 0;
+                    for (std::size_t p = begin; p < end; ++p) {
+                      const int row = int(p / width), column = int(p % width);
+                      fb.at(column, row) = pixel_color(in, win.x + column, win.y + row,
+                                                       chunk_dropped, chunk_rays);
+                    }
+                    dropped += chunk_dropped;
+                    rays += chunk_rays;
+                  });
   if (stats) {
     stats->rays = rays.load();
     stats->dropped_samples = dropped.load();
