@@ -39,7 +39,8 @@ void parallel_for(std::size_t count, int threads, std::size_t grain, const chunk
 }
 
 void parallel_pixels(int width, int height, int threads, const std::function<bool()>& cancelled,
-                     const std::function<void(int rows_done)>& progress, const chunk_function& body) {
+                     const std::function<void(int rows_done)>& progress,
+                     const chunk_function& body) {
   const std::size_t w = std::size_t(width), pixels = w * std::size_t(height);
   std::atomic<std::size_t> done{0};
   const std::thread::id caller = std::this_thread::get_id();

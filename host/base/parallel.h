@@ -23,7 +23,8 @@ void parallel_for(std::size_t count, int threads, std::size_t grain, const chunk
 // from the calling thread, which draws chunks too. Both may be empty. Throws render_cancelled
 // saying how far the render got when it was cancelled.
 void parallel_pixels(int width, int height, int threads, const std::function<bool()>& cancelled,
-                     const std::function<void(int rows_done)>& progress, const chunk_function& body);
+                     const std::function<void(int rows_done)>& progress,
+                     const chunk_function& body);
 
 // Runs f, and any oneTBB algorithm it starts, on at most `threads` threads (0: one per core).
 void run_in_arena(int threads, const std::function<void()>& f);

@@ -145,21 +145,20 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
   const std::size_t width = std::size_t(win.width);
   std::atomic<std::uint64_t> rays{0};
   std::atomic<std::uint64_t> dropped{0};
-  parallel_pixels(win.width, win.height, worker_threads(engine.threads), engine.cancelled,
-                  progress, [&](std::size_t begin, std::size_t end) {
-                    const counting_world counted(*world);
-                    // Counting costs a virtual call per ray: only when someone asked for it.
-                    const hittable& target =
-                        engine.count_rays ? static_cast<const hittable&>(counted) : *world;
-                    std::uint64_t chunk_dropped = 0;
-                    for (std::size_t p = begin; p < end; ++p) {
-                      const int row = int(p / width), column = int(p % width);
-                      fb.at(column, row) =
-                          pixel_color(in, target, win.x + column, win.y + row, chunk_dropped);
-                    }
-                    rays += counted.rays;
-                    dropped += chunk_dropped;
-                  });
+  parallel_pixels(
+      win.width, win.height, worker_threads(engine.threads), engine.cancelled, progress,
+      [&](std::size_t begin, std::size_t end) {
+        const counting_world counted(*world);
+        // Counting costs a virtual call per ray: only when someone asked for it.
+        const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
+        std::uint64_t chunk_dropped = 0;
+        for (std::size_t p = begin; p < end; ++p) {
+          const int row = int(p / width), column = int(p % width);
+          fb.at(column, row) = pixel_color(in, target, win.x + column, win.y + row, chunk_dropped);
+        }
+        rays += counted.rays;
+        dropped += chunk_dropped;
+      });
   if (stats) {
     stats->rays = rays.load();
     stats->dropped_samples = dropped.load();

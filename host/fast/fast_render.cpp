@@ -78,8 +78,8 @@ framebuffer render_fast_window(const gpu::scene_arrays& arrays, const fast_setti
                     std::uint64_t chunk_dropped = 0, chunk_rays = 0;
                     for (std::size_t p = begin; p < end; ++p) {
                       const int row = int(p / width), column = int(p % width);
-                      fb.at(column, row) = pixel_color(in, win.x + column, win.y + row,
-                                                       chunk_dropped, chunk_rays);
+                      fb.at(column, row) =
+                          pixel_color(in, win.x + column, win.y + row, chunk_dropped, chunk_rays);
                     }
                     dropped += chunk_dropped;
                     rays += chunk_rays;

@@ -1,7 +1,7 @@
 // `import rtvk`: the library (rtvk.h) with NumPy arrays. The GIL is released while a render
 // runs; Ctrl-C stops it at its next pass and raises KeyboardInterrupt; bad input raises
 // ValueError with the message the CLI prints, a device failure RuntimeError. Its typed signatures
-// are python/rtvk.pyi; docs/python.md shows it at work.
+// are rtvk.pyi beside it; docs/python.md shows it at work.
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

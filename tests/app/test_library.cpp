@@ -31,8 +31,7 @@ TEST(Library, BadInputIsBadInputWithTheClisMessage) {
     api::Scene("no-such-scene");
     FAIL() << "no exception";
   } catch (const api::bad_input& e) {
-    EXPECT_NE(std::strstr(e.what(), "--scene: unknown scene 'no-such-scene'"), nullptr)
-        << e.what();
+    EXPECT_NE(std::strstr(e.what(), "--scene: unknown scene 'no-such-scene'"), nullptr) << e.what();
   }
   EXPECT_THROW(api::Renderer(api::Scene("seed"), "tpu"), api::bad_input);
   EXPECT_THROW(api::Camera::look_at({0, 0, 0}, {0, 0, 0}, 8, 8), api::bad_input);
