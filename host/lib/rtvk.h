@@ -7,7 +7,7 @@
 //
 //   #include <rtvk/rtvk.h>
 //   rtvk::api::Scene scene("cornell-box");                  // a built-in, a scene file or a mesh
-//   rtvk::api::Renderer renderer(scene, "cpu");             // or "gpu"; the scene is set up once
+//   rtvk::api::Renderer renderer(scene, "gpu");             // or "cpu"; the scene is set up once
 //   rtvk::api::Image image = renderer.render(rtvk::api::Camera::from_scene(scene));
 //
 // Bad input throws rtvk::api::bad_input (a std::invalid_argument) with the one-line message the
@@ -135,8 +135,9 @@ struct RTVK_API RenderOptions {
 
 // Renders a scene on one backend: "cpu" (precision "auto", "fast" or "reference": --precision),
 // "gpu" (device: as --device selects it; empty: RTVK_DEVICE, else the best) or "auto" (the GPU
-// where a Vulkan device exists, else the CPU). The scene is set
-// up once (BVH, device buffers, pipelines) and kept across renders until it changes.
+// where a Vulkan device exists, else the CPU). On the GPU the scene is set up once (device
+// buffers, BVH, pipelines) and kept across renders until it changes; on the CPU each render
+// builds its BVH again, as one `rtvk render` of a view does.
 class RTVK_API Renderer {
  public:
   explicit Renderer(const Scene& scene, const std::string& backend = "cpu",
