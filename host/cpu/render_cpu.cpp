@@ -108,9 +108,7 @@ framebuffer render_fast(const camera& cam, const scene& s, const render_settings
   f.motion_begin = float(s.motion.lo);
   f.motion_end = float(s.motion.hi);
   if (stats) *stats = {};
-  framebuffer fb = render_fast_window(
-      arrays, f, {win.x, win.y, win.width, win.height, win.sample_begin, win.sample_end}, progress,
-      engine, stats);
+  framebuffer fb = render_fast_window(arrays, f, win, progress, engine, stats);
   if (stats) stats->build_seconds += build_seconds;
   return fb;
 }

@@ -10,6 +10,12 @@
 #include "fast_render.h"
 #include "fast_shading.h"
 #include "parallel.h"
+// The host's own double arithmetic (the 8-bit encoding's sums): not the kernels', which
+// -Wdouble-promotion guards here.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdouble-promotion"
+#include "render_settings.h"
+#pragma GCC diagnostic pop
 
 namespace rtvk {
 namespace {
@@ -22,7 +28,7 @@ struct pixel_inputs {
   const shading_tables& tables;
   camera_frame camera;  // the camera buffer's fields, as get_ray reads them
   const fast_settings& settings;
-  const fast_window& win;
+  const render_window& win;
 };
 
 // A sample's color can be added where it is finite (NaN and infinities are dropped, as on the GPU).
@@ -63,7 +69,7 @@ camera_frame frame_of(const gpu::camera_ubo& u) {
 }  // namespace
 
 framebuffer render_fast_window(const gpu::scene_arrays& arrays, const fast_settings& settings,
-                               const fast_window& win, const std::function<void(int)>& progress,
+                               const render_window& win, const std::function<void(int)>& progress,
                                const engine_options& engine, render_stats* stats) {
   const auto build_start = std::chrono::steady_clock::now();
   const fast::world world(arrays, settings.motion_begin, settings.motion_end);

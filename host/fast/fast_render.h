@@ -13,6 +13,8 @@
 
 namespace rtvk {
 
+struct render_window;  // render_settings.h: the pixels and samples a render draws
+
 // What a fast render reads besides the arrays, every value as the GPU's push constants and
 // camera buffer hold it.
 struct fast_settings {
@@ -27,17 +29,11 @@ struct fast_settings {
   float motion_begin = 0, motion_end = 0;  // the scene's time span, seconds
 };
 
-// A rectangle of the image and a range of its samples (render_window's fields).
-struct fast_window {
-  int x = 0, y = 0, width = 0, height = 0;  // pixels, from the top left
-  int sample_begin = 0, sample_end = 0;     // samples [begin, end)
-};
-
 // The mean of the window's samples of each of its pixels, exactly as the whole render draws
 // them; rows shared out among engine.threads threads. `progress` (may be empty) gets the rows done
 // so far from the calling thread; engine.cancelled stops it with render_cancelled.
 framebuffer render_fast_window(const gpu::scene_arrays& arrays, const fast_settings& settings,
-                               const fast_window& win, const std::function<void(int)>& progress,
+                               const render_window& win, const std::function<void(int)>& progress,
                                const engine_options& engine, render_stats* stats);
 
 }  // namespace rtvk
