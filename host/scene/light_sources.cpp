@@ -55,7 +55,8 @@ bool has_colors(const scene& s, const triangle& t) {
 }
 
 // Vose's alias table over the lamps (the first `count` of `lights`), by power: each gets its
-// probability (pmf) and its slot's split (alias_q, alias), which nee_draw_at reads where the table has no light tree.
+// probability (pmf) and its slot's split (alias_q, alias), which nee_draw_at reads where the table
+// has no light tree.
 void build_alias_table(std::vector<light_record>& lights, std::size_t count) {
   double total = 0;
   for (std::size_t k = 0; k < count; ++k) total += lamp_power(lights[k]);

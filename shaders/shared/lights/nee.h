@@ -27,8 +27,8 @@
 #include "light_tree.h"
 #include "pdf.h"
 #include "punctual.h"
-#include "ray_color.h"
 #include "random.h"
+#include "ray_color.h"
 
 // The punctual lights next-event estimation draws: the table's (a GPU shader defines it first, to
 // compile them out where the scene has none).
