@@ -14,8 +14,12 @@ std::vector<gpu::gpu_aov> render_aov_cpu(const camera& cam, const scene& s,
                                          const render_window& win, int threads) {
   // Always the BVH: its ties go to the same object as a scan of every object, so the ids are
   // the ones any --accel draws.
-  const bvh_world world(s, threads);
-  const scene_shading shading(s);
+  return render_aov_cpu(cam, bvh_world(s, threads), scene_shading(s), win, threads);
+}
+
+std::vector<gpu::gpu_aov> render_aov_cpu(const camera& cam, const bvh_world& world,
+                                         const scene_shading& shading, const render_window& win,
+                                         int threads) {
   const texture_tables tables = shading.tables();
   const camera_frame& f = cam.frame();
   const uint width = uint(cam.image_width()), height = uint(cam.image_height());

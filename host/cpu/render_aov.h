@@ -14,4 +14,12 @@ namespace rtvk {
 std::vector<gpu::gpu_aov> render_aov_cpu(const camera& cam, const scene& s,
                                          const render_window& win, int threads = 0);
 
+class bvh_world;
+struct scene_shading;
+// The same through a world and shading tables already made (cpu_scene keeps them): `shading`
+// built without lights (scene_shading(s)).
+std::vector<gpu::gpu_aov> render_aov_cpu(const camera& cam, const bvh_world& world,
+                                         const scene_shading& shading, const render_window& win,
+                                         int threads = 0);
+
 }  // namespace rtvk

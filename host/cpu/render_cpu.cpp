@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "bvh_world.h"
 #include "elapsed.h"
 #include "errors.h"
 #include "fast_render.h"
@@ -15,6 +16,7 @@
 #include "packing.h"
 #include "parallel.h"
 #include "random.h"
+#include "render_aov.h"
 #include "shading.h"
 #include "world.h"
 
@@ -78,23 +80,9 @@ color pixel_color(const pixel_inputs& in, const hittable& world, int i, int y,
   return divide(sum, in.win.samples());
 }
 
-// The scene's world, accelerated or not, and the seconds it took to build.
-std::unique_ptr<hittable> timed_world(const scene& s, const engine_options& engine,
-                                      double& build_seconds) {
-  const auto build_start = std::chrono::steady_clock::now();
-  std::unique_ptr<hittable> world = make_accelerated_world(s, engine.use_bvh, engine.threads);
-  build_seconds = seconds_since(build_start);
-  return world;
-}
-
-// The fast mode's render of the window (host/fast): the scene's arrays as the GPU gets them, and
-// the settings as its push constants hold them.
-framebuffer render_fast(const camera& cam, const scene& s, const render_settings& rs,
-                        const render_window& win, const progress_callback& progress,
-                        const engine_options& engine, render_stats* stats) {
-  const auto build_start = std::chrono::steady_clock::now();
-  const gpu::scene_arrays arrays = gpu::build_scene_arrays(s, false);  // Embree builds the trees
-  const double build_seconds = seconds_since(build_start);
+// The fast mode's settings for a render: the camera and the settings as the GPU's push constants
+// and camera buffer hold them.
+fast_settings fast_settings_of(const camera& cam, const scene& s, const render_settings& rs) {
   fast_settings f;
   f.camera = gpu::to_ubo(cam);
   f.horizon = glm::vec3(s.sky.horizon);
@@ -105,12 +93,7 @@ framebuffer render_fast(const camera& cam, const scene& s, const render_settings
   f.nee = uses_nee(rs.sampling);
   f.strata = pixel_strata(rs, f.sample_lights);
   f.jitter = rs.jitter;
-  f.motion_begin = float(s.motion.lo);
-  f.motion_end = float(s.motion.hi);
-  if (stats) *stats = {};
-  framebuffer fb = render_fast_window(arrays, f, win, progress, engine, stats);
-  if (stats) stats->build_seconds += build_seconds;
-  return fb;
+  return f;
 }
 
 }  // namespace
@@ -130,15 +113,47 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
 framebuffer render_cpu_window(const camera& cam, const scene& s, const render_settings& rs,
                               const render_window& win, const progress_callback& progress,
                               const engine_options& engine, render_stats* stats) {
+  const cpu_scene prepared(s, engine);
+  framebuffer fb = prepared.render(cam, rs, win, progress, engine, stats);
+  if (stats) stats->build_seconds = prepared.build_seconds();
+  return fb;
+}
+
+cpu_scene::cpu_scene(const scene& s, const engine_options& engine) : s_(s) {
+  const auto build_start = std::chrono::steady_clock::now();
+  if (runs_fast(engine))  // Embree builds the trees over the GPU's arrays, without their BVH
+    fast_ = std::make_unique<fast_scene>(gpu::build_scene_arrays(s, false), float(s.motion.lo),
+                                         float(s.motion.hi));
+  else
+    world_ = make_accelerated_world(s, engine.use_bvh, engine.threads);
+  build_seconds_ = seconds_since(build_start);
+}
+
+cpu_scene::~cpu_scene() = default;
+
+const scene_shading& cpu_scene::shading(bool sample_lights, bool nee) const {
+  const std::lock_guard lock(mutex_);
+  std::unique_ptr<scene_shading>& kept = shading_[std::size_t(sample_lights) + 2u * nee];
+  if (!kept) kept = std::make_unique<scene_shading>(s_, sample_lights, nee);
+  return *kept;
+}
+
+framebuffer cpu_scene::render(const camera& cam, const render_settings& rs,
+                              const render_window& win, const progress_callback& progress,
+                              const engine_options& engine, render_stats* stats) const {
   check_window(win, cam.image_width(), cam.image_height());
-  check_motion_span(s.motion, scene_moves(s), cam);
-  if (runs_fast(engine)) return render_fast(cam, s, rs, win, progress, engine, stats);
-  double build_seconds = 0;
-  const std::unique_ptr<hittable> world = timed_world(s, engine, build_seconds);
-  const bool lights = samples_lights(s, rs);
+  check_motion_span(s_.motion, scene_moves(s_), cam);
+  if (fast_) return fast_->render(fast_settings_of(cam, s_, rs), win, progress, engine, stats);
+  return render_reference(cam, rs, win, progress, engine, stats);
+}
+
+framebuffer cpu_scene::render_reference(const camera& cam, const render_settings& rs,
+                                        const render_window& win, const progress_callback& progress,
+                                        const engine_options& engine, render_stats* stats) const {
+  const bool lights = samples_lights(s_, rs);
   const bool nee = uses_nee(rs.sampling);
-  const scene_shading shading(s, lights, nee);
-  const pixel_inputs in{cam, s.sky, rs, shading, win, pixel_strata(rs, lights), nee};
+  const pixel_inputs in{cam, s_.sky, rs, shading(lights, nee), win, pixel_strata(rs, lights), nee};
+  const hittable& world = *world_;
   framebuffer fb(win.width, win.height);
   const std::size_t width = std::size_t(win.width);
   std::atomic<std::uint64_t> rays{0};
@@ -146,9 +161,9 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
   parallel_pixels(
       win.width, win.height, worker_threads(engine.threads), engine.cancelled, progress,
       [&](std::size_t begin, std::size_t end) {
-        const counting_world counted(*world);
+        const counting_world counted(world);
         // Counting costs a virtual call per ray: only when someone asked for it.
-        const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : *world;
+        const hittable& target = engine.count_rays ? static_cast<const hittable&>(counted) : world;
         std::uint64_t chunk_dropped = 0;
         for (std::size_t p = begin; p < end; ++p) {
           const int row = int(p / width), column = int(p % width);
@@ -157,12 +172,19 @@ framebuffer render_cpu_window(const camera& cam, const scene& s, const render_se
         rays += counted.rays;
         dropped += chunk_dropped;
       });
-  if (stats) {
-    stats->rays = rays.load();
-    stats->dropped_samples = dropped.load();
-    stats->build_seconds = build_seconds;
-  }
+  if (stats) *stats = {.rays = rays.load(), .dropped_samples = dropped.load()};
   return fb;
+}
+
+std::vector<gpu::gpu_aov> cpu_scene::aovs(const camera& cam, const render_window& win,
+                                          int threads) const {
+  const bvh_world* world = dynamic_cast<const bvh_world*>(world_.get());
+  if (!world) {
+    const std::lock_guard lock(mutex_);
+    if (!aov_world_) aov_world_ = std::make_unique<bvh_world>(s_, threads);
+    world = aov_world_.get();
+  }
+  return render_aov_cpu(cam, *world, shading(false, false), win, threads);
 }
 
 }  // namespace rtvk

@@ -3,15 +3,13 @@
 #include <string>
 
 #include "camera.h"
+#include "cpu_scene.h"
 #include "engine_options.h"
 #include "framebuffer.h"
 #include "render_settings.h"
 #include "scene.h"
 
 namespace rtvk {
-
-// Called with the number of rows finished so far; may be empty.
-using progress_callback = std::function<void(int rows_done)>;
 
 // The lesson's main loop generalized to the book's: rows from the top, `spp` samples per pixel
 // (jittered when asked), lens samples for depth of field. The framebuffer holds the mean linear

@@ -2,11 +2,10 @@
 // pixel's sample draws the numbers the GPU's and the reference's draw (pixel_sample_stream), so
 // the three images differ only by the precision of the arithmetic.
 #include <atomic>
-#include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "camera_rays.h"
-#include "elapsed.h"
 #include "fast_render.h"
 #include "fast_shading.h"
 #include "parallel.h"
@@ -68,14 +67,23 @@ camera_frame frame_of(const gpu::camera_ubo& u) {
 
 }  // namespace
 
-framebuffer render_fast_window(const gpu::scene_arrays& arrays, const fast_settings& settings,
-                               const render_window& win, const std::function<void(int)>& progress,
-                               const engine_options& engine, render_stats* stats) {
-  const auto build_start = std::chrono::steady_clock::now();
-  const fast::world world(arrays, settings.motion_begin, settings.motion_end);
-  const double build_seconds = seconds_since(build_start);
-  const shading_tables tables(arrays, settings);
-  const pixel_inputs in{world, tables, frame_of(settings.camera), settings, win};
+struct fast_scene::impl {
+  impl(gpu::scene_arrays a, float motion_begin, float motion_end)
+      : arrays(std::move(a)), world(arrays, motion_begin, motion_end) {}
+  const gpu::scene_arrays arrays;  // the world points into them
+  const fast::world world;
+};
+
+fast_scene::fast_scene(gpu::scene_arrays arrays, float motion_begin, float motion_end)
+    : impl_(std::make_unique<impl>(std::move(arrays), motion_begin, motion_end)) {}
+
+fast_scene::~fast_scene() = default;
+
+framebuffer fast_scene::render(const fast_settings& settings, const render_window& win,
+                               const std::function<void(int)>& progress,
+                               const engine_options& engine, render_stats* stats) const {
+  const shading_tables tables(impl_->arrays, settings);
+  const pixel_inputs in{impl_->world, tables, frame_of(settings.camera), settings, win};
   framebuffer fb(win.width, win.height);
   const std::size_t width = std::size_t(win.width);
   std::atomic<std::uint64_t> dropped{0}, rays{0};
@@ -90,11 +98,7 @@ framebuffer render_fast_window(const gpu::scene_arrays& arrays, const fast_setti
                     dropped += chunk_dropped;
                     rays += chunk_rays;
                   });
-  if (stats) {
-    stats->rays = rays.load();
-    stats->dropped_samples = dropped.load();
-    stats->build_seconds += build_seconds;  // Embree's trees, after the arrays
-  }
+  if (stats) *stats = {.rays = rays.load(), .dropped_samples = dropped.load()};
   return fb;
 }
 

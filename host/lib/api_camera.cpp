@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "api_impl.h"
+#include "calibration_file.h"
 #include "colmap_model.h"
 
 namespace rtvk::api {
@@ -48,22 +49,31 @@ Camera Camera::look_at(const std::array<double, 3>& lookfrom, const std::array<d
   });
 }
 
+namespace {
+
 // OpenCV's camera maps world points p to R p + t and looks down its +z with +y down: its center
 // is -R^T t, it looks along R's third row, and its up is minus the second (colmap_pose's rule).
+camera_pose opencv_pose(const std::array<double, 16>& m) {
+  for (const double x : m)
+    if (!std::isfinite(x)) throw bad_input("world_to_camera: a value is not finite");
+  const vec3 row_x(m[0], m[1], m[2]), row_y(m[4], m[5], m[6]), row_z(m[8], m[9], m[10]);
+  const vec3 t(m[3], m[7], m[11]);
+  if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1)
+    throw bad_input("world_to_camera: the last row must be 0, 0, 0, 1");
+  camera_pose pose;
+  pose.lookfrom = -(t.x * row_x + t.y * row_y + t.z * row_z);
+  pose.lookat = pose.lookfrom + row_z;
+  pose.vup = -row_y;
+  return pose;
+}
+
+}  // namespace
+
 Camera Camera::from_opencv(const std::array<double, 16>& m, double fx, double fy, double cx,
                            double cy, int width, int height, const std::vector<double>& distortion,
                            const std::string& model) {
   return translate([&] {
-    for (const double x : m)
-      if (!std::isfinite(x)) throw bad_input("world_to_camera: a value is not finite");
-    const vec3 row_x(m[0], m[1], m[2]), row_y(m[4], m[5], m[6]), row_z(m[8], m[9], m[10]);
-    const vec3 t(m[3], m[7], m[11]);
-    if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1)
-      throw bad_input("world_to_camera: the last row must be 0, 0, 0, 1");
-    camera_pose pose;
-    pose.lookfrom = -(t.x * row_x + t.y * row_y + t.z * row_z);
-    pose.lookat = pose.lookfrom + row_z;
-    pose.vup = -row_y;
+    camera_pose pose = opencv_pose(m);
     if (model != "opencv" && model != "opencv-fisheye")
       throw bad_input("model " + model + ": expected opencv or opencv-fisheye");
     pose.projection = model == "opencv" ? projection::opencv : projection::opencv_fisheye;
@@ -74,6 +84,17 @@ Camera Camera::from_opencv(const std::array<double, 16>& m, double fx, double fy
     pose.intrinsics = {width, height, fx, fy, cx, cy, {}, 0};
     std::copy(distortion.begin(), distortion.end(), pose.intrinsics.k.begin());
     return make(pose, width, height);
+  });
+}
+
+Camera Camera::from_opencv_file(const std::array<double, 16>& world_to_camera,
+                                const std::string& calibration_file) {
+  return translate([&] {
+    camera_pose pose = opencv_pose(world_to_camera);
+    const calibration cal = read_opencv_calibration(calibration_file);
+    pose.projection = cal.model;
+    pose.intrinsics = cal.lens;
+    return make(pose, cal.lens.width, cal.lens.height);
   });
 }
 

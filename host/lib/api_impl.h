@@ -2,12 +2,14 @@
 // What the library's handles hold (rtvk.h's impl structs), and the one place where rtvk's own
 // errors become the library's.
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <utility>
 
 #include "camera.h"
 #include "errors.h"
 #include "image_io.h"
+#include "object_placement.h"
 #include "rtvk.h"
 #include "scene.h"
 #include "scene_overrides.h"
@@ -20,6 +22,7 @@ struct Scene::impl {
   scene s;
   std::uint64_t version = 0;  // counts edits: a renderer set up for an older version redoes it
   bool builtin = false;       // a built-in scene: --precision auto draws it with the reference
+  std::map<std::uint32_t, object_original> placed;  // objects moved by place, as first found
 };
 
 struct Camera::impl {

@@ -9,7 +9,6 @@
 #include "gpu_flags.h"
 #include "light_sources.h"
 #include "precision_flag.h"
-#include "render_aov.h"
 #include "render_cpu.h"
 #include "vk_error.h"
 
@@ -23,9 +22,11 @@ struct Renderer::impl {
   cpu_precision precision = cpu_precision::reference;
   rtvk::scene s;  // the copy set up, with the motion span of the renders so far
   std::uint64_t version = ~std::uint64_t(0);  // of the scene `s` is a copy of
+  std::uint64_t set_ups = 0;                  // times `s` was set up
   std::function<bool()> cancel;               // the render's poll, while one runs
   std::unique_ptr<gpu::gpu_context> ctx;
   std::unique_ptr<gpu::gpu_engine> engine;
+  std::unique_ptr<cpu_scene> cpu;  // on the CPU: the world built once, as the engine is
   std::unique_ptr<gpu::aov_pass> aovs;
 
   engine_options options() {
@@ -45,14 +46,18 @@ struct Renderer::impl {
     if (version == scene.impl_->version && !moved) return;
     aovs.reset();
     engine.reset();
+    cpu.reset();
     s = scene.impl_->s;
     s.motion = span;
     version = scene.impl_->version;
+    ++set_ups;
     if (backend == "gpu")
       engine = std::make_unique<gpu::gpu_engine>(
           *ctx, s,
           gpu::gpu_render_options{.engine = options(),
                                   .pipeline_cache_folder = gpu::default_cache_folder()});
+    else
+      cpu = std::make_unique<cpu_scene>(s, options());
   }
 
   std::vector<framebuffer> draw(const std::vector<camera>& views, const render_settings& rs,
@@ -68,15 +73,15 @@ struct Renderer::impl {
       const auto rows = [&](int done) {
         progress((double(k) + double(done) / win.height) / double(views.size()));
       };
-      out.push_back(render_cpu_window(views[k], s, rs, win,
-                                      progress ? progress_callback(rows) : progress_callback{},
-                                      options()));
+      out.push_back(cpu->render(views[k], rs, win,
+                                progress ? progress_callback(rows) : progress_callback{}, options(),
+                                nullptr));
     }
     return out;
   }
 
   aov_image ground_truth(const camera& c, unsigned which, const render_window& win) {
-    if (!engine) return aov_from(render_aov_cpu(c, s, win), object_ids(s), which, win);
+    if (!engine) return aov_from(cpu->aovs(c, win, 0), object_ids(s), which, win);
     if (!aovs)
       aovs = std::make_unique<gpu::aov_pass>(*ctx, engine->device_scene(), engine->scene_has_bvh());
     return aov_from(aovs->run(c, win), object_ids(s), which, win);
@@ -180,6 +185,10 @@ std::vector<Image> Renderer::render(const std::vector<Camera>& cameras,
     impl_->cancel = {};
     return out;
   });
+}
+
+std::uint64_t Renderer::set_ups() const {
+  return impl_->set_ups;
 }
 
 std::string Renderer::description() const {

@@ -59,6 +59,59 @@ void Scene::set_material(const std::string& name, const std::string& material_js
   });
 }
 
+std::vector<Scene::Object> Scene::objects() const {
+  std::vector<Object> out;
+  const scene& s = impl_->s;
+  for (const object_original& o : list_objects(s)) {
+    Object b{o.id, o.kind, "", "", o.count};
+    if (o.material >= 0) b.material = s.materials[std::size_t(o.material)].name;
+    if (o.kind == "instance") b.group = s.groups[o.group].name;
+    out.push_back(std::move(b));
+  }
+  return out;
+}
+
+namespace {
+
+// A placement from 16 numbers (a 4x4, row-major, last row 0 0 0 1) or 12 (its first 3 rows).
+transform placement_of(const std::vector<double>& m) {
+  if (m.size() != 12 && m.size() != 16)
+    throw usage_error("matrix: expected 12 or 16 numbers (row-major), got " +
+                      std::to_string(m.size()));
+  for (double v : m)
+    if (!std::isfinite(v)) throw usage_error("matrix: expected finite numbers");
+  if (m.size() == 16 && (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1))
+    throw usage_error("matrix: the last row must be 0 0 0 1 (an affine placement)");
+  transform t;
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) t.linear[col][row] = m[std::size_t(4 * row + col)];
+    t.offset[row] = m[std::size_t(4 * row + 3)];
+  }
+  if (const std::optional<std::string> why = degenerate(t))
+    throw usage_error("matrix: the transform cannot place anything: " + *why);
+  return t;
+}
+
+}  // namespace
+
+void Scene::place(std::uint32_t id, const std::vector<double>& matrix) {
+  translate([&] {
+    const transform t = placement_of(matrix);
+    auto kept = impl_->placed.find(id);
+    if (kept == impl_->placed.end()) {
+      std::optional<object_original> found = find_object(impl_->s, id);
+      if (!found)
+        throw usage_error("object " + std::to_string(id) + ": the scene has objects 1 to " +
+                          std::to_string(list_objects(impl_->s).size()));
+      kept = impl_->placed.emplace(id, std::move(*found)).first;
+    }
+    if (const std::optional<std::string> why = place_object(impl_->s, kept->second, t))
+      throw usage_error("object " + std::to_string(id) + ": " + *why);
+    ++impl_->version;
+    return 0;
+  });
+}
+
 scene Scene::impl::checked(scene s) {
   check_scene(s);
   return s;

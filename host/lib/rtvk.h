@@ -57,6 +57,23 @@ class RTVK_API Scene {
   // at its next render (it sets the scene up again).
   void set_material(const std::string& name, const std::string& material_json);
 
+  // One object as --aov object-id numbers it: a sphere, quad, box, triangle, mesh file, disk or
+  // instance.
+  struct Object {
+    std::uint32_t id = 0;    // 1 and up, the object-id AOV's value where it is seen
+    std::string kind;        // sphere, quad, box, triangle, mesh, disk or instance
+    std::string material;    // its (first primitive's) material; empty for an instance
+    std::string group;       // an instance's group; else empty
+    std::size_t primitives;  // quads of a box, triangles of a mesh, objects of a group; else 1
+  };
+  std::vector<Object> objects() const;
+  // Places object `id` by `matrix` (4x4 row-major, last row 0 0 0 1; or 12 numbers, 3 rows)
+  // after the placement the scene gave it: the identity puts it back where the scene had it, and
+  // each call replaces the last (they do not compound). Spheres and disks take turns, moves and
+  // one scale only; an instance takes any affine placement. A renderer made from this scene sees
+  // the change at its next render.
+  void place(std::uint32_t id, const std::vector<double>& matrix);
+
   struct impl;
   std::shared_ptr<impl> impl_;  // shared by copies: a copy is the same scene
 
@@ -86,6 +103,11 @@ class RTVK_API Camera {
                             double cx, double cy, int width, int height,
                             const std::vector<double>& distortion = {},
                             const std::string& model = "opencv");
+  // The same with the intrinsics, distortion, model and image size of an OpenCV calibration file
+  // (YAML or JSON as cv::FileStorage writes it, ROS camera_info files too), as `rtvk render
+  // --calibration` reads one.
+  static Camera from_opencv_file(const std::array<double, 16>& world_to_camera,
+                                 const std::string& calibration_file);
   // The registered images of a COLMAP model (DIR/cameras.txt and images.txt, or the .bin pair),
   // in its images file's order: each view's name (as `rtvk render --colmap` names the camera)
   // and its camera, at the size its COLMAP camera was calibrated at. `names`: only those views
@@ -135,9 +157,9 @@ struct RTVK_API RenderOptions {
 
 // Renders a scene on one backend: "cpu" (precision "auto", "fast" or "reference": --precision),
 // "gpu" (device: as --device selects it; empty: RTVK_DEVICE, else the best) or "auto" (the GPU
-// where a Vulkan device exists, else the CPU). On the GPU the scene is set up once (device
-// buffers, BVH, pipelines) and kept across renders until it changes; on the CPU each render
-// builds its BVH again, as one `rtvk render` of a view does.
+// where a Vulkan device exists, else the CPU). The scene is set up once (on the GPU its device
+// buffers, BVH and pipelines; on the CPU its BVH or Embree's trees and its shading tables) and
+// kept across renders until it changes.
 class RTVK_API Renderer {
  public:
   explicit Renderer(const Scene& scene, const std::string& backend = "cpu",
@@ -152,6 +174,9 @@ class RTVK_API Renderer {
   std::vector<Image> render(const std::vector<Camera>& cameras, const RenderOptions& options = {});
   // What draws: "cpu (fast)", "cpu (reference)" or "gpu (DEVICE, PATH)".
   std::string description() const;
+  // How many times the scene was set up on the backend: 1 after the first render; an edit of the
+  // scene, or a camera whose shutter reaches outside the instants set up for, adds one.
+  std::uint64_t set_ups() const;
 
   struct impl;
 

@@ -23,11 +23,12 @@ Camera camera_arg(const py::object& o) {
   return Camera::from_scene(Scene(o.cast<std::string>()));
 }
 
-// n numbers from anything NumPy reads as an array of that many (a list, a tuple, an array).
+// n numbers from anything NumPy reads as an array of that many (a list, a tuple, an array); n 0:
+// any number of them.
 std::vector<double> numbers(const py::object& o, std::size_t n, const char* what) {
   const py::array_t<double, py::array::c_style | py::array::forcecast> a =
       py::module_::import("numpy").attr("asarray")(o, "float64");
-  if (std::size_t(a.size()) != n)
+  if (n != 0 && std::size_t(a.size()) != n)
     throw bad_input(std::string(what) + ": expected " + std::to_string(n) + " numbers, got " +
                     std::to_string(a.size()));
   return std::vector<double>(a.data(), a.data() + a.size());
@@ -160,7 +161,33 @@ PYBIND11_MODULE(rtvk, m) {
           },
           py::arg("name"), py::arg("material"),
           "Replaces material `name` (a dict as a scene file writes one); renderers of this "
-          "scene set it up again at their next render.");
+          "scene set it up again at their next render.")
+      .def(
+          "objects",
+          [](const Scene& s) {
+            py::list out;
+            for (const Scene::Object& o : s.objects()) {
+              py::dict d;
+              d["id"] = o.id;
+              d["kind"] = o.kind;
+              d["material"] = o.material;
+              d["group"] = o.group;
+              d["primitives"] = o.primitives;
+              out.append(d);
+            }
+            return out;
+          },
+          "Every object as the object-id AOV numbers it: dicts of id, kind (sphere, quad, box, "
+          "triangle, mesh, disk, instance), material, group (an instance's) and primitives.")
+      .def(
+          "place",
+          [](Scene& s, std::uint32_t id, const py::object& matrix) {
+            s.place(id, numbers(matrix, 0, "matrix"));
+          },
+          py::arg("id"), py::arg("matrix"),
+          "Places object `id` by `matrix` (4x4, or its first 3 rows) after the placement the "
+          "scene gave it: the identity puts it back; each call replaces the last. Renderers of "
+          "this scene set it up again at their next render.");
 
   py::class_<Camera>(m, "Camera", "A camera: a pose, a model and the image size it draws.")
       .def_static(
@@ -212,6 +239,18 @@ PYBIND11_MODULE(rtvk, m) {
           "forward, +y down), the 3x3 camera matrix K, the image size and the distortion "
           "coefficients (opencv: k1, k2, p1, p2[, k3[, k4, k5, k6]]; opencv-fisheye: k1..k4).")
       .def_static(
+          "from_opencv_file",
+          [](const py::object& world_to_camera, const std::string& file) {
+            const std::vector<double> m = numbers(world_to_camera, 16, "world_to_camera");
+            std::array<double, 16> w2c{};
+            std::copy(m.begin(), m.end(), w2c.begin());
+            return Camera::from_opencv_file(w2c, file);
+          },
+          py::arg("world_to_camera"), py::arg("calibration_file"),
+          "A calibrated camera posed by the 4x4 world-to-camera matrix, its intrinsics, "
+          "distortion, model and image size read from an OpenCV calibration file (YAML or JSON "
+          "as cv::FileStorage writes it), as `rtvk render --calibration` reads one.")
+      .def_static(
           "from_colmap",
           [](const std::string& folder, const std::vector<std::string>& names) {
             py::dict views;  // in the images file's order (dicts keep insertion order)
@@ -240,5 +279,8 @@ PYBIND11_MODULE(rtvk, m) {
            "array (height, width, 3) of scene-linear color; with `aovs` (depth, normal, albedo, "
            "object-id, material-id), a tuple (image, dict of arrays). spp, max_depth, seed: 0 "
            "(-1 for seed) keeps the scene's. progress: called with the share done, 0 to 1.")
-      .def_property_readonly("description", &Renderer::description);
+      .def_property_readonly("description", &Renderer::description)
+      .def_property_readonly("set_ups", &Renderer::set_ups,
+                             "How many times the scene was set up on the backend: 1 after the "
+                             "first render; each edit of the scene adds one.");
 }

@@ -34,6 +34,10 @@ class Scene:
     def camera_names(self) -> list[str]: ...
     def set_material(self, name: str, material: dict[str, Any]) -> None:
         """Replaces a material; renderers of this scene set it up again at their next render."""
+    def objects(self) -> list[dict[str, Any]]:
+        """Every object as the object-id AOV numbers it: id, kind, material, group, primitives."""
+    def place(self, id: int, matrix: npt.ArrayLike) -> None:
+        """Places object `id` by a 4x4 (or 3x4) matrix after the scene's own placement of it."""
 
 class Camera:
     """A camera: a pose, a model and the image size it draws."""
@@ -63,6 +67,9 @@ class Camera:
         model: str = "opencv",
     ) -> Camera:
         """A calibrated camera: 4x4 world-to-camera [R|t] (+z forward, +y down), 3x3 K."""
+    @staticmethod
+    def from_opencv_file(world_to_camera: npt.ArrayLike, calibration_file: str) -> Camera:
+        """A calibrated camera: its pose, and the rest from an OpenCV calibration file."""
     @staticmethod
     def from_colmap(folder: str, names: Sequence[str] = ()) -> dict[str, Camera]:
         """The registered images of a COLMAP model as {name: Camera} (`names`: only those)."""
@@ -106,3 +113,6 @@ class Renderer:
     ) -> list[Any]: ...
     @property
     def description(self) -> str: ...
+    @property
+    def set_ups(self) -> int:
+        """How many times the scene was set up: 1 after the first render, +1 per edit."""

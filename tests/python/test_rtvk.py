@@ -236,3 +236,57 @@ def test_progress_is_reported_as_the_render_goes():
         rtvk.Camera.look_at((278, 278, -800), (278, 278, 0), 48, 40, vfov=40), spp=2,
         progress=seen.append)
     assert seen and seen == sorted(seen) and 0 < seen[-1] <= 1.0
+
+
+# A wall at z = 5 and a ball (id 1; the wall is id 2) in front of it, seen by an OpenCV camera at
+# z = -2 looking down +z; the scene's own camera is the same pose (OpenCV's up is -y).
+WALL = {
+    "camera": {"lookfrom": [0, 0, -2], "lookat": [0, 0, 5], "vup": [0, -1, 0]},
+    "render": {"width": 32, "aspect": "4:3", "spp": 2},
+    "materials": {"m": {"type": "lambertian", "albedo": [0.5, 0.5, 0.5]}},
+    "quads": [{"Q": [-50, -50, 5], "u": [100, 0, 0], "v": [0, 100, 0], "material": "m"}],
+    "spheres": [{"center": [1, 0.5, 4.5], "radius": 0.3, "material": "m"}]}
+W2C = np.array([[1.0, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 2], [0, 0, 0, 1]])
+K = np.array([[40.0, 0, 15.5], [0, 40.0, 11.5], [0, 0, 1]])
+
+
+def test_a_placed_object_is_where_the_aov_and_the_dict_say():
+    scene = rtvk.Scene.from_dict(WALL)
+    assert [(o["id"], o["kind"]) for o in scene.objects()] == [(1, "sphere"), (2, "quad")]
+    renderer = rtvk.Renderer(scene)
+    cam = rtvk.Camera.from_opencv(W2C, K, 32, 24)
+
+    def ball_at(x, y):  # the ball's pixel for a center at (x, y, 4.5), 6.5 from the camera
+        return round(11.5 + 40 * y / 6.5), round(15.5 + 40 * x / 6.5)
+
+    _, before = renderer.render(cam, spp=1, aovs=["object-id"])
+    assert before["object_id"][ball_at(1, 0.5)] == 1
+    move = np.eye(4)
+    move[:3, 3] = [-2, -1, 0]
+    scene.place(1, move)
+    _, after = renderer.render(cam, spp=1, aovs=["object-id"])
+    assert after["object_id"][ball_at(1, 0.5)] == 2  # the wall, where the ball was
+    assert after["object_id"][ball_at(-1, -0.5)] == 1
+    assert scene.to_dict()["spheres"][0]["center"] == [-1, -0.5, 4.5]
+    assert renderer.set_ups == 2
+    with pytest.raises(ValueError, match="object 3: the scene has objects 1 to 2"):
+        scene.place(3, np.eye(4))
+
+
+def test_an_opencv_calibration_file_is_the_clis_calibration(tmp_path):
+    calibration = tmp_path / "cam.yaml"
+    calibration.write_text(
+        "%YAML:1.0\n---\nimage_width: 32\nimage_height: 24\n"
+        "camera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n"
+        "   data: [ 40., 0., 15.5, 0., 40., 11.5, 0., 0., 1. ]\n"
+        "distortion_coefficients: !!opencv-matrix\n   rows: 1\n   cols: 5\n   dt: d\n"
+        "   data: [ -0.2, 0.05, 0.001, -0.002, 0. ]\n")
+    scene_file = tmp_path / "wall.json"
+    scene_file.write_text(json.dumps(WALL))
+    cam = rtvk.Camera.from_opencv_file(W2C, str(calibration))
+    assert (cam.width, cam.height) == (32, 24)
+    image = rtvk.Renderer(rtvk.Scene(str(scene_file))).render(cam)
+    w, h, planes = cli_exr(tmp_path, str(scene_file), "--calibration", str(calibration))
+    assert np.array_equal(image, rgb_of(w, h, planes))
+    same = rtvk.Camera.from_opencv(W2C, K, 32, 24, dist=[-0.2, 0.05, 0.001, -0.002, 0])
+    assert np.array_equal(rtvk.Renderer(rtvk.Scene(str(scene_file))).render(same), image)

@@ -29,7 +29,6 @@
 #include "precision_flag.h"
 #include "progress.h"
 #include "quantize.h"
-#include "render_aov.h"
 #include "render_cpu.h"
 #include "render_gpu.h"
 #include "render_jobs.h"
@@ -82,6 +81,8 @@ struct run_context {
   // whether the CPU agreed with the device's (--backend both).
   std::function<std::vector<gpu::gpu_aov>(const render_job&)> aov_pass = {};
   bool* aovs_alike = nullptr;
+  // The scene set up for the CPU, made at its first use and kept for every view and frame.
+  std::function<const cpu_scene&()> cpu = {};
 };
 
 std::string label(const run_context& run, const render_job& job) {
@@ -171,9 +172,9 @@ void summarize(const run_context& run, const render_job& job, const std::string&
 
 framebuffer draw_cpu(const run_context& run, const render_job& job, render_stats* stats = nullptr) {
   progress_bar bar("rendering on the CPU", run.win.height, !run.o.quiet);
-  return render_cpu_window(
-      job.cam, run.s, run.s.render, run.win, [&](int rows) { bar.update(rows); },
-      engine_from(run.o), stats);
+  return run.cpu().render(
+      job.cam, run.s.render, run.win, [&](int rows) { bar.update(rows); }, engine_from(run.o),
+      stats);
 }
 
 // Shared submissions for a group of views (cameras, frames) of the run's one engine: each view's
@@ -200,9 +201,7 @@ gpu_group draw_gpu(const run_context& run, gpu::gpu_context& ctx, gpu::gpu_engin
 }
 
 // Deterministic renders (one sample, no jitter, no lens, no material that draws random numbers,
-// alpha blend included)
-// must agree to a level;
-// Monte Carlo ones to the noise rule.
+// alpha blend included) must agree to a level; Monte Carlo ones to the noise rule.
 agreement agreement_for(const run_context& run, const camera& cam) {
   bool deterministic = run.win.samples() == 1 && !run.s.render.jitter && cam.lens_radius() == 0;
   for (const auto& m : run.s.materials)  // a blend's passes draw random numbers too
@@ -229,19 +228,12 @@ bool check_against_cpu(const run_context& run, const render_job& job, const fram
   return ok;
 }
 
-// Views per GPU set-up: as many as the shader's camera array holds, within a quarter GiB of
-// host framebuffers.
-std::size_t gpu_group_size(const render_window& win) {
-  const std::uint64_t per_view = std::uint64_t(win.width) * std::uint64_t(win.height) * 24;
-  return std::size_t(std::clamp<std::uint64_t>((256ull << 20) / per_view, 1, RTVK_MAX_VIEWS));
-}
-
 int render_on_gpu(const run_context& cpu_run, gpu::gpu_context& ctx,
                   const std::vector<render_job>& jobs) {
   engine_options e = engine_from(cpu_run.o);
   e.traversal = traversal_for(cpu_run.o.accel, ctx);
   run_context run = cpu_run;
-  const std::size_t group = gpu_group_size(run.win);
+  const std::size_t group = gpu_group_size(run.win.width, run.win.height);
   // Set up once (scene buffers, BVH, pipelines) for every group of the run.
   gpu::gpu_engine engine(ctx, run.s,
                          {.engine = e, .pipeline_cache_folder = gpu::default_cache_folder()});
@@ -256,8 +248,8 @@ int render_on_gpu(const run_context& cpu_run, gpu::gpu_context& ctx,
     std::vector<gpu::gpu_aov> found = aovs->run(job.cam, run.win);
     if (run.o.backend == "both")
       aovs_alike &=
-          aovs_agree(found, render_aov_cpu(job.cam, run.s, run.win, run.o.threads),
-                     object_ids(run.s), run.win.width, run.several ? label(run, job) + ": " : "");
+          aovs_agree(found, run.cpu().aovs(job.cam, run.win, run.o.threads), object_ids(run.s),
+                     run.win.width, run.several ? label(run, job) + ": " : "");
     return found;
   };
   // The summary says which device and which traversal drew the image.
@@ -332,7 +324,7 @@ int run_render(render_options o) {
   render_window win;
   const std::vector<render_job> jobs = plan_jobs(s, o.jobs, output, o.flags.overrides(), win);
   for (const render_job& j : jobs) check_output_size(j.output, win.width, win.height, "--output");
-  const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win);
+  const std::size_t together = o.backend == "cpu" ? 1 : gpu_group_size(win.width, win.height);
   check_render_memory(win.width, win.height,
                       int(std::min(together, jobs.size())) * (o.backend == "both" ? 2 : 1));
   std::size_t written = 0;
@@ -345,7 +337,12 @@ int run_render(render_options o) {
                   samples_lights(s, s.render),
                   uses_nee(s.render.sampling),
                   aovs};
-  run.aov_pass = [&](const render_job& job) { return render_aov_cpu(job.cam, s, win, o.threads); };
+  std::unique_ptr<cpu_scene> cpu;
+  run.cpu = [&]() -> const cpu_scene& {
+    if (!cpu) cpu = std::make_unique<cpu_scene>(s, engine_from(o));
+    return *cpu;
+  };
+  run.aov_pass = [&](const render_job& job) { return run.cpu().aovs(job.cam, win, o.threads); };
   try {
     return render_all(run, jobs);
   } catch (const render_cancelled& e) {

@@ -1,5 +1,6 @@
 #include "render_memory.h"
 
+#include <algorithm>
 #include <string>
 
 #include "errors.h"
@@ -21,6 +22,11 @@ void check_render_memory(int width, int height, int renders) {
   throw usage_error(std::to_string(width) + "x" + std::to_string(height) + " needs about " +
                     format_bytes(need) + " of memory; " + format_bytes(room.bytes) +
                     " is available (" + room.limit + "): lower --width or use a smaller --aspect");
+}
+
+std::size_t gpu_group_size(int width, int height) {
+  const std::uint64_t per_view = std::uint64_t(width) * std::uint64_t(height) * 24;
+  return std::size_t(std::clamp<std::uint64_t>((256ull << 20) / per_view, 1, RTVK_MAX_VIEWS));
 }
 
 }  // namespace rtvk

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 namespace rtvk {
@@ -11,5 +12,9 @@ std::uint64_t render_memory_bytes(int width, int height, int renders);
 // Refuses, before any work, a render that cannot fit: throws usage_error naming the size and the
 // memory it needs and the memory available.
 void check_render_memory(int width, int height, int renders);
+
+// Views a GPU run draws together: as many as the shader's camera array holds, within a quarter
+// GiB of host framebuffers (24 bytes a pixel).
+std::size_t gpu_group_size(int width, int height);
 
 }  // namespace rtvk
