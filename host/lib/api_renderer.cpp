@@ -45,19 +45,28 @@ struct Renderer::impl {
     const bool moved = scene_moves(s) && (span.lo < s.motion.lo || span.hi > s.motion.hi);
     if (version == scene.impl_->version && !moved) return;
     aovs.reset();
-    engine.reset();
     cpu.reset();
     s = scene.impl_->s;
     s.motion = span;
+    version = ~std::uint64_t(0);  // set up again at the next render, unless this succeeds
+    if (backend == "gpu") {
+      if (!engine)
+        engine = std::make_unique<gpu::gpu_engine>(
+            *ctx, s,
+            gpu::gpu_render_options{.engine = options(),
+                                    .pipeline_cache_folder = gpu::default_cache_folder()});
+      else
+        try {
+          engine->replace_scene(s);  // the pipelines kept
+        } catch (...) {
+          engine.reset();  // not to be used after a throw: made afresh next time
+          throw;
+        }
+    } else {
+      cpu = std::make_unique<cpu_scene>(s, options());
+    }
     version = scene.impl_->version;
     ++set_ups;
-    if (backend == "gpu")
-      engine = std::make_unique<gpu::gpu_engine>(
-          *ctx, s,
-          gpu::gpu_render_options{.engine = options(),
-                                  .pipeline_cache_folder = gpu::default_cache_folder()});
-    else
-      cpu = std::make_unique<cpu_scene>(s, options());
   }
 
   std::vector<framebuffer> draw(const std::vector<camera>& views, const render_settings& rs,

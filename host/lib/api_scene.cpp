@@ -40,22 +40,55 @@ std::vector<std::string> Scene::camera_names() const {
   return names;
 }
 
+namespace {
+
+// Drops the textures no material reads any more (an edit replaced the material that did), so that
+// a loop of edits does not grow the scene.
+void drop_unread_textures(scene& s) {
+  std::vector<int> index(s.textures.size(), -1);
+  for (named_material& m : s.materials)
+    for_each_texture(m.m, [&](int t) {
+      if (t >= 0) index[std::size_t(t)] = 0;
+    });
+  std::vector<texture> kept;
+  for (std::size_t k = 0; k < s.textures.size(); ++k)
+    if (index[k] == 0) {
+      index[k] = int(kept.size());
+      kept.push_back(std::move(s.textures[k]));
+    }
+  s.textures = std::move(kept);
+  for (named_material& m : s.materials)
+    for_each_texture(m.m, [&](int& t) {
+      if (t >= 0) t = index[std::size_t(t)];
+    });
+}
+
+}  // namespace
+
 void Scene::set_material(const std::string& name, const std::string& material_json) {
   translate([&] {
-    // The material read as a scene file reads one: a scene of one sphere made of it.
-    const scene one = parse_scene_json(
+    // The material read as a scene file reads one: a scene of one sphere made of it, whose
+    // textures join this scene's.
+    scene one = parse_scene_json(
         "{\"materials\": {\"m\": " + material_json +
             "}, \"spheres\": [{\"center\": [0, 0, 0], \"radius\": 1, \"material\": \"m\"}]}",
         "material");
     const auto made = std::find_if(one.materials.begin(), one.materials.end(),
                                    [](const named_material& m) { return m.name == "m"; });
-    for (named_material& m : impl_->s.materials)
-      if (m.name == name) {
-        m.m = made->m;
-        ++impl_->version;
-        return 0;
-      }
-    throw usage_error("material " + name + ": the scene has no material of that name");
+    scene& s = impl_->s;
+    const auto target = std::find_if(s.materials.begin(), s.materials.end(),
+                                     [&](const named_material& m) { return m.name == name; });
+    if (target == s.materials.end())
+      throw usage_error("material " + name + ": the scene has no material of that name");
+    const int first = int(s.textures.size());
+    for_each_texture(made->m, [&](int& t) {
+      if (t >= 0) t += first;
+    });
+    for (texture& t : one.textures) s.textures.push_back(std::move(t));
+    target->m = made->m;
+    drop_unread_textures(s);
+    ++impl_->version;
+    return 0;
   });
 }
 

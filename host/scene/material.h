@@ -55,6 +55,15 @@ struct material {
 
 // The material's flags as the shared kernels read them (gpu_material::flags): what of its
 // emission, alpha and culling is in use. A material with none of them is drawn as the books draw.
+// Calls f with each of m's texture indices, by reference: its color's, its emission's and its PBR
+// maps' (Material: material, const or not). -1: none.
+template <class Material, class F>
+void for_each_texture(Material& m, F&& f) {
+  f(m.texture);
+  f(m.emission_texture);
+  for_each_pbr_texture(m.pbr, f);
+}
+
 inline std::uint32_t material_flags(const material& m) {
   std::uint32_t f = m.one_sided ? RTVK_MATERIAL_ONE_SIDED : 0u;
   if (m.emission != color(0, 0, 0)) f |= RTVK_MATERIAL_EMISSIVE;

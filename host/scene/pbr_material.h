@@ -42,4 +42,16 @@ struct pbr_material {
   int sheen_roughness_texture = -1;      // A: sheen_roughness
 };
 
+// Calls f with each of p's texture indices, by reference (Pbr: pbr_material, const or not).
+template <class Pbr, class F>
+void for_each_pbr_texture(Pbr& p, F&& f) {
+  for (auto field : {&pbr_material::metallic_roughness_texture, &pbr_material::normal_texture,
+                     &pbr_material::specular_texture, &pbr_material::specular_color_texture,
+                     &pbr_material::transmission_texture, &pbr_material::thickness_texture,
+                     &pbr_material::clearcoat_texture, &pbr_material::clearcoat_roughness_texture,
+                     &pbr_material::clearcoat_normal_texture, &pbr_material::sheen_color_texture,
+                     &pbr_material::sheen_roughness_texture})
+    f(p.*field);
+}
+
 }  // namespace rtvk

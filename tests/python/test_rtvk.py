@@ -290,3 +290,29 @@ def test_an_opencv_calibration_file_is_the_clis_calibration(tmp_path):
     assert np.array_equal(image, rgb_of(w, h, planes))
     same = rtvk.Camera.from_opencv(W2C, K, 32, 24, dist=[-0.2, 0.05, 0.001, -0.002, 0])
     assert np.array_equal(rtvk.Renderer(rtvk.Scene(str(scene_file))).render(same), image)
+
+
+@pytest.mark.parametrize("backend", ["cpu", "gpu"])
+def test_edits_draw_as_a_fresh_renderer_of_the_edited_scene(backend):
+    if backend == "gpu" and not GPU:
+        pytest.skip("RTVK_GPU=0: no Vulkan device on this machine")
+    scene = rtvk.Scene.from_dict(WALL)
+    renderer = rtvk.Renderer(scene, backend)
+    cam = rtvk.Camera.from_opencv(W2C, K, 32, 24)
+    renderer.render(cam)
+    move = np.eye(4)
+    move[:3, 3] = [-2, -1, 0]
+    scene.place(1, move)  # the same switches: the GPU keeps its pipelines
+    moved = json.loads(json.dumps(WALL))
+    moved["spheres"][0]["center"] = [-1, -0.5, 4.5]
+    fresh = rtvk.Renderer(rtvk.Scene.from_dict(moved), backend).render(cam)
+    assert np.array_equal(renderer.render(cam), fresh)
+    # A checker texture: other switches, so the GPU makes its pipelines again.
+    checker = {"type": "lambertian",
+               "albedo": {"type": "checker", "scale": 0.5, "even": [0.9, 0.9, 0.9],
+                          "odd": [0.1, 0.1, 0.1]}}
+    scene.set_material("m", checker)
+    moved["materials"]["m"] = checker
+    fresh = rtvk.Renderer(rtvk.Scene.from_dict(moved), backend).render(cam)
+    assert np.array_equal(renderer.render(cam), fresh)
+    assert renderer.set_ups == 3

@@ -64,7 +64,7 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
       // when asked for.
       scene_(
           (check_device_fits(ctx, render_targets::buffers(scene_buffers_, 1), "--scene " + s.name),
-           gpu_scene(ctx, *host_arrays_))),
+           std::make_unique<gpu_scene>(ctx, *host_arrays_))),
       targets_(std::make_unique<render_targets>(ctx, 1)),
       cache_(ctx, options.pipeline_cache_folder),
       timer_(ctx),
@@ -93,7 +93,7 @@ gpu_engine::gpu_engine(gpu_context& ctx, const scene& s, const gpu_render_option
 
 void gpu_engine::upload() {
   ctx_.submit_and_wait([&](VkCommandBuffer cb) {
-    scene_.record_upload(cb);
+    scene_->record_upload(cb);
     barrier(cb, transfer_stage, VK_ACCESS_TRANSFER_WRITE_BIT, render_stages_,
             VK_ACCESS_SHADER_READ_BIT);
   });
@@ -124,7 +124,7 @@ render_targets& gpu_engine::targets_for(VkDeviceSize pixels) {
 
 void gpu_engine::rebind_all() {
   for (auto& [switches, pipeline] : pipelines_)
-    pipeline->rebind(render_bindings(scene_, *targets_, accel_.get(), ray_times_.get()));
+    pipeline->rebind(render_bindings(*scene_, *targets_, accel_.get(), ray_times_.get()));
   if (tonemap_) tonemap_->rebind(tonemap_bindings(*targets_));
 }
 
@@ -141,12 +141,12 @@ const shader_program& gpu_engine::pipeline_for(bool jitter, bool lens, bool coun
     spec[RTVK_SPEC_LENS] = lens;
     spec[RTVK_SPEC_USE_BVH] = options_.engine.use_bvh;
     spec[RTVK_SPEC_COUNT_RAYS] = count_rays;
-    scene_.specialize(spec);
+    scene_->specialize(spec);
     spec[RTVK_SPEC_LIGHTS] = lights;
     spec[RTVK_SPEC_CALIBRATED] = calibrated;
     spec[RTVK_SPEC_NEE] = nee;
     spec[RTVK_SPEC_STACK] = options_.stack_entries;
-    const auto bindings = render_bindings(scene_, *targets_, accel_.get(), ray_times_.get());
+    const auto bindings = render_bindings(*scene_, *targets_, accel_.get(), ray_times_.get());
     switch (options_.engine.traversal) {
       case gpu_traversal::compute:
         p = std::make_unique<compute_pipeline>(ctx_, render_shader(), bindings, sizeof(render_push),
@@ -228,7 +228,7 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
                       const render_window& win, readback_kind kind, const sample_progress& progress,
                       render_stats* stats, const band_sink& sink) {
   check_views(views, win);
-  for (const camera& c : views) check_motion_span(motion_, scene_.moves(), c);
+  for (const camera& c : views) check_motion_span(motion_, scene_->moves(), c);
   const device_info& dev = ctx_.device();
   const bool kept = kind == readback_kind::kept;
   // Kept: the whole image's sums in one buffer, bands of any rows (accumulate checked the fit).
@@ -248,7 +248,7 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
     tonemap = &tonemap_pipeline();
     write_thresholds(rs.encoding());
   }
-  render_push push = make_push(sky_, rs, win, scene_, exponent_);
+  render_push push = make_push(sky_, rs, win, *scene_, exponent_);
   if (kept) push.sample_begin = 0;  // a kept pixel's count of samples is its next sample's index
   // The BVH's build is the first render's: later ones reuse it.
   if (stats) *stats = render_stats{.build_seconds = drawn_ ? 0.0 : build_seconds()};

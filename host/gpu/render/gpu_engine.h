@@ -101,11 +101,17 @@ class gpu_engine {
   double setup_seconds() const { return setup_seconds_; }  // the constructor, wall clock
   // Of which the BVH, and on the hardware paths the acceleration structures.
   double build_seconds() const {
-    return scene_.build_seconds() + (accel_ ? accel_->build_seconds() : 0.0);
+    return scene_->build_seconds() + (accel_ ? accel_->build_seconds() : 0.0);
   }
+  // Replaces the scene (the library's edits: a material changed, an object moved): its arrays,
+  // BVH and acceleration structures made and uploaded again, the pipelines kept -- bound to the
+  // new buffers -- where the scene's switches (gpu_scene::specialize) are the same, which spares
+  // their compilation. Waits for what is in flight; passes made over the old device_scene()
+  // (aov_pass) must be made again. After a throw the engine must not be used.
+  void replace_scene(const scene& s);
   // The scene on the device, uploaded, for other passes over it (aov_pass), and whether it holds
   // the compute BVH (every path but --accel none builds it).
-  const gpu_scene& device_scene() const { return scene_; }
+  const gpu_scene& device_scene() const { return *scene_; }
   bool scene_has_bvh() const {
     return options_.engine.use_bvh || options_.engine.traversal != gpu_traversal::compute;
   }
@@ -152,7 +158,7 @@ class gpu_engine {
   std::unique_ptr<gpu_scene::host_arrays> host_arrays_;
   std::vector<buffer_request> scene_buffers_;  // what scene_ holds, for later limit checks
   std::array<std::uint32_t, 2> wg_;            // workgroup size
-  gpu_scene scene_;                            // uploaded once
+  std::unique_ptr<gpu_scene> scene_;           // uploaded once, or again by replace_scene
   std::unique_ptr<render_targets> targets_;    // grown on demand
   pipeline_cache cache_;                       // compiled code, kept between runs
   // One per combination of the render's switches (specialization constants), made on first use.
