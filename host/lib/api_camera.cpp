@@ -6,6 +6,7 @@
 #include "api_impl.h"
 #include "calibration_file.h"
 #include "colmap_model.h"
+#include "format.h"
 
 namespace rtvk::api {
 namespace {
@@ -71,17 +72,26 @@ camera_pose opencv_pose(const std::array<double, 16>& m) {
 
 Camera Camera::from_opencv(const std::array<double, 16>& m, double fx, double fy, double cx,
                            double cy, int width, int height, const std::vector<double>& distortion,
-                           const std::string& model) {
+                           const std::string& model, double image_circle) {
   return translate([&] {
     camera_pose pose = opencv_pose(m);
-    if (model != "opencv" && model != "opencv-fisheye")
-      throw bad_input("model " + model + ": expected opencv or opencv-fisheye");
-    pose.projection = model == "opencv" ? projection::opencv : projection::opencv_fisheye;
-    const std::size_t most = model == "opencv" ? 8 : 4;
+    // The calibrated models and how many coefficients each reads.
+    const std::optional<rtvk::projection> p = projection_from_name(model);
+    if (!p || !is_calibrated(*p))
+      throw bad_input("model " + model +
+                      ": expected opencv, opencv-fisheye, fisheye-polynomial or cylindrical");
+    pose.projection = *p;
+    const std::size_t most = *p == projection::opencv           ? 8
+                             : *p == projection::opencv_fisheye ? 4
+                             : *p == projection::cylindrical    ? 0
+                                                                : 5;
     if (distortion.size() > most)
       throw bad_input("distortion: the " + model + " model takes at most " + std::to_string(most) +
                       " coefficients, got " + std::to_string(distortion.size()));
-    pose.intrinsics = {width, height, fx, fy, cx, cy, {}, 0};
+    if (!(image_circle >= 0) || (image_circle > 0 && *p != projection::fisheye_polynomial))
+      throw bad_input("image_circle " + format_number(image_circle) +
+                      ": a radius >= 0 in pixels, for the fisheye-polynomial model only");
+    pose.intrinsics = {width, height, fx, fy, cx, cy, {}, image_circle};
     std::copy(distortion.begin(), distortion.end(), pose.intrinsics.k.begin());
     return make(pose, width, height);
   });

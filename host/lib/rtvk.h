@@ -97,12 +97,14 @@ class RTVK_API Camera {
                         double focus_dist = 1, const std::string& projection = "perspective");
   // A calibrated camera as OpenCV holds one: the 4x4 world-to-camera matrix (row-major; the
   // camera looks down +z with +y down, OpenCV's and COLMAP's convention), the intrinsics in
-  // pixels, and the distortion coefficients (k1, k2, p1, p2[, k3[, k4, k5, k6]]: model "opencv";
-  // or k1..k4 with model "opencv-fisheye").
+  // pixels, and the distortion coefficients by model (docs/camera.md): "opencv" k1, k2, p1,
+  // p2[, k3[, k4, k5, k6]]; "opencv-fisheye" k1..k4; "fisheye-polynomial" k0..k4 (the angle from
+  // the axis a polynomial of the radius in pixels; fx, fy unread; `image_circle` its radius in
+  // pixels, 0: none); "cylindrical" none (fx pixels per radian across, fy up the cylinder).
   static Camera from_opencv(const std::array<double, 16>& world_to_camera, double fx, double fy,
                             double cx, double cy, int width, int height,
                             const std::vector<double>& distortion = {},
-                            const std::string& model = "opencv");
+                            const std::string& model = "opencv", double image_circle = 0);
   // The same with the intrinsics, distortion, model and image size of an OpenCV calibration file
   // (YAML or JSON as cv::FileStorage writes it, ROS camera_info files too), as `rtvk render
   // --calibration` reads one.

@@ -220,7 +220,7 @@ PYBIND11_MODULE(rtvk, m) {
       .def_static(
           "from_opencv",
           [](const py::object& world_to_camera, const py::object& K, int width, int height,
-             const py::object& dist, const std::string& model) {
+             const py::object& dist, const std::string& model, double image_circle) {
             const std::vector<double> m = numbers(world_to_camera, 16, "world_to_camera");
             const std::vector<double> k = numbers(K, 9, "K");
             std::array<double, 16> w2c{};
@@ -231,13 +231,16 @@ PYBIND11_MODULE(rtvk, m) {
                   py::module_::import("numpy").attr("asarray")(dist, "float64");
               d.assign(a.data(), a.data() + a.size());
             }
-            return Camera::from_opencv(w2c, k[0], k[4], k[2], k[5], width, height, d, model);
+            return Camera::from_opencv(w2c, k[0], k[4], k[2], k[5], width, height, d, model,
+                                       image_circle);
           },
           py::arg("world_to_camera"), py::arg("K"), py::arg("width"), py::arg("height"),
-          py::arg("dist") = py::none(), py::arg("model") = "opencv",
+          py::arg("dist") = py::none(), py::arg("model") = "opencv", py::arg("image_circle") = 0.0,
           "A calibrated camera as OpenCV holds one: the 4x4 world-to-camera matrix ([R|t]; +z "
           "forward, +y down), the 3x3 camera matrix K, the image size and the distortion "
-          "coefficients (opencv: k1, k2, p1, p2[, k3[, k4, k5, k6]]; opencv-fisheye: k1..k4).")
+          "coefficients by model (opencv: k1, k2, p1, p2[, k3[, k4, k5, k6]]; opencv-fisheye: "
+          "k1..k4; fisheye-polynomial: k0..k4, radians per pixel^n, with image_circle its "
+          "radius in pixels; cylindrical: none, fx in pixels per radian).")
       .def_static(
           "from_opencv_file",
           [](const py::object& world_to_camera, const std::string& file) {

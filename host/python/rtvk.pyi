@@ -65,6 +65,7 @@ class Camera:
         height: int,
         dist: npt.ArrayLike | None = None,
         model: str = "opencv",
+        image_circle: float = 0.0,
     ) -> Camera:
         """A calibrated camera: 4x4 world-to-camera [R|t] (+z forward, +y down), 3x3 K."""
     @staticmethod

@@ -316,3 +316,25 @@ def test_edits_draw_as_a_fresh_renderer_of_the_edited_scene(backend):
     fresh = rtvk.Renderer(rtvk.Scene.from_dict(moved), backend).render(cam)
     assert np.array_equal(renderer.render(cam), fresh)
     assert renderer.set_ups == 3
+
+
+@pytest.mark.parametrize("model, K, dist, circle", [
+    ("fisheye-polynomial", [[1.0, 0, 15.5], [0, 1, 11.5], [0, 0, 1]], [0, 0.09, 0, -1e-5], 14.0),
+    ("cylindrical", [[8.0, 0, 15.5], [0, 20, 11.5], [0, 0, 1]], [], 0.0)])
+def test_every_calibrated_model_is_the_scene_files_camera(model, K, dist, circle):
+    # The same pose, model and numbers as a scene file's camera (the scene reader's path).
+    K = np.array(K)
+    described = json.loads(json.dumps(WALL))
+    described["camera"].update({
+        "projection": model, "intrinsics": [K[0, 0], K[1, 1], K[0, 2], K[1, 2]],
+        "calibration_size": [32, 24], "image_circle": circle})
+    if dist:
+        described["camera"]["distortion"] = dist
+    scene = rtvk.Scene.from_dict(described)
+    cam = rtvk.Camera.from_opencv(W2C, K, 32, 24, dist=dist, model=model, image_circle=circle)
+    renderer = rtvk.Renderer(scene)
+    image = renderer.render(cam)
+    assert np.array_equal(image, renderer.render(rtvk.Camera.from_scene(scene)))
+    assert image.mean() > 0.05
+    with pytest.raises(ValueError, match="image_circle"):
+        rtvk.Camera.from_opencv(W2C, K, 32, 24, model="opencv", image_circle=3)
