@@ -96,7 +96,7 @@ std::vector<Scene::Object> Scene::objects() const {
   std::vector<Object> out;
   const scene& s = impl_->s;
   for (const object_original& o : list_objects(s)) {
-    Object b{o.id, o.kind, "", "", o.count};
+    Object b{o.id, o.kind, "", "", o.count, {o.lo.x, o.lo.y, o.lo.z}, {o.hi.x, o.hi.y, o.hi.z}};
     if (o.material >= 0) b.material = s.materials[std::size_t(o.material)].name;
     if (o.kind == "instance") b.group = s.groups[o.group].name;
     out.push_back(std::move(b));

@@ -8,6 +8,41 @@
 namespace rtvk {
 namespace {
 
+// The box around shapes [first, first + count) of `list` (each shape's own box).
+template <class List>
+void bound(const List& list, std::size_t first, std::size_t count, object_original& o) {
+  o.lo = point3(INFINITY);
+  o.hi = point3(-INFINITY);
+  for (std::size_t k = first; k < first + count; ++k)
+    for (const point3& p : list[k].bounds()) {
+      o.lo = glm::min(o.lo, p);
+      o.hi = glm::max(o.hi, p);
+    }
+}
+
+// The box around an instance: its group's box's corners, placed.
+void bound_instance(const object_group& g, const transform& placement, object_original& o) {
+  object_original group_box;
+  group_box.lo = point3(INFINITY);
+  group_box.hi = point3(-INFINITY);
+  for_each_kind(g, [&](const auto& list) {
+    object_original one;
+    if (list.empty()) return;
+    bound(list, 0, list.size(), one);
+    group_box.lo = glm::min(group_box.lo, one.lo);
+    group_box.hi = glm::max(group_box.hi, one.hi);
+  });
+  o.lo = point3(INFINITY);
+  o.hi = point3(-INFINITY);
+  for (int c = 0; c < 8; ++c) {
+    const point3 corner(c & 1 ? group_box.hi.x : group_box.lo.x,
+                        c & 2 ? group_box.hi.y : group_box.lo.y,
+                        c & 4 ? group_box.hi.z : group_box.lo.z);
+    o.lo = glm::min(o.lo, placement.apply_point(corner));
+    o.hi = glm::max(o.hi, placement.apply_point(corner));
+  }
+}
+
 // The kinds of the scene's own objects in scene-index order (shape_lists' for_each_kind).
 enum class list_kind { spheres, quads, triangles, disks };
 
@@ -48,7 +83,10 @@ object_original own_object(const scene& s, std::uint32_t id, std::size_t begin, 
   o.kind = kind_name(kind, count);
   o.first = first;
   o.count = count;
-  const auto material = [&](const auto& list) { return list[first].material; };
+  const auto material = [&](const auto& list) {
+    bound(list, first, count, o);
+    return list[first].material;
+  };
   switch (kind) {
     case list_kind::spheres:
       o.material = material(s.spheres);
@@ -111,6 +149,7 @@ std::vector<object_original> objects(const scene& s, bool shapes, std::uint32_t 
     o.count = object_count(s.groups[s.instances[i].group]);
     o.group = s.instances[i].group;
     o.instance_placement = s.instances[i].placement;
+    bound_instance(s.groups[o.group], o.instance_placement, o);
     if (only == 0 || o.id == only) out.push_back(std::move(o));
   }
   return out;

@@ -22,6 +22,7 @@ struct object_original {
   std::size_t count = 1;         // primitives
   int material = -1;             // its first primitive's material; -1: an instance
   std::uint32_t group = 0;       // an instance's group
+  point3 lo{0}, hi{0};           // the box around it where the scene has it now, scene units
   shape_lists shapes;            // its primitives (find_object only): one kind's list, and its
                                  // triangles' shading
   transform instance_placement;  // an instance's own placement

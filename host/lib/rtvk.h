@@ -60,11 +60,12 @@ class RTVK_API Scene {
   // One object as --aov object-id numbers it: a sphere, quad, box, triangle, mesh file, disk or
   // instance.
   struct Object {
-    std::uint32_t id = 0;    // 1 and up, the object-id AOV's value where it is seen
-    std::string kind;        // sphere, quad, box, triangle, mesh, disk or instance
-    std::string material;    // its (first primitive's) material; empty for an instance
-    std::string group;       // an instance's group; else empty
-    std::size_t primitives;  // quads of a box, triangles of a mesh, objects of a group; else 1
+    std::uint32_t id = 0;        // 1 and up, the object-id AOV's value where it is seen
+    std::string kind;            // sphere, quad, box, triangle, mesh, disk or instance
+    std::string material;        // its (first primitive's) material; empty for an instance
+    std::string group;           // an instance's group; else empty
+    std::size_t primitives = 1;  // quads of a box, triangles of a mesh, objects of a group; else 1
+    std::array<double, 3> lo, hi;  // the box around it where it is now, scene units
   };
   std::vector<Object> objects() const;
   // Places object `id` by `matrix` (4x4 row-major, last row 0 0 0 1; or 12 numbers, 3 rows)

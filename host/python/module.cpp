@@ -173,12 +173,15 @@ PYBIND11_MODULE(rtvk, m) {
               d["material"] = o.material;
               d["group"] = o.group;
               d["primitives"] = o.primitives;
+              d["bounds"] = py::make_tuple(py::make_tuple(o.lo[0], o.lo[1], o.lo[2]),
+                                           py::make_tuple(o.hi[0], o.hi[1], o.hi[2]));
               out.append(d);
             }
             return out;
           },
           "Every object as the object-id AOV numbers it: dicts of id, kind (sphere, quad, box, "
-          "triangle, mesh, disk, instance), material, group (an instance's) and primitives.")
+          "triangle, mesh, disk, instance), material, group (an instance's), primitives and "
+          "bounds ((lo), (hi): the box around it where it is now).")
       .def(
           "place",
           [](Scene& s, std::uint32_t id, const py::object& matrix) {

@@ -35,7 +35,8 @@ class Scene:
     def set_material(self, name: str, material: dict[str, Any]) -> None:
         """Replaces a material; renderers of this scene set it up again at their next render."""
     def objects(self) -> list[dict[str, Any]]:
-        """Every object as the object-id AOV numbers it: id, kind, material, group, primitives."""
+        """Every object as the object-id AOV numbers it: id, kind, material, group, primitives
+        and bounds ((lo), (hi): the box around it where it is now)."""
     def place(self, id: int, matrix: npt.ArrayLike) -> None:
         """Places object `id` by a 4x4 (or 3x4) matrix after the scene's own placement of it."""
 

@@ -94,6 +94,15 @@ TEST(LibraryObjects, AreListedInTheObjectIdAovsOrder) {
     EXPECT_EQ(objects[k].primitives, primitives[k]);
   }
   EXPECT_EQ(objects[4].group, "g");
+  // Their boxes, where they are now: the box's corners, the instance's sphere placed.
+  using box = std::array<double, 3>;
+  EXPECT_EQ(objects[2].lo, (box{0.5, 0, -0.5}));
+  EXPECT_EQ(objects[2].hi, (box{1.5, 1, 0.5}));
+  EXPECT_EQ(objects[4].lo, (box{-0.25, 0, 0.75}));
+  EXPECT_EQ(objects[4].hi, (box{0.25, 0.5, 1.25}));
+  api::Scene moved = api::Scene::from_json(scene_json());
+  moved.place(3, translation(1, 2, 4));
+  EXPECT_EQ(moved.objects()[2].lo, (box{1.5, 2, 3.5}));
   // The AOV sees the ball (id 2) where the ball is.
   api::Renderer r(scene, "cpu");
   const api::Camera cam = api::Camera::look_at({-1, 0.5, 4}, {-1, 0.5, 0}, 8, 8, 10);

@@ -338,3 +338,18 @@ def test_every_calibrated_model_is_the_scene_files_camera(model, K, dist, circle
     assert image.mean() > 0.05
     with pytest.raises(ValueError, match="image_circle"):
         rtvk.Camera.from_opencv(W2C, K, 32, 24, model="opencv", image_circle=3)
+
+
+def test_the_docs_domain_randomization_example_moves_the_boxes(tmp_path):
+    example = os.path.join(os.path.dirname(__file__), "..", "..", "docs", "examples",
+                           "shuffled_boxes.py")
+    out = tmp_path / "boxes.npz"
+    r = subprocess.run([sys.executable, example, "2", str(out), "48", "2", "3"],
+                       capture_output=True, text=True, env=dict(os.environ))
+    assert r.returncode == 0, r.stderr
+    data = np.load(out)
+    assert data["images"].shape == (2, 48, 48, 3) and data["placements"].shape == (2, 2, 4, 4)
+    # Both boxes are seen in every sample, and they moved between the two.
+    for ids in data["object_id"]:
+        assert all((ids == b).any() for b in data["box_ids"])
+    assert not np.array_equal(data["object_id"][0], data["object_id"][1])
