@@ -22,7 +22,12 @@ struct Scene::impl {
   scene s;
   std::uint64_t version = 0;  // counts edits: a renderer set up for an older version redoes it
   bool builtin = false;       // a built-in scene: --precision auto draws it with the reference
-  std::map<std::uint32_t, object_original> placed;  // objects moved by place, as first found
+  // Objects moved by place: each as first found, and the placement it has now.
+  struct placed_object {
+    object_original original;
+    transform now;
+  };
+  std::map<std::uint32_t, placed_object> placed;
 };
 
 struct Camera::impl {

@@ -44,11 +44,11 @@ struct Renderer::impl {
       span = {std::min(span.lo, c.time_open()), std::max(span.hi, c.time_close())};
     const bool moved = scene_moves(s) && (span.lo < s.motion.lo || span.hi > s.motion.hi);
     if (version == scene.impl_->version && !moved) return;
+    version = ~std::uint64_t(0);  // set up again at the next render, unless this succeeds
     aovs.reset();
     cpu.reset();
     s = scene.impl_->s;
     s.motion = span;
-    version = ~std::uint64_t(0);  // set up again at the next render, unless this succeeds
     if (backend == "gpu") {
       if (!engine)
         engine = std::make_unique<gpu::gpu_engine>(

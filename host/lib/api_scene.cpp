@@ -84,9 +84,18 @@ void Scene::set_material(const std::string& name, const std::string& material_js
     for_each_texture(made->m, [&](int& t) {
       if (t >= 0) t += first;
     });
+    const material before = target->m;
+    std::vector<texture> textures_before = s.textures;  // images are shared, not copied
     for (texture& t : one.textures) s.textures.push_back(std::move(t));
     target->m = made->m;
     drop_unread_textures(s);
+    try {
+      check_scene(s);  // what a scene file with this material would be refused for
+    } catch (const usage_error& e) {
+      target->m = before;
+      s.textures = std::move(textures_before);
+      throw usage_error("material " + name + ": " + e.what());
+    }
     ++impl_->version;
     return 0;
   });
@@ -136,10 +145,18 @@ void Scene::place(std::uint32_t id, const std::vector<double>& matrix) {
       if (!found)
         throw usage_error("object " + std::to_string(id) + ": the scene has objects 1 to " +
                           std::to_string(list_objects(impl_->s).size()));
-      kept = impl_->placed.emplace(id, std::move(*found)).first;
+      kept = impl_->placed.emplace(id, impl::placed_object{std::move(*found), transform{}}).first;
     }
-    if (const std::optional<std::string> why = place_object(impl_->s, kept->second, t))
+    impl::placed_object& p = kept->second;
+    if (const std::optional<std::string> why = place_object(impl_->s, p.original, t))
       throw usage_error("object " + std::to_string(id) + ": " + *why);
+    try {
+      check_scene(impl_->s);  // coordinates past what the renderers hold, faces with no area
+    } catch (const usage_error& e) {
+      place_object(impl_->s, p.original, p.now);  // back where it was
+      throw usage_error("object " + std::to_string(id) + ": " + e.what());
+    }
+    p.now = t;
     ++impl_->version;
     return 0;
   });

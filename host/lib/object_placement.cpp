@@ -1,5 +1,6 @@
 #include "object_placement.h"
 
+#include <optional>
 #include <type_traits>
 
 #include "object_group.h"
@@ -20,24 +21,28 @@ void bound(const List& list, std::size_t first, std::size_t count, object_origin
     }
 }
 
-// The box around an instance: its group's box's corners, placed.
-void bound_instance(const object_group& g, const transform& placement, object_original& o) {
-  object_original group_box;
-  group_box.lo = point3(INFINITY);
-  group_box.hi = point3(-INFINITY);
+// The box around a group's objects.
+object_original group_box(const object_group& g) {
+  object_original box;
+  box.lo = point3(INFINITY);
+  box.hi = point3(-INFINITY);
   for_each_kind(g, [&](const auto& list) {
     object_original one;
     if (list.empty()) return;
     bound(list, 0, list.size(), one);
-    group_box.lo = glm::min(group_box.lo, one.lo);
-    group_box.hi = glm::max(group_box.hi, one.hi);
+    box.lo = glm::min(box.lo, one.lo);
+    box.hi = glm::max(box.hi, one.hi);
   });
+  return box;
+}
+
+// The box around an instance: its group's box's corners, placed.
+void bound_instance(const object_original& group, const transform& placement, object_original& o) {
   o.lo = point3(INFINITY);
   o.hi = point3(-INFINITY);
   for (int c = 0; c < 8; ++c) {
-    const point3 corner(c & 1 ? group_box.hi.x : group_box.lo.x,
-                        c & 2 ? group_box.hi.y : group_box.lo.y,
-                        c & 4 ? group_box.hi.z : group_box.lo.z);
+    const point3 corner(c & 1 ? group.hi.x : group.lo.x, c & 2 ? group.hi.y : group.lo.y,
+                        c & 4 ? group.hi.z : group.lo.z);
     o.lo = glm::min(o.lo, placement.apply_point(corner));
     o.hi = glm::max(o.hi, placement.apply_point(corner));
   }
@@ -141,16 +146,19 @@ std::vector<object_original> objects(const scene& s, bool shapes, std::uint32_t 
     if (only == 0 || id == only) out.push_back(own_object(s, id, k, end, shapes));
     k = end;
   }
+  std::vector<std::optional<object_original>> groups(s.groups.size());  // boxes, made once
   for (std::size_t i = 0; i < s.instances.size(); ++i) {
     object_original o;
     o.id = ids.of(0, std::uint32_t(i + 1));
+    if (only != 0 && o.id != only) continue;
     o.kind = "instance";
     o.first = i;
     o.count = object_count(s.groups[s.instances[i].group]);
     o.group = s.instances[i].group;
     o.instance_placement = s.instances[i].placement;
-    bound_instance(s.groups[o.group], o.instance_placement, o);
-    if (only == 0 || o.id == only) out.push_back(std::move(o));
+    if (!groups[o.group]) groups[o.group] = group_box(s.groups[o.group]);
+    bound_instance(*groups[o.group], o.instance_placement, o);
+    out.push_back(std::move(o));
   }
   return out;
 }
@@ -185,8 +193,8 @@ std::optional<std::string> place_object(scene& s, const object_original& o, cons
     if (!p) return "a disk can be turned, moved and scaled evenly, not stretched";
     disks.push_back(*p);
   }
-  std::copy(spheres.begin(), spheres.end(), s.spheres.begin() + std::ptrdiff_t(o.first));
-  std::copy(disks.begin(), disks.end(), s.disks.begin() + std::ptrdiff_t(o.first));
+  for (std::size_t k = 0; k < spheres.size(); ++k) s.spheres[o.first + k] = spheres[k];
+  for (std::size_t k = 0; k < disks.size(); ++k) s.disks[o.first + k] = disks[k];
   for (std::size_t k = 0; k < o.shapes.quads.size(); ++k)
     s.quads[o.first + k] = placed(o.shapes.quads[k], t);
   std::size_t shaded = 0;  // the originals' shading, in their triangles' order

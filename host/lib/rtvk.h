@@ -162,7 +162,8 @@ struct RTVK_API RenderOptions {
 // "gpu" (device: as --device selects it; empty: RTVK_DEVICE, else the best) or "auto" (the GPU
 // where a Vulkan device exists, else the CPU). The scene is set up once (on the GPU its device
 // buffers, BVH and pipelines; on the CPU its BVH or Embree's trees and its shading tables) and
-// kept across renders until it changes.
+// kept across renders until it changes. A Scene and the Renderers made from it are used by one
+// thread at a time.
 class RTVK_API Renderer {
  public:
   explicit Renderer(const Scene& scene, const std::string& backend = "cpu",

@@ -288,5 +288,5 @@ PYBIND11_MODULE(rtvk, m) {
       .def_property_readonly("description", &Renderer::description)
       .def_property_readonly("set_ups", &Renderer::set_ups,
                              "How many times the scene was set up on the backend: 1 after the "
-                             "first render; each edit of the scene adds one.");
+                             "first render; one more at the next render after any edits.");
 }

@@ -117,4 +117,5 @@ class Renderer:
     def description(self) -> str: ...
     @property
     def set_ups(self) -> int:
-        """How many times the scene was set up: 1 after the first render, +1 per edit."""
+        """How many times the scene was set up: 1 after the first render, then one more at the
+        next render after any edits."""

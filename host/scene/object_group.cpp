@@ -49,7 +49,17 @@ triangle_shading placed(const triangle_shading& sh, const transform& t) {
   triangle_shading out = sh;
   if (sh.has_normals() && !t.is_identity())
     for (std::size_t k = 0; k < 3; ++k) out.normal[k] = t.apply_normal(sh.normal[k]);
-  if (t.determinant() < 0) {  // as the triangle's vertices
+  const bool mirrored = t.determinant() < 0;
+  // Tangents are directions in the surface: carried by the linear part (not the normals' inverse
+  // transpose), and a mirror flips their handedness with the frame (as mesh_builder.h places a
+  // file's).
+  if (sh.has_tangent && !t.is_identity())
+    for (glm::vec4& tangent : out.tangent) {
+      const vec3 d = glm::normalize(t.apply_vector(vec3(tangent)));
+      tangent = glm::vec4(glm::vec3(d), mirrored ? -tangent.w : tangent.w);
+    }
+  if (mirrored) {  // as the triangle's vertices
+    std::swap(out.tangent[1], out.tangent[2]);
     std::swap(out.normal[1], out.normal[2]);
     std::swap(out.uv[1], out.uv[2]);
     std::swap(out.uv1[1], out.uv1[2]);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "object_placement.h"
 #include "rtvk.h"
 #include "temp_dir.h"
 
@@ -131,6 +132,53 @@ TEST(LibraryObjects, BadPlacementsAreBadInputNamingTheObject) {
   std::vector<double> flat = identity;
   flat[0] = 0;
   EXPECT_EQ(message(3, flat).rfind("matrix: the transform cannot place anything", 0), 0u);
+}
+
+// Tangents are directions in the surface: a turn carries them, a mirror also flips their
+// handedness and swaps the last two vertices' (as the mesh reader places a file's).
+TEST(LibraryObjects, PlacingAMeshCarriesItsTangents) {
+  rtvk::scene s;
+  s.materials = {{"m", {}}};
+  triangle tri;
+  tri.p = {point3(0, 0, 0), point3(1, 0, 0), point3(0, 1, 0)};
+  tri.shading = 0;
+  triangle_shading sh;
+  sh.normal = {vec3(0, 0, 1), vec3(0, 0, 1), vec3(0, 0, 1)};
+  sh.tangent = {glm::vec4(1, 0, 0, 1), glm::vec4(0, 1, 0, 1), glm::vec4(0.6f, 0.8f, 0, -1)};
+  sh.has_tangent = true;
+  s.triangles = {tri};
+  s.shading = {sh};
+  const object_original o = *find_object(s, 1);
+  ASSERT_FALSE(place_object(s, o, make_transform(vec3(1), vec3(0, 0, 1), 90, vec3(0))));
+  const auto near = [](glm::vec4 a, glm::vec4 b) {
+    return glm::all(glm::lessThan(glm::abs(a - b), glm::vec4(1e-6f)));
+  };
+  EXPECT_TRUE(near(s.shading[0].tangent[0], glm::vec4(0, 1, 0, 1)));
+  EXPECT_TRUE(near(s.shading[0].tangent[1], glm::vec4(-1, 0, 0, 1)));
+  EXPECT_TRUE(near(s.shading[0].tangent[2], glm::vec4(-0.8f, 0.6f, 0, -1)));
+  transform mirror;
+  mirror.linear[0][0] = -1;  // x -> -x
+  ASSERT_FALSE(place_object(s, o, mirror));
+  EXPECT_TRUE(near(s.shading[0].tangent[0], glm::vec4(-1, 0, 0, -1)));
+  EXPECT_TRUE(near(s.shading[0].tangent[1], glm::vec4(-0.6f, 0.8f, 0, 1)));  // vertex 2's
+  EXPECT_TRUE(near(s.shading[0].tangent[2], glm::vec4(0, 1, 0, -1)));        // vertex 1's
+}
+
+// An edit the scene reader would refuse leaves the scene as it was.
+TEST(LibraryObjects, EditsAreCheckedAsTheSceneFileWouldBe) {
+  api::Scene scene = api::Scene::from_json(scene_json());
+  const std::string before = scene.to_json();
+  try {
+    scene.place(2, translation(1e19, 0, 0));
+    FAIL() << "no exception";
+  } catch (const api::bad_input& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("object 2: ", 0), 0u) << e.what();
+  }
+  EXPECT_EQ(scene.to_json(), before);
+  scene.place(2, translation(1, 0, 0));
+  const std::string moved = scene.to_json();
+  EXPECT_THROW(scene.place(2, translation(-1e19, 0, 0)), api::bad_input);
+  EXPECT_EQ(scene.to_json(), moved);  // back where the last place put it
 }
 
 TEST(LibraryCameras, AnOpenCvCalibrationFileIsTheCameraOfItsNumbers) {

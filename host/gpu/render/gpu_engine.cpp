@@ -250,8 +250,9 @@ void gpu_engine::draw(const std::vector<camera>& views, const render_settings& r
   }
   render_push push = make_push(sky_, rs, win, *scene_, exponent_);
   if (kept) push.sample_begin = 0;  // a kept pixel's count of samples is its next sample's index
-  // The BVH's build is the first render's: later ones reuse it.
-  if (stats) *stats = render_stats{.build_seconds = drawn_ ? 0.0 : build_seconds()};
+  // The BVH's build is the first render's (after a replace_scene too): later ones reuse it.
+  if (stats) *stats = render_stats{.build_seconds = built_drawn_ ? 0.0 : build_seconds()};
+  built_drawn_ = true;
   const bool lens =
       std::any_of(views.begin(), views.end(), [](const camera& c) { return c.lens_radius() > 0; });
   const bool calibrated = std::any_of(views.begin(), views.end(), [](const camera& c) {

@@ -177,6 +177,7 @@ class gpu_engine {
   std::optional<display_encoding> thresholds_for_;  // what the thresholds buffer holds, if any
   tonemap_push tonemap_style_ = {};                 // tonemap.comp's transform and mean scale
   bool drawn_ = false;                              // some band was drawn before
+  bool built_drawn_ = false;  // a render was drawn since the scene's BVH was built (stats)
   pacer pacer_;               // samples per dispatch and per submission, from measured times
   double setup_seconds_ = 0;  // the constructor took
 };

@@ -19,7 +19,11 @@ void gpu_engine::replace_scene(const scene& s) {
   scene_->specialize(before);
   const gpu_scene::host_arrays arrays = gpu_scene::build(s, scene_has_bvh());
   std::vector<buffer_request> buffers = gpu_scene::buffers(ctx_, arrays);
-  check_device_fits(ctx_, render_targets::buffers(buffers, targets_->pixels), "--scene " + s.name);
+  std::vector<buffer_request> wanted = render_targets::buffers(buffers, targets_->pixels);
+  if (ray_times_)  // as targets_for asks for it
+    wanted.push_back(
+        {"the rays' times", targets_->pixels * sizeof(float), true, memory_use::device_local});
+  check_device_fits(ctx_, wanted, "--scene " + s.name);
   accel_.reset();  // the old scene's structures and buffers go first, to make room
   scene_.reset();
   scene_ = std::make_unique<gpu_scene>(ctx_, arrays);
@@ -28,6 +32,7 @@ void gpu_engine::replace_scene(const scene& s) {
   if (options_.engine.traversal != gpu_traversal::compute)
     accel_ = std::make_unique<scene_accel>(
         ctx_, arrays, s.motion, std::string("--accel ") + traversal_name() + " --scene " + s.name);
+  built_drawn_ = false;  // the next render's stats carry the new BVH's build
   scene_name_ = s.name;
   sky_ = s.sky;
   motion_ = s.motion;
