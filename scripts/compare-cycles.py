@@ -4,7 +4,7 @@ to reach an equal error (docs/benchmarks.md, "rtvk against Blender's Cycles"). B
 CI (Blender is not one of rtvk's dependencies).
 
   compare-cycles.py RTVK OUTDIR [--width 150] [--seconds 8] [--threads 2] [--modes lights,nee]
-                    [--spp-factor 4]
+                    [--spp-factor 4] [--precision auto|fast|reference]
                     [--rtvk-reference REF.exr | --rtvk-reference-spp 32768]
                     [--rtvk-reference-mode lights] [--cycles-reference-spp 8192]
                     [--blender blender] [--agree 0.03] [--from-json compare-cycles.json]
@@ -61,8 +61,8 @@ def plot_module():
 
 def rtvk_render(args, mode, spp, seed, out):
     cmd = [args.rtvk, "render", "cornell-box", "--width", str(args.width), "--spp", str(spp),
-           "--sampling", mode, "--backend", "cpu", "--threads", str(args.threads), "--seed",
-           str(seed), "-o", out]
+           "--sampling", mode, "--backend", "cpu", "--precision", args.precision, "--threads",
+           str(args.threads), "--seed", str(seed), "-o", out]
     before = cpu_of_children()
     err = subprocess.run(cmd, check=True, capture_output=True, text=True).stderr
     args.last_cpu_seconds = cpu_of_children() - before
@@ -194,6 +194,8 @@ def parse():
     ap.add_argument("--spp-factor", type=int, default=4, choices=(2, 4),
                     help="samples per pixel grow by this factor (4: rtvk's pixels stratify whole)")
     ap.add_argument("--modes", default="lights,nee")
+    ap.add_argument("--precision", default="auto", choices=("auto", "fast", "reference"),
+                    help="the CPU's mode (--precision); auto: the reference, for a built-in scene")
     ap.add_argument("--rtvk-reference", help="rtvk's reference, made with --sampling"
                     " --rtvk-reference-mode at --rtvk-reference-spp (default: rendered so)")
     ap.add_argument("--rtvk-reference-spp", type=int, default=32768)
