@@ -135,7 +135,9 @@ grep -qF "$want" <<<"$listing" || { echo "rtvk: expected a lavapipe of $want (ab
 # runs here. PBR on the hardware paths was checked on an NVIDIA H200 instead (docs/materials.md,
 # docs/benchmarks.md). GpuFastMode (the CPU's fast mode against the GPU, showcase included) runs
 # here too little to be worth its cold PBR compile (229 s): what it checks is the CPU's side.
-pbr_renders='^(GpuFastMode\..*|GpuPbr\.(TheGalleryMatchesTheCpu|AWhiteSphereInAWhiteFurnaceIsWhite|AVolumeAttenuatesByBeerLambert|TheHardwarePathsGiveTheComputeBvhsExactSums)|GpuGltfSamples\..*|GpuNee\.ThePbrGalleryMatchesTheCpu|GpuShowcase\..*)$'
+# Python.* (70 s here, cold) checks the module against the CLI; its GPU renders are the engine's
+# that the GPU tests above run on this driver.
+pbr_renders='^(Python\..*|GpuFastMode\..*|GpuPbr\.(TheGalleryMatchesTheCpu|AWhiteSphereInAWhiteFurnaceIsWhite|AVolumeAttenuatesByBeerLambert|TheHardwarePathsGiveTheComputeBvhsExactSums)|GpuGltfSamples\..*|GpuNee\.ThePbrGalleryMatchesTheCpu|GpuShowcase\..*)$'
 timed "GPU tests on $want" on_second tests second ci -L '^gpu' -E "$pbr_renders"
 
 echo "== asan: the host tests with no Vulkan driver, the sanitize GPU tests on both lavapipes"
