@@ -113,6 +113,7 @@ framebuffer render_cpu(const camera& cam, const scene& s, const render_settings&
 framebuffer render_cpu_window(const camera& cam, const scene& s, const render_settings& rs,
                               const render_window& win, const progress_callback& progress,
                               const engine_options& engine, render_stats* stats) {
+  check_window(win, cam.image_width(), cam.image_height());  // before the world is built
   const cpu_scene prepared(s, engine);
   framebuffer fb = prepared.render(cam, rs, win, progress, engine, stats);
   if (stats) stats->build_seconds = prepared.build_seconds();

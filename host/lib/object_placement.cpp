@@ -1,7 +1,6 @@
 #include "object_placement.h"
 
 #include <optional>
-#include <type_traits>
 
 #include "object_group.h"
 #include "object_ids.h"
@@ -76,6 +75,21 @@ const char* kind_name(list_kind k, std::size_t count) {
   return "";
 }
 
+// Calls f(list, kept) with the scene's list of `kind` and kept's list of the same kind.
+template <class F>
+void with_lists(const scene& s, list_kind kind, shape_lists& kept, F&& f) {
+  switch (kind) {
+    case list_kind::spheres:
+      return f(s.spheres, kept.spheres);
+    case list_kind::quads:
+      return f(s.quads, kept.quads);
+    case list_kind::triangles:
+      return f(s.triangles, kept.triangles);
+    case list_kind::disks:
+      return f(s.disks, kept.disks);
+  }
+}
+
 // The scene's own object whose primitives are scene indices [begin, end).
 // `shapes`: with copies of its primitives.
 object_original own_object(const scene& s, std::uint32_t id, std::size_t begin, std::size_t end,
@@ -88,45 +102,15 @@ object_original own_object(const scene& s, std::uint32_t id, std::size_t begin, 
   o.kind = kind_name(kind, count);
   o.first = first;
   o.count = count;
-  const auto material = [&](const auto& list) {
+  with_lists(s, kind, o.shapes, [&](const auto& list, auto& copy) {
     bound(list, first, count, o);
-    return list[first].material;
-  };
-  switch (kind) {
-    case list_kind::spheres:
-      o.material = material(s.spheres);
-      break;
-    case list_kind::quads:
-      o.material = material(s.quads);
-      break;
-    case list_kind::triangles:
-      o.material = material(s.triangles);
-      break;
-    case list_kind::disks:
-      o.material = material(s.disks);
-      break;
-  }
-  if (!shapes) return o;
-  const auto from = [&](const auto& list) {
-    return std::decay_t<decltype(list)>(list.begin() + std::ptrdiff_t(first),
-                                        list.begin() + std::ptrdiff_t(first + count));
-  };
-  switch (kind) {
-    case list_kind::spheres:
-      o.shapes.spheres = from(s.spheres);
-      break;
-    case list_kind::quads:
-      o.shapes.quads = from(s.quads);
-      break;
-    case list_kind::disks:
-      o.shapes.disks = from(s.disks);
-      break;
-    case list_kind::triangles:
-      o.shapes.triangles = from(s.triangles);
-      for (const triangle& t : o.shapes.triangles)
-        if (t.shading >= 0) o.shapes.shading.push_back(s.shading[std::size_t(t.shading)]);
-      break;
-  }
+    o.material = list[first].material;
+    if (shapes)
+      copy.assign(list.begin() + std::ptrdiff_t(first),
+                  list.begin() + std::ptrdiff_t(first + count));
+  });
+  for (const triangle& t : o.shapes.triangles)  // their shading, in their order
+    if (t.shading >= 0) o.shapes.shading.push_back(s.shading[std::size_t(t.shading)]);
   return o;
 }
 
