@@ -5,21 +5,42 @@
 namespace rtvk::fast {
 
 bool world::hit(const ray& r, real t_min, real t_max, hit_record& rec) const {
-  RTCRayHit h = embree_ray(r, t_min, t_max);
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  rtcIntersect1(trees[0].scene, &context, &h);
-  if (h.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-  record(h, r, rec);
+  packet_bvh::found f;
+  const bool own = packets->hit(r, t_min, t_max, f);
+  if (embree_world) {  // triangles and instances, nearer than the packets' hit
+    RTCRayHit h = embree_ray(r, t_min, own ? f.t : t_max);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcIntersect1(trees[0].scene, &context, &h);
+    if (h.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+      record(h, r, rec);
+      return true;
+    }
+  }
+  if (!own) return false;
+  record_own(f, r, rec);
   return true;
 }
 
 bool world::blocked(const ray& r, real t_min, real t_max) const {
+  if (packets->blocked(r, t_min, t_max)) return true;
+  if (!embree_world) return false;
   RTCRay e = embree_ray(r, t_min, t_max).ray;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rtcOccluded1(trees[0].scene, &context, &e);
   return e.tfar < 0;
+}
+
+// A hit packet_bvh found among the world's own objects (packet_bvh's kinds are world::kind's).
+static_assert(unsigned(packet_bvh::sphere_kind) == world::sphere_kind &&
+              unsigned(packet_bvh::quad_kind) == world::quad_kind &&
+              unsigned(packet_bvh::disk_kind) == world::disk_kind);
+void world::record_own(const packet_bvh::found& f, const ray& r, hit_record& rec) const {
+  RTCHit hit{};
+  hit.geomID = f.kind;
+  hit.primID = f.index;
+  record_in(trees[0], hit, r, f.t, rec);
 }
 
 // The winner's record: made in its instance's group space when it was reached through one, then

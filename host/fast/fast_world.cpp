@@ -240,6 +240,12 @@ world::world(const gpu::scene_arrays& a, float motion_begin_, float motion_end_)
     if (found == trees.size()) trees.push_back(t);
     instance_tree.push_back(found);
   }
+  // The world's own spheres, quads and disks: packet_bvh's; Embree's world tree keeps the rest.
+  trees[0].packed = true;
+  packets =
+      std::make_unique<packet_bvh>(a, trees[0].count[sphere_kind], quads, trees[0].count[quad_kind],
+                                   disks, trees[0].count[disk_kind], motion_begin, motion_end);
+  embree_world = trees[0].count[triangle_kind] > 0 || trees[0].count[instance_kind] > 0;
   data_.reserve(trees.size() * kinds);
   // Groups first: an instance's bounds are its group tree's, carried into the world.
   for (std::size_t k = trees.size(); k-- > 0;) build_tree(trees[k]);
@@ -281,8 +287,11 @@ void world::build_tree(tree& t) {
        [](const RTCIntersectFunctionNArguments* a) { intersect_with(a, disk_kind, test_disk); },
        [](const RTCOccludedFunctionNArguments* a) { occluded_with(a, disk_kind, test_disk); }},
       {instance_kind, instance_bounds, instance_intersect, instance_occluded}};
+  const auto embree_s = [&](unsigned k) {
+    return t.count[k] > 0 && !(t.packed && k != triangle_kind && k != instance_kind);
+  };
   for (const user_kind& u : users) {
-    if (t.count[u.k] == 0 || native(u.k)) continue;
+    if (!embree_s(u.k) || native(u.k)) continue;
     data_.push_back({this, &t});
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
     check(device_, "rtcNewGeometry");
@@ -296,7 +305,7 @@ void world::build_tree(tree& t) {
     rtcReleaseGeometry(g);
     check(device_, "rtcCommitGeometry");
   }
-  if (native(sphere_kind) && t.count[sphere_kind] > 0) {
+  if (native(sphere_kind) && embree_s(sphere_kind)) {
     // Spheres that stand still: Embree's own, tested several at once. Each gpu_sphere begins
     // with its center and radius, the float4 Embree reads, 32 bytes apart.
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
@@ -306,7 +315,7 @@ void world::build_tree(tree& t) {
                                t.count[sphere_kind]);
     attach(t, g, sphere_kind);
   }
-  if (native(quad_kind) && t.count[quad_kind] > 0) {
+  if (native(quad_kind) && embree_s(quad_kind)) {
     // Quads: Embree's, each of its four corners (a parallelogram is planar, so Embree's two
     // triangles cover it exactly).
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_QUAD);

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "hit_disk.h"
@@ -13,17 +14,18 @@
 #include "hit_sphere.h"
 #include "hit_triangle.h"
 #include "instance_space.h"
+#include "packet_bvh.h"
 #include "scene_arrays.h"
 
 namespace rtvk::fast {
 
-// Embree finds the nearest hit: triangles, quads and still spheres with its own tests, tested
-// several at once; moving spheres, disks and instances through callbacks that run the shared
-// kernels' tests (hit_sphere.h and the others). The winner's record is then made by the kernels
-// as world.glsl makes it (record_winner), from Embree's distance: the hits differ from the GPU's
-// by float rounding of t (a few ulps of the distance), which the image tests measure.
-// Exact ties between two objects go to whichever Embree meets last, not the scan order's later
-// one: a difference of one object's color on a pixel where two surfaces coincide.
+// Two searches find the nearest hit. The world's own spheres, quads and disks are packet_bvh's:
+// the kernels' own tests, four objects at once, so their hits are the GPU's bit for bit and
+// exact ties go to the later scene index, as on the GPU. Triangles and instances are Embree's:
+// its triangle test, and callbacks that run the kernels' tests in an instanced group's tree
+// (quads there are Embree's). A winner's record is then made by the kernels as world.glsl makes
+// it (record_winner); Embree's hits differ from the GPU's by float rounding of t (a few ulps of
+// the distance), which the image tests measure.
 class world {
  public:
   // Over the arrays (which must outlive the world), moving spheres bounded over
@@ -45,6 +47,7 @@ class world {
   struct tree {
     RTCScene scene = nullptr;
     std::array<std::uint32_t, kinds> first{}, count{};
+    bool packed = false;  // its spheres, quads and disks are packet_bvh's, not Embree's
   };
   // What a callback reads: the world and the tree whose geometry called.
   struct geometry_data {
@@ -59,6 +62,9 @@ class world {
   std::vector<instance_frame> frames;        // by instance
   std::vector<std::uint32_t> instance_tree;  // by instance: its group's tree in `trees`
   std::vector<tree> trees;                   // [0]: the world's own; then one per group
+  std::unique_ptr<packet_bvh> packets;       // the world's own spheres, quads and disks
+  bool embree_world = false;                 // Embree's world tree holds something (triangles
+                                             // or instances)
   bool moves = false;                        // some sphere has a velocity
   bool any_triangles = false;                // shear rays for the triangles' records
   float motion_begin = 0, motion_end = 0;    // the scene's time span, seconds
@@ -69,6 +75,7 @@ class world {
   void attach(tree& t, RTCGeometry g, unsigned id);
   void record(const RTCRayHit& h, const ray& r, hit_record& rec) const;
   void record_in(const tree& t, const RTCHit& hit, const ray& r, real t_hit, hit_record& rec) const;
+  void record_own(const packet_bvh::found& f, const ray& r, hit_record& rec) const;
 
   RTCDevice device_ = nullptr;
   std::vector<geometry_data> data_;  // one per user geometry, kept where Embree points
