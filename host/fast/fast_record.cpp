@@ -7,7 +7,14 @@ namespace rtvk::fast {
 bool world::hit(const ray& r, real t_min, real t_max, hit_record& rec) const {
   packet_bvh::found f;
   const bool own = packets->hit(r, t_min, t_max, f);
-  if (embree_world) {  // triangles and instances, nearer than the packets' hit
+  return finish(r, t_min, t_max, own, f, rec);
+}
+
+// After packet_bvh's search (`own`: it found f): Embree's triangles and instances, nearer than
+// that, and the winner's record.
+bool world::finish(const ray& r, real t_min, real t_max, bool own, const packet_bvh::found& f,
+                   hit_record& rec) const {
+  if (embree_world) {
     RTCRayHit h = embree_ray(r, t_min, own ? f.t : t_max);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);

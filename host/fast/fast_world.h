@@ -75,6 +75,8 @@ class world {
   void attach(tree& t, RTCGeometry g, unsigned id);
   void record(const RTCRayHit& h, const ray& r, hit_record& rec) const;
   void record_in(const tree& t, const RTCHit& hit, const ray& r, real t_hit, hit_record& rec) const;
+  bool finish(const ray& r, real t_min, real t_max, bool own, const packet_bvh::found& f,
+              hit_record& rec) const;
   void record_own(const packet_bvh::found& f, const ray& r, hit_record& rec) const;
 
   RTCDevice device_ = nullptr;

@@ -42,133 +42,189 @@ inline M in_range(f4 root, f4 t_min, f4 t_max) {
 // A ray as every lane reads it: each component in all four.
 struct packet_bvh::ray_lanes {
   f4 ox, oy, oz, dx, dy, dz, time;
-  f4 ix, iy, iz;        // 1 / direction, zeros replaced by a tiny signed value
-  f4 lo_x, lo_y, lo_z;  // the origin less the slab test's margin, and plus it
-  f4 hi_x, hi_y, hi_z;
-  f4 a;  // dot3(direction, direction), hit_sphere's a
+  f4 inv[3];  // 1 / direction, zeros replaced by a tiny signed value
+  f4 o_near[3],
+      o_far[3];       // the origin moved by the slab test's margin, for the near and far planes
+  int near_plane[3];  // per axis: 0 when the ray enters a box by its low face, 3 by its high
+  f4 a;               // dot3(direction, direction), hit_sphere's a
 
   explicit ray_lanes(const ray& r) {
     ox = splat(r.origin.x), oy = splat(r.origin.y), oz = splat(r.origin.z);
     dx = splat(r.direction.x), dy = splat(r.direction.y), dz = splat(r.direction.z);
     time = splat(r.time);
-    const auto inverse = [](float d) {
-      return 1.0f / (std::abs(d) < 1e-20f ? std::copysign(1e-20f, d) : d);
-    };
-    ix = splat(inverse(r.direction.x)), iy = splat(inverse(r.direction.y));
-    iz = splat(inverse(r.direction.z));
     // Rounding the origin to float and subtracting it from a corner err by half an ulp of its
     // largest coordinate each: 2^-20 of it (16 ulps) is added to every box (bvh.h's
     // origin_margin), so the slab test never culls a box the ray enters.
     const float m =
         std::max({std::abs(r.origin.x), std::abs(r.origin.y), std::abs(r.origin.z)}) * 0x1p-20f;
-    lo_x = ox + splat(m), lo_y = oy + splat(m), lo_z = oz + splat(m);
-    hi_x = ox - splat(m), hi_y = oy - splat(m), hi_z = oz - splat(m);
+    for (int k = 0; k < 3; ++k) {
+      const float d = r.direction[k];
+      inv[k] = splat(1.0f / (std::abs(d) < 1e-20f ? std::copysign(1e-20f, d) : d));
+      const bool down = inv[k][0] < 0;  // enters by the high face
+      near_plane[k] = down ? 3 : 0;
+      o_near[k] = splat(down ? r.origin[k] - m : r.origin[k] + m);
+      o_far[k] = splat(down ? r.origin[k] + m : r.origin[k] - m);
+    }
     a = splat(dot3(r.direction, r.direction));
+  }
+};
+
+namespace {
+
+// Where the ray enters each of n's four boxes (lanes), and which of them it enters within
+// [near, far] (bits).
+template <typename Node, typename Lanes>
+inline int entries(const Node& n, const Lanes& l, f4 near, f4 far, f4& enter) {
+  const f4* planes = &n.lo[0];  // lo[0..2], then hi[0..2]
+  enter = near;
+  f4 leave = far;
+  for (int k = 0; k < 3; ++k) {
+    enter = vmax(enter, (planes[l.near_plane[k] + k] - l.o_near[k]) * l.inv[k]);
+    leave = vmin(leave, (planes[3 - l.near_plane[k] + k] - l.o_far[k]) * l.inv[k]);
+  }
+  return bits(enter <= leave) & int(n.lanes);
+}
+
+}  // namespace
+
+// Tests the objects of leaf `ref`, offering each lane's hit (offer: kind, index, key, t). True
+// when `any` and something is hit.
+template <bool any, typename Offer>
+inline bool packet_bvh::test_leaf(std::uint32_t ref, const ray_lanes& l, f4 near, f4 far,
+                                  Offer&& offer) const {
+  const std::uint32_t kind = (ref >> kind_shift) & 3u, at = ref & packet_mask;
+  int mask;
+  f4 t;
+  const std::uint32_t *index, *key;
+  if (kind == sphere_kind) {  // hit_sphere.h's hit_sphere
+    const sphere_packet& p = spheres_[at];
+    f4 cx = p.x, cy = p.y, cz = p.z;
+    if (moves_) cx = p.x + l.time * p.vx, cy = p.y + l.time * p.vy, cz = p.z + l.time * p.vz;
+    const f4 ocx = l.ox - cx, ocy = l.oy - cy, ocz = l.oz - cz;
+    const f4 half_b = ocx * l.dx + ocy * l.dy + ocz * l.dz;
+    const f4 k = half_b / l.a;
+    const f4 lx = ocx - k * l.dx, ly = ocy - k * l.dy, lz = ocz - k * l.dz;
+    const f4 disc = l.a * (p.radius * p.radius - (lx * lx + ly * ly + lz * lz));
+    const auto real_roots = (disc >= splat(0)) & (disc < splat(inf));
+    const f4 sqrtd = reinterpret_cast<f4>(_mm_sqrt_ps(reinterpret_cast<__m128>(disc)));
+    const f4 near_root = (-half_b - sqrtd) / l.a, far_root = (-half_b + sqrtd) / l.a;
+    const auto near_in = in_range(near_root, near, far);
+    const auto far_in = in_range(far_root, near, far);
+    t = near_in ? near_root : far_root;
+    mask = bits(real_roots & (near_in | far_in));
+    index = p.index, key = p.key;
+  } else if (kind == quad_kind) {  // hit_quad.h's hit_quad
+    const quad_packet& p = quads_[at];
+    const f4 denom = p.nx * l.dx + p.ny * l.dy + p.nz * l.dz;
+    const auto facing = (denom >= splat(1e-8f)) | (denom <= splat(-1e-8f));
+    t = (p.d - (p.nx * l.ox + p.ny * l.oy + p.nz * l.oz)) / denom;
+    const f4 px = (l.ox + t * l.dx) - p.qx, py = (l.oy + t * l.dy) - p.qy,
+             pz = (l.oz + t * l.dz) - p.qz;
+    const f4 alpha = p.wx * (py * p.vz - pz * p.vy) + p.wy * (pz * p.vx - px * p.vz) +
+                     p.wz * (px * p.vy - py * p.vx);
+    const f4 beta = p.wx * (p.uy * pz - p.uz * py) + p.wy * (p.uz * px - p.ux * pz) +
+                    p.wz * (p.ux * py - p.uy * px);
+    mask = bits(facing & in_range(t, near, far) & (alpha >= splat(0)) & (alpha <= splat(1)) &
+                (beta >= splat(0)) & (beta <= splat(1)));
+    index = p.index, key = p.key;
+  } else {  // hit_disk.h's hit_disk
+    const disk_packet& p = disks_[at];
+    const f4 denom = p.nx * l.dx + p.ny * l.dy + p.nz * l.dz;
+    const auto facing = (denom >= splat(1e-8f)) | (denom <= splat(-1e-8f));
+    t = (p.d - (p.nx * l.ox + p.ny * l.oy + p.nz * l.oz)) / denom;
+    const f4 px = (l.ox + t * l.dx) - p.x, py = (l.oy + t * l.dy) - p.y,
+             pz = (l.oz + t * l.dz) - p.z;
+    mask = bits(facing & in_range(t, near, far) &
+                ((px * px + py * py + pz * pz) <= p.radius * p.radius));
+    index = p.index, key = p.key;
+  }
+  if (any) return mask != 0;
+  for (; mask != 0; mask &= mask - 1) {
+    const int c = __builtin_ctz(unsigned(mask));
+    offer(kind, index[c], key[c], t[c]);
+  }
+  return false;
+}
+
+// One ray's search in progress: step() takes it one node or one leaf further. The nearest
+// child a node's test enters is searched next; the others are remembered with where the ray
+// enters them, and dropped when they come up behind the nearest hit found since.
+template <bool any>
+struct packet_bvh::walker {
+  struct entry {
+    std::uint32_t ref;
+    float t;  // where the ray enters the child's box
+  };
+  const packet_bvh& tree;
+  const ray_lanes l;
+  const f4 near;
+  f4 far;
+  float reach;  // the nearest hit so far, or t_max
+  bool hit = false;
+  std::uint32_t best_key = 0;
+  found f;
+  entry stack[3 * max_levels + 4];
+  int top = 0;
+  std::uint32_t next = 0;  // the root
+
+  walker(const packet_bvh& b, const ray& r, real t_min, real t_max)
+      : tree(b), l(r), near(splat(t_min)), far(splat(t_max)), reach(t_max) {}
+
+  // Keeps a lane's hit at t when nearer, or as near and later in the scene.
+  void offer(std::uint32_t kind, std::uint32_t index, std::uint32_t key, float t) {
+    if (hit && !(t < f.t || (t == f.t && key > best_key))) return;
+    hit = true, f.kind = kind, f.index = index, f.t = t, best_key = key;
+    reach = t, far = splat(t);
+  }
+
+  // False when the search is over: `hit`, and f the nearest hit when there is one (with `any`,
+  // hit says that something blocks the ray).
+  bool step() {
+    if ((next & leaf_bit) == 0) {
+      const node& n = tree.nodes_[next];
+      f4 enter;
+      int mask = entries(n, l, near, far, enter);
+      if (mask != 0) {
+        int c = __builtin_ctz(unsigned(mask));
+        mask &= mask - 1;
+        if (mask == 0) {
+          next = n.child[c];
+          return true;
+        }
+        const int base = top;  // sorted on the stack, farthest deepest
+        for (;; c = __builtin_ctz(unsigned(mask)), mask &= mask - 1) {
+          const entry in{n.child[c], enter[c]};
+          int k = top++;
+          for (; k > base && stack[k - 1].t < in.t; --k) stack[k] = stack[k - 1];
+          stack[k] = in;
+          if (mask == 0) break;
+        }
+        next = stack[--top].ref;
+        return true;
+      }
+    } else if (tree.test_leaf<any>(
+                   next, l, near, far,
+                   [this](std::uint32_t kind, std::uint32_t index, std::uint32_t key, float t) {
+                     offer(kind, index, key, t);
+                   })) {
+      hit = true;  // `any`: something blocks the ray
+      return false;
+    }
+    while (top > 0 && stack[top - 1].t > reach) --top;
+    if (top == 0) return false;
+    next = stack[--top].ref;
+    return true;
   }
 };
 
 template <bool any>
 bool packet_bvh::search(const ray& r, real t_min, real t_max, found& f) const {
   if (nodes_.empty()) return false;
-  const ray_lanes l(r);
-  const f4 near = splat(t_min);
-  f4 far = splat(t_max);
-  bool hit = false;
-  std::uint32_t best_key = 0;
-  // Keeps lane `lane` of a packet that hit at t when nearer, or as near and later in the scene.
-  const auto offer = [&](std::uint32_t kind, std::uint32_t index, std::uint32_t key, float t) {
-    if (hit && !(t < f.t || (t == f.t && key > best_key))) return;
-    hit = true, f.kind = kind, f.index = index, f.t = t, best_key = key;
-    far = splat(t);
-  };
-  struct entry {
-    std::uint32_t ref;
-    float t;  // where the ray enters the child's box
-  };
-  entry stack[3 * max_levels + 4];
-  int top = 0;
-  stack[top++] = {0, t_min};
-  while (top > 0) {
-    const entry e = stack[--top];
-    if (hit && e.t > f.t) continue;  // a nearer hit was found since it was remembered
-    if ((e.ref & leaf_bit) == 0) {
-      const node& n = nodes_[e.ref];
-      const f4 x0 = (n.lo[0] - l.lo_x) * l.ix, x1 = (n.hi[0] - l.hi_x) * l.ix;
-      const f4 y0 = (n.lo[1] - l.lo_y) * l.iy, y1 = (n.hi[1] - l.hi_y) * l.iy;
-      const f4 z0 = (n.lo[2] - l.lo_z) * l.iz, z1 = (n.hi[2] - l.hi_z) * l.iz;
-      const f4 enter = vmax(vmax(vmin(x0, x1), vmin(y0, y1)), vmax(vmin(z0, z1), near));
-      const f4 leave = vmin(vmin(vmax(x0, x1), vmax(y0, y1)), vmin(vmax(z0, z1), far));
-      int mask = bits(enter <= leave) & int(n.lanes);
-      // The children entered, sorted on the stack farthest first so that the nearest is searched
-      // next (in place: a copy from a local array became a slow `rep movs`).
-      const int base = top;
-      while (mask != 0) {
-        const int c = __builtin_ctz(unsigned(mask));
-        mask &= mask - 1;
-        const entry in{n.child[c], enter[c]};
-        int k = top++;
-        for (; k > base && stack[k - 1].t < in.t; --k) stack[k] = stack[k - 1];
-        stack[k] = in;
-      }
-      continue;
-    }
-    const std::uint32_t kind = (e.ref >> kind_shift) & 3u, at = e.ref & packet_mask;
-    int mask;
-    f4 t;
-    if (kind == sphere_kind) {  // hit_sphere.h's hit_sphere
-      const sphere_packet& p = spheres_[at];
-      f4 cx = p.x, cy = p.y, cz = p.z;
-      if (moves_) cx = p.x + l.time * p.vx, cy = p.y + l.time * p.vy, cz = p.z + l.time * p.vz;
-      const f4 ocx = l.ox - cx, ocy = l.oy - cy, ocz = l.oz - cz;
-      const f4 half_b = ocx * l.dx + ocy * l.dy + ocz * l.dz;
-      const f4 k = half_b / l.a;
-      const f4 lx = ocx - k * l.dx, ly = ocy - k * l.dy, lz = ocz - k * l.dz;
-      const f4 disc = l.a * (p.radius * p.radius - (lx * lx + ly * ly + lz * lz));
-      const auto real_roots = (disc >= splat(0)) & (disc < splat(inf));
-      const f4 sqrtd = reinterpret_cast<f4>(_mm_sqrt_ps(reinterpret_cast<__m128>(disc)));
-      const f4 near_root = (-half_b - sqrtd) / l.a, far_root = (-half_b + sqrtd) / l.a;
-      const auto near_in = in_range(near_root, near, far);
-      const auto far_in = in_range(far_root, near, far);
-      t = near_in ? near_root : far_root;
-      mask = bits(real_roots & (near_in | far_in));
-    } else if (kind == quad_kind) {  // hit_quad.h's hit_quad
-      const quad_packet& p = quads_[at];
-      const f4 denom = p.nx * l.dx + p.ny * l.dy + p.nz * l.dz;
-      const auto facing = (denom >= splat(1e-8f)) | (denom <= splat(-1e-8f));
-      t = (p.d - (p.nx * l.ox + p.ny * l.oy + p.nz * l.oz)) / denom;
-      const f4 px = (l.ox + t * l.dx) - p.qx, py = (l.oy + t * l.dy) - p.qy,
-               pz = (l.oz + t * l.dz) - p.qz;
-      const f4 alpha = p.wx * (py * p.vz - pz * p.vy) + p.wy * (pz * p.vx - px * p.vz) +
-                       p.wz * (px * p.vy - py * p.vx);
-      const f4 beta = p.wx * (p.uy * pz - p.uz * py) + p.wy * (p.uz * px - p.ux * pz) +
-                      p.wz * (p.ux * py - p.uy * px);
-      mask = bits(facing & in_range(t, near, far) & (alpha >= splat(0)) & (alpha <= splat(1)) &
-                  (beta >= splat(0)) & (beta <= splat(1)));
-    } else {  // hit_disk.h's hit_disk
-      const disk_packet& p = disks_[at];
-      const f4 denom = p.nx * l.dx + p.ny * l.dy + p.nz * l.dz;
-      const auto facing = (denom >= splat(1e-8f)) | (denom <= splat(-1e-8f));
-      t = (p.d - (p.nx * l.ox + p.ny * l.oy + p.nz * l.oz)) / denom;
-      const f4 px = (l.ox + t * l.dx) - p.x, py = (l.oy + t * l.dy) - p.y,
-               pz = (l.oz + t * l.dz) - p.z;
-      mask = bits(facing & in_range(t, near, far) &
-                  ((px * px + py * py + pz * pz) <= p.radius * p.radius));
-    }
-    if (mask == 0) continue;
-    if (any) return true;
-    const std::uint32_t* index = kind == sphere_kind ? spheres_[at].index
-                                 : kind == quad_kind ? quads_[at].index
-                                                     : disks_[at].index;
-    const std::uint32_t* key = kind == sphere_kind ? spheres_[at].key
-                               : kind == quad_kind ? quads_[at].key
-                                                   : disks_[at].key;
-    while (mask != 0) {
-      const int c = __builtin_ctz(unsigned(mask));
-      mask &= mask - 1;
-      offer(kind, index[c], key[c], t[c]);
-    }
+  walker<any> w(*this, r, t_min, t_max);
+  while (w.step()) {
   }
-  return hit;
+  f = w.f;
+  return w.hit;
 }
 
 bool packet_bvh::hit(const ray& r, real t_min, real t_max, found& f) const {

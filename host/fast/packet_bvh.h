@@ -79,7 +79,11 @@ class packet_bvh {
  private:
   struct ray_lanes;
   template <bool any>
+  struct walker;
+  template <bool any>
   bool search(const ray& r, real t_min, real t_max, found& f) const;
+  template <bool any, typename Offer>
+  bool test_leaf(std::uint32_t ref, const ray_lanes& l, f4 near, f4 far, Offer&& offer) const;
 
   std::vector<node> nodes_;  // node 0 the root; empty without objects
   std::vector<sphere_packet> spheres_;
