@@ -1,6 +1,8 @@
 // The CPU's fast mode against the GPU: the same kernels in the same float, over the same arrays,
-// drawing the same numbers. Only the searches differ (Embree's triangle and quad tests, and
-// which of two objects an exact tie goes to), and what the compilers make of the arithmetic.
+// drawing the same numbers. Only the searches differ (Embree's triangle tests, its quads inside
+// instanced groups, and which of two objects an exact tie goes to there; the world's own spheres,
+// quads and disks are the kernels' tests and the GPU's ties), and what the compilers make of the
+// arithmetic.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -54,6 +56,26 @@ TEST_F(GpuFastMode, EveryBuiltInSceneMatchesTheGpu) {
     EXPECT_GE(d.psnr_db, rule.min_psnr_db);
     EXPECT_LE(d.share_over, rule.max_share) << d.pixels_over << " pixels";
   }
+}
+
+// Exact ties (coincident surfaces, test_fast_mode.cpp's scene): the fast mode draws the GPU's
+// bytes, the later object's colors.
+TEST_F(GpuFastMode, CoincidentSurfacesMatchTheGpu) {
+  const scene s = parse_scene_json(
+      R"({"camera":{"lookfrom":[0,0,6],"lookat":[0,0,0],"vfov":60},)"
+      R"("render":{"gamma":1,"width":48,"aspect":"1:1","spp":1,"jitter":false,"max_depth":2},)"
+      R"("materials":{"r":{"type":"flat","albedo":[1,0,0]},"g":{"type":"flat","albedo":[0,1,0]},)"
+      R"("y":{"type":"flat","albedo":[1,1,0]},"c":{"type":"flat","albedo":[0,1,1]}},)"
+      R"("quads":[{"Q":[-3,-3,-1],"u":[6,0,0],"v":[0,6,0],"material":"r"},)"
+      R"({"Q":[-3,-3,-1],"u":[6,0,0],"v":[0,6,0],"material":"g"}],)"
+      R"("spheres":[{"center":[-1.2,1,0],"radius":0.8,"material":"y"},)"
+      R"({"center":[-1.2,1,0],"radius":0.8,"material":"c"}]})",
+      "coincident.json");
+  engine_options fast;
+  fast.precision = cpu_precision::fast;
+  const camera cam = test::scene_camera(s);
+  const image_rgb8 cpu = quantize(render_cpu(cam, s, s.render, {}, fast), s.render.encoding());
+  EXPECT_EQ(test::gpu_image(gpu(), s, cam).rgb, cpu.rgb);
 }
 
 }  // namespace
