@@ -23,7 +23,9 @@ namespace rtvk::fast {
 // the kernels' own tests, four objects at once, so their hits are the GPU's bit for bit and
 // exact ties go to the later scene index, as on the GPU. Triangles and instances are Embree's:
 // its triangle test, and callbacks that run the kernels' tests in an instanced group's tree
-// (quads there are Embree's). A winner's record is then made by the kernels as world.glsl makes
+// (quads there are Embree's); it searches up to the packets' hit and wins an exact tie with it
+// (the GPU gives instances such ties, as objects later in the scan; a triangle's t differs from
+// the GPU's by rounding anyway). A winner's record is then made by the kernels as world.glsl makes
 // it (record_winner); Embree's hits differ from the GPU's by float rounding of t (a few ulps of
 // the distance), which the image tests measure.
 class world {

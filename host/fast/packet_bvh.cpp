@@ -1,7 +1,9 @@
 // packet_bvh's search: the nearest child first, four boxes per slab test, four objects per leaf
 // test. The leaf tests are the kernels' tests lane by lane (hit_sphere.h, hit_quad.h,
 // hit_disk.h): the same float operations in the same order, so the same bits.
+#if defined(__SSE2__)
 #include <xmmintrin.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -18,10 +20,22 @@ constexpr float inf = std::numeric_limits<float>::infinity();
 inline f4 splat(float v) {
   return f4{v, v, v, v};
 }
-// Lane masks (-1 or 0 per lane, GCC's comparisons) as the four bits of a number.
+// Lane masks (-1 or 0 per lane, GCC's comparisons) as the four bits of a number, and the
+// square roots of four lanes: SSE's where there is SSE, lane by lane elsewhere (the same bits).
 template <typename M>
 inline int bits(M m) {
+#if defined(__SSE2__)
   return _mm_movemask_ps(reinterpret_cast<__m128>(m));
+#else
+  return int(m[0] & 1) | int(m[1] & 1) << 1 | int(m[2] & 1) << 2 | int(m[3] & 1) << 3;
+#endif
+}
+inline f4 vsqrt(f4 x) {
+#if defined(__SSE2__)
+  return reinterpret_cast<f4>(_mm_sqrt_ps(reinterpret_cast<__m128>(x)));
+#else
+  return f4{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])};
+#endif
 }
 inline f4 vmin(f4 a, f4 b) {
   return a < b ? a : b;
@@ -75,7 +89,7 @@ namespace {
 // [near, far] (bits).
 template <typename Node, typename Lanes>
 inline int entries(const Node& n, const Lanes& l, f4 near, f4 far, f4& enter) {
-  const f4* planes = &n.lo[0];  // lo[0..2], then hi[0..2]
+  const f4* planes = n.planes;
   enter = near;
   f4 leave = far;
   for (int k = 0; k < 3; ++k) {
@@ -83,6 +97,23 @@ inline int entries(const Node& n, const Lanes& l, f4 near, f4 far, f4& enter) {
     leave = vmin(leave, (planes[3 - l.near_plane[k] + k] - l.o_far[k]) * l.inv[k]);
   }
   return bits(enter <= leave) & int(n.lanes);
+}
+
+}  // namespace
+
+namespace {
+
+// The quad's and the disk's way to their plane (hit_quad.h, hit_disk.h): t where the ray meets
+// each lane's plane (unit normal n, dot(n, x) = d), the point there less `at` (a corner, a
+// center), and which lanes face the ray enough and meet it within [near, far].
+template <typename Lanes>
+inline int plane_hit(const Lanes& l, f4 nx, f4 ny, f4 nz, f4 d, f4 ax, f4 ay, f4 az, f4 near,
+                     f4 far, f4& t, f4& px, f4& py, f4& pz) {
+  const f4 denom = nx * l.dx + ny * l.dy + nz * l.dz;
+  const auto facing = (denom >= splat(1e-8f)) | (denom <= splat(-1e-8f));
+  t = (d - (nx * l.ox + ny * l.oy + nz * l.oz)) / denom;
+  px = (l.ox + t * l.dx) - ax, py = (l.oy + t * l.dy) - ay, pz = (l.oz + t * l.dz) - az;
+  return bits(facing & in_range(t, near, far));
 }
 
 }  // namespace
@@ -106,7 +137,7 @@ inline bool packet_bvh::test_leaf(std::uint32_t ref, const ray_lanes& l, f4 near
     const f4 lx = ocx - k * l.dx, ly = ocy - k * l.dy, lz = ocz - k * l.dz;
     const f4 disc = l.a * (p.radius * p.radius - (lx * lx + ly * ly + lz * lz));
     const auto real_roots = (disc >= splat(0)) & (disc < splat(inf));
-    const f4 sqrtd = reinterpret_cast<f4>(_mm_sqrt_ps(reinterpret_cast<__m128>(disc)));
+    const f4 sqrtd = vsqrt(disc);
     const f4 near_root = (-half_b - sqrtd) / l.a, far_root = (-half_b + sqrtd) / l.a;
     const auto near_in = in_range(near_root, near, far);
     const auto far_in = in_range(far_root, near, far);
@@ -115,27 +146,20 @@ inline bool packet_bvh::test_leaf(std::uint32_t ref, const ray_lanes& l, f4 near
     index = p.index, key = p.key;
   } else if (kind == quad_kind) {  // hit_quad.h's hit_quad
     const quad_packet& p = quads_[at];
-    const f4 denom = p.nx * l.dx + p.ny * l.dy + p.nz * l.dz;
-    const auto facing = (denom >= splat(1e-8f)) | (denom <= splat(-1e-8f));
-    t = (p.d - (p.nx * l.ox + p.ny * l.oy + p.nz * l.oz)) / denom;
-    const f4 px = (l.ox + t * l.dx) - p.qx, py = (l.oy + t * l.dy) - p.qy,
-             pz = (l.oz + t * l.dz) - p.qz;
+    f4 px, py, pz;
+    mask = plane_hit(l, p.nx, p.ny, p.nz, p.d, p.qx, p.qy, p.qz, near, far, t, px, py, pz);
     const f4 alpha = p.wx * (py * p.vz - pz * p.vy) + p.wy * (pz * p.vx - px * p.vz) +
                      p.wz * (px * p.vy - py * p.vx);
     const f4 beta = p.wx * (p.uy * pz - p.uz * py) + p.wy * (p.uz * px - p.ux * pz) +
                     p.wz * (p.ux * py - p.uy * px);
-    mask = bits(facing & in_range(t, near, far) & (alpha >= splat(0)) & (alpha <= splat(1)) &
-                (beta >= splat(0)) & (beta <= splat(1)));
+    mask &=
+        bits((alpha >= splat(0)) & (alpha <= splat(1)) & (beta >= splat(0)) & (beta <= splat(1)));
     index = p.index, key = p.key;
   } else {  // hit_disk.h's hit_disk
     const disk_packet& p = disks_[at];
-    const f4 denom = p.nx * l.dx + p.ny * l.dy + p.nz * l.dz;
-    const auto facing = (denom >= splat(1e-8f)) | (denom <= splat(-1e-8f));
-    t = (p.d - (p.nx * l.ox + p.ny * l.oy + p.nz * l.oz)) / denom;
-    const f4 px = (l.ox + t * l.dx) - p.x, py = (l.oy + t * l.dy) - p.y,
-             pz = (l.oz + t * l.dz) - p.z;
-    mask = bits(facing & in_range(t, near, far) &
-                ((px * px + py * py + pz * pz) <= p.radius * p.radius));
+    f4 px, py, pz;
+    mask = plane_hit(l, p.nx, p.ny, p.nz, p.d, p.x, p.y, p.z, near, far, t, px, py, pz);
+    mask &= bits((px * px + py * py + pz * pz) <= p.radius * p.radius);
     index = p.index, key = p.key;
   }
   if (any) return mask != 0;

@@ -64,7 +64,8 @@ class packet_bvh {
   // Four children's boxes side by side, and per child an interior node's index, a leaf (leaf_bit
   // | kind << kind_shift | packet index), or none.
   struct node {
-    f4 lo[3], hi[3];  // [axis], lanes by child, scene units (grown for float rounding)
+    f4 planes[6];  // lo x, y, z, then hi x, y, z; lanes by child; scene units (grown for float
+                   // rounding)
     std::uint32_t child[4];
     std::uint32_t lanes;  // bit c: child c is in use
   };

@@ -24,8 +24,10 @@ struct box {
     const float q[3] = {p.x, p.y, p.z};
     grow(q, q);
   }
-  float half_area() const {
-    const float x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
+  // In double: the costs of boxes 1e16 wide overflow float.
+  double half_area() const {
+    const double x = double(hi[0]) - double(lo[0]), y = double(hi[1]) - double(lo[1]),
+                 z = double(hi[2]) - double(lo[2]);
     return x < 0 ? 0 : x * y + y * z + z * x;
   }
 };
@@ -65,7 +67,7 @@ struct builder {
 
   // Where to split [begin, end): the binned SAH's best plane, or the middle when the centers
   // cannot be told apart. The items are reordered so that the split falls at the returned index.
-  std::uint32_t split(std::uint32_t begin, std::uint32_t end) {
+  std::uint32_t split(std::uint32_t begin, std::uint32_t end, bool median) {
     const std::uint32_t n = end - begin;
     if (n <= lanes) {  // several kinds: the first kind against the rest
       const std::uint32_t first = items[begin].kind;
@@ -76,7 +78,15 @@ struct builder {
     }
     box centers;
     for (std::uint32_t k = begin; k < end; ++k) centers.grow(items[k].c, items[k].c);
-    float best_cost = inf;
+    if (median) {  // the middle of the centers along their longest extent
+      int axis = 0;
+      for (int k = 1; k < 3; ++k)
+        if (centers.hi[k] - centers.lo[k] > centers.hi[axis] - centers.lo[axis]) axis = k;
+      std::nth_element(items.begin() + begin, items.begin() + begin + n / 2, items.begin() + end,
+                       [axis](const item& a, const item& b) { return a.c[axis] < b.c[axis]; });
+      return begin + n / 2;
+    }
+    double best_cost = std::numeric_limits<double>::infinity();
     int best_axis = -1, best_bin = 0;
     for (int axis = 0; axis < 3; ++axis) {
       const float lo = centers.lo[axis], extent = centers.hi[axis] - lo;
@@ -89,7 +99,7 @@ struct builder {
         ++count[i];
       }
       // Costs of every plane: the boxes and packets to the left, swept, then to the right.
-      float left_area[bins];
+      double left_area[bins];
       std::uint32_t left_count[bins];
       box acc;
       std::uint32_t c = 0;
@@ -102,8 +112,8 @@ struct builder {
         acc.grow(b[i]), c += count[i];
         const std::uint32_t l = left_count[i - 1];
         if (l == 0 || c == 0) continue;
-        const float cost = left_area[i - 1] * float((l + lanes - 1) / lanes) +
-                           acc.half_area() * float((c + lanes - 1) / lanes);
+        const double cost = left_area[i - 1] * double((l + lanes - 1) / lanes) +
+                            acc.half_area() * double((c + lanes - 1) / lanes);
         if (cost < best_cost) best_cost = cost, best_axis = axis, best_bin = i;
       }
     }
@@ -118,9 +128,19 @@ struct builder {
                          items.begin());
   }
 
+  // Binary levels a split of n items may use below its node: each wide level takes at least one,
+  // so the wide tree stays within packet_bvh::max_levels. Two are left for splitting a packet's
+  // worth of mixed kinds.
+  static constexpr int max_depth = packet_bvh::max_levels - 3;
+
+  // Levels median splits need to bring n items down to a packet's worth.
+  static int levels_needed(std::uint32_t n) {
+    int levels = 0;
+    for (; n > lanes; n = (n + 1) / 2) ++levels;
+    return levels;
+  }
+
   int build(std::uint32_t begin, std::uint32_t end, int depth) {
-    if (depth > 2 * packet_bvh::max_levels)
-      throw std::length_error("packet_bvh: the tree is too deep");
     const int at = int(nodes.size());
     nodes.push_back({});
     box b;
@@ -130,7 +150,11 @@ struct builder {
       nodes[std::size_t(at)].begin = begin, nodes[std::size_t(at)].end = end;
       return at;
     }
-    const std::uint32_t mid = split(begin, end);
+    // SAH splits while the levels left allow any; median splits, which need the fewest, after
+    // (a scene whose objects grow geometrically in size and spacing would peel a few off per
+    // level, as bvh.cpp's builder guards against too).
+    const bool median = depth + 1 + levels_needed(end - begin) >= max_depth;
+    const std::uint32_t mid = split(begin, end, median);
     const int left = build(begin, mid, depth + 1);
     const int right = build(mid, end, depth + 1);
     nodes[std::size_t(at)].left = left, nodes[std::size_t(at)].right = right;
@@ -225,7 +249,8 @@ packet_bvh::packet_bvh(const gpu::scene_arrays& a, std::uint32_t spheres,
   // largest interior children until it has four. Returns the wide node's index.
   const auto collapse = [&](auto&& self, int b, int level) -> std::uint32_t {
     levels_ = std::max(levels_, level);
-    if (level > max_levels) throw std::length_error("packet_bvh: the tree is too deep");
+    if (level > max_levels)  // the builder's max_depth rules it out
+      throw std::logic_error("packet_bvh: the tree is too deep");
     std::vector<int> children;
     const binary_node& root = bd.nodes[std::size_t(b)];
     if (root.left < 0)
@@ -234,7 +259,7 @@ packet_bvh::packet_bvh(const gpu::scene_arrays& a, std::uint32_t spheres,
       children = {root.left, root.right};
     while (children.size() < lanes) {
       int widest = -1;
-      float area = -1;
+      double area = -1;
       for (std::size_t c = 0; c < children.size(); ++c) {
         const binary_node& n = bd.nodes[std::size_t(children[c])];
         if (n.left >= 0 && n.b.half_area() > area) area = n.b.half_area(), widest = int(c);
@@ -247,11 +272,12 @@ packet_bvh::packet_bvh(const gpu::scene_arrays& a, std::uint32_t spheres,
     const std::uint32_t at = std::uint32_t(nodes_.size());
     nodes_.emplace_back();
     node w{};
-    for (int k = 0; k < 3; ++k) w.lo[k] = f4{inf, inf, inf, inf}, w.hi[k] = -w.lo[k];
+    for (int k = 0; k < 3; ++k)
+      w.planes[k] = f4{inf, inf, inf, inf}, w.planes[3 + k] = -w.planes[k];
     for (std::uint32_t c = 0; c < lanes; ++c) w.child[c] = none;
     for (std::size_t c = 0; c < children.size(); ++c) {
       const binary_node& n = bd.nodes[std::size_t(children[c])];
-      for (int k = 0; k < 3; ++k) w.lo[k][c] = n.b.lo[k], w.hi[k][c] = n.b.hi[k];
+      for (int k = 0; k < 3; ++k) w.planes[k][c] = n.b.lo[k], w.planes[3 + k][c] = n.b.hi[k];
       w.child[c] = n.left < 0 ? pack(n) : self(self, children[c], level + 1);
       w.lanes |= 1u << c;
     }

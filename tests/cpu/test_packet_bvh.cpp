@@ -4,6 +4,7 @@
 // the fast mode compiles them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -126,8 +127,8 @@ void expect_scan(const objects& o, int rays, std::mt19937& g) {
         << "ray " << k << ": " << got.t << " against " << want.t;
   }
   // Enough of both outcomes that each was tested.
-  EXPECT_GT(hits, rays / 100);
-  EXPECT_LT(hits, rays - rays / 100);
+  EXPECT_GE(hits, 3);
+  EXPECT_GE(rays - hits, 3);
 }
 
 TEST(PacketBvh, FindsTheScansHitsBitForBit) {
@@ -142,8 +143,63 @@ TEST(PacketBvh, MovingSpheres) {
 
 TEST(PacketBvh, FewObjectsOfEachKind) {
   std::mt19937 g(49);
-  for (std::uint32_t n = 1; n <= 6; ++n)
+  for (std::uint32_t n = 1; n <= 6; ++n) {
     expect_scan(scatter_objects(n, n % 3, n % 2, n % 2 == 0, g), 3000, g);
+    expect_scan(scatter_objects(n, 0, 0, false, g), 3000, g);  // n <= 4: a root that is a leaf
+  }
+}
+
+// Coincident copies of spheres, quads and disks (each object four times over), their scene
+// indices shuffled across kinds: ties met in different leaves and between kinds go to the later
+// scene index, as the scan gives them.
+TEST(PacketBvh, TiesAcrossLeavesAndKinds) {
+  std::mt19937 g(50);
+  const objects unique = scatter_objects(30, 30, 30, false, g);
+  objects o;
+  for (int copy = 0; copy < 4; ++copy) {
+    o.a.spheres.insert(o.a.spheres.end(), unique.a.spheres.begin(), unique.a.spheres.end());
+    o.a.quads.insert(o.a.quads.end(), unique.a.quads.begin(), unique.a.quads.end());
+    o.quads.insert(o.quads.end(), unique.quads.begin(), unique.quads.end());
+    o.a.disks.insert(o.a.disks.end(), unique.a.disks.begin(), unique.a.disks.end());
+    o.disks.insert(o.disks.end(), unique.disks.begin(), unique.disks.end());
+  }
+  std::vector<std::uint32_t> keys(o.a.spheres.size() + o.a.quads.size() + o.a.disks.size());
+  for (std::uint32_t k = 0; k < keys.size(); ++k) keys[k] = k;
+  std::shuffle(keys.begin(), keys.end(), g);
+  std::size_t next = 0;
+  for (gpu::gpu_sphere& s : o.a.spheres) s.scene_index = keys[next++];
+  for (gpu::gpu_quad& q : o.a.quads) q.scene_index = keys[next++];
+  for (gpu::gpu_disk& d : o.a.disks) d.scene_index = keys[next++];
+  expect_scan(o, 5000, g);
+}
+
+// Spheres that grow geometrically in size and spacing, over 16 orders of magnitude: the surface
+// area heuristic would peel a few off per level, deeper than the traversal's stack; the builder
+// turns to median splits in time, and the search still finds the scan's hits.
+TEST(PacketBvh, GeometricScenesStayWithinTheStack) {
+  objects o;
+  for (std::uint32_t k = 0; k < 15000; ++k) {
+    const double scale = std::pow(1.00245, k), angle = 0.05 * k;
+    gpu::gpu_sphere s{};
+    s.center = real3(float(scale * std::cos(angle)), float(scale * std::sin(angle)),
+                     float(0.2 * scale * std::sin(3 * angle)));
+    s.radius = float(0.03 * scale), s.scene_index = k;
+    o.a.spheres.push_back(s);
+  }
+  const packet_bvh tree = tree_of(o);
+  EXPECT_LE(tree.levels(), packet_bvh::max_levels);
+  std::mt19937 g(51);
+  std::uniform_int_distribution<std::uint32_t> pick(0, 14999);
+  for (int k = 0; k < 200; ++k) {  // rays from the origin's side toward random spheres
+    const gpu::gpu_sphere& s = o.a.spheres[pick(g)];
+    const ray r(real3(0.1f, 0.2f, 0.3f), real3(s.center) - real3(0.1f, 0.2f, 0.3f));
+    packet_bvh::found want, got;
+    const bool expected = scan(o, r, t_min, 2, want);
+    ASSERT_EQ(tree.hit(r, t_min, 2, got), expected) << "ray " << k;
+    if (expected) {
+      EXPECT_EQ(got.index, want.index) << "ray " << k;
+    }
+  }
 }
 
 // Two quads in one plane, overlapping: every hit on the overlap is an exact tie, which goes to
@@ -180,25 +236,6 @@ TEST(PacketBvh, NothingToHit) {
   EXPECT_TRUE(tree.empty());
   EXPECT_FALSE(tree.hit(ray(real3(0), real3(0, 0, 1)), t_min, 100, f));
   EXPECT_FALSE(tree.blocked(ray(real3(0), real3(0, 0, 1)), t_min, 100));
-}
-
-// A hundred thousand spheres in a line, the builder's worst case for depth: it stays within the
-// traversal stack's levels.
-TEST(PacketBvh, DeepScenesFitTheStack) {
-  objects o;
-  for (std::uint32_t k = 0; k < 100000; ++k) {
-    gpu::gpu_sphere s{};
-    s.center = real3(float(k), 0, 0), s.radius = 0.4f, s.scene_index = k;
-    o.a.spheres.push_back(s);
-  }
-  const packet_bvh tree = tree_of(o);
-  EXPECT_LE(tree.levels(), packet_bvh::max_levels);
-  packet_bvh::found f, want;
-  const ray r(real3(-5, 0, 0), real3(1, 0.001f, 0));
-  ASSERT_TRUE(tree.hit(r, t_min, 1e9f, f));
-  ASSERT_TRUE(scan(o, r, t_min, 1e9f, want));
-  EXPECT_EQ(f.index, 0u);
-  EXPECT_EQ(f.t, want.t);
 }
 
 }  // namespace
