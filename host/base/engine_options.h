@@ -11,8 +11,8 @@ enum class gpu_traversal { compute, ray_query, ray_pipeline };
 
 // The CPU's two modes (--backend cpu and --backend reference): the double-precision reference,
 // the lesson's exact image and what the GPU is compared against; or the fast mode, the shared
-// kernels in float over the GPU's arrays, packet_bvh and Embree finding the hits (host/fast), whose images
-// are the GPU's within the GPU's tolerances.
+// kernels in float over the GPU's arrays, packet_bvh and Embree finding the hits (host/fast), whose
+// images are the GPU's within the GPU's tolerances.
 enum class cpu_precision { reference, fast };
 
 // How a backend does the work, as opposed to what it draws: none of this changes the image, but
