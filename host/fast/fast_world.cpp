@@ -1,3 +1,6 @@
+// The fast world's construction: packet_bvh over the world's own spheres, quads and disks, and
+// Embree's trees (the world's triangles and instances; each instanced group's every object), the
+// shapes Embree lacks given to it as callbacks that run the kernels' tests.
 #include "fast_world.h"
 
 #include <algorithm>
