@@ -2,8 +2,8 @@
 // The CPU's fast mode: the scene's arrays (scene_arrays.h, the GPU's own floats) rendered on the
 // CPU by the shared kernels compiled with float as `real`, packet_bvh and Embree finding the hits.
 // Its images are the GPU's within the GPU's tolerances, at about the double-precision reference's
-// speed on the books' scenes and 1.6x it on large meshes (docs/benchmarks.md). This header holds no kernel type: the reference's translation
-// units (double kernels) include it to call in.
+// speed on the books' scenes and 1.6x it on large meshes (docs/benchmarks.md). This header holds no
+// kernel type: the reference's translation units (double kernels) include it to call in.
 #include <cstdint>
 #include <functional>
 #include <memory>

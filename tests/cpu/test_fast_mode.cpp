@@ -1,7 +1,8 @@
 // The CPU's fast mode (host/fast: the shared kernels in float over the GPU's arrays, packet_bvh
-// and Embree finding the hits) against the double-precision reference, which the books' own code checks
-// (lesson_reference.h, tests/oracle). The two draw the same numbers per sample, so their images
-// differ only where float's rounding turns a path another way: measured floors, as the GPU's.
+// and Embree finding the hits) against the double-precision reference, which the books' own code
+// checks (lesson_reference.h, tests/oracle). The two draw the same numbers per sample, so their
+// images differ only where float's rounding turns a path another way: measured floors, as the
+// GPU's.
 #include <gtest/gtest.h>
 
 #include <array>
