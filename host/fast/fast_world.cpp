@@ -290,11 +290,11 @@ void world::build_tree(tree& t) {
        [](const RTCIntersectFunctionNArguments* a) { intersect_with(a, disk_kind, test_disk); },
        [](const RTCOccludedFunctionNArguments* a) { occluded_with(a, disk_kind, test_disk); }},
       {instance_kind, instance_bounds, instance_intersect, instance_occluded}};
-  const auto embree_s = [&](unsigned k) {
+  const auto in_embree = [&](unsigned k) {
     return t.count[k] > 0 && !(t.packed && k != triangle_kind && k != instance_kind);
   };
   for (const user_kind& u : users) {
-    if (!embree_s(u.k) || native(u.k)) continue;
+    if (!in_embree(u.k) || native(u.k)) continue;
     data_.push_back({this, &t});
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
     check(device_, "rtcNewGeometry");
@@ -308,7 +308,7 @@ void world::build_tree(tree& t) {
     rtcReleaseGeometry(g);
     check(device_, "rtcCommitGeometry");
   }
-  if (native(sphere_kind) && embree_s(sphere_kind)) {
+  if (native(sphere_kind) && in_embree(sphere_kind)) {
     // Spheres that stand still: Embree's own, tested several at once. Each gpu_sphere begins
     // with its center and radius, the float4 Embree reads, 32 bytes apart.
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
@@ -318,7 +318,7 @@ void world::build_tree(tree& t) {
                                t.count[sphere_kind]);
     attach(t, g, sphere_kind);
   }
-  if (native(quad_kind) && embree_s(quad_kind)) {
+  if (native(quad_kind) && in_embree(quad_kind)) {
     // Quads: Embree's, each of its four corners (a parallelogram is planar, so Embree's two
     // triangles cover it exactly).
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_QUAD);

@@ -66,9 +66,11 @@ struct packet_bvh::ray_lanes {
     ox = splat(r.origin.x), oy = splat(r.origin.y), oz = splat(r.origin.z);
     dx = splat(r.direction.x), dy = splat(r.direction.y), dz = splat(r.direction.z);
     time = splat(r.time);
-    // Rounding the origin to float and subtracting it from a corner err by half an ulp of its
-    // largest coordinate each: 2^-20 of it (16 ulps) is added to every box (bvh.h's
-    // origin_margin), so the slab test never culls a box the ray enters.
+    // The slab test's margin for the ray's side, and its inverse direction, as accel/bvh.h's
+    // origin_margin and safe_inverse make them (that header brings the double kernels, which
+    // this translation unit's float ones would clash with): rounding the origin to float and
+    // subtracting it from a corner err by half an ulp of its largest coordinate each, so 2^-20
+    // of it (16 ulps) is added to every box, and the slab test never culls a box the ray enters.
     const float m =
         std::max({std::abs(r.origin.x), std::abs(r.origin.y), std::abs(r.origin.z)}) * 0x1p-20f;
     for (int k = 0; k < 3; ++k) {
@@ -99,10 +101,6 @@ inline int entries(const Node& n, const Lanes& l, f4 near, f4 far, f4& enter) {
   return bits(enter <= leave) & int(n.lanes);
 }
 
-}  // namespace
-
-namespace {
-
 // The quad's and the disk's way to their plane (hit_quad.h, hit_disk.h): t where the ray meets
 // each lane's plane (unit normal n, dot(n, x) = d), the point there less `at` (a corner, a
 // center), and which lanes face the ray enough and meet it within [near, far].
@@ -130,7 +128,10 @@ inline bool packet_bvh::test_leaf(std::uint32_t ref, const ray_lanes& l, f4 near
   if (kind == sphere_kind) {  // hit_sphere.h's hit_sphere
     const sphere_packet& p = spheres_[at];
     f4 cx = p.x, cy = p.y, cz = p.z;
-    if (moves_) cx = p.x + l.time * p.vx, cy = p.y + l.time * p.vy, cz = p.z + l.time * p.vz;
+    if (!motions_.empty()) {
+      const sphere_motion& v = motions_[at];
+      cx = p.x + l.time * v.vx, cy = p.y + l.time * v.vy, cz = p.z + l.time * v.vz;
+    }
     const f4 ocx = l.ox - cx, ocy = l.oy - cy, ocz = l.oz - cz;
     const f4 half_b = ocx * l.dx + ocy * l.dy + ocz * l.dz;
     const f4 k = half_b / l.a;

@@ -46,8 +46,12 @@ class packet_bvh {
   // Four objects' data side by side; an unused lane holds NaN, which no test passes.
   struct sphere_packet {
     f4 x, y, z, radius;              // centers at time 0 and radii, scene units
-    f4 vx, vy, vz;                   // velocities, scene units per second (zero when none moves)
     std::uint32_t index[4], key[4];  // place in the arrays; scene index (ties)
+  };
+  // A sphere packet's velocities, scene units per second: kept apart, so that scenes where
+  // nothing moves read no more than the spheres.
+  struct sphere_motion {
+    f4 vx, vy, vz;
   };
   struct quad_packet {
     f4 qx, qy, qz, ux, uy, uz, vx, vy, vz;  // a corner and both edges
@@ -88,10 +92,10 @@ class packet_bvh {
 
   std::vector<node> nodes_;  // node 0 the root; empty without objects
   std::vector<sphere_packet> spheres_;
+  std::vector<sphere_motion> motions_;  // by sphere packet; empty when no sphere moves
   std::vector<quad_packet> quads_;
   std::vector<disk_packet> disks_;
-  bool moves_ = false;  // some sphere has a velocity
-  int levels_ = 0;      // wide levels on the longest path
+  int levels_ = 0;  // wide levels on the longest path
 };
 
 }  // namespace rtvk::fast

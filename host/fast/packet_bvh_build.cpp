@@ -178,12 +178,12 @@ item sphere_item(const gpu::gpu_sphere& s, const glm::vec4* velocity, float t0, 
 packet_bvh::packet_bvh(const gpu::scene_arrays& a, std::uint32_t spheres,
                        const std::vector<quad_geometry>& quads, std::uint32_t quad_count,
                        const std::vector<disk_geometry>& disks, std::uint32_t disk_count,
-                       float motion_begin, float motion_end)
-    : moves_(!a.velocities.empty()) {
+                       float motion_begin, float motion_end) {
+  const bool moves = !a.velocities.empty();
   builder bd;
   for (std::uint32_t k = 0; k < spheres; ++k)
-    bd.items.push_back(sphere_item(a.spheres[k], moves_ ? &a.velocities[k] : nullptr, motion_begin,
-                                   motion_end, k));
+    bd.items.push_back(
+        sphere_item(a.spheres[k], moves ? &a.velocities[k] : nullptr, motion_begin, motion_end, k));
   for (std::uint32_t k = 0; k < quad_count; ++k) {
     const quad_geometry& q = quads[k];
     item it{{}, {}, quad_kind, k};
@@ -212,14 +212,19 @@ packet_bvh::packet_bvh(const gpu::scene_arrays& a, std::uint32_t spheres,
       const bool used = leaf.begin + l < leaf.end;
       const std::uint32_t k = used ? bd.items[leaf.begin + l].index : 0;
       if (kind == sphere_kind) {
-        if (l == 0) packet = std::uint32_t(spheres_.size()), spheres_.emplace_back();
+        if (l == 0) {
+          packet = std::uint32_t(spheres_.size()), spheres_.emplace_back();
+          if (moves) motions_.emplace_back();
+        }
         sphere_packet& p = spheres_.back();
         const gpu::gpu_sphere& s = a.spheres[k];
-        const glm::vec4 v = moves_ ? a.velocities[k] : glm::vec4(0);
         p.x[l] = s.center.x, p.y[l] = s.center.y, p.z[l] = s.center.z;
         p.radius[l] = used ? s.radius : nan;
-        p.vx[l] = v.x, p.vy[l] = v.y, p.vz[l] = v.z;
         p.index[l] = k, p.key[l] = s.scene_index;
+        if (moves) {
+          const glm::vec4 v = a.velocities[k];
+          motions_.back().vx[l] = v.x, motions_.back().vy[l] = v.y, motions_.back().vz[l] = v.z;
+        }
       } else if (kind == quad_kind) {
         if (l == 0) packet = std::uint32_t(quads_.size()), quads_.emplace_back();
         quad_packet& p = quads_.back();
