@@ -357,10 +357,7 @@ TEST_F(GpuHardwareRt, PrimitivesPastTheDevicesLimitAreRefusedNamingIt) {
   const scene s = small("book-final", 1);  // 485 spheres
   for (const gpu_traversal t : hardware) {
     if (!runs(t)) continue;
-    gpu::gpu_options o;
-    o.device = test::device_under_test();
-    o.validate = true;
-    o.ray_tracing = true;
+    gpu::gpu_options o = test::gpu_test_options(/*ray_tracing=*/true);
     o.caps.primitives = 100;
     gpu::gpu_context capped(o);
     gpu::gpu_render_options r;

@@ -18,9 +18,7 @@ class GpuLimits : public test::GpuTest {
   // Renders `s` small on a context whose limits are lowered to `caps`; returns the refusal's
   // message, or "" when it rendered.
   std::string render_with(const scene& s, const gpu::device_limit_caps& caps) {
-    gpu::gpu_options o;
-    o.device = test::device_under_test();
-    o.validate = true;
+    gpu::gpu_options o = test::gpu_test_options();
     o.caps = caps;
     gpu::gpu_context ctx(o);
     try {

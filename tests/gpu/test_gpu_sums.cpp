@@ -164,9 +164,7 @@ TEST_F(GpuSums, TheDevicesEncodingIsTheHostsAtEveryThreshold) {
 }
 
 TEST_F(GpuSums, EncodingSpreadsOverRowsOfWorkgroupsWhenOneRowWouldPassTheLimit) {
-  gpu::gpu_options o;
-  o.device = test::device_under_test();
-  o.validate = true;
+  gpu::gpu_options o = test::gpu_test_options();
   o.caps.workgroup_count = 3;  // 1000 sums are 16 workgroups of 64: six rows of three
   gpu::gpu_context ctx(o);
   const scene s = test::small_scene("seed", 8, 1);
