@@ -62,6 +62,7 @@ class compute_pipeline : public shader_program {
   unique_pipeline pipeline_;
   unique_descriptor_pool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;  // freed with pool_
+  mutable bool bound_ = false;  // bind() has recorded it: lavapipe compiles it in its first run
 };
 
 }  // namespace rtvk::gpu

@@ -245,13 +245,17 @@ std::uint64_t gpu_context::submit(const std::function<void(VkCommandBuffer)>& re
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vk_check(vkBeginCommandBuffer(s.cb, &begin), "vkBeginCommandBuffer");
+  first_run_recorded_ = false;
   try {
     record(s.cb);
     vk_check(vkEndCommandBuffer(s.cb), "vkEndCommandBuffer");
   } catch (...) {  // back to the initial state, so the slot can be recorded again
     vkResetCommandBuffer(s.cb, 0);
+    first_run_recorded_ = false;
     throw;
   }
+  s.first_run = first_run_recorded_;
+  first_run_recorded_ = false;
 
   const VkFence fence = s.fence.get();
   vk_check(vkResetFences(device_.get(), 1, &fence), "vkResetFences");
@@ -285,16 +289,22 @@ void gpu_context::wait(std::uint64_t ticket, queue_role role) {
     slot& s = l.slots[t % submission_slots];
     if (s.ticket != t) continue;  // never submitted (a failed submit) or already reused
     const VkFence fence = s.fence.get();
-    const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(options_.fence_timeout);
+    const bool compiling = s.first_run && device().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
+    const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+        options_.fence_timeout + (compiling ? std::chrono::milliseconds(first_run_allowance)
+                                            : std::chrono::milliseconds(0)));
     const VkResult r =
         vkWaitForFences(device_.get(), 1, &fence, VK_TRUE, std::uint64_t(ns.count()));
     if (r != VK_SUCCESS) {
       lost_ = true;  // its command buffer is still pending: the pool is leaked, not destroyed
-      throw vk_error("vkWaitForFences", r,
-                     "device " + device().name +
-                         (r == VK_TIMEOUT ? ", no answer after " +
-                                                format_number(double(ns.count()) / 1e9) + " s"
-                                          : ""));
+      std::string why = "device " + device().name;
+      if (r == VK_TIMEOUT)
+        why += ", no answer after " + format_number(double(ns.count()) / 1e9) + " s";
+      if (r == VK_TIMEOUT && compiling)
+        why +=
+            " (--gpu-timeout and the allowance for lavapipe's compile of a pipeline's shaders "
+            "in its first run)";
+      throw vk_error("vkWaitForFences", r, why);
     }
     l.completed = t;
   }

@@ -132,6 +132,16 @@ class gpu_context {
   // error paths).
   void wait_all() noexcept;
 
+  // Says that the command buffer being recorded runs a pipeline for the first time (the
+  // pipelines' bind() calls it). lavapipe compiles a pipeline's shaders inside the first
+  // submission that runs them, not in vkCreate*Pipelines as GPU drivers do: a second or two for
+  // the books' shaders on Mesa 22.3, over two minutes for the PBR shaders on Mesa 25, several
+  // times that on a loaded machine. On lavapipe, whose loops cannot run away (its loop limit),
+  // that submission's wait gets first_run_allowance beyond --gpu-timeout, so that a compile is
+  // not taken for a hung device.
+  void note_first_run() const { first_run_recorded_ = true; }
+  static constexpr std::chrono::minutes first_run_allowance{30};
+
  private:
   gpu_options options_;                        // as given
   vulkan_instance instance_;                   // destroyed last
@@ -144,6 +154,7 @@ class gpu_context {
     VkCommandBuffer cb = VK_NULL_HANDLE;  // freed with its lane's pool
     unique_fence fence;                   // signalled when its submission completes
     std::uint64_t ticket = 0;             // the submission it holds; 0: none
+    bool first_run = false;               // it runs some pipeline for the first time
   };
   // One queue with its command pool and ring of submissions.
   struct queue_lane {
@@ -163,11 +174,12 @@ class gpu_context {
   const queue_lane& lane(queue_role role) const {
     return role == queue_role::presenting && presenting_ ? *presenting_ : compute_;
   }
-  queue_lane compute_;                      // renders (and everything, without a split)
-  std::unique_ptr<queue_lane> presenting_;  // a window's frames, when another family's
-  bool lost_ = false;                       // a wait timed out or the device was lost
-  bool ray_queries_ = false;                // VK_KHR_ray_query enabled
-  bool ray_tracing_pipelines_ = false;      // VK_KHR_ray_tracing_pipeline enabled
+  queue_lane compute_;                       // renders (and everything, without a split)
+  std::unique_ptr<queue_lane> presenting_;   // a window's frames, when another family's
+  bool lost_ = false;                        // a wait timed out or the device was lost
+  mutable bool first_run_recorded_ = false;  // note_first_run() since submit() began recording
+  bool ray_queries_ = false;                 // VK_KHR_ray_query enabled
+  bool ray_tracing_pipelines_ = false;       // VK_KHR_ray_tracing_pipeline enabled
 };
 
 }  // namespace rtvk::gpu
