@@ -26,9 +26,11 @@ std::string device_selector(const std::string& flag_value, std::string& source) 
 void gpu_flags::add_to(CLI::App& cmd) {
   cmd.add_option("--device", device, device_flag_help);
   cmd.add_flag("--validate", validate, "Enable VK_LAYER_KHRONOS_validation (also RTVK_VALIDATE=1)");
-  cmd.add_option("--gpu-timeout", gpu_timeout,
-                 "Seconds one GPU submission may take before the device counts as hung (on lavapipe, "
-                 "the first submission to run a shader also gets 30 minutes to compile it)")
+  cmd.add_option(
+         "--gpu-timeout", gpu_timeout,
+         "Seconds one GPU submission may take before the device counts as hung (on lavapipe, "
+         "a process's first submission to run each shader also gets 30 minutes to compile "
+         "it)")
       ->check(CLI::Range(0.001, 86400.0))
       ->capture_default_str();
 }

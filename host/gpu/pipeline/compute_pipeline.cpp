@@ -65,8 +65,7 @@ void compute_pipeline::rebind(const std::vector<buffer_binding>& bindings) {
 }
 
 void compute_pipeline::bind(VkCommandBuffer cb) const {
-  if (!bound_) ctx_.note_first_run();
-  bound_ = true;
+  mark_bound(ctx_);
   vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
   vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &set_, 0,
                           nullptr);

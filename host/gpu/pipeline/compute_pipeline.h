@@ -27,6 +27,23 @@ class shader_program {
                                  const std::array<std::uint32_t, 3>& groups) const = 0;
   // The pipeline stages its shaders run in, for barriers.
   virtual VkPipelineStageFlags stages() const = 0;
+  // Whether bind() has recorded it: lavapipe compiles a pipeline in its first run, which the
+  // first bind() tells the context (gpu_context::note_first_run).
+  bool bound() const { return bound_; }
+  // Whether record_empty_run() is known to make lavapipe compile the pipeline; and, after
+  // bind() and push(), a run of no work (no workgroups), for a first run of its own.
+  virtual bool has_empty_run() const { return false; }
+  virtual void record_empty_run(VkCommandBuffer) const {}
+
+ protected:
+  // Marks the pipeline bound, telling the context of its first run.
+  void mark_bound(const gpu_context& ctx) const {
+    if (!bound_) ctx.note_first_run();
+    bound_ = true;
+  }
+
+ private:
+  mutable bool bound_ = false;
 };
 
 // A compute shader with its one descriptor set (set 0), all bindings buffers or acceleration
@@ -53,6 +70,9 @@ class compute_pipeline : public shader_program {
   std::uint32_t dispatch(VkCommandBuffer cb,
                          const std::array<std::uint32_t, 3>& groups) const override;
   VkPipelineStageFlags stages() const override { return VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT; }
+  // lavapipe compiles a compute pipeline's variant before it looks at the workgroup count.
+  bool has_empty_run() const override { return true; }
+  void record_empty_run(VkCommandBuffer cb) const override { vkCmdDispatch(cb, 0, 0, 0); }
 
  private:
   const gpu_context& ctx_;  // tells whether the device may still be using the pipeline
@@ -62,7 +82,6 @@ class compute_pipeline : public shader_program {
   unique_pipeline pipeline_;
   unique_descriptor_pool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;  // freed with pool_
-  mutable bool bound_ = false;  // bind() has recorded it: lavapipe compiles it in its first run
 };
 
 }  // namespace rtvk::gpu

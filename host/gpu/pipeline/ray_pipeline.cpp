@@ -137,8 +137,7 @@ void ray_pipeline::rebind(const std::vector<buffer_binding>& bindings) {
 }
 
 void ray_pipeline::bind(VkCommandBuffer cb) const {
-  if (!bound_) ctx_.note_first_run();
-  bound_ = true;
+  mark_bound(ctx_);
   vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_.get());
   vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout_.get(), 0, 1, &set_, 0,
                           nullptr);

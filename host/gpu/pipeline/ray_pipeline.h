@@ -59,7 +59,6 @@ class ray_pipeline : public shader_program {
   VkStridedDeviceAddressRegionKHR raygen_{}, miss_{}, hit_{}, callable_{};
   unique_descriptor_pool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;  // freed with pool_
-  mutable bool bound_ = false;  // bind() has recorded it: lavapipe compiles it in its first run
 };
 
 }  // namespace rtvk::gpu

@@ -35,7 +35,23 @@ void band_commands::set_views(const std::vector<camera>& views, std::size_t firs
   for (std::uint32_t v = 0; v < count; ++v) cameras_[v] = to_ubo(views[first + v]);
 }
 
+// lavapipe compiles a pipeline's shaders in the first submission that runs it, which waits for
+// that up to gpu_context::first_run_allowance beyond --gpu-timeout: a run of no work in a
+// submission of its own takes the compile, so that the render's first submission (the pacer's
+// calibration, pacer.h) holds to --gpu-timeout, and its measured time is its work's alone.
+void band_commands::run_empty_first() {
+  if (pipeline_.bound() || !pipeline_.has_empty_run() ||
+      d_.ctx.device().driver_id != VK_DRIVER_ID_MESA_LLVMPIPE)
+    return;
+  d_.ctx.submit_and_wait([&](VkCommandBuffer cb) {
+    pipeline_.bind(cb);
+    pipeline_.push(cb, &push_, sizeof push_);  // whatever it holds: no invocation reads it
+    pipeline_.record_empty_run(cb);
+  });
+}
+
 band_ticket band_commands::submit(const band_submission& s) {
+  run_empty_first();
   push_.band_y0 = s.band->y0;
   push_.band_rows = s.band->rows;
   push_.sums_row0 = kept_ ? s.band->y0 : 0;

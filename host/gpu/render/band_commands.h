@@ -73,6 +73,7 @@ class band_commands : public band_queue {
   std::string device_name() const override { return d_.ctx.device().name; }
 
  private:
+  void run_empty_first();
   std::uint32_t record(VkCommandBuffer cb, const band_submission& s);
   void record_start(VkCommandBuffer cb) const;
   void record_readback(VkCommandBuffer cb, const band_pass& b) const;
