@@ -105,15 +105,20 @@ inline precise real perlin_turbulence(TABLES_PARAM real3 p) {
   return abs(accum);
 }
 
-// The book's noise_texture at p: a gray level in [0, 1] (about) times `tint`.
+// The book's noise_texture at p: a gray level in [0, 1] (about) times `tint`. The turbulence and
+// marble styles share one perlin_turbulence, at the point each takes: the shader compilers inline
+// every call, and each is 56 lattice corners written out, which lavapipe compiles for tens of
+// seconds (per call site of texture_value).
 inline precise real3 noise_value(TABLES_PARAM real scale, uint style, real3 tint, real3 p) {
   precise real level;
-  if (style == RTVK_NOISE_SMOOTH)
+  if (style == RTVK_NOISE_SMOOTH) {
     level = real(0.5) * (real(1.0) + perlin_noise(TABLES scale * p));
-  else if (style == RTVK_NOISE_TURBULENCE)
-    level = perlin_turbulence(TABLES scale * p);
-  else
-    level = real(0.5) * (real(1.0) + sin(scale * p.z + real(10.0) * perlin_turbulence(TABLES p)));
+  } else {
+    bool turbulence = style == RTVK_NOISE_TURBULENCE;
+    precise real3 q = turbulence ? scale * p : p;
+    precise real t = perlin_turbulence(TABLES q);
+    level = turbulence ? t : real(0.5) * (real(1.0) + sin(scale * p.z + real(10.0) * t));
+  }
   return level * tint;
 }
 
