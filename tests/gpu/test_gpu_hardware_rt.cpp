@@ -13,13 +13,16 @@
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "errors.h"
 #include "gpu_engine.h"
 #include "gpu_fixture.h"
+#include "gpu_scene.h"
 #include "mesh_helpers.h"
 #include "render_helpers.h"
 #include "scene.h"
+#include "shared_types.h"
 #include "surface_scenes.h"
 
 namespace rtvk {
@@ -114,6 +117,15 @@ scene small(std::string_view name, int spp) {
   return s;
 }
 
+// The scene without textures: the shading step reads them on every path alike (the surfaces test
+// below reads them on each), and they made next-week-final's variant 170 s a path to compile on
+// Mesa 25's lavapipe, against 15 to 25 s without.
+scene untextured(scene s) {
+  for (named_material& m : s.materials) for_each_texture(m.m, [](int& t) { t = -1; });
+  s.textures.clear();
+  return s;
+}
+
 // A torus knot of a few thousand triangles, placed three times by instances (one turned and
 // stretched), beside a sphere that moves over the shutter and one of the scene's own.
 scene knots_and_a_moving_sphere() {
@@ -146,8 +158,8 @@ scene knots_and_a_moving_sphere() {
 // spheres, a group placed by an instance, quads, a sphere of fog), cornell-smoke (fog in turned
 // boxes), bouncing-spheres (hundreds of moving spheres) and rest-of-life-final (rays aimed at
 // the lights). The other built-in scenes hold only spheres and quads, which these have too, and
-// differ in materials, textures and skies, which every traversal shares; each of them costs
-// Mesa 25's lavapipe two more shader variants to compile (about 20 s), so they are left out.
+// differ in materials, textures and skies, which every traversal shares; each would cost Mesa
+// 25 two more variants to compile (about 20 s), so they are left out, as are textures (untextured).
 // Seen failing with moving spheres boxed at their start only, and with instances' rays left in
 // world space.
 TEST_F(GpuHardwareRt, TheBuiltInScenesGiveTheComputeBvhsExactSums) {
@@ -156,47 +168,13 @@ TEST_F(GpuHardwareRt, TheBuiltInScenesGiveTheComputeBvhsExactSums) {
   if (!queries && !pipelines) return;
   for (const std::string name :
        {"next-week-final", "cornell-smoke", "bouncing-spheres", "rest-of-life-final"}) {
-    const scene s = small(name, 2);
+    const scene s = untextured(small(name, 2));
     const gpu::sum_image want = sums(s, gpu_traversal::compute);
     for (const gpu_traversal t : hardware) {
       if (!has(t)) continue;  // runs() checked the refusal
       SCOPED_TRACE(name + " through " + name_of(t));
       EXPECT_EQ(differing_pixels(s, want, t), 0);
     }
-  }
-}
-
-// The surfaces rays pass (alpha, cull_back; ray_color.h's path_passes) are decided in the
-// shading step on every path, the vertex colors read by record_object: the hardware paths must
-// give the compute BVH's sums bit for bit for vertex-colored blended triangles (the driver's
-// triangles) that emit, before a masked quad and a culled one (its boxes) and a back quad.
-TEST_F(GpuHardwareRt, EmissionVertexColorsAlphaAndCullingGiveTheComputeBvhsExactSums) {
-  const bool queries = runs(gpu_traversal::ray_query);
-  const bool pipelines = runs(gpu_traversal::ray_pipeline);
-  if (!queries && !pipelines) return;
-  scene s = test::vertex_color_scene();
-  material& tris = s.materials[0].m;
-  tris.alpha = alpha_mode::blend;
-  tris.opacity = 0.6;
-  tris.emission = color(0.1, 0.2, 0.05);
-  s.materials[1].m = test::flat_material(color(0, 0, 1));
-  material mask = test::flat_material(color(1));
-  mask.alpha = alpha_mode::mask;
-  mask.texture = 0;
-  s.textures.push_back(test::row_texture({0x000000ffu, 0xff00ff00u}));
-  material culled = test::flat_material(color(1, 0, 0));
-  culled.cull_back = true;
-  s.materials.push_back({"mask", mask});
-  s.materials.push_back({"culled", culled});
-  s.quads.push_back({point3(-4, -4, -2), vec3(8, 0, 0), vec3(0, 8, 0), 1});
-  s.quads.push_back({point3(0, -1, -0.7), vec3(1, 0, 0), vec3(0, 2, 0), 2});
-  s.quads.push_back({point3(-1, -1, -0.5), vec3(0, 2, 0), vec3(1, 0, 0), 3});  // its back to us
-  s.render.spp = 16;
-  const gpu::sum_image want = sums(s, gpu_traversal::compute);
-  for (const gpu_traversal t : hardware) {
-    if (!has(t)) continue;
-    SCOPED_TRACE(name_of(t));
-    EXPECT_EQ(differing_pixels(s, want, t), 0);
   }
 }
 
@@ -221,27 +199,73 @@ double nearest_edge(const scene& s) {
   return nearest;
 }
 
-// The second texture coordinates (triangle_shading::uv1) are read by record_object on every
-// path: the hardware paths give the compute BVH's sums bit for bit where the emission texture
-// reads them on one triangle and the first set on the other. The triangles are moved off every
-// pixel's sample point (corners, unjittered) by 0.03 at least (nearest_edge): a ray through an
-// edge is decided by rounding, and the driver proposes a triangle by its own test, not the
-// shared one. On the shared edge, where the two colors differ, Mesa 25's lavapipe gave such a
-// sample to the other triangle; with the triangles moved along x only, the top and bottom rows
-// still ran through the edges at y = +-1, and an H200 (driver 580.159.04) differed in 28 pixels.
-TEST_F(GpuHardwareRt, TheSecondTextureCoordinatesGiveTheComputeBvhsExactSums) {
-  const bool queries = runs(gpu_traversal::ray_query);
-  const bool pipelines = runs(gpu_traversal::ray_pipeline);
-  if (!queries && !pipelines) return;
+// Vertex-colored blended triangles (the driver's triangles) that emit, before a masked quad and a
+// culled one (its boxes) and a back quad.
+scene emission_and_alpha_scene() {
+  scene s = test::vertex_color_scene();
+  material& tris = s.materials[0].m;
+  tris.alpha = alpha_mode::blend;
+  tris.opacity = 0.6;
+  tris.emission = color(0.1, 0.2, 0.05);
+  s.materials[1].m = test::flat_material(color(0, 0, 1));
+  material mask = test::flat_material(color(1));
+  mask.alpha = alpha_mode::mask;
+  mask.texture = 0;
+  s.textures.push_back(test::row_texture({0x000000ffu, 0xff00ff00u}));
+  material culled = test::flat_material(color(1, 0, 0));
+  culled.cull_back = true;
+  s.materials.push_back({"mask", mask});
+  s.materials.push_back({"culled", culled});
+  s.quads.push_back({point3(-4, -4, -2), vec3(8, 0, 0), vec3(0, 8, 0), 1});
+  s.quads.push_back({point3(0, -1, -0.7), vec3(1, 0, 0), vec3(0, 2, 0), 2});
+  s.quads.push_back({point3(-1, -1, -0.5), vec3(0, 2, 0), vec3(1, 0, 0), 3});  // its back to us
+  s.render.spp = 16;
+  return s;
+}
+
+// test::second_uv_scene with its triangles moved off every pixel's sample point (corners,
+// unjittered) by 0.03 at least (nearest_edge): a ray through an edge is decided by rounding, and
+// the driver proposes a triangle by its own test, not the shared one. On the shared edge, where
+// the two colors differ, Mesa 25's lavapipe gave such a sample to the other triangle; with the
+// triangles moved along x only, the top and bottom rows still ran through the edges at y = +-1,
+// and an H200 (driver 580.159.04) differed in 28 pixels. A culled quad behind them, which no ray
+// reaches (flat materials scatter none), gives it emission_and_alpha_scene's specialization: one
+// variant a path for both, which Mesa 25 compiled for 100 to 130 s a path in a clean-clone run.
+scene second_uv_off_edges_scene() {
   scene s = test::second_uv_scene();
   for (triangle& t : s.triangles)
     for (point3& p : t.p) p += vec3(0.05, -0.03, 0);
-  ASSERT_GT(nearest_edge(s), 0.025);
-  const gpu::sum_image want = sums(s, gpu_traversal::compute);
-  for (const gpu_traversal t : hardware) {
-    if (!has(t)) continue;
-    SCOPED_TRACE(name_of(t));
-    EXPECT_EQ(differing_pixels(s, want, t), 0) << "at" << where_;
+  material culled = test::flat_material(color(1, 0, 0));
+  culled.cull_back = true;
+  s.materials.push_back({"culled", culled});
+  s.quads.push_back({point3(-1, -1, -3), vec3(2, 0, 0), vec3(0, 2, 0), 2});
+  return s;
+}
+
+// The surfaces rays pass (alpha, cull_back; ray_color.h's path_passes) are decided in the
+// shading step on every path, the vertex colors and both sets of texture coordinates
+// (triangle_shading::uv1) read by record_object: the hardware paths must give the compute BVH's
+// sums bit for bit in emission_and_alpha_scene, and in second_uv_off_edges_scene, where the
+// emission texture reads the second set on one triangle and the first set on the other.
+TEST_F(GpuHardwareRt, SurfacesAndBothTextureCoordinatesGiveTheComputeBvhsExactSums) {
+  const bool queries = runs(gpu_traversal::ray_query);
+  const bool pipelines = runs(gpu_traversal::ray_pipeline);
+  if (!queries && !pipelines) return;
+  const scene alpha = emission_and_alpha_scene(), uv1 = second_uv_off_edges_scene();
+  ASSERT_GT(nearest_edge(uv1), 0.025);
+  std::uint32_t alpha_spec[RTVK_SPEC_COUNT] = {}, uv1_spec[RTVK_SPEC_COUNT] = {};
+  gpu::gpu_scene(gpu(), alpha, true).specialize(alpha_spec);
+  gpu::gpu_scene(gpu(), uv1, true).specialize(uv1_spec);
+  for (int i = 0; i < RTVK_SPEC_COUNT; ++i)
+    ASSERT_EQ(alpha_spec[i], uv1_spec[i]) << "specialization constant " << i << " differs";
+  for (const auto& [name, s] : {std::pair<const char*, const scene&>{"alpha", alpha},
+                                std::pair<const char*, const scene&>{"uv1", uv1}}) {
+    const gpu::sum_image want = sums(s, gpu_traversal::compute);
+    for (const gpu_traversal t : hardware) {
+      if (!has(t)) continue;
+      SCOPED_TRACE(std::string(name) + " through " + name_of(t));
+      EXPECT_EQ(differing_pixels(s, want, t), 0) << "at" << where_;
+    }
   }
 }
 
