@@ -257,7 +257,7 @@ TEST_F(GpuHardwareRt, SurfacesAndBothTextureCoordinatesGiveTheComputeBvhsExactSu
   gpu::gpu_scene(gpu(), alpha, true).specialize(alpha_spec);
   gpu::gpu_scene(gpu(), uv1, true).specialize(uv1_spec);
   for (int i = 0; i < RTVK_SPEC_COUNT; ++i)
-    ASSERT_EQ(alpha_spec[i], uv1_spec[i]) << "specialization constant " << i << " differs";
+    EXPECT_EQ(alpha_spec[i], uv1_spec[i]) << "specialization constant " << i << " differs";
   for (const auto& [name, s] : {std::pair<const char*, const scene&>{"alpha", alpha},
                                 std::pair<const char*, const scene&>{"uv1", uv1}}) {
     const gpu::sum_image want = sums(s, gpu_traversal::compute);
