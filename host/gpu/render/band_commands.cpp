@@ -40,8 +40,7 @@ void band_commands::set_views(const std::vector<camera>& views, std::size_t firs
 // submission of its own takes the compile, so that the render's first submission (the pacer's
 // calibration, pacer.h) holds to --gpu-timeout, and its measured time is its work's alone.
 void band_commands::run_empty_first() {
-  if (pipeline_.bound() || !pipeline_.has_empty_run() ||
-      d_.ctx.device().driver_id != VK_DRIVER_ID_MESA_LLVMPIPE)
+  if (pipeline_.bound() || !pipeline_.has_empty_run() || !compiles_in_first_run(d_.ctx.device()))
     return;
   d_.ctx.submit_and_wait([&](VkCommandBuffer cb) {
     pipeline_.bind(cb);

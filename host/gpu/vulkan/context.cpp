@@ -289,7 +289,7 @@ void gpu_context::wait(std::uint64_t ticket, queue_role role) {
     slot& s = l.slots[t % submission_slots];
     if (s.ticket != t) continue;  // never submitted (a failed submit) or already reused
     const VkFence fence = s.fence.get();
-    const bool compiling = s.first_run && device().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
+    const bool compiling = s.first_run && compiles_in_first_run(device());
     const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
         options_.fence_timeout + (compiling ? std::chrono::milliseconds(first_run_allowance)
                                             : std::chrono::milliseconds(0)));

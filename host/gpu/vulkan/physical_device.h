@@ -36,6 +36,13 @@ struct device_info {
   std::uint8_t driver_uuid[VK_UUID_SIZE] = {};  // the driver build (Vulkan 1.1); 0s: unknown
 };
 
+// Whether the driver compiles a pipeline's shaders in the first submission that runs it rather
+// than in vkCreate*Pipelines: lavapipe, known by its driver ID (VK_DRIVER_ID_MESA_LLVMPIPE), never
+// by its name. That submission may take minutes (gpu_context::first_run_allowance).
+inline bool compiles_in_first_run(const device_info& d) {
+  return d.driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
+}
+
 // No queue family: the device has none of the kind asked for.
 inline constexpr std::uint32_t no_queue_family = ~0u;
 
