@@ -194,12 +194,13 @@ timed "asan: host tests, no driver" without_driver tests asan-host asan -L '^hos
 # (Mesa 25 beside 22.3), and on the system's only the tests of the hardware paths, whose
 # refusals run there (the label's other tests took 240 s on the system's Mesa 22.3, all of it
 # the same host code again).
+refusals="$hardware|DevicesShowTheDriver"  # the hardware paths' tests, and the device listing
 if [[ $second == bookworm-backports ]]; then
   timed "asan: sanitize GPU tests, second lavapipe" on_second tests asan-gpu-second asan -L sanitize
   timed "asan: the hardware paths' sanitize GPU tests, system's lavapipe" \
-    tests asan-gpu asan -L sanitize -R "$hardware|DevicesShowTheDriver"
+    tests asan-gpu asan -L sanitize -R "$refusals"
 else
   timed "asan: sanitize GPU tests, system's lavapipe" tests asan-gpu asan -L sanitize
   timed "asan: the hardware paths' sanitize GPU tests, second lavapipe" \
-    on_second tests asan-gpu-second asan -L sanitize -R "$hardware|DevicesShowTheDriver"
+    on_second tests asan-gpu-second asan -L sanitize -R "$refusals"
 fi
