@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # README command 2, and what CI runs (.ci/run): install what is missing, then build and test in
 # passes, each aimed at what it alone can find (docs/testing.md: what runs where, and why):
-#   fuzz    the four libFuzzer targets (scene files, mesh files, calibrations, environment maps), 30 s each
-#           from their committed corpora (clang, ASan + UBSan)
 #   ci      every test, on the system's lavapipe (release build, warnings are errors)
 #   second  the GPU tests (label gpu) again, on a second lavapipe: Mesa 25 from
 #           bookworm-backports when the system has bookworm's Mesa 22.3, else bookworm's 22.3,
 #           fetched by scripts/private-mesa.sh into ~/.cache/rtvk-test-mesa/ (RTVK_MESA_DIR) and
 #           never installed (RTVK_SECOND_MESA=SUITE picks the suite)
-#   asan    under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer: the host tests
+#   asan    one clang build under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer:
+#           first the four libFuzzer targets (scene files, mesh files, calibrations, environment
+#           maps), 30 s each from their committed corpora; then the host tests
 #           (label host) with no Vulkan driver at all, so a test that needs a device and is not
 #           labelled gpu fails; then the GPU tests that run every host-side Vulkan path (label
 #           sanitize) on the lavapipe with ray tracing, and those of the hardware paths on the
@@ -113,10 +113,6 @@ if [[ $second != bookworm-backports && $system_mesa == 22.* ]]; then
   echo "rtvk: warning: neither lavapipe has ray tracing (RTVK_SECOND_MESA=$second): its host code goes unsanitized" >&2
 fi
 
-echo "== fuzz"
-timed "build fuzz" build fuzz
-timed "fuzz: 4 targets, 30 s each" tests fuzz fuzz
-
 echo "== ci: every test, on the system's lavapipe ($system_mesa)"
 timed "build ci" build ci
 show_devices
@@ -173,10 +169,13 @@ second_pass() {  # both runs, whatever the first gives
 }
 timed "GPU tests on $want" on_second second_pass
 
-echo "== asan: the host tests with no Vulkan driver, the sanitize GPU tests on both lavapipes"
+echo "== asan: the fuzz targets, the host tests with no Vulkan driver, the sanitize GPU tests on both lavapipes"
 # Only what its tests run: rtvk_tests, which depends on rtvk and the fault layer (not librtvk.so,
-# whose files rtvk_tests links as rtvk_lib: its second compile is the ci pass's to prove).
-timed "build asan" build asan rtvk_tests
+# whose files rtvk_tests links as rtvk_lib: its second compile is the ci pass's to prove), and
+# the libFuzzer targets, which link the same sanitized parsers (clang builds both, once).
+fuzzers=(rtvk_fuzz_scene_file rtvk_fuzz_mesh_file rtvk_fuzz_calibration_file rtvk_fuzz_environment_file)
+timed "build asan" build asan rtvk_tests "${fuzzers[@]}"
+timed "fuzz: 4 targets, 30 s each" tests fuzz asan -R '^fuzz_'
 # without_driver COMMAND...: runs it with a loader that finds no driver at all, and as in CI
 # (where a GPU test without a device fails rather than skips), so that only a test that needs no
 # device can pass: one that needs a device and lacks the gpu label fails here, naming it.

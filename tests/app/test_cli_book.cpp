@@ -12,6 +12,7 @@
 #include "ci.h"
 #include "image_io.h"
 #include "process.h"
+#include "sanitizers.h"
 
 namespace rtvk {
 namespace {
@@ -259,7 +260,7 @@ namespace {
 // AddressSanitizer reserves terabytes of address space for its shadow memory at start, so an
 // rtvk built with it cannot start under any such limit: the tests that use this are not built
 // with it (the ci pass runs them; a skip would show in the asan pass of CI).
-#if !defined(__SANITIZE_ADDRESS__)
+#if !RTVK_ASAN
 test::process_result run_rtvk_under_ulimit(long kib, std::vector<std::string> args) {
   args.insert(args.begin(),
               {"-c", "ulimit -v " + std::to_string(kib) + " && exec \"$0\" \"$@\"", RTVK_EXE});
@@ -294,7 +295,7 @@ TEST(CliBook, TheRenderFitsUnderTheProcesssMemoryLimit) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
-#endif  // !__SANITIZE_ADDRESS__
+#endif  // !RTVK_ASAN
 
 // libstb's PNG encoder overflows its int-sized buffers past about 1 GiB of rows: a 65536x65536
 // PNG crashed rtvk with SIGSEGV after rendering for two minutes. Refused up front now, on every

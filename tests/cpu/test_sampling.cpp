@@ -42,10 +42,14 @@ light_record sphere_light(const point3& center, double radius) {
   return scene_lights(s).at(0);
 }
 
-// A direction uniform on the unit sphere (the test's own sampler, not the kernels').
+// A direction uniform on the unit sphere (the test's own sampler, not the kernels'). The draws
+// are sequenced, z first: `vec3 d(n(gen), n(gen), n(gen))` left their order to the compiler
+// (GCC evaluated right to left, clang left to right), so a fixed seed gave other directions
+// under each; these are GCC's, now under both.
 vec3 uniform_direction(std::mt19937_64& gen) {
   std::normal_distribution<double> n;
-  vec3 d(n(gen), n(gen), n(gen));
+  const double z = n(gen), y = n(gen), x = n(gen);
+  const vec3 d(x, y, z);
   return d / glm::length(d);
 }
 
@@ -395,13 +399,14 @@ TEST_F(GpuSampling, TheDevicesDensitiesAreTheHosts) {
   const auto out = gpu::run_light_probe(gpu(), entries);
   ASSERT_EQ(out.size(), entries.size());
   for (std::size_t li = 0; li < 3; ++li) {
-    double sum = 0;
+    double sum = 0, sum2 = 0;
     int mismatched = 0;
     for (int k = 0; k < per_light; ++k) {
       const std::size_t i = li * per_light + std::size_t(k);
       gpu::light_probe_entry f = entries[i];
       f32::run_light_probe(f);
       sum += 4 * pi_ * out[i].pdf;
+      sum2 += (4 * pi_ * out[i].pdf) * (4 * pi_ * out[i].pdf);
       // Float against float: the same operations (an edge of the light may tip either way).
       mismatched += std::abs(out[i].pdf - f.pdf) > 1e-4f * (1 + f.pdf);
       const double want = light_pdf(lights[li], origin, directions[i], 0.0);
@@ -413,7 +418,17 @@ TEST_F(GpuSampling, TheDevicesDensitiesAreTheHosts) {
       EXPECT_GE(out[i].cosine_sampled.y, 0);
     }
     EXPECT_LE(mismatched, per_light / 500) << "light " << li;
-    EXPECT_NEAR(sum / per_light, 1, 0.05) << "light " << li;
+    // The device's densities integrate to one within 4 standard errors (a right density fails
+    // one seed in 16,000). Uniform directions rarely meet a small light: the standard errors are
+    // 0.037, 0.035 and 0.056 (the sphere) here, so this catches only gross errors (a density a
+    // third off, 95% of seeds); the fine check is the pointwise match above with the host's
+    // densities, which Densities.EachIntegratesToOne integrates with 400,000 directions. A fixed
+    // band of 0.05 was under one standard error for the sphere: GCC's directions gave 0.986 and
+    // passed, clang's (before uniform_direction sequenced its draws) 1.066 and failed.
+    const double mean = sum / per_light;
+    const double standard_error = std::sqrt((sum2 / per_light - mean * mean) / per_light);
+    EXPECT_NEAR(mean, 1, 4 * standard_error) << "light " << li;
+    EXPECT_LT(standard_error, 0.07) << "light " << li;  // enough directions meet the light
   }
 }
 

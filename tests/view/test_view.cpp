@@ -30,6 +30,7 @@
 #include "mesh_helpers.h"
 #include "process.h"
 #include "render_cpu.h"
+#include "sanitizers.h"
 #include "scene.h"
 #include "temp_dir.h"
 #include "x_window_pixels.h"
@@ -151,14 +152,10 @@ class XvfbTest : public testing::Test {
     // the overlay composed on the device must be free of hazards. Not under AddressSanitizer:
     // both together slow these input-timed tests to a few frames a second on two cores, and the
     // ci preset (and the second lavapipe's pass) run them with the checks.
+    const std::string enables =
+        RTVK_ASAN ? "" : "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT";
     return {"DISPLAY=" + display_, "WAYLAND_DISPLAY=", "RTVK_VALIDATE=1",
-            "VK_LOADER_LAYERS_ENABLE=*validation",
-#ifdef __SANITIZE_ADDRESS__
-            "VK_LAYER_ENABLES="
-#else
-            "VK_LAYER_ENABLES=VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT"
-#endif
-    };
+            "VK_LOADER_LAYERS_ENABLE=*validation", "VK_LAYER_ENABLES=" + enables};
   }
 
   // The id of rtvk view's window, mapped, once its first batch is rendered (its title then counts

@@ -1,6 +1,8 @@
 #include "pin_drivers.h"
 
-#if defined(__SANITIZE_ADDRESS__)
+#include "sanitizers.h"
+
+#if RTVK_ASAN
 #include <dlfcn.h>
 #include <link.h>
 
@@ -9,7 +11,7 @@
 
 namespace rtvk::gpu {
 
-#if defined(__SANITIZE_ADDRESS__)
+#if RTVK_ASAN
 namespace {
 
 int pin(struct dl_phdr_info* info, std::size_t, void*) {
