@@ -420,8 +420,10 @@ TEST_F(GpuSampling, TheDevicesDensitiesAreTheHosts) {
     EXPECT_LE(mismatched, per_light / 500) << "light " << li;
     // The device's densities integrate to one within 4 standard errors (a right density fails
     // one seed in 16,000). Uniform directions rarely meet a small light: the standard errors are
-    // 0.037, 0.035 and 0.056 (the sphere) here, so this catches only gross errors (a density a
-    // third off, 95% of seeds); the fine check is the pointwise match above with the host's
+    // 0.037, 0.035 and 0.056 (the sphere) here, so this catches only gross errors (on the
+    // sphere, a density a third too low or half too high in 97% of seeds; a quarter too high
+    // pushes the standard error over its bound below); the fine check is the pointwise match
+    // above with the host's
     // densities, which Densities.EachIntegratesToOne integrates with 400,000 directions. A fixed
     // band of 0.05 was under one standard error for the sphere: GCC's directions gave 0.986 and
     // passed, clang's (before uniform_direction sequenced its draws) 1.066 and failed.
