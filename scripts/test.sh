@@ -173,8 +173,7 @@ echo "== asan: the fuzz targets, the host tests with no Vulkan driver, the sanit
 # Only what its tests run: rtvk_tests, which depends on rtvk and the fault layer (not librtvk.so,
 # whose files rtvk_tests links as rtvk_lib: its second compile is the ci pass's to prove), and
 # the libFuzzer targets, which link the same sanitized parsers (clang builds both, once).
-fuzzers=(rtvk_fuzz_scene_file rtvk_fuzz_mesh_file rtvk_fuzz_calibration_file rtvk_fuzz_environment_file)
-timed "build asan" build asan rtvk_tests "${fuzzers[@]}"
+timed "build asan" build asan rtvk_tests rtvk_fuzzers
 timed "fuzz: 4 targets, 30 s each" tests fuzz asan -R '^fuzz_'
 # without_driver COMMAND...: runs it with a loader that finds no driver at all, and as in CI
 # (where a GPU test without a device fails rather than skips), so that only a test that needs no
