@@ -171,7 +171,7 @@ timed "GPU tests on $want" on_second second_pass
 
 echo "== asan: the fuzz targets, the host tests with no Vulkan driver, the sanitize GPU tests on both lavapipes"
 # Only what its tests run: rtvk_tests, which depends on rtvk and the fault layer (not librtvk.so,
-# whose files rtvk_tests links as rtvk_lib: its second compile is the ci pass's to prove), and
+# made from the objects rtvk_tests links as rtvk_lib, which the ci pass links and installs), and
 # the libFuzzer targets, which link the same sanitized parsers (clang builds both, once).
 timed "build asan" build asan rtvk_tests rtvk_fuzzers
 timed "fuzz: 4 targets, 30 s each" tests fuzz asan -R '^fuzz_'
