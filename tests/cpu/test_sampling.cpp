@@ -423,10 +423,10 @@ TEST_F(GpuSampling, TheDevicesDensitiesAreTheHosts) {
     // 0.037, 0.035 and 0.056 (the sphere) here, so this catches only gross errors (on the
     // sphere, a density a third too low or half too high in 97% of seeds; a quarter too high
     // pushes the standard error over its bound below); the fine check is the pointwise match
-    // above with the host's
-    // densities, which Densities.EachIntegratesToOne integrates with 400,000 directions. A fixed
-    // band of 0.05 was under one standard error for the sphere: GCC's directions gave 0.986 and
-    // passed, clang's (before uniform_direction sequenced its draws) 1.066 and failed.
+    // above with the host's densities, which Densities.EachIntegratesToOne integrates with
+    // 400,000 directions. A fixed band of 0.05 was under one standard error for the sphere:
+    // GCC's directions gave 0.986 and passed, clang's (before uniform_direction sequenced its
+    // draws) 1.066 and failed.
     const double mean = sum / per_light;
     const double standard_error = std::sqrt((sum2 / per_light - mean * mean) / per_light);
     EXPECT_NEAR(mean, 1, 4 * standard_error) << "light " << li;
